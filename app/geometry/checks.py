@@ -1,0 +1,145 @@
+"""Checks: a claim of the paper, tested against computed data, with its residual and verdict.
+
+A check never decides by construction: it evaluates the claim on the vertices that were
+computed and compares the residual with a tolerance that fits the precision. Where the printed
+formula is wrong, the check tests the corrected one and carries an ``Erratum`` whose
+``printed_residual`` is the printed formula evaluated on the same data.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from app.geometry.precision import Arithmetic, Array
+
+ERRATA_DOCUMENT = "docs/errata.md"
+
+
+@dataclass(frozen=True)
+class Statement:
+    """A checkable statement of the paper: its id, where it is, and what it claims."""
+
+    id: str
+    reference: str
+    claim: str
+
+
+@dataclass(frozen=True)
+class Erratum:
+    """A printed formula that is wrong, its correction, and the printed one's residual."""
+
+    id: str
+    """Anchor in docs/errata.md, e.g. ``"E3"``."""
+    printed: str
+    corrected: str
+    printed_residual: float | None
+
+    @property
+    def link(self) -> str:
+        return f"{ERRATA_DOCUMENT}#{self.id.lower()}"
+
+
+@dataclass(frozen=True)
+class PerIndex:
+    """Residual of a check at each index where it is evaluated."""
+
+    indices: np.ndarray[Any, np.dtype[np.int64]]
+    residuals: np.ndarray[Any, np.dtype[np.float64]]
+
+
+@dataclass(frozen=True)
+class Check:
+    """The outcome of testing one statement on one computed polygon."""
+
+    id: str
+    reference: str
+    claim: str
+    residual: float | None
+    tolerance: float
+    holds: bool | None
+    """``None`` when the statement is not applicable (e.g. too few vertices)."""
+    per_index: PerIndex | None = None
+    erratum: Erratum | None = None
+    note: str | None = None
+
+
+def check_residuals(
+    statement: Statement,
+    ar: Arithmetic,
+    indices: np.ndarray[Any, np.dtype[np.int64]],
+    residuals: Array,
+    tolerance: float,
+    detail: bool,
+    erratum: Erratum | None = None,
+    note: str | None = None,
+) -> Check:
+    """A check whose residual is the largest of the per-index ``residuals`` (all >= 0)."""
+    values = np.abs(ar.to_floats(residuals)) if len(residuals) else np.empty(0)
+    if len(values) == 0:
+        return not_applicable(
+            statement, tolerance, note or "not enough vertices in the range to evaluate it"
+        )
+    finite = np.isfinite(values)
+    if not np.all(finite):
+        # A residual that is not a finite number means the claim failed to be evaluable;
+        # report it as a failure and keep NaN/Infinity out of the response.
+        values = np.where(finite, values, np.finfo(np.float64).max)
+    worst = float(np.max(values))
+    return Check(
+        id=statement.id,
+        reference=statement.reference,
+        claim=statement.claim,
+        residual=worst,
+        tolerance=tolerance,
+        holds=worst <= tolerance,
+        per_index=PerIndex(np.asarray(indices, dtype=np.int64), values) if detail else None,
+        erratum=erratum,
+        note=note,
+    )
+
+
+def not_applicable(statement: Statement, tolerance: float, note: str) -> Check:
+    """A check that could not be evaluated, with the reason."""
+    return Check(
+        id=statement.id,
+        reference=statement.reference,
+        claim=statement.claim,
+        residual=None,
+        tolerance=tolerance,
+        holds=None,
+        note=note,
+    )
+
+
+def relative_difference(ar: Arithmetic, computed: Array, expected: Array) -> Array:
+    """``|computed - expected| / max(|expected|, tiny)`` entry by entry."""
+    scale = np.abs(expected)
+    tiny = ar.scalar(np.finfo(np.float64).tiny)
+    scale = np.where(scale > tiny, scale, tiny)
+    return np.abs(computed - expected) / scale
+
+
+def point_distance(ar: Arithmetic, a: Array, b: Array) -> Array:
+    """``|a_i - b_i|`` for two ``(n, 2)`` point arrays."""
+    return ar.hypot(a[:, 0] - b[:, 0], a[:, 1] - b[:, 1])
+
+
+def relative_point_difference(ar: Arithmetic, computed: Array, expected: Array) -> Array:
+    """``|computed_i - expected_i| / max(|expected_i|, tiny)`` for ``(n, 2)`` point arrays."""
+    zero = ar.scalar(0)
+    scale = point_distance(ar, expected, np.full_like(expected, zero))
+    tiny = ar.scalar(np.finfo(np.float64).tiny)
+    scale = np.where(scale > tiny, scale, tiny)
+    return point_distance(ar, computed, expected) / scale
+
+
+def printed_residual(ar: Arithmetic, residuals: Array) -> float | None:
+    """The largest printed-formula residual as a float (``None`` if it is not a number)."""
+    if len(residuals) == 0:
+        return None
+    values = np.abs(ar.to_floats(residuals))
+    worst = float(np.max(values))
+    return worst if np.isfinite(worst) else None

@@ -1,0 +1,53 @@
+"""What a discretization returns: its polygon, companion polygons, fitted constants and checks."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from app.geometry.checks import Check, Statement
+from app.geometry.precision import Arithmetic, Array, Scalar
+
+
+@dataclass(frozen=True)
+class Polyline:
+    """Vertices ``(n, 2)`` with their paper indices ``(n,)``."""
+
+    indices: np.ndarray[Any, np.dtype[np.int64]]
+    vertices: Array
+    description: str = ""
+
+
+@dataclass(frozen=True)
+class Curve:
+    """One discrete hyperbolic cosine (``polygon``) with everything computed alongside it."""
+
+    id: str
+    title: str
+    reference: str
+    parameters: dict[str, Any]
+    """The effective parameters (defaults filled in), as plain numbers."""
+    arithmetic: Arithmetic
+    polygon: Polyline
+    companions: dict[str, Polyline] = field(default_factory=dict)
+    constants: dict[str, Scalar] = field(default_factory=dict)
+    checks: list[Check] = field(default_factory=list)
+
+
+@dataclass(frozen=True)
+class DiscretizationInfo:
+    """Catalog facts of one discretization that the core knows (the API adds parameters)."""
+
+    id: str
+    title: str
+    reference: str
+    summary: str
+    default_range: tuple[int, int]
+    methods: tuple[str, ...]
+    companions: dict[str, str]
+    """Companion name -> what it is."""
+    constants: dict[str, str]
+    """Constant name -> what it is."""
+    statements: tuple[Statement, ...]

@@ -1,0 +1,105 @@
+"""Closed forms and recursions that Section 4.2 proves for (D4b): eq. (13), (14) and (16).
+
+These are the *theorems*; ``kinematic_tractrix`` is the *definition*. Nothing here calls the
+construction, so comparing the two is a real test of Theorems 5 and 6.
+
+Stable forms. With L = ln((h+d)/(h−d)) = 2 artanh(d/h), the printed power forms are
+  (14)  p_i^y = (h−d)^i / (2(h+d)^{i−1}) + (h+d)^i / (2(h−d)^{i−1}) = √(h²−d²) cosh((i − ½)L),
+  (16)  d_i   = (−h tanh(iL) + 2di,  h / cosh(iL)).
+The powers overflow or underflow in float64 long before the values do (e.g. (h+d)^i for h = 100
+overflows at i ≈ 154 while p_i^y ≈ 100·1.02^i), so the functions below evaluate
+a·cosh(u) as exp(ln(a/2) + |u|)·(1 + e^{−2|u|}) and a/cosh(u) as exp(ln(2a) − |u|)/(1 + e^{−2|u|}),
+which are accurate for every index whose value is representable.
+
+Tilted start (an extension, not in the paper): for a first stick at angle β0 the construction is
+the vertical one advanced by the non-integer index τ = artanh(−cos β0)/L, so p_i and d_i are
+(14) and (16) at i + τ, translated back by 2dτ along the x-axis. τ = 0 for β0 = π/2.
+"""
+
+from __future__ import annotations
+
+from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
+
+
+def log_ratio(ar: Arithmetic, h: Scalar, d: Scalar) -> Scalar:
+    """L = ln((h+d)/(h−d)) = 2 artanh(d/h), the growth exponent of (14) and (16)."""
+    return 2 * ar.atanh(d / h)
+
+
+def tilt_shift(ar: Arithmetic, h: Scalar, d: Scalar, beta0: float | None) -> Scalar:
+    """τ = artanh(−cos β0)/L, the index shift of a tilted first stick (0 when vertical)."""
+    if beta0 is None:
+        return ar.scalar(0)
+    return ar.atanh(-ar.cos(ar.scalar(beta0))) / log_ratio(ar, h, d)
+
+
+def amplitude_cosh(ar: Arithmetic, a: Scalar, u: Array) -> Array:
+    """a·cosh(u) for a > 0, finite whenever the value is representable."""
+    v = abs(u)
+    return ar.exp(ar.log(a / 2) + v) * (1 + ar.exp(-2 * v))
+
+
+def amplitude_sech(ar: Arithmetic, a: Scalar, u: Array) -> Array:
+    """a / cosh(u) for a > 0, without overflow of cosh and with gradual underflow."""
+    v = abs(u)
+    return ar.exp(ar.log(2 * a) - v) / (1 + ar.exp(-2 * v))
+
+
+def hyperbolic_cosine(ar: Arithmetic, h: Scalar, d: Scalar, i: Array, shift: Scalar) -> Array:
+    """Theorem 5, eq. (14): p_i = ((2i−1)d, √(h²−d²) cosh((i − ½ + τ)L)); ``(n,) -> (n, 2)``."""
+    L = log_ratio(ar, h, d)
+    amplitude = ar.sqrt((h - d) * (h + d))
+    return stack_points((2 * i - 1) * d, amplitude_cosh(ar, amplitude, (i - 0.5 + shift) * L))
+
+
+def tractrix(ar: Arithmetic, h: Scalar, d: Scalar, i: Array, shift: Scalar) -> Array:
+    """Theorem 6, eq. (16): d_i = (−h tanh((i+τ)L) + 2di, h / cosh((i+τ)L)); ``(n, 2)``."""
+    t = (i + shift) * log_ratio(ar, h, d)
+    return stack_points(2 * d * i - h * ar.tanh(t), amplitude_sech(ar, h, t))
+
+
+def hyperbolic_cosine_printed(ar: Arithmetic, h: Scalar, d: Scalar, i: Array) -> Array:
+    """Eq. (14) exactly as printed, with powers (overflows early in float64; see module doc)."""
+    y = (h - d) ** i / (2 * (h + d) ** (i - 1)) + (h + d) ** i / (2 * (h - d) ** (i - 1))
+    return stack_points((2 * i - 1) * d, y)
+
+
+def tractrix_printed(ar: Arithmetic, h: Scalar, d: Scalar, i: Array) -> Array:
+    """Eq. (16) exactly as printed, with powers (overflows early in float64)."""
+    a, b = (h - d) ** (2 * i), (h + d) ** (2 * i)
+    return stack_points(h * (a - b) / (a + b) + 2 * d * i, 2 * h * (h * h - d * d) ** i / (a + b))
+
+
+def recursion_13(d: Scalar, before: Array, current: Array) -> Array:
+    """Eq. (13): p_{i+1}^y from p_{i−1}^y and p_i^y.
+
+    (p_i³ + 2d²p_i + d²p_{i−1}) / (p_i p_{i−1} − d²), numerator and denominator divided by
+    p_i p_{i−1} so that no cube overflows.
+    """
+    a, b = before, current
+    return (b * (b / a) + 2 * d * (d / a) + d * (d / b)) / (1 - (d / a) * (d / b))
+
+
+def two_step(d: Scalar, before: Array, current: Array) -> Array:
+    """p_{i+2}^y from p_{i−1}^y, p_i^y: eq. (13) applied twice, simplified (corrected form).
+
+    (b⁵ + d²(a³ + 2a²b + 3ab² + 4b³) + d⁴(2a + 3b)) / (ab − d²)² with a = p_{i−1}^y, b = p_i^y;
+    evaluated divided by (ab)² against overflow.
+    """
+    a, b = before, current
+    e = d / a
+    f = d / b
+    numerator = b * (b / a) * (b / a) + (d * f) * (a / b + 2 + 3 * (b / a) + 4 * (b / a) * (b / a))
+    numerator = numerator + (d * e) * (e * f) * (2 * (a / b) + 3)
+    return numerator / ((1 - e * f) * (1 - e * f))
+
+
+def two_step_printed(d: Scalar, before: Array, current: Array) -> Array:
+    """p_{i+2}^y as printed in the proof of Theorem 4 (with the spurious 2p_i^{y3} term)."""
+    a, b = before, current
+    numerator = (
+        b**5
+        + d**2 * (a**3 + 2 * a**2 * b + 3 * a * b**2 + 4 * b**3)
+        + d**4 * (2 * b**3 + 2 * a + 3 * b)
+    )
+    return numerator / (d**2 - a * b) ** 2

@@ -1,0 +1,119 @@
+"""Wunderlich's kinematic discrete tractrix (D4b), built from its definition (Section 3).
+
+A stick of length h has one end x_i = (2di, 0) on the x-axis and the other end d_i above it.
+Stick i−1 is carried to stick i by a rotation; its centre p_i lies on the perpendicular
+bisector of x_{i−1} x_i (the line x = (2i−1)d) and on the line through d_{i−1} orthogonal to
+stick i−1. The rotation maps x_{i−1} to x_i and d_{i−1} to d_i. The centres p_i form the
+discrete hyperbolic cosine, the ends d_i the discrete tractrix.
+
+Conventions (as in Theorem 5): stick 0 starts at x_0 = (0, 0) with angle ``beta0`` to the
+positive x-axis, measured counter-clockwise in radians (π/2: vertical, d_0 = (0, h)); p_i is the
+centre of the rotation from stick i−1 to stick i, so p_i^x = (2i − 1)d; indices may be negative,
+the backward steps use the inverse rotations.
+
+Nothing here uses the closed forms of Theorems 5 and 6: the checks compare the two.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from app.geometry.errors import DomainError
+from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
+
+
+@dataclass(frozen=True)
+class KinematicTractrix:
+    """The construction (D4b) on the indices i_min .. i_max; every array is ``(n, 2)``."""
+
+    indices: np.ndarray[Any, np.dtype[np.int64]]
+    axis_points: Array
+    """x_i = (2di, 0)."""
+    tractrix: Array
+    """d_i, the free end of stick i."""
+    centres: Array
+    """p_i, the centre of the rotation taking stick i−1 to stick i."""
+    directions: Array
+    """u_i, the unit vector from x_i to d_i."""
+
+
+def validate(h: float, d: float, beta0: float | None) -> None:
+    """Raise ``DomainError`` unless 0 < d < h and 0 < beta0 < π."""
+    if not np.isfinite(h) or h <= 0:
+        raise DomainError("h", "h > 0", h)
+    if not np.isfinite(d) or d <= 0:
+        raise DomainError("d", "0 < d < h", d)
+    if d >= h:
+        raise DomainError("d", "0 < d < h", d, f"the stick length is h = {h!r}")
+    if beta0 is not None and not (0 < beta0 < np.pi):
+        raise DomainError(
+            "beta0", "0 < beta0 < π (the stick points into the upper half-plane)", beta0
+        )
+
+
+def initial_direction(ar: Arithmetic, beta0: float | None) -> tuple[Scalar, Scalar]:
+    """u_0 = (cos β0, sin β0); exactly (0, 1) for the vertical start."""
+    if beta0 is None:
+        return ar.scalar(0), ar.scalar(1)
+    angle = ar.scalar(beta0)
+    return ar.cos(angle), ar.sin(angle)
+
+
+def rotation_about(p_y: Scalar, d: Scalar) -> tuple[Scalar, Scalar]:
+    """cos α and sin α of the rotation about p = ((2i−1)d, p_y) that maps x_{i−1} to x_i.
+
+    x_{i−1} − p = (−d, −p_y) turns into x_i − p = (d, −p_y); with r = d/p_y this is
+    cos α = (1 − r²)/(1 + r²), sin α = 2r/(1 + r²) (written with r so that nothing overflows).
+    """
+    r = d / p_y
+    q = 1 + r * r
+    return (1 - r * r) / q, 2 * r / q
+
+
+def construct(
+    ar: Arithmetic,
+    h: float,
+    d: float,
+    beta0: float | None,
+    i_min: int,
+    i_max: int,
+) -> KinematicTractrix:
+    """(D4b), Section 3: sticks, rotation centres and tractrix for i = i_min .. i_max.
+
+    The step from one stick to the next depends on where the previous stick points, so the
+    recursion is sequential: a scalar loop over max(|i_min − 1|, |i_max|) sticks (measured in
+    bench/; method="closed-form" serves very long ranges from Theorems 5 and 6 instead).
+    """
+    validate(h, d, beta0)
+    hh, dd = ar.scalar(h), ar.scalar(d)
+    lo, hi = min(0, i_min - 1), max(0, i_max)
+    cos_u = [ar.scalar(0)] * (hi - lo + 1)
+    sin_u = list(cos_u)
+    centre_y = list(cos_u)
+    cos_u[-lo], sin_u[-lo] = initial_direction(ar, beta0)
+    for j in range(1, hi + 1):  # forward: stick j−1 -> stick j about p_j
+        c, s = cos_u[j - 1 - lo], sin_u[j - 1 - lo]
+        p_y = (hh - dd * c) / s  # on x = (2j−1)d and on the normal of stick j−1 at d_{j−1}
+        ca, sa = rotation_about(p_y, dd)
+        centre_y[j - lo] = p_y
+        cos_u[j - lo], sin_u[j - lo] = ca * c - sa * s, sa * c + ca * s
+    for j in range(0, lo, -1):  # backward: stick j -> stick j−1 about p_j
+        c, s = cos_u[j - lo], sin_u[j - lo]
+        p_y = (hh + dd * c) / s  # on x = (2j−1)d and on the normal of stick j at d_j
+        ca, sa = rotation_about(p_y, dd)
+        centre_y[j - lo] = p_y
+        cos_u[j - 1 - lo], sin_u[j - 1 - lo] = ca * c + sa * s, ca * s - sa * c
+    window = slice(i_min - lo, i_max - lo + 1)
+    i = ar.indices(i_min, i_max)
+    u = stack_points(ar.array(cos_u[window]), ar.array(sin_u[window]))
+    axis = stack_points(2 * dd * i, ar.zeros(len(i)))
+    return KinematicTractrix(
+        indices=np.arange(i_min, i_max + 1, dtype=np.int64),
+        axis_points=axis,
+        tractrix=axis + hh * u,
+        centres=stack_points((2 * i - 1) * dd, ar.array(centre_y[window])),
+        directions=u,
+    )

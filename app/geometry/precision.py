@@ -1,0 +1,231 @@
+"""Two precisions behind one interface, so every construction is written once.
+
+``Float64`` computes with numpy float64 arrays; ``MultiPrecision`` computes with numpy
+object arrays holding mpmath numbers of one private mpmath context (so concurrent requests with
+different ``digits`` never share the global ``mpmath.mp``). Geometry code takes an
+``Arithmetic`` and uses only ``+ - * /``, comparisons and the functions below, so the float64
+and the mp path run the same lines of mathematics.
+
+Conventions:
+- an *array* is a 1-d numpy array: ``(n,)`` float64, or ``(n,)`` object holding ``mpf``;
+- literal constants in geometry code are integers or exact binary fractions (``2``, ``0.5``),
+  so that they mean the same number in both precisions;
+- tolerances come from ``Arithmetic.tolerance`` and nowhere else.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable
+from typing import Any, Literal
+
+import mpmath
+import numpy as np
+
+from app.geometry.errors import DomainError
+
+Array = np.ndarray[Any, np.dtype[Any]]
+"""``(n,)`` float64 array in float64 mode, ``(n,)`` object array of ``mpf`` in mp mode."""
+
+Scalar = Any
+"""``float`` in float64 mode, ``mpf`` in mp mode."""
+
+PrecisionMode = Literal["float64", "mp"]
+
+#: How many units of the working precision a residual may use per elementary step before a
+#: check calls it a failure. One constant for the whole core.
+TOLERANCE_SAFETY = 64
+
+#: Extra decimal digits carried by the mp context beyond the requested ``digits``.
+GUARD_DIGITS = 10
+
+
+class Arithmetic:
+    """Elementwise arithmetic in one precision; see the module docstring."""
+
+    mode: PrecisionMode
+    digits: int
+    eps: float
+    """Unit of the *requested* precision: 2**-52 in float64, 10**-digits in mp."""
+
+    def scalar(self, value: float | int | str) -> Scalar:
+        """One number in this precision; floats are read as their shortest decimal."""
+        raise NotImplementedError
+
+    def array(self, values: Iterable[Any]) -> Array:
+        """An ``(n,)`` array of the given numbers in this precision."""
+        raise NotImplementedError
+
+    def empty(self, n: int) -> Array:
+        """An ``(n,)`` array to be filled."""
+        raise NotImplementedError
+
+    def indices(self, i_min: int, i_max: int) -> Array:
+        """The integers ``i_min .. i_max`` (inclusive) as numbers of this precision."""
+        return self.array(range(i_min, i_max + 1))
+
+    def zeros(self, n: int) -> Array:
+        """An ``(n,)`` array of zeros."""
+        return self.array([0] * n)
+
+    # elementwise functions (scalars or arrays)
+    exp: Callable[[Any], Any]
+    log: Callable[[Any], Any]
+    sqrt: Callable[[Any], Any]
+    cos: Callable[[Any], Any]
+    sin: Callable[[Any], Any]
+    tanh: Callable[[Any], Any]
+    atanh: Callable[[Any], Any]
+    atan2: Callable[[Any, Any], Any]
+    hypot: Callable[[Any, Any], Any]
+
+    @property
+    def pi(self) -> Scalar:
+        raise NotImplementedError
+
+    def to_float(self, value: Any) -> float:
+        """A scalar as a Python float (for residuals, which are always reported as numbers)."""
+        return float(value)
+
+    def to_floats(self, values: Array) -> np.ndarray[Any, np.dtype[np.float64]]:
+        """An array as float64 (for residuals and plots)."""
+        return np.asarray(values, dtype=np.float64)
+
+    def all_finite(self, values: Array) -> bool:
+        """Whether every entry is a finite number."""
+        raise NotImplementedError
+
+    def tolerance(self, steps: int = 1) -> float:
+        """The tolerance for a residual built from ``steps`` elementary operations in sequence."""
+        return TOLERANCE_SAFETY * self.eps * max(1, steps)
+
+    def describe(self) -> dict[str, Any]:
+        """``{"mode": ..., "digits": ...}`` as in the response's ``precision`` field."""
+        return {"mode": self.mode, "digits": self.digits}
+
+
+class Float64(Arithmetic):
+    """IEEE double precision with numpy; vectorized everywhere a formula allows it."""
+
+    mode: PrecisionMode = "float64"
+    digits = 16
+    eps = float(np.finfo(np.float64).eps)
+
+    exp = staticmethod(np.exp)
+    log = staticmethod(np.log)
+    sqrt = staticmethod(np.sqrt)
+    cos = staticmethod(np.cos)
+    sin = staticmethod(np.sin)
+    tanh = staticmethod(np.tanh)
+    atanh = staticmethod(np.arctanh)
+    atan2 = staticmethod(np.arctan2)
+    hypot = staticmethod(np.hypot)
+
+    def scalar(self, value: float | int | str) -> float:
+        return float(value)
+
+    def array(self, values: Iterable[Any]) -> Array:
+        return (
+            np.fromiter(values, dtype=np.float64)
+            if not isinstance(values, np.ndarray)
+            else values.astype(np.float64, copy=False)
+        )
+
+    def empty(self, n: int) -> Array:
+        return np.empty(n, dtype=np.float64)
+
+    def indices(self, i_min: int, i_max: int) -> Array:
+        return np.arange(i_min, i_max + 1, dtype=np.float64)
+
+    def zeros(self, n: int) -> Array:
+        return np.zeros(n, dtype=np.float64)
+
+    @property
+    def pi(self) -> float:
+        return float(np.pi)
+
+    def all_finite(self, values: Array) -> bool:
+        return bool(np.all(np.isfinite(values)))
+
+
+class MultiPrecision(Arithmetic):
+    """mpmath numbers with ``digits`` significant decimal digits (plus guard digits)."""
+
+    mode: PrecisionMode = "mp"
+
+    def __init__(self, digits: int) -> None:
+        if digits < 1:
+            raise DomainError("digits", "digits >= 1", digits)
+        self.digits = digits
+        self.eps = 10.0 ** (-digits)
+        self.ctx = mpmath.MPContext()
+        self.ctx.dps = digits + GUARD_DIGITS
+        ctx = self.ctx
+        self.exp = _elementwise(ctx.exp)
+        self.log = _elementwise(ctx.log)
+        self.sqrt = _elementwise(ctx.sqrt)
+        self.cos = _elementwise(ctx.cos)
+        self.sin = _elementwise(ctx.sin)
+        self.tanh = _elementwise(ctx.tanh)
+        self.atanh = _elementwise(ctx.atanh)
+        self.atan2 = _elementwise(ctx.atan2, 2)
+        self.hypot = _elementwise(ctx.hypot, 2)
+        self._isfinite = np.frompyfunc(ctx.isfinite, 1, 1)
+
+    def scalar(self, value: float | int | str) -> Any:
+        # repr() gives the shortest decimal that round-trips a float: d=0.3 means 3/10 here,
+        # not the binary neighbour 0.29999999999999998889...
+        return self.ctx.mpf(repr(float(value)) if isinstance(value, float) else value)
+
+    def array(self, values: Iterable[Any]) -> Array:
+        items = [v if isinstance(v, self.ctx.mpf) else self.scalar(v) for v in values]
+        out = np.empty(len(items), dtype=object)
+        out[:] = items
+        return out
+
+    def empty(self, n: int) -> Array:
+        return np.empty(n, dtype=object)
+
+    @property
+    def pi(self) -> Any:
+        return +self.ctx.pi
+
+    def to_float(self, value: Any) -> float:
+        return float(value)
+
+    def to_floats(self, values: Array) -> np.ndarray[Any, np.dtype[np.float64]]:
+        return np.fromiter((float(v) for v in values), dtype=np.float64, count=len(values))
+
+    def all_finite(self, values: Array) -> bool:
+        return bool(np.all(self._isfinite(values))) if len(values) else True
+
+    def to_strings(self, values: Array) -> list[str]:
+        """Decimal strings with ``digits`` significant digits."""
+        nstr = self.ctx.nstr
+        digits = self.digits
+        return [nstr(v, digits) for v in values]
+
+
+def _elementwise(function: Callable[..., Any], arity: int = 1) -> Callable[..., Any]:
+    """Apply an mpmath function to scalars or, entry by entry, to object arrays."""
+    ufunc = np.frompyfunc(function, arity, 1)
+
+    def apply(*args: Any) -> Any:
+        if any(isinstance(a, np.ndarray) for a in args):
+            return ufunc(*args)
+        return function(*args)
+
+    return apply
+
+
+def arithmetic(mode: PrecisionMode, digits: int | None = None) -> Arithmetic:
+    """The ``Arithmetic`` for a precision mode (``digits`` is used in mp mode only)."""
+    if mode == "float64":
+        return Float64()
+    if mode == "mp":
+        return MultiPrecision(digits if digits is not None else 30)
+    raise DomainError("precision", "precision is 'float64' or 'mp'", mode)
+
+
+def stack_points(x: Array, y: Array) -> Array:
+    """Two ``(n,)`` coordinate arrays as one ``(n, 2)`` array of points."""
+    return np.stack([x, y], axis=1)

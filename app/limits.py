@@ -1,0 +1,61 @@
+"""The work budget of a request, checked before any computation (settings in app/settings.py)."""
+
+from __future__ import annotations
+
+from app.settings import Settings
+
+
+class LimitExceededError(ValueError):
+    """A request asks for more work than the configured limits allow (a 422, not a 500)."""
+
+    def __init__(self, parameter: str, constraint: str, value: object) -> None:
+        self.parameter = parameter
+        self.constraint = constraint
+        self.value = value
+        super().__init__(f"{parameter} must satisfy {constraint}, got {value!r}")
+
+
+def enforce_range(
+    settings: Settings,
+    i_min: int,
+    i_max: int,
+    method: str,
+    precision: str,
+    digits: int,
+) -> None:
+    """Refuse oversize index ranges, long constructions and expensive mp requests.
+
+    The order i_min <= i_max is the core's to check (a domain error); here an empty range
+    simply costs nothing.
+    """
+    vertices = max(0, i_max - i_min + 1)
+    if vertices > settings.max_vertices:
+        raise LimitExceededError(
+            "i_max", f"i_max − i_min + 1 <= {settings.max_vertices} (vertices)", i_max
+        )
+    steps = vertices
+    if method == "construction":
+        steps = max(abs(i_min), abs(i_max), vertices) + 1
+        if steps > settings.max_construction_steps:
+            name, value = ("i_max", i_max) if abs(i_max) >= abs(i_min) else ("i_min", i_min)
+            raise LimitExceededError(
+                name,
+                f"max(|i_min|, |i_max|) < {settings.max_construction_steps} with "
+                "method=construction (use method=closed-form for longer ranges)",
+                value,
+            )
+    if precision == "mp":
+        enforce_digits(settings, digits)
+        if digits * steps > settings.max_mp_work:
+            raise LimitExceededError(
+                "digits",
+                f"digits × steps <= {settings.max_mp_work} in precision=mp "
+                f"(this range needs {steps} steps)",
+                digits,
+            )
+
+
+def enforce_digits(settings: Settings, digits: int) -> None:
+    """Refuse more digits than configured."""
+    if digits > settings.max_digits:
+        raise LimitExceededError("digits", f"1 <= digits <= {settings.max_digits}", digits)

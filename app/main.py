@@ -1,0 +1,53 @@
+"""The FastAPI application: ``create_app()`` and the module-level ``app``."""
+
+from fastapi import FastAPI
+from fastapi.middleware.cors import CORSMiddleware
+
+from app import __version__, errors
+from app.routers import discretizations, health, theorems
+from app.settings import Settings, get_settings
+
+DESCRIPTION = """\
+Every discretization of the hyperbolic cosine (and of the tractrix) from *Discretizations of the
+hyperbolic cosine*, computed from its definition, with the paper's claims checked on the result.
+Each curve response carries `checks`: for every statement, the residual, the tolerance that fits
+the precision, the verdict and, where the printed formula is wrong, the erratum
+(docs/errata.md).
+
+Conventions: indices are the paper's; Δ²y_i = y_{i+2} − 2y_{i+1} + y_i; l_i = |p_{i+1} − p_i|;
+A_i is the signed trapezoid area under the edge p_i p_{i+1}. `precision=mp` computes with
+`digits` significant digits and returns coordinates as decimal strings. Errors are
+`application/problem+json` (RFC 9457) naming the parameter and its constraint.
+"""
+
+TAGS = [
+    {"name": "discretizations", "description": "Discrete hyperbolic cosines and companions."},
+    {"name": "theorems", "description": "The paper's statements, checked on computed data."},
+    {"name": "service", "description": "Health."},
+]
+
+
+def create_app(settings: Settings | None = None) -> FastAPI:
+    """Build the application with the given settings (default: from the environment)."""
+    app = FastAPI(
+        title="Discrete hyperbolic cosine service",
+        version=__version__,
+        description=DESCRIPTION,
+        openapi_tags=TAGS,
+    )
+    app.state.settings = settings or get_settings()
+    app.add_middleware(
+        CORSMiddleware,
+        allow_origins=app.state.settings.cors_origins,
+        allow_methods=["GET", "POST"],
+        allow_headers=["Content-Type", "If-None-Match"],
+        expose_headers=["ETag"],
+    )
+    errors.install(app)
+    app.include_router(health.router)
+    app.include_router(discretizations.router)
+    app.include_router(theorems.router)
+    return app
+
+
+app = create_app()

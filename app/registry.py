@@ -1,0 +1,52 @@
+"""Which discretizations the service offers: core module, request model and description.
+
+Adding a discretization means adding one entry to ``_ENTRIES``; the routers, the catalog and
+the statement catalog read everything else from here.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from app.geometry.checks import Statement
+from app.geometry.curve import Curve, DiscretizationInfo
+from app.geometry.discretizations import d4b
+from app.schemas.common import CurveQuery
+from app.schemas.d4b import D4B_DESCRIPTION, D4bQuery
+
+
+@dataclass(frozen=True)
+class Discretization:
+    """One discretization as the API serves it."""
+
+    info: DiscretizationInfo
+    query: type[CurveQuery]
+    compute: Callable[..., Curve]
+    description: str
+
+
+_ENTRIES = (Discretization(d4b.INFO, D4bQuery, d4b.compute, D4B_DESCRIPTION),)
+
+DISCRETIZATIONS: dict[str, Discretization] = {entry.info.id: entry for entry in _ENTRIES}
+
+
+@dataclass(frozen=True)
+class StatementEntry:
+    """A statement and the discretizations whose responses check it."""
+
+    statement: Statement
+    discretizations: tuple[str, ...]
+
+
+def _statements() -> dict[str, StatementEntry]:
+    found: dict[str, StatementEntry] = {}
+    for entry in _ENTRIES:
+        for statement in entry.info.statements:
+            known = found.get(statement.id)
+            owners = (known.discretizations if known else ()) + (entry.info.id,)
+            found[statement.id] = StatementEntry(known.statement if known else statement, owners)
+    return found
+
+
+STATEMENTS: dict[str, StatementEntry] = _statements()

@@ -1,0 +1,174 @@
+"""Shaping and encoding responses: curve documents, CSV, JSON bytes, ETag and caching.
+
+Arrays go straight from numpy to orjson (OPT_SERIALIZE_NUMPY): no Python lists, no pydantic
+validation on the way out (see the serving-path facts in design.md and bench/).
+"""
+
+from __future__ import annotations
+
+import hashlib
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+import orjson
+from fastapi import Request, Response
+
+from app import __version__
+from app.geometry.checks import Check
+from app.geometry.curve import Curve, Polyline
+from app.geometry.errors import NotRepresentableError
+from app.geometry.precision import Arithmetic, Array, MultiPrecision
+from app.settings import Settings
+
+JSON_OPTIONS = orjson.OPT_SERIALIZE_NUMPY
+JSON_MEDIA_TYPE = "application/json"
+CSV_MEDIA_TYPE = "text/csv; charset=utf-8"
+
+
+class JSONBytesResponse(Response):
+    """A JSON response whose body is already encoded."""
+
+    media_type = JSON_MEDIA_TYPE
+
+
+def encode_json(document: Any) -> bytes:
+    """orjson bytes; numpy arrays and scalars are encoded natively."""
+    return orjson.dumps(document, option=JSON_OPTIONS)
+
+
+def coordinates(ar: Arithmetic, points: Array) -> Any:
+    """``(n, 2)`` points as float64 array (float64 mode) or ``[[str, str], ...]`` (mp mode)."""
+    if isinstance(ar, MultiPrecision):
+        xs, ys = ar.to_strings(points[:, 0]), ar.to_strings(points[:, 1])
+        return [list(pair) for pair in zip(xs, ys, strict=True)]
+    return np.ascontiguousarray(points, dtype=np.float64)
+
+
+def number(ar: Arithmetic, value: Any) -> float | str:
+    """A computed value: float in float64 mode, decimal string in mp mode."""
+    if isinstance(ar, MultiPrecision):
+        return str(ar.ctx.nstr(value, ar.digits))
+    return float(value)
+
+
+def ensure_finite(curve: Curve) -> None:
+    """Last line of defence: no NaN or Infinity ever reaches a response."""
+    ar = curve.arithmetic
+    for name, polyline in [("p", curve.polygon), *curve.companions.items()]:
+        if not ar.all_finite(polyline.vertices.reshape(-1)):
+            raise NotRepresentableError(
+                "precision",
+                "values representable in the chosen precision",
+                ar.mode,
+                f"the polygon {name!r} leaves the float64 range on this index range; "
+                "use precision=mp or a shorter range",
+            )
+
+
+def polyline_document(ar: Arithmetic, polyline: Polyline) -> dict[str, Any]:
+    return {
+        "description": polyline.description,
+        "indices": polyline.indices,
+        "vertices": coordinates(ar, polyline.vertices),
+    }
+
+
+def check_document(check: Check) -> dict[str, Any]:
+    erratum = check.erratum
+    return {
+        "id": check.id,
+        "reference": check.reference,
+        "claim": check.claim,
+        "residual": check.residual,
+        "tolerance": check.tolerance,
+        "holds": check.holds,
+        "per_index": None
+        if check.per_index is None
+        else {"indices": check.per_index.indices, "residuals": check.per_index.residuals},
+        "erratum": None
+        if erratum is None
+        else {
+            "id": erratum.id,
+            "printed": erratum.printed,
+            "corrected": erratum.corrected,
+            "printed_residual": erratum.printed_residual,
+            "link": erratum.link,
+        },
+        "note": check.note,
+    }
+
+
+def curve_document(curve: Curve) -> dict[str, Any]:
+    """The JSON document of ``CurveResponse`` (see app/schemas/curve.py)."""
+    ensure_finite(curve)
+    ar = curve.arithmetic
+    return {
+        "id": curve.id,
+        "title": curve.title,
+        "reference": curve.reference,
+        "parameters": curve.parameters,
+        "precision": ar.describe(),
+        "indices": curve.polygon.indices,
+        "vertices": coordinates(ar, curve.polygon.vertices),
+        "companions": {
+            name: polyline_document(ar, polyline) for name, polyline in curve.companions.items()
+        },
+        "constants": {name: number(ar, value) for name, value in curve.constants.items()},
+        "checks": [check_document(check) for check in curve.checks],
+    }
+
+
+def curve_csv(curve: Curve) -> bytes:
+    """``curve,index,x,y`` rows: the polygon ``p``, then every companion."""
+    ensure_finite(curve)
+    ar = curve.arithmetic
+    lines = ["curve,index,x,y"]
+    for name, polyline in [("p", curve.polygon), *curve.companions.items()]:
+        points = coordinates(ar, polyline.vertices)
+        if isinstance(points, np.ndarray):
+            xs = [repr(v) for v in points[:, 0].tolist()]
+            ys = [repr(v) for v in points[:, 1].tolist()]
+        else:
+            xs, ys = [x for x, _ in points], [y for _, y in points]
+        lines.extend(
+            f"{name},{i},{x},{y}" for i, x, y in zip(polyline.indices.tolist(), xs, ys, strict=True)
+        )
+    return ("\n".join(lines) + "\n").encode()
+
+
+def etag_for(key: str) -> str:
+    """A strong ETag for a canonical request key (version-scoped)."""
+    digest = hashlib.sha256(f"{__version__}\n{key}".encode()).hexdigest()[:32]
+    return f'"{digest}"'
+
+
+def _matches(header: str | None, etag: str) -> bool:
+    if not header:
+        return False
+    if header.strip() == "*":
+        return True
+    tags = [tag.strip().removeprefix("W/") for tag in header.split(",")]
+    return etag in tags
+
+
+def cached(
+    request: Request, key: str, settings: Settings, build: Callable[[], Response]
+) -> Response:
+    """Serve a deterministic GET: 304 on a matching If-None-Match, else ``build()``.
+
+    The ETag is derived from the canonical request, so a revalidation costs no computation.
+    """
+    etag = etag_for(key)
+    headers = {"ETag": etag, "Cache-Control": f"public, max-age={settings.cache_max_age}"}
+    if request.method == "GET" and _matches(request.headers.get("if-none-match"), etag):
+        return Response(status_code=304, headers=headers)
+    response = build()
+    if request.method == "GET":
+        response.headers.update(headers)
+    return response
+
+
+def canonical_key(path: str, query: Any) -> str:
+    """Path plus the validated query with defaults, keys sorted: one key per distinct answer."""
+    return path + "?" + orjson.dumps(query, option=orjson.OPT_SORT_KEYS).decode()

@@ -1,0 +1,137 @@
+"""GET /discretizations (catalog) and GET/POST /discretizations/{id} (one curve)."""
+
+from typing import Annotated, Any
+
+from fastapi import APIRouter, Depends, Query, Request, Response
+
+from app.errors import UnknownIdError
+from app.registry import DISCRETIZATIONS, Discretization
+from app.responses import cached, canonical_key
+from app.routers.common import compute, curve_response, reject_repeated_parameters, settings_of
+from app.schemas.catalog import DiscretizationEntry, ParameterInfo
+from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES, CurveQuery
+from app.schemas.curve import CurveResponse
+
+router = APIRouter(prefix="/discretizations", tags=["discretizations"])
+
+COMMON_FIELDS = frozenset(CurveQuery.model_fields)
+
+
+def parameter_infos(model: type[CurveQuery]) -> list[ParameterInfo]:
+    """The catalog's parameter list, read from the request model's JSON schema."""
+    properties: dict[str, Any] = model.model_json_schema()["properties"]
+    infos = []
+    for name, schema in properties.items():
+        schema = dict(schema)
+        description = schema.pop("description", "")
+        domain = schema.pop("domain", None)
+        schema.pop("title", None)
+        infos.append(
+            ParameterInfo(
+                name=name,
+                description=description,
+                kind="common" if name in COMMON_FIELDS else "paper",
+                domain=domain,
+                default=schema.get("default"),
+                json_schema=schema,
+            )
+        )
+    return infos
+
+
+def catalog_entry(entry: Discretization) -> DiscretizationEntry:
+    info = entry.info
+    return DiscretizationEntry(
+        id=info.id,
+        title=info.title,
+        reference=info.reference,
+        summary=info.summary,
+        url=f"/discretizations/{info.id}",
+        default_range=info.default_range,
+        methods=list(info.methods),
+        parameters=parameter_infos(entry.query),
+        companions=info.companions,
+        constants=info.constants,
+        statements=[s.id for s in info.statements],
+    )
+
+
+@router.get(
+    "",
+    summary="List the discretizations",
+    description="Every discretization of the paper the service computes, with its paper "
+    "reference, parameters (domains, defaults), companions, constants and checked statements.",
+    response_model=list[DiscretizationEntry],
+)
+def list_discretizations() -> list[DiscretizationEntry]:
+    return [catalog_entry(entry) for entry in DISCRETIZATIONS.values()]
+
+
+CURVE_RESPONSES: dict[int | str, dict[str, Any]] = {
+    200: {
+        "content": {
+            "text/csv": {
+                "schema": {"type": "string"},
+                "example": "curve,index,x,y\np,0,-0.1,1.0\np,1,0.1,1.0\n",
+            }
+        },
+        "description": "The curve as JSON (default) or CSV (`format=csv`). GET responses carry "
+        "an ETag and Cache-Control; a matching If-None-Match gets 304.",
+    },
+    304: {"description": "Not modified (the If-None-Match ETag matches)."},
+    **PROBLEM_RESPONSES,
+}
+
+
+def _register(entry: Discretization) -> None:
+    """Add GET and POST /discretizations/{id} for one discretization."""
+    model = entry.query
+    identifier = entry.info.id
+
+    def get_curve(request: Request, query: Annotated[model, Query()]) -> Response:  # type: ignore[valid-type]
+        parsed: CurveQuery = query
+        settings = settings_of(request)
+        return cached(
+            request,
+            canonical_key(request.url.path, parsed.model_dump()),
+            settings,
+            lambda: curve_response(compute(entry, parsed, settings), parsed.format),
+        )
+
+    def post_curve(request: Request, query: model) -> Response:  # type: ignore[valid-type]
+        parsed: CurveQuery = query
+        return curve_response(compute(entry, parsed, settings_of(request)), parsed.format)
+
+    common = {
+        "response_model": CurveResponse,
+        "responses": CURVE_RESPONSES,
+        "description": entry.description,
+    }
+    router.add_api_route(
+        f"/{identifier}",
+        get_curve,
+        methods=["GET"],
+        summary=f"{entry.info.title}",
+        operation_id=f"get_{identifier.replace('-', '_')}",
+        dependencies=[Depends(reject_repeated_parameters)],
+        **common,  # type: ignore[arg-type]
+    )
+    router.add_api_route(
+        f"/{identifier}",
+        post_curve,
+        methods=["POST"],
+        summary=f"{entry.info.title} (JSON body)",
+        operation_id=f"post_{identifier.replace('-', '_')}",
+        **common,  # type: ignore[arg-type]
+    )
+
+
+for _entry in DISCRETIZATIONS.values():
+    _register(_entry)
+
+
+@router.api_route(
+    "/{identifier}", methods=["GET", "POST"], include_in_schema=False, responses=NOT_FOUND_RESPONSE
+)
+def unknown_discretization(identifier: str) -> Response:
+    raise UnknownIdError("discretization", identifier, sorted(DISCRETIZATIONS))

@@ -1,0 +1,79 @@
+"""Shared request models and the problem+json error document."""
+
+from __future__ import annotations
+
+from typing import Any, Literal
+
+from pydantic import BaseModel, ConfigDict, Field
+
+
+class StrictModel(BaseModel):
+    """Base of every request model: unknown fields and NaN/Infinity are rejected."""
+
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
+
+
+class CurveQuery(StrictModel):
+    """Parameters every curve endpoint accepts; subclasses add the paper's parameters."""
+
+    precision: Literal["float64", "mp"] = Field(
+        "float64",
+        description="`float64`: IEEE doubles with numpy, coordinates as JSON numbers. `mp`: "
+        "mpmath with `digits` significant digits, coordinates as decimal strings.",
+    )
+    digits: int = Field(
+        30,
+        ge=1,
+        le=100_000,
+        description="Significant digits for precision=mp (at most DCOSH_MAX_DIGITS, default "
+        "1000; digits × steps is bounded by DCOSH_MAX_MP_WORK). Ignored in float64.",
+    )
+    format: Literal["json", "csv"] = Field(
+        "json",
+        description="`json` (default) or `csv` (columns curve,index,x,y: the polygon `p` "
+        "followed by each companion).",
+    )
+    detail: bool = Field(
+        False, description="Fill each check's `per_index` with the residual at every index."
+    )
+
+    def core_arguments(self) -> dict[str, Any]:
+        """The keyword arguments of the core's ``compute`` (the paper's parameters)."""
+        return self.model_dump(exclude={"precision", "digits", "format"})
+
+
+class ProblemParameterError(BaseModel):
+    """One offending parameter of a problem+json response."""
+
+    parameter: str = Field(description="Public name of the parameter, e.g. `d` or `i_max`.")
+    constraint: str = Field(description="The condition it must satisfy, e.g. `0 < d < h`.")
+    value: Any = Field(None, description="The value received (as sent, or null if absent).")
+
+
+class Problem(BaseModel):
+    """RFC 9457 problem details, with the offending parameters in `errors`."""
+
+    type: str = Field(description="URI reference identifying the problem type.")
+    title: str = Field(description="Short summary of the problem type.")
+    status: int = Field(description="HTTP status code.")
+    detail: str = Field(description="What went wrong with this request, in words.")
+    errors: list[ProblemParameterError] = Field(
+        default_factory=list, description="The parameters at fault, each with its constraint."
+    )
+    valid: list[str] | None = Field(None, description="For unknown ids: the ids that exist.")
+
+
+PROBLEM_RESPONSES: dict[int | str, dict[str, Any]] = {
+    422: {
+        "model": Problem,
+        "content": {"application/problem+json": {}},
+        "description": "Invalid, out-of-domain or oversize input (names the parameter).",
+    },
+}
+NOT_FOUND_RESPONSE: dict[int | str, dict[str, Any]] = {
+    404: {
+        "model": Problem,
+        "content": {"application/problem+json": {}},
+        "description": "Unknown id; `valid` lists the ids that exist.",
+    },
+}

@@ -1,0 +1,43 @@
+"""Service settings: limits and CORS origins, read from DCOSH_* environment variables."""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+from pydantic import Field
+from pydantic_settings import BaseSettings, SettingsConfigDict
+
+
+class Settings(BaseSettings):
+    """Every limit here is checked before any computation starts (see app/limits.py)."""
+
+    model_config = SettingsConfigDict(env_prefix="DCOSH_", extra="ignore")
+
+    max_vertices: int = Field(
+        1_000_001, ge=1, description="Most vertices of one polygon (i_max − i_min + 1)."
+    )
+    max_construction_steps: int = Field(
+        2_000_000,
+        ge=1,
+        description="Most recursion steps of a construction (constructions start at index 0 and "
+        "walk to i_min and i_max).",
+    )
+    max_digits: int = Field(1000, ge=1, description="Most significant digits in precision=mp.")
+    max_mp_work: int = Field(
+        400_000,
+        ge=1,
+        description="Most digits × steps in precision=mp (the cost of mp grows with both).",
+    )
+    cors_origins: list[str] = Field(
+        default_factory=lambda: ["*"],
+        description="Origins allowed to call the API from a browser (JSON list; ['*'] for any).",
+    )
+    cache_max_age: int = Field(
+        86_400, ge=0, description="Cache-Control max-age of computational GETs, in seconds."
+    )
+
+
+@lru_cache(maxsize=1)
+def get_settings() -> Settings:
+    """The settings of this process (read once from the environment)."""
+    return Settings()

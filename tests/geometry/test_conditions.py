@@ -1,0 +1,53 @@
+"""(D1), (D3), eq. (2) residuals and fitted constants on hand-made polygons."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from app.geometry import conditions
+from app.geometry.polygon import edge_lengths, second_difference, signed_areas
+from app.geometry.precision import Float64
+
+
+def test_polygon_quantities_by_hand(float64: Float64) -> None:
+    p = np.array([[0.0, 1.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]])
+    np.testing.assert_allclose(second_difference(p[:, 1]), [-1.0, -2.0])
+    np.testing.assert_allclose(edge_lengths(float64, p), [np.sqrt(2), 2.0, np.sqrt(5)])
+    np.testing.assert_allclose(signed_areas(p), [1.5, 4.0, 1.0])
+    # an edge running backwards has negative area
+    assert signed_areas(p[::-1])[0] == pytest.approx(-1.0)
+
+
+def test_d3_fit_finds_the_constant_of_a_horizontal_line(float64: Float64) -> None:
+    p = np.column_stack([np.linspace(-1, 2, 7), np.full(7, 0.75)])
+    fit = conditions.d3(float64, p)
+    assert fit.constant == pytest.approx(0.75, rel=1e-15)
+    assert np.max(fit.residuals) < 1e-15
+
+
+def test_d1_on_a_polygon_built_to_satisfy_it(float64: Float64) -> None:
+    # choose y by (D1) itself: y_{i+2} solves Δ²y_i = c(l_i + l_{i+1}) for constant spacing
+    c, dx = 0.2, 0.5
+    y = [1.0, 1.1]
+    for _ in range(8):
+        y0, y1 = y[-2], y[-1]
+        l0 = np.hypot(dx, y1 - y0)
+        # y2 − 2y1 + y0 = c(l0 + sqrt(dx² + (y2 − y1)²)): solve the quadratic for t = y2 − y1
+        a, b = 1 - c * c, -2 * (y1 - y0 + c * l0)
+        k = (y1 - y0 + c * l0) ** 2 - c * c * dx * dx
+        t = (-b + np.sqrt(b * b - 4 * a * k)) / (2 * a)
+        y.append(y1 + t)
+    p = np.column_stack([dx * np.arange(len(y)), y])
+    fit = conditions.d1(float64, p)
+    assert fit.constant == pytest.approx(c, rel=1e-12)
+    assert np.max(fit.residuals) < 1e-14
+    assert np.max(conditions.d3(float64, p).residuals) > 1e-4  # (D1) does not imply (D3)
+
+
+def test_a_small_perturbation_is_far_above_the_float64_tolerance(float64: Float64) -> None:
+    p = np.column_stack([np.linspace(-1, 1, 9), np.full(9, 2.0)])
+    assert np.max(conditions.d3(float64, p).residuals) < float64.tolerance(16)
+    p[4, 1] *= 1 + 1e-6
+    # residuals are relative to the coordinates' magnitude (|y| = 2 against a spacing of 0.25)
+    assert np.max(conditions.d3(float64, p).residuals) > 1e4 * float64.tolerance(16)

@@ -1,0 +1,63 @@
+"""The core imports numpy, mpmath and the standard library only (brief: pure core)."""
+
+from __future__ import annotations
+
+import ast
+import sys
+from pathlib import Path
+
+CORE = Path(__file__).resolve().parents[1] / "app" / "geometry"
+ALLOWED = {"numpy", "mpmath", "app"}
+
+
+def imported_modules(path: Path) -> set[str]:
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    names: set[str] = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            names.update(alias.name for alias in node.names)
+        elif isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
+            names.add(node.module)
+    return names
+
+
+def test_core_imports_only_numpy_mpmath_and_the_standard_library() -> None:
+    files = sorted(CORE.rglob("*.py"))
+    assert files
+    for path in files:
+        for name in imported_modules(path):
+            top = name.split(".")[0]
+            if top == "app":
+                assert name.startswith("app.geometry"), f"{path.name} imports {name}"
+            else:
+                assert top in ALLOWED or top in sys.stdlib_module_names, f"{path.name}: {name}"
+
+
+IO_MODULES = {
+    "os",
+    "io",
+    "pathlib",
+    "logging",
+    "sys",
+    "socket",
+    "subprocess",
+    "shutil",
+    "tempfile",
+    "urllib",
+    "http",
+    "json",
+    "pickle",
+}
+IO_CALLS = {"open", "print", "input", "eval", "exec"}
+
+
+def test_core_does_no_io_and_evaluates_nothing() -> None:
+    for path in CORE.rglob("*.py"):
+        assert not {m.split(".")[0] for m in imported_modules(path)} & IO_MODULES, path.name
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        calls = {
+            node.func.id
+            for node in ast.walk(tree)
+            if isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
+        }
+        assert not calls & IO_CALLS, f"{path.name} calls {calls & IO_CALLS}"
