@@ -4,6 +4,11 @@ from __future__ import annotations
 
 from app.settings import Settings
 
+#: The cost of an mp step grows like (digits + this): below ~200 digits the Python overhead of
+#: each mpmath operation dominates (measured: 1000 D4b vertices take 0.5 s at 50 digits and
+#: 1.4 s at 1000 digits with the gmpy2 backend).
+MP_OVERHEAD_DIGITS = 200
+
 
 class LimitExceededError(ValueError):
     """A request asks for more work than the configured limits allow (a 422, not a 500)."""
@@ -46,11 +51,11 @@ def enforce_range(
             )
     if precision == "mp":
         enforce_digits(settings, digits)
-        if digits * steps > settings.max_mp_work:
+        if (digits + MP_OVERHEAD_DIGITS) * steps > settings.max_mp_work:
             raise LimitExceededError(
                 "digits",
-                f"digits × steps <= {settings.max_mp_work} in precision=mp "
-                f"(this range needs {steps} steps)",
+                f"(digits + {MP_OVERHEAD_DIGITS}) × steps <= {settings.max_mp_work} in "
+                f"precision=mp (this range needs {steps} steps)",
                 digits,
             )
 

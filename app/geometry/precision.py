@@ -160,6 +160,7 @@ class MultiPrecision(Arithmetic):
         self.ctx = mpmath.MPContext()
         self.ctx.dps = digits + GUARD_DIGITS
         ctx = self.ctx
+        ctx.npconvert = _array_aware_npconvert(ctx.npconvert)
         self.exp = _elementwise(ctx.exp)
         self.log = _elementwise(ctx.log)
         self.sqrt = _elementwise(ctx.sqrt)
@@ -203,6 +204,22 @@ class MultiPrecision(Arithmetic):
         nstr = self.ctx.nstr
         digits = self.digits
         return [nstr(v, digits) for v in values]
+
+
+def _array_aware_npconvert(convert: Callable[[Any], Any]) -> Callable[[Any], Any]:
+    """mpmath's numpy conversion, refusing arrays at once.
+
+    ``mpf * array`` asks mpmath to convert the array first; mpmath refuses with a TypeError whose
+    message holds the repr of the whole array (formatting every entry) before numpy takes over
+    elementwise. Refusing without the repr keeps ``scalar * array`` O(n) arithmetic only.
+    """
+
+    def npconvert(x: Any) -> Any:
+        if isinstance(x, np.ndarray) and x.ndim > 0:
+            raise TypeError("cannot create mpf from an array")
+        return convert(x)
+
+    return npconvert
 
 
 def _elementwise(function: Callable[..., Any], arity: int = 1) -> Callable[..., Any]:

@@ -26,7 +26,7 @@ class CurveQuery(StrictModel):
         ge=1,
         le=100_000,
         description="Significant digits for precision=mp (at most DCOSH_MAX_DIGITS, default "
-        "1000; digits × steps is bounded by DCOSH_MAX_MP_WORK). Ignored in float64.",
+        "1000; (digits + 200) × steps is bounded by DCOSH_MAX_MP_WORK). Ignored in float64.",
     )
     format: Literal["json", "csv"] = Field(
         "json",

@@ -41,7 +41,11 @@ def problem(response, status: int) -> dict:
         ("format=xml", "format", "format is one of"),
         ("digits=0&precision=mp", "digits", "digits >= 1"),
         ("digits=5000&precision=mp", "digits", "1 <= digits <= 1000"),
-        ("precision=mp&digits=1000&i_min=-300&i_max=300", "digits", "digits × steps <= 400000"),
+        (
+            "precision=mp&digits=1000&i_min=-500&i_max=500",
+            "digits",
+            "(digits + 200) × steps <= 1000000",
+        ),
         ("i_min=-600000&i_max=600000", "i_max", "i_max − i_min + 1 <= 1000001"),
         ("method=construction&i_min=3000000&i_max=3000001", "i_max", "method=construction"),
         ("color=red", "color", "not a parameter of this endpoint"),
