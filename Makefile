@@ -8,7 +8,7 @@ PORT ?= 8000
 WORKERS ?= 1
 PYTEST_ARGS ?=
 
-.PHONY: run test lint openapi bench install install-dev clean
+.PHONY: run test lint openapi bench fuzz install install-dev clean
 
 # The runtime install: a virtual environment with every package pinned in requirements/runtime.txt.
 $(BIN)/.runtime-installed: requirements/runtime.txt pyproject.toml
@@ -40,6 +40,10 @@ lint: $(BIN)/.dev-installed
 
 openapi: $(BIN)/.runtime-installed
 	$(BIN)/python -m app.openapi_export openapi/openapi.json
+
+# A long schema-fuzzing run: thousands of generated requests per operation.
+fuzz: $(BIN)/.dev-installed
+	FUZZ_EXAMPLES=$${FUZZ_EXAMPLES:-3000} $(BIN)/python -m pytest -q -p no:randomly tests/api/test_fuzz.py
 
 bench: $(BIN)/.dev-installed
 	$(BIN)/python bench/run.py

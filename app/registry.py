@@ -8,15 +8,16 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
+from functools import cached_property
 
 from app.geometry.checks import Statement
 from app.geometry.curve import Curve, DiscretizationInfo
 from app.geometry.discretizations import d4b
-from app.schemas.common import CurveQuery
+from app.schemas.common import CurveQuery, strict_body
 from app.schemas.d4b import D4B_DESCRIPTION, D4bQuery
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Discretization:
     """One discretization as the API serves it."""
 
@@ -24,6 +25,11 @@ class Discretization:
     query: type[CurveQuery]
     compute: Callable[..., Curve]
     description: str
+
+    @cached_property
+    def body(self) -> type[CurveQuery]:
+        """The strict JSON-body model of ``query`` (POST)."""
+        return strict_body(self.query)
 
 
 _ENTRIES = (Discretization(d4b.INFO, D4bQuery, d4b.compute, D4B_DESCRIPTION),)

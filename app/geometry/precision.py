@@ -46,6 +46,8 @@ class Arithmetic:
     digits: int
     eps: float
     """Unit of the *requested* precision: 2**-52 in float64, 10**-digits in mp."""
+    working_eps: float
+    """Unit of the precision actually computed with (mp carries guard digits)."""
 
     def scalar(self, value: float | int | str) -> Scalar:
         """One number in this precision; floats are read as their shortest decimal."""
@@ -109,6 +111,7 @@ class Float64(Arithmetic):
     mode: PrecisionMode = "float64"
     digits = 16
     eps = float(np.finfo(np.float64).eps)
+    working_eps = eps
 
     exp = staticmethod(np.exp)
     log = staticmethod(np.log)
@@ -157,6 +160,7 @@ class MultiPrecision(Arithmetic):
             raise DomainError("digits", "digits >= 1", digits)
         self.digits = digits
         self.eps = 10.0 ** (-digits)
+        self.working_eps = 10.0 ** (-digits - GUARD_DIGITS)
         self.ctx = mpmath.MPContext()
         self.ctx.dps = digits + GUARD_DIGITS
         ctx = self.ctx

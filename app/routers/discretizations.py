@@ -117,7 +117,7 @@ def _with_example(responses: dict[int | str, dict[str, Any]], example: Any) -> d
 
 def _register(entry: Discretization) -> None:
     """Add GET and POST /discretizations/{id} for one discretization."""
-    model = entry.query
+    model, body = entry.query, entry.body
     identifier = entry.info.id
 
     def get_curve(request: Request, query: Annotated[model, Query()]) -> Response:  # type: ignore[valid-type]
@@ -130,7 +130,7 @@ def _register(entry: Discretization) -> None:
             lambda: curve_response(compute(entry, parsed, settings), parsed.format),
         )
 
-    def post_curve(request: Request, query: model) -> Response:  # type: ignore[valid-type]
+    def post_curve(request: Request, query: body) -> Response:  # type: ignore[valid-type]
         parsed: CurveQuery = query
         return curve_response(compute(entry, parsed, settings_of(request)), parsed.format)
 

@@ -42,6 +42,18 @@ class CurveQuery(StrictModel):
         return self.model_dump(exclude={"precision", "digits", "format"})
 
 
+def strict_body(model: type[CurveQuery]) -> type[CurveQuery]:
+    """The JSON-body variant of a request model: the same fields, validated strictly.
+
+    Query strings are text and must be parsed leniently ("0.3" is a number); a JSON body has real
+    types, so `false` is not an integer and `"1"` is not a number there.
+    """
+    name = model.__name__.removesuffix("Query") + "Body"
+    config = ConfigDict(**{**model.model_config, "strict": True})
+    namespace = {"model_config": config, "__doc__": model.__doc__, "__module__": model.__module__}
+    return type(name, (model,), namespace)
+
+
 class ProblemParameterError(BaseModel):
     """One offending parameter of a problem+json response."""
 

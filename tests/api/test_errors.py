@@ -35,7 +35,9 @@ def problem(response, status: int) -> dict:
         ("i_min=5&i_max=4", "i_max", "i_min <= i_max"),
         ("i_max=20000000", "i_max", "i_max <= 10000000"),
         ("d=0.5&i_max=400", "i_max", "|i_max| <= 312 in float64"),
-        ("d=1e-9", "d", "d/h >= 1e-06 in float64"),
+        ("d=1e-9", "d", "d/h >= 1.5e-06 in float64"),
+        ("d=1e-30&precision=mp&digits=30", "d", "d/h >= 1e-18 in mp with 30 digits"),
+        ("=1", "(empty name)", "not a parameter of this endpoint"),
         ("precision=quad", "precision", "precision is one of 'float64' or 'mp'"),
         ("method=guess", "method", "method is one of"),
         ("format=xml", "format", "format is one of"),
@@ -77,6 +79,20 @@ def test_bad_post_body_is_a_422(client: TestClient) -> None:
         ),
         422,
     )
+
+
+def test_unreadable_bodies_and_huge_integers_are_422(client: TestClient) -> None:
+    headers = {"content-type": "application/json"}
+    body = problem(
+        client.post("/discretizations/d4b", content=b"o\xdf\x87\xff", headers=headers), 422
+    )
+    assert body["errors"][0]["parameter"] == "body"
+    body = problem(client.post("/discretizations/d4b", json={"digits": 2**64}), 422)
+    assert body["errors"][0] == {
+        "parameter": "digits",
+        "constraint": "digits <= 100000",
+        "value": str(2**64),
+    }
 
 
 def test_unknown_ids_are_404_listing_the_valid_ones(client: TestClient) -> None:
