@@ -8,7 +8,7 @@ PORT ?= 8000
 WORKERS ?= 1
 PYTEST_ARGS ?=
 
-.PHONY: run test lint openapi bench fuzz install install-dev clean
+.PHONY: run test lint openapi bench fuzz load install install-dev clean
 
 # The runtime install: a virtual environment with every package pinned in requirements/runtime.txt.
 $(BIN)/.runtime-installed: requirements/runtime.txt pyproject.toml
@@ -27,8 +27,12 @@ $(BIN)/.dev-installed: $(BIN)/.runtime-installed requirements/dev.txt
 install: $(BIN)/.runtime-installed
 install-dev: $(BIN)/.dev-installed
 
+# glibc malloc: few arenas and a fixed mmap threshold, so that the large numpy buffers of big
+# responses go back to the system after each request (bench/load.py measures it).
+SERVER_ENV := MALLOC_ARENA_MAX=2 MALLOC_MMAP_THRESHOLD_=131072
+
 run: $(BIN)/.runtime-installed
-	$(BIN)/python -m uvicorn app.main:app --host $(HOST) --port $(PORT) --workers $(WORKERS)
+	$(SERVER_ENV) $(BIN)/python -m uvicorn app.main:app --host $(HOST) --port $(PORT) --workers $(WORKERS)
 
 test: $(BIN)/.dev-installed
 	$(BIN)/python -m pytest $(PYTEST_ARGS)
@@ -43,7 +47,11 @@ openapi: $(BIN)/.runtime-installed
 
 # A long schema-fuzzing run: thousands of generated requests per operation.
 fuzz: $(BIN)/.dev-installed
-	FUZZ_EXAMPLES=$${FUZZ_EXAMPLES:-3000} $(BIN)/python -m pytest -q -p no:randomly tests/api/test_fuzz.py
+	FUZZ_EXAMPLES=$${FUZZ_EXAMPLES:-3000} $(BIN)/python -m pytest -q tests/api/test_fuzz.py
+
+# A bounded load run on 127.0.0.1: errors, latency percentiles, server memory.
+load: $(BIN)/.dev-installed
+	$(BIN)/python bench/load.py
 
 bench: $(BIN)/.dev-installed
 	$(BIN)/python bench/run.py
