@@ -32,7 +32,7 @@ FLOAT64_F_LIMIT = 1e50
 
 #: Below this relative gap between consecutive f_i the Gauss image edges are differences of
 #: nearly equal points and float64 loses most digits (error about 1e-16/gap); use precision=mp.
-FLOAT64_MIN_GAP = 1e-6
+FLOAT64_MIN_GAP = 1e-4
 
 SHARED_D1 = Statement(
     "d1",
@@ -64,10 +64,18 @@ class Context:
         indices: np.ndarray[Any, np.dtype[np.int64]],
         steps: int,
         detail: bool,
+        gap: Scalar,
     ) -> None:
+        """``gap``: the smallest relative gap (f_{i+1} − f_i)/f_{i+1} of the parameter line.
+
+        The Gauss image edges are differences of points whose relative distance is about the gap,
+        so every quantity derived from them carries rounding of about eps/gap: the tolerances
+        are the core's ``Arithmetic.tolerance`` times this conditioning factor 1/gap.
+        """
         self.ar, self.indices, self.detail = ar, indices, detail
-        self.local = ar.tolerance(LOCAL_STEPS)
-        self.summed = ar.tolerance(max(steps, LOCAL_STEPS))
+        conditioning = max(1.0, 1 / ar.to_float(gap))
+        self.local = ar.tolerance(LOCAL_STEPS) * conditioning
+        self.summed = ar.tolerance(max(steps, LOCAL_STEPS)) * conditioning
 
     def check(
         self,

@@ -40,8 +40,8 @@ THEOREM_2 = S(
     "Δ²p_i^y = c_1 A_i + c_2 A_{i+1} (i even), c_2 A_i + c_1 A_{i+1} (i odd) with constants "
     "c_1, c_2 (constants.c1, c2: least squares) equal to those of (11) (constants.c1_eq11, "
     "c2_eq11). True exactly for r = r* (constants.r_theorem_2); for any other r (7) fails. "
-    "Residual: the larger of the fit residual (relative to the magnitude of the coordinates) and "
-    "|c − c_(11)| / (|c_1| + |c_2|) for both constants.",
+    "Residual: the larger of the residuals of (7) with the fitted constants and with those of "
+    "(11), each relative to the magnitude of the coordinates it is computed from.",
 )
 START_HEIGHT = S(
     "theorem-2-start-height",
@@ -164,8 +164,8 @@ def evaluate(
     n = len(data.p)
     indices = np.arange(data.i_min, data.i_min + n, dtype=np.int64)
     steps = max(abs(data.i_min), abs(data.i_min + n - 1)) + 1
-    ctx = Context(ar, indices, steps, detail)
     a, b, lam = data.a, data.b, data.lam
+    ctx = Context(ar, indices, steps, detail, smallest_gap(a, b, lam))
     c11 = cf.theorem_2_constants(a, b, lam)
     r_star = cf.theorem_2_radius(a, b, lam)
     fit = conditions.equation_7(ar, data.p, data.i_min)
@@ -288,11 +288,8 @@ def _theorem_2(
 ) -> Check:
     if fit.constants is None:
         return not_applicable(THEOREM_2, ctx.summed, "needs five vertices (two equations)")
-    c1, c2 = fit.constants
-    size = abs(c11[0]) + abs(c11[1])
-    mismatch = max(abs(c1 - c11[0]), abs(c2 - c11[1])) / size
-    residuals = np.maximum(fit.residuals, mismatch)
-    return ctx.check(THEOREM_2, 0, residuals, note=note)
+    with_11 = equation_7_residuals(ctx.ar, data.p, data.i_min, *c11)
+    return ctx.check(THEOREM_2, 0, np.maximum(fit.residuals, with_11), note=note)
 
 
 def _start_height(
@@ -351,6 +348,13 @@ def _theorem_3(ctx: Context, data: HexPolygons) -> list[Check]:
     return checks
 
 
+def smallest_gap(a: Scalar, b: Scalar, lam: Scalar) -> Scalar:
+    """The smallest relative gap (f_{i+1} − f_i)/f_{i+1} of the hexagonal parameter line."""
+    s = b / a
+    u = 1 + lam * (s - 1)  # f_{2k+1}/f_{2k}
+    return min((u - 1) / u, (s - u) / s)
+
+
 def _require_float64_representable(a: float, b: float, lam: float, i_min: int, i_max: int) -> None:
     """Refuse, before computing, parameters that float64 cannot resolve or represent."""
     gap = (b - a) / b
@@ -361,9 +365,7 @@ def _require_float64_representable(a: float, b: float, lam: float, i_min: int, i
             b,
             "nearly equal f_i give Gauss image edges below float64 resolution; use precision=mp",
         )
-    s = b / a
-    u = 1 + lam * (s - 1)  # f_{2k+1}/f_{2k}
-    if (u - 1) / u < FLOAT64_MIN_GAP or (s - u) / s < FLOAT64_MIN_GAP:
+    if smallest_gap(a, b, lam) < FLOAT64_MIN_GAP:
         raise NotRepresentableError(
             "lambda",
             f"λ(b − a)/f_1 >= {FLOAT64_MIN_GAP:g} and (1 − λ)(b − a)/b >= {FLOAT64_MIN_GAP:g} "

@@ -41,8 +41,9 @@ THEOREM_1 = S(
     "Δ²p_i^y = c (A_i + A_{i+1}) with one constant c (constants.eq2, least squares) equal to "
     "4(f_1 − f_0)³/(f_0 + f_1)³ > 0 (constants.c_theorem_1; the printed c has the wrong sign, "
     "E42). True exactly for r = r* (constants.r_theorem_1): for any other r the polygon is the "
-    "same one moved vertically, and (2) fails. Residual: the larger of the fit residual "
-    "(relative to the magnitude of the coordinates, docs/checks.md) and |c − c_theorem_1|/c.",
+    "same one moved vertically, and (2) fails. Residual: the larger of the residuals of (2) with "
+    "the fitted c and with c_theorem_1, each relative to the magnitude of the coordinates it is "
+    "computed from (docs/checks.md).",
 )
 START_HEIGHT = S(
     "theorem-1-start-height",
@@ -198,7 +199,7 @@ def evaluate(
     n = len(data.p)
     indices = np.arange(data.i_min, data.i_min + n, dtype=np.int64)
     steps = max(abs(data.i_min), abs(data.i_min + n - 1)) + 1
-    ctx = Context(ar, indices, steps, detail)
+    ctx = Context(ar, indices, steps, detail, (data.f1 - data.f0) / data.f1)
     c_proof = cf.theorem_1_constant(data.f0, data.f1)
     r_star = cf.theorem_1_radius(data.f0, data.f1)
     fit = conditions.equation_2(ar, data.p)
@@ -296,15 +297,14 @@ def _special_note(ar: Arithmetic, data: QuadPolygons, special: bool) -> str | No
 def _theorem_1(
     ctx: Context, data: QuadPolygons, fit: conditions.ConditionFit, c_proof: Scalar, special: bool
 ) -> Check:
+    """(2) with a fitted c; it must also hold with the proof's c (so a short range cannot fit)."""
     ar = ctx.ar
-    residuals = fit.residuals
-    if fit.constant is not None and len(residuals):
-        residuals = np.maximum(residuals, abs(fit.constant - c_proof) / abs(c_proof))
-    printed_residuals = ar.array([])
-    if fit.constant is not None and len(fit.residuals):
-        printed = cf.theorem_1_constant_printed(data.f0, data.f1)
-        printed_residuals = np.maximum(fit.residuals, abs(fit.constant - printed) / abs(printed))
-    erratum = ctx.erratum(ERRATUM_CONSTANT, printed_residuals)
+    if len(data.p) < 3:
+        return not_enough(ctx, THEOREM_1, "three vertices")
+    residuals = np.maximum(fit.residuals, _equation_2_residuals(ar, data.p, c_proof))
+    printed_c = cf.theorem_1_constant_printed(data.f0, data.f1)
+    printed = np.maximum(fit.residuals, _equation_2_residuals(ar, data.p, printed_c))
+    erratum = ctx.erratum(ERRATUM_CONSTANT, printed)
     return ctx.check(THEOREM_1, 0, residuals, erratum, note=_special_note(ar, data, special))
 
 
