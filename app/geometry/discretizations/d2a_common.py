@@ -22,8 +22,8 @@ from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array, Scalar
 
 #: Local checks combine a handful of neighbouring values; their tolerance allows this many
-#: rounding steps. Checks that compare vertices with closed forms allow the number of edges
-#: summed from p_0 instead (rounding grows along the cumulative sum).
+#: rounding steps. Checks that compare vertices with closed forms add the number of edges
+#: summed from p_0 (rounding grows along the cumulative sum).
 LOCAL_STEPS = 16
 
 #: In float64 every f_i and 1/f_i stays below this bound, so that the printed formulas (which
@@ -69,13 +69,15 @@ class Context:
         """``gap``: the smallest relative gap (f_{i+1} − f_i)/f_{i+1} of the parameter line.
 
         The Gauss image edges are differences of points whose relative distance is about the gap,
-        so every quantity derived from them carries rounding of about eps/gap: the tolerances
-        are the core's ``Arithmetic.tolerance`` times this conditioning factor 1/gap.
+        so every quantity derived from them carries rounding of about eps/gap: the local
+        tolerance is the core's ``Arithmetic.tolerance(16)`` times this conditioning factor 1/gap.
+        Comparisons of vertices with closed forms add ``Arithmetic.tolerance(steps)`` for the
+        rounding accumulated along the cumulative sum from p_0.
         """
         self.ar, self.indices, self.detail = ar, indices, detail
         conditioning = max(1.0, 1 / ar.to_float(gap))
         self.local = ar.tolerance(LOCAL_STEPS) * conditioning
-        self.summed = ar.tolerance(max(steps, LOCAL_STEPS)) * conditioning
+        self.summed = ar.tolerance(steps) + self.local
 
     def check(
         self,
@@ -83,7 +85,7 @@ class Context:
         first: int,
         residuals: Array,
         erratum: Erratum | None = None,
-        summed: bool = True,
+        summed: bool = False,
         note: str | None = None,
         at: np.ndarray[Any, np.dtype[np.int64]] | None = None,
     ) -> Check:

@@ -344,7 +344,7 @@ def _theorem_3(ctx: Context, data: HexPolygons) -> list[Check]:
                 printed_y = cf.theorem_3_y_even_printed(a, b, lam, r, i)
             printed = scaled_point_difference(ar, p[mask], stack_points(x, printed_y), zero)
             erratum = ctx.erratum(ERRATUM_EVEN, printed)
-        checks.append(ctx.check(statement, 0, residuals, erratum, at=at))
+        checks.append(ctx.check(statement, 0, residuals, erratum, summed=True, at=at))
     return checks
 
 

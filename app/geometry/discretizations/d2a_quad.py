@@ -336,11 +336,11 @@ def _gauss_checks(ctx: Context, data: QuadPolygons) -> list[Check]:
     formula = cf.quad_gauss_edge(f_prev, f_cur)
     zero = ar.zeros(len(f_cur))
     edge = ctx.check(
-        GAUSS_EDGE, 1, scaled_point_difference(ar, edges, formula, zero), summed=False
+        GAUSS_EDGE, 1, scaled_point_difference(ar, edges, formula, zero)
     )
     norm = edges[:, 0] * edges[:, 0] + edges[:, 1] * edges[:, 1]
     expected = cf.quad_gauss_edge_norm_squared(f_prev, f_cur)
-    return [edge, ctx.check(GAUSS_NORM, 1, scaled_difference(ar, norm, expected, zero), summed=False)]
+    return [edge, ctx.check(GAUSS_NORM, 1, scaled_difference(ar, norm, expected, zero))]
 
 
 def _dual_edge(ctx: Context, data: QuadPolygons) -> Check:
@@ -349,7 +349,7 @@ def _dual_edge(ctx: Context, data: QuadPolygons) -> Check:
     p = data.p
     formula = cf.quad_dual_edge(data.f[:-1], data.f[1:])
     residuals = scaled_point_difference(ctx.ar, p[1:] - p[:-1], formula, vertex_magnitude(p[:-1], p[1:]))
-    return ctx.check(DUAL_EDGE, 1, residuals, summed=False)
+    return ctx.check(DUAL_EDGE, 1, residuals)
 
 
 def _x_step(ctx: Context, data: QuadPolygons) -> Check:
@@ -366,7 +366,7 @@ def _x_step(ctx: Context, data: QuadPolygons) -> Check:
         scaled_difference(ar, steps, np.full_like(steps, d), size),
     )
     printed = scaled_difference(ar, steps, cf.quad_x_step_printed(f_prev, f_cur), size)
-    return ctx.check(X_STEP, 1, residuals, ctx.erratum(ERRATUM_X_STEP, printed), summed=False)
+    return ctx.check(X_STEP, 1, residuals, ctx.erratum(ERRATUM_X_STEP, printed))
 
 
 def _second_difference(ctx: Context, data: QuadPolygons) -> Check:
@@ -379,7 +379,7 @@ def _second_difference(ctx: Context, data: QuadPolygons) -> Check:
     residuals = scaled_point_difference(ar, second, cf.quad_second_difference(f_cur), size)
     printed = scaled_point_difference(ar, second, cf.quad_second_difference_printed(f_cur), size)
     erratum = ctx.erratum(ERRATUM_SECOND_DIFFERENCE, printed)
-    return ctx.check(SECOND_DIFFERENCE, 1, residuals, erratum, summed=False)
+    return ctx.check(SECOND_DIFFERENCE, 1, residuals, erratum)
 
 
 def _heights(ctx: Context, data: QuadPolygons, special: bool) -> list[Check]:
@@ -390,13 +390,15 @@ def _heights(ctx: Context, data: QuadPolygons, special: bool) -> list[Check]:
     else:
         # (5) names p_{i−1}^y; residual k belongs to the vertex i_min + k
         expected = cf.quad_equation_5(f[:-1], f[1:])
-        five = ctx.check(EQUATION_5, 0, scaled_difference(ar, y[:-1], expected, 0 * expected), note=note)
+        five = ctx.check(
+            EQUATION_5, 0, scaled_difference(ar, y[:-1], expected, 0 * expected), summed=True, note=note
+        )
     if len(f) < 3:
         return [five, not_enough(ctx, HEIGHTS, "three vertices")]
     f_prev, f_cur = f[:-2], f[1:-1]
     current = scaled_difference(ar, y[1:-1], cf.quad_height_next(f_prev, f_cur), 0 * f_cur)
     after = scaled_difference(ar, y[2:], cf.quad_height_after(f_prev, f_cur), 0 * f_cur)
-    heights = ctx.check(HEIGHTS, 1, np.maximum(current, after), note=note)
+    heights = ctx.check(HEIGHTS, 1, np.maximum(current, after), summed=True, note=note)
     return [five, heights]
 
 
@@ -408,7 +410,7 @@ def _area_sum(ctx: Context, data: QuadPolygons, special: bool) -> Check:
     sizes = area_magnitude(p)
     expected = cf.quad_area_sum(f[:-2], f[1:-1])
     residuals = scaled_difference(ar, areas[:-1] + areas[1:], expected, sizes[:-1] + sizes[1:])
-    return ctx.check(AREA_SUM, 1, residuals, note=_special_note(ar, data, special))
+    return ctx.check(AREA_SUM, 1, residuals, summed=True, note=_special_note(ar, data, special))
 
 
 def _require_float64_representable(f0: float, f1: float, i_min: int, i_max: int) -> None:
