@@ -98,7 +98,9 @@ def quad_sequence(ar: Arithmetic, f0: Scalar, f1: Scalar, i: Array) -> Array:
     return f0 * ar.exp(i * ar.log(f1 / f0))
 
 
-def hex_sequence(ar: Arithmetic, a: Scalar, b: Scalar, lam: Scalar, i_min: int, i_max: int) -> Array:
+def hex_sequence(
+    ar: Arithmetic, a: Scalar, b: Scalar, lam: Scalar, i_min: int, i_max: int
+) -> Array:
     """Section 4.1, hexagonal case: f_{2k} = a (b/a)^k; odd f_i = λ f_{i+1} + (1 − λ) f_{i−1}."""
     i = np.arange(i_min, i_max + 1, dtype=np.int64)
     odd = (i % 2) == 1
@@ -122,7 +124,7 @@ def accumulate(ar: Arithmetic, start: Array, edges: Array, lo: int) -> Array:
     ``lo <= 0``; returns p_lo .. p_hi, ``(hi − lo + 1, 2)``: forward partial sums for k >= 0,
     backward (subtracting) partial sums for k < 0.
     """
-    back = edges[: -lo] if lo < 0 else edges[:0]
+    back = edges[:-lo] if lo < 0 else edges[:0]
     ahead = edges[-lo:] if lo < 0 else edges
     columns = []
     for axis in (0, 1):

@@ -103,7 +103,7 @@ def theorem_1_constant_printed(f0: Scalar, f1: Scalar) -> Scalar:
 
 
 def theorem_1_radius(f0: Scalar, f1: Scalar) -> Scalar:
-    """The start height r = p_0^y for which Theorem 1 holds: (5) at i = 1, −f_1(1 + f_0²)/(2(f_1 − f_0)²)."""
+    """Theorem 1 holds for p_0^y = r* = −f_1(1 + f_0²)/(2(f_1 − f_0)²), eq. (5) at i = 1."""
     g = f1 - f0
     return -f1 * (1 + f0 * f0) / (2 * g * g)
 
@@ -120,8 +120,8 @@ def _hex_denominator(a: Scalar, b: Scalar, lam: Scalar) -> Scalar:
 def _hex_constant(a: Scalar, b: Scalar, lam: Scalar) -> Scalar:
     """−3a³(λ−1)² + 5a²b(λ−1)λ − 2ab²λ² + b(λ−3), the constant term of (9)'s numerator."""
     m = lam - 1
-    return -3 * a * a * a * m * m + 5 * a * a * b * m * lam - 2 * a * b * b * lam * lam + b * (
-        lam - 3
+    return (
+        -3 * a * a * a * m * m + 5 * a * a * b * m * lam - 2 * a * b * b * lam * lam + b * (lam - 3)
     )
 
 
@@ -136,10 +136,13 @@ def theorem_3_x(a: Scalar, b: Scalar, lam: Scalar, i: Array, odd: bool) -> Array
     return i * (a * (lam - 6) * (lam - 1) - b * (lam - 5) * lam) / denominator
 
 
-def theorem_3_y_even(ar: Arithmetic, a: Scalar, b: Scalar, lam: Scalar, r: Scalar, i: Array) -> Array:
-    """Theorem 3, (8) corrected (E43): p_i^y = r − (b^{−i/2} − a^{−i/2})(a^{i/2}b(λ−3) + a b^{i/2}W)/D.
+def theorem_3_y_even(
+    ar: Arithmetic, a: Scalar, b: Scalar, lam: Scalar, r: Scalar, i: Array
+) -> Array:
+    """Theorem 3, (8) corrected (E43): p_i^y = r − (b^{−i/2} − a^{−i/2})(…)/D.
 
-    W = (3a(λ−1) − 2bλ)(a(λ−1) − bλ), D = 2λ(a−b)²(λ−1); expanded with s = b/a as
+    The bracket is a^{i/2}b(λ−3) + a b^{i/2}W, W = (3a(λ−1) − 2bλ)(a(λ−1) − bλ),
+    D = 2λ(a−b)²(λ−1); expanded with s = b/a as
     r + (C − s^{−i/2} b(λ−3) + s^{i/2} aW)/D, C the constant of (9).
     """
     w = (3 * a * (lam - 1) - 2 * b * lam) * (a * (lam - 1) - b * lam)
@@ -158,7 +161,9 @@ def theorem_3_y_even_printed(a: Scalar, b: Scalar, lam: Scalar, r: Scalar, i: Ar
     return numerator / _hex_denominator(a, b, lam) + r
 
 
-def theorem_3_y_odd(ar: Arithmetic, a: Scalar, b: Scalar, lam: Scalar, r: Scalar, i: Array) -> Array:
+def theorem_3_y_odd(
+    ar: Arithmetic, a: Scalar, b: Scalar, lam: Scalar, r: Scalar, i: Array
+) -> Array:
     """Theorem 3, (9) (verified): p_i^y = r + (C + s^{(1−i)/2}(2bλ − 3a(λ−1))
     + s^{(1+i)/2} a²(λ−3)(a(λ−1) − bλ))/D, the printed powers combined with s = b/a."""
     log_s = ar.log(b / a)

@@ -1,7 +1,8 @@
-"""The defining conditions (D1), (D3), eq. (2) and eq. (7) as residuals of a polygon, with fitted constants.
+"""The conditions (D1), (D3), eqs. (2) and (7) as residuals of a polygon, with fitted constants.
 
-Each condition has the form lhs_i = c · rhs_i for one constant c > 0 (eq. (7): two constants). ``fit`` finds c by least
-squares and reports, for each equation, |lhs_i − c·rhs_i| / (|lhs|_i + |c|·|rhs|_i), where
+Each condition has the form lhs_i = c · rhs_i for one constant c > 0 (eq. (7): two constants,
+``equation_7``). ``fit`` finds c by least squares and reports, for each equation,
+|lhs_i − c·rhs_i| / (|lhs|_i + |c|·|rhs|_i), where
 |lhs|_i and |rhs|_i are the magnitudes of the stored numbers the two sides are computed from
 (``polygon.*_magnitude``). So a residual is relative to what the data can resolve: cancellation
 in Δ² or in the edges of vertices far from the origin does not inflate it, and a polygon that

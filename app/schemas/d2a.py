@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from typing import Any
-
 from pydantic import Field
 
 from app.schemas.common import CurveQuery
@@ -51,8 +49,6 @@ sign error, docs/errata.md E43). Eq. (2) with one constant, (D1) and (D3) fail (
     + _CONVENTIONS
 )
 
-_INDEX = {"ge": -10_000_000, "le": 10_000_000}
-
 
 class D2aQuadQuery(CurveQuery):
     """(D2a) quad parameters; the paper's symbols f0, f1 (= f_0, f_1) and r."""
@@ -79,12 +75,19 @@ class D2aQuadQuery(CurveQuery):
         "f_0)²), the only value for which Theorem 1 holds.",
         json_schema_extra={"domain": "any real; Theorem 1 holds only at r*"},
     )
-    i_min: int = Field(-10, **_INDEX, description="First index i (inclusive).")  # type: ignore[arg-type]
-    i_max: int = Field(10, **_INDEX, description="Last index i (inclusive), >= i_min.")  # type: ignore[arg-type]
+    i_min: int = Field(-10, ge=-10_000_000, le=10_000_000, description="First index i (inclusive).")
+    i_max: int = Field(
+        10, ge=-10_000_000, le=10_000_000, description="Last index i (inclusive), >= i_min."
+    )
 
 
 class D2aHexQuery(CurveQuery):
-    """(D2a) hexagonal parameters; the paper's symbols a, b, λ (query name `lambda`) and r."""
+    """(D2a) hexagonal parameters; the paper's symbols a, b, λ and r.
+
+    λ is the query parameter and JSON field `lambda` (a Python keyword): the field is named
+    `lam` with the alias `lambda`, so ``core_arguments`` (which dumps by field name) hands the
+    core the keyword ``lam``.
+    """
 
     a: float = Field(
         1.0,
@@ -116,8 +119,7 @@ class D2aHexQuery(CurveQuery):
         "the only value for which Theorem 2 holds.",
         json_schema_extra={"domain": "any real; Theorem 2 holds only at r*"},
     )
-    i_min: int = Field(-10, **_INDEX, description="First index i (inclusive).")  # type: ignore[arg-type]
-    i_max: int = Field(10, **_INDEX, description="Last index i (inclusive), >= i_min.")  # type: ignore[arg-type]
-
-    def core_arguments(self) -> dict[str, Any]:
-        return super().core_arguments()  # field name `lam` is the core's keyword
+    i_min: int = Field(-10, ge=-10_000_000, le=10_000_000, description="First index i (inclusive).")
+    i_max: int = Field(
+        10, ge=-10_000_000, le=10_000_000, description="Last index i (inclusive), >= i_min."
+    )

@@ -99,12 +99,16 @@ def _relative_error(ar: Arithmetic, points: np.ndarray, expected: dict, first: i
     return worst
 
 
-@pytest.mark.parametrize(("ar", "bound"), [(Float64(), 1e-12), (MultiPrecision(40), 1e-35)], ids=["float64", "mp40"])
+@pytest.mark.parametrize(
+    ("ar", "bound"), [(Float64(), 1e-12), (MultiPrecision(40), 1e-35)], ids=["float64", "mp40"]
+)
 @pytest.mark.parametrize("case", QUAD_CASES)
 def test_quad_agrees_with_the_reference(ar: Arithmetic, bound: float, case: tuple) -> None:
     f0, f1, r, i_min, i_max = case
     p_ref, phi_ref, f_ref = reference.quad(f0, f1, r, i_min, i_max)
-    curve = d2a_quad.compute(ar, float(f0), float(f1), None if r is None else float(r), i_min, i_max)
+    curve = d2a_quad.compute(
+        ar, float(f0), float(f1), None if r is None else float(r), i_min, i_max
+    )
     mpmath.mp.dps = 80
     p = curve.polygon.vertices
     assert _relative_error(ar, p, p_ref, i_min) < bound
@@ -113,7 +117,9 @@ def test_quad_agrees_with_the_reference(ar: Arithmetic, bound: float, case: tupl
     assert _relative_error(ar, conformal, {i: (v, 0) for i, v in f_ref.items()}, i_min) < bound
 
 
-@pytest.mark.parametrize(("ar", "bound"), [(Float64(), 1e-12), (MultiPrecision(40), 1e-35)], ids=["float64", "mp40"])
+@pytest.mark.parametrize(
+    ("ar", "bound"), [(Float64(), 1e-12), (MultiPrecision(40), 1e-35)], ids=["float64", "mp40"]
+)
 @pytest.mark.parametrize("case", HEX_CASES)
 def test_hex_agrees_with_the_reference(ar: Arithmetic, bound: float, case: tuple) -> None:
     a, b, lam, r, i_min, i_max = case

@@ -123,7 +123,11 @@ def vertex_magnitude(*points: Array) -> Array:
 
 
 def fitted_condition(
-    ctx: Context, statement: Statement, fit: conditions.ConditionFit, note_holds: str, note_fails: str
+    ctx: Context,
+    statement: Statement,
+    fit: conditions.ConditionFit,
+    note_holds: str,
+    note_fails: str,
 ) -> Check:
     """A (D1)/(D3)/(2) check with the fitted constant named in the note."""
     check = ctx.check(statement, 0, fit.residuals)

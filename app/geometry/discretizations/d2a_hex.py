@@ -10,11 +10,12 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 
-from app.geometry import christoffel, christoffel_closed_forms as cf, conditions
+from app.geometry import christoffel, conditions
+from app.geometry import christoffel_closed_forms as cf
 from app.geometry.checks import Check, Statement, not_applicable
 from app.geometry.curve import Curve, DiscretizationInfo, Polyline
 from app.geometry.discretizations.d2a_common import (
@@ -272,8 +273,8 @@ def equation_7_residuals(ar: Arithmetic, p: Array, i_min: int, c1: Scalar, c2: S
     areas, sizes = signed_areas(p), area_magnitude(p)
     lhs = second_difference(y)
     even = (np.arange(i_min, i_min + len(lhs)) % 2) == 0
-    first = np.where(even, c1, c2)  # multiplies A_i
-    second = np.where(even, c2, c1)  # multiplies A_{i+1}
+    first = cast(Array, np.where(even, c1, c2))  # multiplies A_i
+    second = cast(Array, np.where(even, c2, c1))  # multiplies A_{i+1}
     a = abs(y)
     scale = a[2:] + 2 * a[1:-1] + a[:-2] + abs(first) * sizes[:-1] + abs(second) * sizes[1:]
     return abs(lhs - first * areas[:-1] - second * areas[1:]) / scale
@@ -313,7 +314,7 @@ def _equation_10(ctx: Context, data: HexPolygons, c11: tuple[Scalar, Scalar]) ->
     third = y[3:] - 3 * y[2:-1] + 3 * y[1:-2] - y[:-3]
     areas, sizes = signed_areas(p), area_magnitude(p)
     even = (np.arange(data.i_min, data.i_min + len(third)) % 2) == 0
-    c = np.where(even, c11[0], c11[1])
+    c = cast(Array, np.where(even, c11[0], c11[1]))
     scale = a[3:] + 3 * a[2:-1] + 3 * a[1:-2] + a[:-3] + abs(c) * (sizes[2:] + sizes[:-2])
     residuals = abs(third - c * (areas[2:] - areas[:-2])) / scale
     return ctx.check(EQUATION_10, 0, residuals)

@@ -9,13 +9,14 @@ r* = −f_1(1 + f_0²)/(2(f_1 − f_0)²) (eq. (5) at i = 1), which is the defau
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
-from app.geometry import christoffel, christoffel_closed_forms as cf, conditions
-from app.geometry.checks import Check, Statement, not_applicable
+from app.geometry import christoffel, conditions
+from app.geometry import christoffel_closed_forms as cf
+from app.geometry.checks import Check, Statement
 from app.geometry.curve import Curve, DiscretizationInfo, Polyline
 from app.geometry.discretizations.d2a_common import (
     FLOAT64_MIN_GAP,
@@ -291,7 +292,8 @@ def _special_note(ar: Arithmetic, data: QuadPolygons, special: bool) -> str | No
     if special:
         return None
     r_star = ar.to_float(cf.theorem_1_radius(data.f0, data.f1))
-    return f"holds only for r = r* = {r_star:.17g}; this polygon starts at r = {ar.to_float(data.r):.17g}"
+    r = ar.to_float(data.r)
+    return f"holds only for r = r* = {r_star:.17g}; this polygon starts at r = {r:.17g}"
 
 
 def _theorem_1(
@@ -329,15 +331,16 @@ def _equation_2_residuals(ar: Arithmetic, p: Array, c: Scalar) -> Array:
 
 def _gauss_checks(ctx: Context, data: QuadPolygons) -> list[Check]:
     if len(data.f) < 2:
-        return [not_enough(ctx, GAUSS_EDGE, "two vertices"), not_enough(ctx, GAUSS_NORM, "two vertices")]
+        return [
+            not_enough(ctx, GAUSS_EDGE, "two vertices"),
+            not_enough(ctx, GAUSS_NORM, "two vertices"),
+        ]
     ar = ctx.ar
     f_prev, f_cur = data.f[:-1], data.f[1:]
     edges = data.gauss_edges
     formula = cf.quad_gauss_edge(f_prev, f_cur)
     zero = ar.zeros(len(f_cur))
-    edge = ctx.check(
-        GAUSS_EDGE, 1, scaled_point_difference(ar, edges, formula, zero)
-    )
+    edge = ctx.check(GAUSS_EDGE, 1, scaled_point_difference(ar, edges, formula, zero))
     norm = edges[:, 0] * edges[:, 0] + edges[:, 1] * edges[:, 1]
     expected = cf.quad_gauss_edge_norm_squared(f_prev, f_cur)
     return [edge, ctx.check(GAUSS_NORM, 1, scaled_difference(ar, norm, expected, zero))]
@@ -348,7 +351,9 @@ def _dual_edge(ctx: Context, data: QuadPolygons) -> Check:
         return not_enough(ctx, DUAL_EDGE, "two vertices")
     p = data.p
     formula = cf.quad_dual_edge(data.f[:-1], data.f[1:])
-    residuals = scaled_point_difference(ctx.ar, p[1:] - p[:-1], formula, vertex_magnitude(p[:-1], p[1:]))
+    residuals = scaled_point_difference(
+        ctx.ar, p[1:] - p[:-1], formula, vertex_magnitude(p[:-1], p[1:])
+    )
     return ctx.check(DUAL_EDGE, 1, residuals)
 
 
@@ -391,7 +396,11 @@ def _heights(ctx: Context, data: QuadPolygons, special: bool) -> list[Check]:
         # (5) names p_{i−1}^y; residual k belongs to the vertex i_min + k
         expected = cf.quad_equation_5(f[:-1], f[1:])
         five = ctx.check(
-            EQUATION_5, 0, scaled_difference(ar, y[:-1], expected, 0 * expected), summed=True, note=note
+            EQUATION_5,
+            0,
+            scaled_difference(ar, y[:-1], expected, 0 * expected),
+            summed=True,
+            note=note,
         )
     if len(f) < 3:
         return [five, not_enough(ctx, HEIGHTS, "three vertices")]
