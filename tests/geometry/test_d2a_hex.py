@@ -138,3 +138,11 @@ def test_mp_handles_lambda_near_the_edge() -> None:
     curve = d2a_hex.compute(MultiPrecision(30), 1.0, 2.0, 1e-8, None, -6, 6)
     assert all(c.holds is True for c in curve.checks if c.id not in FAIL_ALWAYS)
     assert np.all(np.diff(curve.polygon.indices) == 1)
+
+
+def test_relation_checks_hold_on_a_polygon_that_satisfies_them(float64: Float64) -> None:
+    # (D4b) satisfies (D1), (D3) and (2): the same checks, fed its polygon, hold
+    data = d2a_hex.polygons(float64, 1.0, 2.5, 0.5, None, -10, 10)
+    kinematic = d4b.polygons(float64, 1.0, 0.3, None, -10, 9).p
+    results = verdicts(d2a_hex.evaluate(float64, replace(data, p=kinematic))[1])
+    assert {k for k in FAIL_ALWAYS if results[k] is not True} == set()

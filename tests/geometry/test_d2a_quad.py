@@ -141,3 +141,12 @@ def test_mp_has_no_float64_range_limit() -> None:
     assert y < -(10**90)  # p_i^y = −(f_i + 1/f_i) with f_i = 2^i
     assert float(y / 2**300) == pytest.approx(-1.0, rel=1e-15)
     assert np.all(curve.polygon.indices == np.arange(300, 304))
+
+
+def test_d1_d3_checks_hold_on_a_polygon_that_satisfies_them(float64: Float64) -> None:
+    from app.geometry.discretizations import d4b
+
+    data = d2a_quad.polygons(float64, 1.0, 1.5, None, -10, 10)
+    kinematic = d4b.polygons(float64, 1.0, 0.3, None, -10, 9).p
+    results = verdicts(d2a_quad.evaluate(float64, replace(data, p=kinematic))[1])
+    assert results["d1"] is True and results["d3"] is True and results["theorem-1"] is False
