@@ -65,3 +65,14 @@ def test_three_js_is_built_into_static_vendor(client: TestClient) -> None:
         response = client.get(f"/static/vendor/three/{path}")
         assert response.status_code == 200, path
         assert "javascript" in response.headers["content-type"]
+
+
+def test_the_image_builds_the_same_assets() -> None:
+    """The Dockerfile runs the pinned npm install and the asset build before the Python install."""
+    root = VENDOR.parents[2]
+    dockerfile = (root / "Dockerfile").read_text(encoding="utf-8")
+    assert "npm ci" in dockerfile and "npm run build" in dockerfile
+    assert "COPY --from=assets /build/app/static/vendor ./app/static/vendor" in dockerfile
+    assert dockerfile.index("COPY --from=assets") < dockerfile.index("pip install --no-deps .")
+    lock = (root / "package-lock.json").read_text(encoding="utf-8")
+    assert '"node_modules/three": {\n      "version": "0.187.0"' in lock
