@@ -64,3 +64,15 @@ def enforce_digits(settings: Settings, digits: int) -> None:
     """Refuse more digits than configured."""
     if digits > settings.max_digits:
         raise LimitExceededError("digits", f"1 <= digits <= {settings.max_digits}", digits)
+
+
+def enforce_drawing(settings: Settings, i_min: int, i_max: int) -> None:
+    """Refuse pictures of polygons with more vertices than ``max_svg_vertices``."""
+    vertices = max(0, i_max - i_min + 1)
+    if vertices > settings.max_svg_vertices:
+        raise LimitExceededError(
+            "i_max",
+            f"i_max − i_min + 1 <= {settings.max_svg_vertices} (vertices) for a picture "
+            "(format=svg or /figures); use format=json or csv for longer ranges",
+            i_max,
+        )

@@ -29,6 +29,12 @@ class Settings(BaseSettings):
         description="Most (digits + 200) × steps in precision=mp (the cost of mp grows with "
         "both; about 1.5 s at the limit on a 2-core machine).",
     )
+    max_svg_vertices: int = Field(
+        20_001,
+        ge=2,
+        description="Most vertices of one polygon drawn as SVG (format=svg and /figures): a "
+        "picture holds every vertex, and more than the pixels can show only adds bytes.",
+    )
     cors_origins: list[str] = Field(
         default_factory=lambda: ["*"],
         description="Origins allowed to call the API from a browser (JSON list; ['*'] for any).",

@@ -11,7 +11,7 @@ from app.registry import DISCRETIZATIONS, Discretization
 from app.responses import cached, canonical_key, curve_document, encode_json
 from app.routers.common import compute, curve_response, reject_repeated_parameters, settings_of
 from app.schemas.catalog import DiscretizationEntry, ParameterInfo
-from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES, CurveQuery
+from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES, CurveQuery, StrictModel
 from app.schemas.curve import CurveResponse
 
 router = APIRouter(prefix="/discretizations", tags=["discretizations"])
@@ -19,7 +19,7 @@ router = APIRouter(prefix="/discretizations", tags=["discretizations"])
 COMMON_FIELDS = frozenset(CurveQuery.model_fields)
 
 
-def parameter_infos(model: type[CurveQuery]) -> list[ParameterInfo]:
+def parameter_infos(model: type[StrictModel]) -> list[ParameterInfo]:
     """The catalog's parameter list, read from the request model's JSON schema."""
     properties: dict[str, Any] = model.model_json_schema()["properties"]
     infos = []
@@ -75,9 +75,11 @@ CURVE_RESPONSES: dict[int | str, dict[str, Any]] = {
             "text/csv": {
                 "schema": {"type": "string"},
                 "example": "curve,index,x,y\np,0,-0.1,1.0\np,1,0.1,1.0\n",
-            }
+            },
+            "image/svg+xml": {"schema": {"type": "string"}},
         },
-        "description": "The curve as JSON (default) or CSV (`format=csv`). GET responses carry "
+        "description": "The curve as JSON (default), CSV (`format=csv`) or SVG (`format=svg`: p "
+        "and its companions with axes, legend and equal scales). GET responses carry "
         "an ETag and Cache-Control; a matching If-None-Match gets 304.",
     },
     304: {"description": "Not modified (the If-None-Match ETag matches)."},

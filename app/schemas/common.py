@@ -28,10 +28,12 @@ class CurveQuery(StrictModel):
         description="Significant digits for precision=mp (at most DCOSH_MAX_DIGITS, default "
         "1000; (digits + 200) × steps is bounded by DCOSH_MAX_MP_WORK). Ignored in float64.",
     )
-    format: Literal["json", "csv"] = Field(
+    format: Literal["json", "csv", "svg"] = Field(
         "json",
-        description="`json` (default) or `csv` (columns curve,index,x,y: the polygon `p` "
-        "followed by each companion).",
+        description="`json` (default), `csv` (columns curve,index,x,y: the polygon `p` "
+        "followed by each companion) or `svg` (a self-contained picture of `p` and its "
+        "companions with axes and a legend, equal scales; at most DCOSH_MAX_SVG_VERTICES "
+        "vertices per polygon).",
     )
     detail: bool = Field(
         False, description="Fill each check's `per_index` with the residual at every index."
