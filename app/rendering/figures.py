@@ -8,31 +8,20 @@ Adding a figure means writing its request model and ``draw``, and one entry in `
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 from urllib.parse import urlencode
 
 import numpy as np
-from pydantic import Field
 
 from app.geometry.curve import Curve
 from app.geometry.precision import Float64
 from app.registry import DISCRETIZATIONS
 from app.rendering.curves import drawable
 from app.rendering.svg import Plot, Series, describe_parameters, segments
-from app.schemas.common import StrictModel
-
-
-class FigureQuery(StrictModel):
-    """Parameters of a figure; subclasses add the paper's parameters."""
-
-    def vertex_range(self) -> tuple[int, int]:
-        """The index range drawn (for the picture size limit)."""
-        i_min: int = getattr(self, "i_min", 0)
-        i_max: int = getattr(self, "i_max", 0)
-        return i_min, i_max
+from app.schemas.d4b import stick_angle
+from app.schemas.figures import Figure4Query, FigureQuery
 
 
 @dataclass(frozen=True)
@@ -61,40 +50,12 @@ def source_url(identifier: str, parameters: dict[str, Any]) -> str:
 # --- Figure 4 (left): (D4b), the kinematic discrete tractrix -------------------------------------
 
 
-class Figure4Query(FigureQuery):
-    """Parameters of Figure 4 (left): those of (D4b) on a short index range."""
-
-    h: float = Field(
-        1.0,
-        gt=0,
-        le=1e100,
-        description="Stick length h (> 0).",
-        json_schema_extra={"domain": "h > 0"},
-    )
-    d: float = Field(
-        0.2,
-        gt=0,
-        le=1e100,
-        description="Half the step of the stick's end on the x-axis (x_i = (2di, 0)); 0 < d < h.",
-        json_schema_extra={"domain": "0 < d < h"},
-    )
-    beta0: float = Field(
-        math.pi / 2,
-        gt=0,
-        lt=math.pi,
-        description="Angle of stick 0 with the positive x-axis, radians (default π/2: vertical).",
-        json_schema_extra={"domain": "0 < beta0 < π"},
-    )
-    i_min: int = Field(-4, ge=-10_000_000, le=10_000_000, description="First index i drawn.")
-    i_max: int = Field(4, ge=-10_000_000, le=10_000_000, description="Last index i drawn.")
-
-
 def draw_figure_4(query: Figure4Query) -> Plot:
     """Figure 4 (left): sticks x_i d_i, tractrix d_i, Darboux transform e_i, centres p_i."""
     arguments = {
         "h": query.h,
         "d": query.d,
-        "beta0": None if query.beta0 == math.pi / 2 else query.beta0,
+        "beta0": stick_angle(query.beta0),
         "i_min": query.i_min,
         "i_max": query.i_max,
     }

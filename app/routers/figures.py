@@ -7,12 +7,13 @@ from fastapi import APIRouter, Depends, Query, Request, Response
 from app.errors import UnknownIdError
 from app.limits import enforce_drawing
 from app.rendering.curves import SVG_MEDIA_TYPE
-from app.rendering.figures import FIGURES, Figure, FigureQuery
+from app.rendering.figures import FIGURES, Figure
 from app.responses import cached, canonical_key
 from app.routers.common import SVG_HEADERS, reject_repeated_parameters, settings_of
 from app.routers.discretizations import parameter_infos
 from app.schemas.catalog import FigureEntry
 from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES
+from app.schemas.figures import FigureQuery
 
 router = APIRouter(prefix="/figures", tags=["figures"])
 
