@@ -4,7 +4,8 @@ from fastapi import FastAPI
 from fastapi.middleware.cors import CORSMiddleware
 
 from app import __version__, errors
-from app.routers import discretizations, explorer, figures, health, theorems
+from app.routers import discretizations, docs, explorer, figures, health, theorems
+from app.security import SecurityHeaders
 from app.settings import Settings, get_settings
 
 DESCRIPTION = """\
@@ -35,6 +36,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         version=__version__,
         description=DESCRIPTION,
         openapi_tags=TAGS,
+        docs_url=None,  # served by app.routers.docs with self-hosted scripts
+        redoc_url=None,
     )
     app.state.settings = settings or get_settings()
     app.add_middleware(
@@ -44,12 +47,14 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         allow_headers=["Content-Type", "If-None-Match"],
         expose_headers=["ETag"],
     )
+    app.add_middleware(SecurityHeaders)
     errors.install(app)
     app.include_router(health.router)
     app.include_router(discretizations.router)
     app.include_router(theorems.router)
     app.include_router(figures.router)
     explorer.install(app)
+    docs.install(app)
     return app
 
 

@@ -1,6 +1,8 @@
-// Copies the three.js files the explorer loads from node_modules (installed by `npm ci` from the
-// pinned package-lock.json) into app/static/vendor/three/, keeping three's own layout so that the
-// page's import map ("three", "three/addons/") resolves. Run by `make assets` and the Dockerfile.
+// Copies the front-end files the service serves from node_modules (installed by `npm ci` from the
+// pinned package-lock.json) into app/static/vendor/: three.js for the explorer, keeping three's
+// own layout so that the page's import map ("three", "three/addons/") resolves; Swagger UI for
+// /docs and ReDoc for /redoc, so that the documentation pages work without any CDN.
+// Run by `make assets` and the Dockerfile.
 import { cpSync, mkdirSync, rmSync, writeFileSync, readFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -27,3 +29,20 @@ for (const file of files) {
 const version = JSON.parse(readFileSync(join(source, 'package.json'), 'utf8')).version;
 writeFileSync(join(target, 'VERSION'), `${version}\n`);
 console.log(`three ${version}: ${files.length} files copied to app/static/vendor/three`);
+
+const docs = {
+  'swagger-ui': ['swagger-ui-dist', ['LICENSE', 'swagger-ui-bundle.js', 'swagger-ui.css', 'favicon-32x32.png']],
+  redoc: ['redoc', ['LICENSE', 'bundles/redoc.standalone.js']],
+};
+for (const [name, [pkg, wanted]] of Object.entries(docs)) {
+  const from = join(root, 'node_modules', pkg);
+  const to = join(root, 'app', 'static', 'vendor', name);
+  rmSync(to, { recursive: true, force: true });
+  for (const file of wanted) {
+    mkdirSync(dirname(join(to, file)), { recursive: true });
+    cpSync(join(from, file), join(to, file));
+  }
+  const v = JSON.parse(readFileSync(join(from, 'package.json'), 'utf8')).version;
+  writeFileSync(join(to, 'VERSION'), `${v}\n`);
+  console.log(`${pkg} ${v}: ${wanted.length} files copied to app/static/vendor/${name}`);
+}
