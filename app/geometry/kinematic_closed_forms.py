@@ -22,8 +22,13 @@ from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 
 
 def log_ratio(ar: Arithmetic, h: Scalar, d: Scalar) -> Scalar:
-    """L = ln((h+d)/(h−d)) = 2 artanh(d/h), the growth exponent of (14) and (16)."""
-    return 2 * ar.atanh(d / h)
+    """L = ln((h+d)/(h−d)) = 2 artanh(d/h), the growth exponent of (14) and (16).
+
+    Evaluated as log1p(2d/(h − d)): accurate for small d/h (where ln of a ratio near 1 is not)
+    and for d near h (where artanh of the rounded d/h is off by κ·eps, κ = h²/(h² − d²);
+    h − d is exact there).
+    """
+    return ar.log1p(2 * d / (h - d))
 
 
 def tilt_shift(ar: Arithmetic, h: Scalar, d: Scalar, beta0: float | None) -> Scalar:

@@ -72,6 +72,7 @@ class Arithmetic:
     # elementwise functions (scalars or arrays)
     exp: Callable[[Any], Any]
     log: Callable[[Any], Any]
+    log1p: Callable[[Any], Any]
     sqrt: Callable[[Any], Any]
     cos: Callable[[Any], Any]
     sin: Callable[[Any], Any]
@@ -115,6 +116,7 @@ class Float64(Arithmetic):
 
     exp = staticmethod(np.exp)
     log = staticmethod(np.log)
+    log1p = staticmethod(np.log1p)
     sqrt = staticmethod(np.sqrt)
     cos = staticmethod(np.cos)
     sin = staticmethod(np.sin)
@@ -167,6 +169,7 @@ class MultiPrecision(Arithmetic):
         ctx.npconvert = _array_aware_npconvert(ctx.npconvert)
         self.exp = _elementwise(ctx.exp)
         self.log = _elementwise(ctx.log)
+        self.log1p = _elementwise(ctx.log1p)
         self.sqrt = _elementwise(ctx.sqrt)
         self.cos = _elementwise(ctx.cos)
         self.sin = _elementwise(ctx.sin)

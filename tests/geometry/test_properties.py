@@ -20,8 +20,8 @@ from app.geometry.precision import Float64, MultiPrecision
 SETTINGS = settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 heights = st.floats(1e-3, 1e3)
-ratios = st.floats(1e-3, 0.99)
-angles = st.one_of(st.none(), st.floats(0.05, math.pi - 0.05))
+ratios = st.one_of(st.floats(1e-3, 0.99), st.floats(0.99, 0.9999999))
+angles = st.one_of(st.none(), st.floats(0.01, math.pi - 0.01))
 
 
 def finite(curve) -> bool:
