@@ -27,6 +27,7 @@ from app.geometry.checks import (
 from app.geometry.curve import Curve, DiscretizationInfo, Polyline
 from app.geometry.errors import DomainError, NotRepresentableError
 from app.geometry.kinematic_tractrix import construct, validate
+from app.geometry.polygon import second_difference, second_difference_magnitude
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 
 Method = Literal["construction", "closed-form"]
@@ -67,7 +68,8 @@ THEOREM_4_III = S(
     "theorem-4-iii",
     "Theorem 4 (iii), eq. (2)",
     "Δ²p_i^y = c (A_i + A_{i+1}) with one constant c > 0 (constants.eq2) and c = c_(D1)/c_(D3). "
-    "Residual: the larger of the fit residual (as in theorem-4-i) and |c − c_(D1)/c_(D3)|/c.",
+    "Residual: the larger of the fit residual (as in theorem-4-i) and |c − c_(D1)/c_(D3)|/c "
+    "divided by the constants' resolution max (|p_i^y| + 2|p_{i+1}^y| + |p_{i+2}^y|)/|Δ²p_i^y|.",
 )
 ROTATION_ANGLE = S(
     "theorem-4-rotation-angle",
@@ -264,7 +266,7 @@ def evaluate(
         _hypothesis(ctx, p),
         _fitted(ctx, THEOREM_4_I, fits["d1"], _ratio_erratum(ctx, p)),
         _fitted(ctx, THEOREM_4_II, fits["d3"]),
-        _equation_2(ctx, fits),
+        _equation_2(ctx, p, fits),
         _rotation_angle(ctx, p, axis),
         _recursion(ctx, p),
         _two_step(ctx, p),
@@ -386,12 +388,21 @@ def _fitted(
     return check
 
 
-def _equation_2(ctx: _Context, fits: dict[str, conditions.ConditionFit]) -> Check:
+def _equation_2(ctx: _Context, p: Array, fits: dict[str, conditions.ConditionFit]) -> Check:
+    """(2) fitted, and its constant equal to c_(D1)/c_(D3) to the constants' resolution.
+
+    A fitted constant is only as precise as the second differences it divides: Δ²p^y is about
+    (2d/h)² of the heights, so the quotient's difference is measured against the largest
+    (|p_i| + 2|p_{i+1}| + |p_{i+2}|)/|Δ²p_i^y|, like the fit residuals against their magnitudes.
+    """
     c, c1, c2 = (fits[k].constant for k in ("eq2", "d1", "d3"))
     residuals = fits["eq2"].residuals
     if c is not None and c1 is not None and c2 is not None and len(residuals):
-        quotient = abs(c - c1 / c2) / max(abs(c), abs(c1 / c2), ctx.ar.scalar(1e-300))
-        residuals = np.maximum(residuals, quotient)
+        ar = ctx.ar
+        quotient = abs(c - c1 / c2) / max(abs(c), abs(c1 / c2), ar.scalar(1e-300))
+        y = p[: ctx.n, 1]
+        resolution = np.max(second_difference_magnitude(y) / abs(second_difference(y)))
+        residuals = np.maximum(residuals, quotient / resolution)
     return _fitted(ctx, THEOREM_4_III, conditions.ConditionFit(c, residuals))
 
 
