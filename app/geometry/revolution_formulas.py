@@ -1,0 +1,71 @@
+"""Eq. (17): K and H of a discrete surface of revolution from the radii of two meridians.
+
+For a surface whose meridian polygon has radii p_i^y, rotated about the x-axis, and a parallel
+Gauss image whose meridian has radii n_i^y, Section 5 states for the face between meridian
+vertices i and i+1
+
+    (17)  K = (n_{i+1}^y² − n_i^y²) / (p_{i+1}^y² − p_i^y²),
+          H = (p_i^y n_i^y − p_{i+1}^y n_{i+1}^y) / (p_{i+1}^y² − p_i^y²).
+
+This is the *theorem*: ``curvature`` holds the general mixed-area definition, and the checks
+compare the two on three-dimensional faces.
+
+0/0 faces. When p_{i+1}^y = p_i^y (a meridian edge parallel to the axis: the face is a band of a
+cylinder) the edge of the Gauss image is parallel to it, so n_{i+1}^y = n_i^y too, and (17) reads
+0/0. The mixed-area definition still gives values there: with λ the ratio of the parallel edges
+(n_{i+1} − n_i = λ (p_{i+1} − p_i)), K = λ (n_i^y + n_{i+1}^y)/(p_i^y + p_{i+1}^y) and
+H = −(λ + (n_i^y + n_{i+1}^y)/(p_i^y + p_{i+1}^y))/2; (17) is the special case λ = Δn^y/Δp^y.
+``equation_17`` reports such faces in its ``defined`` mask instead of dividing.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from app.geometry.precision import Arithmetic, Array
+
+
+@dataclass(frozen=True)
+class Equation17:
+    """(17) on each face; K and H are 0 where ``defined`` is false (the 0/0 faces)."""
+
+    K: Array
+    H: Array
+    defined: np.ndarray[Any, np.dtype[np.bool_]]
+
+
+def equation_17(ar: Arithmetic, p_y: Array, n_y: Array) -> Equation17:
+    """Eq. (17): K and H from the radii p_i^y of the surface and n_i^y of the Gauss image."""
+    p0, p1, n0, n1 = p_y[:-1], p_y[1:], n_y[:-1], n_y[1:]
+    denominator = p1 * p1 - p0 * p0
+    defined = np.asarray(denominator != 0, dtype=bool)
+    one = ar.scalar(1)
+    safe = np.where(defined, denominator, one)
+    zero = 0 * denominator
+    K = np.where(defined, (n1 * n1 - n0 * n0) / safe, zero)
+    H = np.where(defined, (p0 * n0 - p1 * n1) / safe, zero)
+    return Equation17(K, H, defined)
+
+
+def equation_17_residuals(
+    ar: Arithmetic, p_y: Array, n_y: Array, K: Array, H: Array
+) -> tuple[Array, Array, np.ndarray[Any, np.dtype[np.bool_]]]:
+    """How far given K, H per face are from satisfying (17), cross-multiplied; ``(F,)`` each.
+
+    K residual |K (p_{i+1}² − p_i²) − (n_{i+1}² − n_i²)| / (|K|(p_{i+1}² + p_i²) + n_{i+1}² + n_i²),
+    H residual |H (p_{i+1}² − p_i²) − (p_i n_i − p_{i+1} n_{i+1})| / (|H|(p_{i+1}² + p_i²)
+    + |p_i n_i| + |p_{i+1} n_{i+1}|): relative to the size of the terms, so well conditioned
+    also where the faces are small. The mask tells the faces where (17) is not 0/0.
+    """
+    p0, p1, n0, n1 = p_y[:-1], p_y[1:], n_y[:-1], n_y[1:]
+    dp = p1 * p1 - p0 * p0
+    sp = p1 * p1 + p0 * p0
+    tiny = ar.scalar(np.finfo(np.float64).tiny)
+    k_scale = abs(K) * sp + n1 * n1 + n0 * n0
+    h_scale = abs(H) * sp + abs(p0 * n0) + abs(p1 * n1)
+    k_res = abs(K * dp - (n1 * n1 - n0 * n0)) / np.where(k_scale > tiny, k_scale, tiny)
+    h_res = abs(H * dp - (p0 * n0 - p1 * n1)) / np.where(h_scale > tiny, h_scale, tiny)
+    return k_res, h_res, np.asarray(dp != 0, dtype=bool)
