@@ -11,8 +11,9 @@ from dataclasses import dataclass
 
 from app.geometry.checks import Statement
 from app.geometry.curve import Curve, DiscretizationInfo
-from app.geometry.discretizations import d4b
+from app.geometry.discretizations import d2b, d4b
 from app.schemas.common import CurveQuery
+from app.schemas.d2b import D2B_DESCRIPTION, D2bQuery
 from app.schemas.d4b import D4B_DESCRIPTION, D4bQuery
 
 
@@ -26,7 +27,10 @@ class Discretization:
     description: str
 
 
-_ENTRIES = (Discretization(d4b.INFO, D4bQuery, d4b.compute, D4B_DESCRIPTION),)
+_ENTRIES = (
+    Discretization(d4b.INFO, D4bQuery, d4b.compute, D4B_DESCRIPTION),
+    Discretization(d2b.INFO, D2bQuery, d2b.compute, D2B_DESCRIPTION),
+)
 
 DISCRETIZATIONS: dict[str, Discretization] = {entry.info.id: entry for entry in _ENTRIES}
 

@@ -32,7 +32,6 @@ from app.geometry.checks import (
 from app.geometry.discretizations.curvature_checks import (
     EQUATION_17,
     constant_curvature_residuals,
-    edge_parallel_residuals,
     equation_17_check,
     minimal_residuals,
     ring_curvatures,
