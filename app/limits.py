@@ -59,3 +59,22 @@ def enforce_digits(settings: Settings, digits: int) -> None:
     """Refuse more digits than configured."""
     if digits > settings.max_digits:
         raise LimitExceededError("digits", f"1 <= digits <= {settings.max_digits}", digits)
+
+
+def enforce_mesh(settings: Settings, rows: int, columns: int, precision: str, digits: int) -> None:
+    """Refuse surface meshes over the vertex budget (and mp meshes over the mp budget)."""
+    vertices = rows * columns
+    if vertices > settings.max_mesh_vertices:
+        raise LimitExceededError(
+            "m",
+            f"meridian vertices × vertices around <= {settings.max_mesh_vertices} "
+            f"(here {rows} × {columns})",
+            vertices,
+        )
+    if precision == "mp" and digits * vertices > settings.max_mp_work:
+        raise LimitExceededError(
+            "digits",
+            f"digits × mesh vertices <= {settings.max_mp_work} in precision=mp "
+            f"(this mesh has {vertices} vertices)",
+            digits,
+        )

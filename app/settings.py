@@ -28,6 +28,12 @@ class Settings(BaseSettings):
         ge=1,
         description="Most digits × steps in precision=mp (the cost of mp grows with both).",
     )
+    max_mesh_vertices: int = Field(
+        1_000_000,
+        ge=4,
+        description="Most vertices of one surface mesh: meridian vertices × vertices around "
+        "(2m for a closed surface, steps + 1 otherwise). GLB stores 4 vertices per face.",
+    )
     cors_origins: list[str] = Field(
         default_factory=lambda: ["*"],
         description="Origins allowed to call the API from a browser (JSON list; ['*'] for any).",

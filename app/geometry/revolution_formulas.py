@@ -53,14 +53,20 @@ def equation_17(ar: Arithmetic, p_y: Array, n_y: Array) -> Equation17:
 def equation_17_residuals(
     ar: Arithmetic, p_y: Array, n_y: Array, K: Array, H: Array
 ) -> tuple[Array, Array, np.ndarray[Any, np.dtype[np.bool_]]]:
-    """How far given K, H per face are from satisfying (17), cross-multiplied; ``(F,)`` each.
+    """How far given K, H per face (one per meridian edge) are from (17); see ``face_residuals``."""
+    return face_residuals(ar, p_y[:-1], p_y[1:], n_y[:-1], n_y[1:], K, H)
 
-    K residual |K (p_{i+1}² − p_i²) − (n_{i+1}² − n_i²)| / (|K|(p_{i+1}² + p_i²) + n_{i+1}² + n_i²),
-    H residual |H (p_{i+1}² − p_i²) − (p_i n_i − p_{i+1} n_{i+1})| / (|H|(p_{i+1}² + p_i²)
-    + |p_i n_i| + |p_{i+1} n_{i+1}|): relative to the size of the terms, so well conditioned
-    also where the faces are small. The mask tells the faces where (17) is not 0/0.
+
+def face_residuals(
+    ar: Arithmetic, p0: Array, p1: Array, n0: Array, n1: Array, K: Array, H: Array
+) -> tuple[Array, Array, np.ndarray[Any, np.dtype[np.bool_]]]:
+    """(17) cross-multiplied, for faces with radii p0, p1 (surface) and n0, n1 (Gauss image).
+
+    K residual |K (p1² − p0²) − (n1² − n0²)| / (|K|(p1² + p0²) + n1² + n0²),
+    H residual |H (p1² − p0²) − (p0 n0 − p1 n1)| / (|H|(p1² + p0²) + |p0 n0| + |p1 n1|):
+    relative to the size of the terms, so well conditioned also where the faces are small. The
+    mask tells the faces where (17) is not 0/0 (p1 ≠ p0).
     """
-    p0, p1, n0, n1 = p_y[:-1], p_y[1:], n_y[:-1], n_y[1:]
     dp = p1 * p1 - p0 * p0
     sp = p1 * p1 + p0 * p0
     tiny = ar.scalar(np.finfo(np.float64).tiny)

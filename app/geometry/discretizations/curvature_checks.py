@@ -12,7 +12,7 @@ from typing import Any
 
 import numpy as np
 
-from app.geometry.checks import Check, Statement, check_residuals
+from app.geometry.checks import Check, Statement, check_residuals, not_applicable
 from app.geometry.curvature import FaceCurvatures, face_curvatures
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array
@@ -81,6 +81,8 @@ def equation_17_check(
         skipped += int(np.count_nonzero(~defined))
         worst = both if worst is None else np.maximum(worst, both)
     assert worst is not None
+    if skipped == len(worst) * len(pairs):
+        return not_applicable(EQUATION_17, tolerance, "(17) is 0/0 on every face of the range")
     note = (
         f"(17) is 0/0 on {skipped} face(s) with p_(i+1)^y = p_i^y (skipped; the mixed-area "
         "definition gives K and H there, see docs/errata.md)"
