@@ -24,11 +24,15 @@ def radii(ar: Arithmetic, n_y: Array) -> Array:
     return 1 / n_y
 
 
-def recursion_x(p: Array, n: Array) -> Array:
-    """Proof of Theorem 11: p_i^x = p_{i−1}^x + Δp_{i−1}^y Δn_{i−1}^x / Δn_{i−1}^y; ``(N−1,)``."""
-    dp = p[1:, 1] - p[:-1, 1]
+def recursion_x_defect(p: Array, n: Array) -> Array:
+    """Proof of Theorem 11, p_i^x = p_{i−1}^x + Δp_{i−1}^y Δn_{i−1}^x / Δn_{i−1}^y, multiplied
+    by Δn_{i−1}^y: (p_i^x − p_{i−1}^x) Δn_{i−1}^y − Δp_{i−1}^y Δn_{i−1}^x, 0 when it holds.
+
+    Multiplied out because Δn^y can vanish in float64 (s_1 ≈ 4/j² for Example 12); ``(N−1,)``.
+    """
+    dp = p[1:] - p[:-1]
     dn = n[1:] - n[:-1]
-    return p[:-1, 0] + dp * dn[:, 0] / dn[:, 1]
+    return dp[:, 0] * dn[:, 1] - dp[:, 1] * dn[:, 0]
 
 
 def lemma_10_terms(ar: Arithmetic, s: Array, one_minus_s2: Array) -> Array:

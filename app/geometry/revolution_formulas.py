@@ -21,7 +21,7 @@ H = −(λ + (n_i^y + n_{i+1}^y)/(p_i^y + p_{i+1}^y))/2; (17) is the special cas
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Protocol
 
 import numpy as np
 
@@ -51,27 +51,54 @@ def equation_17(ar: Arithmetic, p_y: Array, n_y: Array) -> Equation17:
 
 
 def equation_17_residuals(
-    ar: Arithmetic, p_y: Array, n_y: Array, K: Array, H: Array
+    ar: Arithmetic, p_y: Array, n_y: Array, areas: FaceAreas
 ) -> tuple[Array, Array, np.ndarray[Any, np.dtype[np.bool_]]]:
-    """How far given K, H per face (one per meridian edge) are from (17); see ``face_residuals``."""
-    return face_residuals(ar, p_y[:-1], p_y[1:], n_y[:-1], n_y[1:], K, H)
+    """How far faces (one per meridian edge) are from (17); see ``face_residuals``."""
+    return face_residuals(ar, p_y[:-1], p_y[1:], n_y[:-1], n_y[1:], areas)
+
+
+class FaceAreas(Protocol):
+    """A(f), A(n), A(f, n) of faces and the magnitudes they are computed from (``curvature``)."""
+
+    area: Array
+    gauss_area: Array
+    mixed_area: Array
+    area_magnitude: Array
+    gauss_area_magnitude: Array
+    mixed_area_magnitude: Array
 
 
 def face_residuals(
-    ar: Arithmetic, p0: Array, p1: Array, n0: Array, n1: Array, K: Array, H: Array
+    ar: Arithmetic, p0: Array, p1: Array, n0: Array, n1: Array, areas: FaceAreas
 ) -> tuple[Array, Array, np.ndarray[Any, np.dtype[np.bool_]]]:
-    """(17) cross-multiplied, for faces with radii p0, p1 (surface) and n0, n1 (Gauss image).
+    """(17) multiplied out, for faces with radii p0, p1 (surface) and n0, n1 (Gauss image).
 
-    K residual |K (p1² − p0²) − (n1² − n0²)| / (|K|(p1² + p0²) + n1² + n0²),
-    H residual |H (p1² − p0²) − (p0 n0 − p1 n1)| / (|H|(p1² + p0²) + |p0 n0| + |p1 n1|):
-    relative to the size of the terms, so well conditioned also where the faces are small. The
-    mask tells the faces where (17) is not 0/0 (p1 ≠ p0).
+    With K = A(n)/A(f) and H = −A(f,n)/A(f), (17) reads A(n)(p1² − p0²) = A(f)(n1² − n0²) and
+    A(f,n)(p1² − p0²) = −A(f)(p0 n0 − p1 n1). The residuals are the differences of the two sides
+    over the magnitudes of the numbers they are computed from (the areas' magnitudes, not their
+    values), so they measure the formula, not the rounding of tiny or vanishing areas:
+
+        K: |A(n) Δ − A(f)(n1² − n0²)| / (|A(n)|~ Σ + |A(f)|~ (n1² + n0²)),
+        H: |A(f,n) Δ + A(f)(p0 n0 − p1 n1)| / (|A(f,n)|~ Σ + |A(f)|~ (|p0 n0| + |p1 n1|)),
+
+    Δ = p1² − p0², Σ = p1² + p0², ~ the magnitude (computed with the radii p scaled to at most
+    1 per face, which leaves the ratios unchanged). The mask tells the faces where (17) is not
+    0/0 (p1 ≠ p0).
     """
-    dp = p1 * p1 - p0 * p0
-    sp = p1 * p1 + p0 * p0
+    # (17) is homogeneous in the radii p: divide them by c = max(|p0|, |p1|) per face, and
+    # A(f) by c² (K equation) or c (H equation), so that no product overflows
     tiny = ar.scalar(np.finfo(np.float64).tiny)
-    k_scale = abs(K) * sp + n1 * n1 + n0 * n0
-    h_scale = abs(H) * sp + abs(p0 * n0) + abs(p1 * n1)
-    k_res = abs(K * dp - (n1 * n1 - n0 * n0)) / np.where(k_scale > tiny, k_scale, tiny)
-    h_res = abs(H * dp - (p0 * n0 - p1 * n1)) / np.where(h_scale > tiny, h_scale, tiny)
+    c = np.maximum(abs(p0), abs(p1))
+    c = np.where(c > tiny, c, ar.scalar(1))
+    q0, q1 = p0 / c, p1 / c
+    dp = q1 * q1 - q0 * q0
+    sp = q1 * q1 + q0 * q0
+    area_k, mag_k = areas.area / c / c, areas.area_magnitude / c / c
+    area_h, mag_h = areas.area / c, areas.area_magnitude / c
+    k_scale = areas.gauss_area_magnitude * sp + mag_k * (n1 * n1 + n0 * n0)
+    h_scale = areas.mixed_area_magnitude * sp + mag_h * (abs(q0 * n0) + abs(q1 * n1))
+    k_res = abs(areas.gauss_area * dp - area_k * (n1 * n1 - n0 * n0))
+    h_res = abs(areas.mixed_area * dp + area_h * (q0 * n0 - q1 * n1))
+    k_res = k_res / np.where(k_scale > tiny, k_scale, tiny)
+    h_res = h_res / np.where(h_scale > tiny, h_scale, tiny)
     return k_res, h_res, np.asarray(dp != 0, dtype=bool)

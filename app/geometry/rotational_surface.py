@@ -110,7 +110,7 @@ def build(
     row = np.repeat(np.arange(len(meridian) - 1), mesh.steps)  # meridian edge of each face
     p_y, n_y = meridian[:, 1], gauss[:, 1]
     k17, h17, defined = face_residuals(
-        ar, p_y[:-1][row], p_y[1:][row], n_y[:-1][row], n_y[1:][row], curvature.K, curvature.H
+        ar, p_y[:-1][row], p_y[1:][row], n_y[:-1][row], n_y[1:][row], curvature
     )
     eq17 = np.where(defined, np.maximum(ar.to_floats(k17), ar.to_floats(h17)), 0.0)
     skipped = int(np.count_nonzero(~defined))

@@ -77,7 +77,7 @@ def test_bad_post_body_is_a_422(client: TestClient) -> None:
 
 def test_unknown_ids_are_404_listing_the_valid_ones(client: TestClient) -> None:
     body = problem(client.get("/discretizations/d9"), 404)
-    assert body["valid"] == ["d4b"]
+    assert body["valid"] == ["d2b", "d4b"]
     assert "d4b" in body["detail"]
     body = problem(client.get("/theorems/theorem-99"), 404)
     assert "theorem-5" in body["valid"]

@@ -73,9 +73,7 @@ def equation_17_check(
     skipped = 0
     for meridian, gauss in pairs:
         curvature = ring_curvatures(ar, meridian, gauss)
-        k_res, h_res, defined = equation_17_residuals(
-            ar, meridian[:, 1], gauss[:, 1], curvature.K, curvature.H
-        )
+        k_res, h_res, defined = equation_17_residuals(ar, meridian[:, 1], gauss[:, 1], curvature)
         both = np.maximum(ar.to_floats(k_res), ar.to_floats(h_res))
         both = np.where(defined, both, 0.0)
         skipped += int(np.count_nonzero(~defined))

@@ -68,8 +68,8 @@ RECURSION = S(
     "theorem-11-recursion",
     "Proof of Theorem 11",
     "p_i^x = p_{i−1}^x + Δp_{i−1}^y Δn_{i−1}^x / Δn_{i−1}^y. Residual: largest "
-    "|p_i^x − that| · |Δn_{i−1}^y| (the recursion multiplied out, which stays well conditioned "
-    "where Δn^y is tiny) relative to the magnitude of its terms.",
+    "|(p_i^x − p_{i−1}^x) Δn_{i−1}^y − Δp_{i−1}^y Δn_{i−1}^x| (the recursion multiplied out, "
+    "which stays defined where Δn^y rounds to 0) relative to the magnitude of its terms.",
 )
 LEMMA_10 = S(
     "lemma-10",
@@ -246,12 +246,10 @@ def evaluate(ar: Arithmetic, data: D2bPolygons, detail: bool = False) -> list[Ch
 
     ring = ring_curvatures(ar, p, n) if data.count > 1 else None
     radii = catenoid_convergence.radii(ar, n[:, 1])
-    predicted_x = catenoid_convergence.recursion_x(p, n)
-    dn_y = n[1:, 1] - n[:-1, 1]
     size = (abs(p[1:, 0]) + abs(p[:-1, 0])) * (abs(n[1:, 1]) + abs(n[:-1, 1])) + (
         abs(p[1:, 1]) + abs(p[:-1, 1])
     ) * (abs(n[1:, 0]) + abs(n[:-1, 0]))
-    recursion = abs(p[1:, 0] - predicted_x) * abs(dn_y) / size
+    recursion = abs(catenoid_convergence.recursion_x_defect(p, n)) / size
     full = data.sequence
     zero = -full.i_min
     closed = catenoid_convergence.lemma_10(ar, full.s, full.one_minus_s2, zero)

@@ -13,6 +13,7 @@ carry an erratum (E60–E63 in docs/errata.md):
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Any
 
@@ -36,6 +37,7 @@ from app.geometry.discretizations.curvature_checks import (
     minimal_residuals,
     ring_curvatures,
 )
+from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 
 S = Statement
@@ -158,6 +160,10 @@ class GaussImages:
     closed_contact: Array
     closed_gauss: Array
     constructed: bool
+    conditioning: float = 1.0
+    """Σ over the tractrix edges used by n of (|d_k| + |d_{k+1}|)/|d_{k+1} − d_k| (coordinates
+    summed): the edge directions that the inscribed recursion accumulates are known only to
+    eps times this ratio each, so it serves as the step count of n's tolerance."""
 
 
 def build(
@@ -195,6 +201,9 @@ def build(
         ar.array([uy, -ux]),  # the unit normal of stick 0
     )
     window = slice(i_min - hull_start, i_max + 1 - hull_start + 1)
+    edges = tractrix_hull[1:] - tractrix_hull[:-1]
+    sizes = magnitude(tractrix_hull[:-1], tractrix_hull[1:])
+    ratios = ar.to_floats(sizes / ar.hypot(edges[:, 0], edges[:, 1]))
     return GaussImages(
         tractrix_gauss=n_hull[window],
         contact=gauss_image.contact_points(ar, p_extended),
@@ -203,6 +212,7 @@ def build(
         closed_contact=closed_c,
         closed_gauss=closed_m,
         constructed=True,
+        conditioning=float(np.sum(ratios)),
     )
 
 
@@ -238,6 +248,8 @@ def evaluate(
     """
     nt, c, m = images.tractrix_gauss, images.contact, images.gauss
     shown = indices[:n]
+    # n accumulates the rounding of every edge direction it was built from (see GaussImages)
+    n_tolerance = max(construction_tolerance, ar.tolerance(math.ceil(images.conditioning)))
 
     def check(
         statement: Statement,
@@ -249,15 +261,21 @@ def evaluate(
             statement, ar, shown[: len(residuals)], residuals, tolerance, detail, erratum
         )
 
-    def closed(statement: Statement, built: Array, formula: Array, erratum: Erratum) -> Check:
+    def closed(
+        statement: Statement,
+        built: Array,
+        formula: Array,
+        erratum: Erratum,
+        tolerance: float = construction_tolerance,
+    ) -> Check:
         if not images.constructed:
             return not_applicable(
                 statement,
-                construction_tolerance,
+                tolerance,
                 "method=closed-form: the Gauss image was not constructed to compare",
             )
         residuals = relative_point_difference(ar, built[:n], formula[:n])
-        return check(statement, residuals, construction_tolerance, erratum)
+        return check(statement, residuals, tolerance, erratum)
 
     def printed_erratum(entry: tuple[str, str, str], built: Array, formula: Array) -> Erratum:
         residuals = relative_point_difference(ar, built[:n], formula[:n])
@@ -285,11 +303,12 @@ def evaluate(
             nt,
             images.closed_tractrix_gauss,
             printed_erratum(ERRATUM_18, nt, printed["18"]),
+            n_tolerance,
         ),
         check(
             EQUATION_18_SLOPE,
             point_distance(ar, nt[:n], from_slope[:n]),
-            construction_tolerance,
+            n_tolerance,
             Erratum(
                 *ERRATUM_18_SLOPE,
                 printed_residual=printed_residual(
@@ -306,7 +325,7 @@ def evaluate(
         check(
             EQUATION_19_ROTATION,
             point_distance(ar, c[1 : n + 1], rotated[:n]),
-            construction_tolerance,
+            n_tolerance,
         ),
         check(
             EQUATION_20_INVERSION,
@@ -314,6 +333,6 @@ def evaluate(
             local_tolerance,
         ),
         closed(EQUATION_20, m, images.closed_gauss, printed_erratum(ERRATUM_20, m, printed["20"])),
-        check(THEOREM_7, theorem_7[:n], construction_tolerance),
+        check(THEOREM_7, theorem_7[:n], n_tolerance),
         check(THEOREM_8, theorem_8[:n], construction_tolerance),
     ]
