@@ -7,8 +7,12 @@ HOST ?= 127.0.0.1
 PORT ?= 8000
 WORKERS ?= 1
 PYTEST_ARGS ?=
+VENDOR := app/static/vendor
+CHROMIUM ?= /usr/bin/chromium
+# root installs system packages directly; anyone else through sudo
+SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: run test lint openapi bench install install-dev clean
+.PHONY: run test lint openapi bench fuzz load install install-dev assets browser clean
 
 # The runtime install: a virtual environment with every package pinned in requirements/runtime.txt.
 $(BIN)/.runtime-installed: requirements/runtime.txt pyproject.toml
@@ -27,11 +31,31 @@ $(BIN)/.dev-installed: $(BIN)/.runtime-installed requirements/dev.txt
 install: $(BIN)/.runtime-installed
 install-dev: $(BIN)/.dev-installed
 
-run: $(BIN)/.runtime-installed
-	$(BIN)/python -m uvicorn app.main:app --host $(HOST) --port $(PORT) --workers $(WORKERS)
+# The explorer's front-end files: three.js from the npm registry, pinned in package-lock.json,
+# copied into app/static/vendor/ (not committed). Debian's nodejs and npm if node is missing.
+$(VENDOR)/.built: package.json package-lock.json scripts/build-assets.mjs
+	command -v npm >/dev/null 2>&1 || { $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq nodejs npm; }
+	npm ci --no-audit --no-fund
+	npm run build
+	touch $@
 
-test: $(BIN)/.dev-installed
-	$(BIN)/python -m pytest $(PYTEST_ARGS)
+assets: $(VENDOR)/.built
+
+# The browser tests drive Debian's Chromium (never a browser download of a test tool).
+browser:
+	test -x $(CHROMIUM) || { $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq chromium; }
+
+# glibc malloc: few arenas and a fixed mmap threshold, so that the large numpy buffers of big
+# responses go back to the system after each request (bench/load.py measures it).
+SERVER_ENV := MALLOC_ARENA_MAX=2 MALLOC_MMAP_THRESHOLD_=131072
+
+run: $(BIN)/.runtime-installed $(VENDOR)/.built
+	$(SERVER_ENV) $(BIN)/python -m uvicorn app.main:app --host $(HOST) --port $(PORT) --workers $(WORKERS)
+
+test: $(BIN)/.dev-installed $(VENDOR)/.built browser
+	DCOSH_CHROMIUM=$(CHROMIUM) $(BIN)/python -m pytest $(PYTEST_ARGS)
 
 lint: $(BIN)/.dev-installed
 	$(BIN)/ruff check app tests bench
@@ -41,8 +65,16 @@ lint: $(BIN)/.dev-installed
 openapi: $(BIN)/.runtime-installed
 	$(BIN)/python -m app.openapi_export openapi/openapi.json
 
+# A long schema-fuzzing run: thousands of generated requests per operation.
+fuzz: $(BIN)/.dev-installed
+	FUZZ_EXAMPLES=$${FUZZ_EXAMPLES:-3000} $(BIN)/python -m pytest -q tests/api/test_fuzz.py
+
+# A bounded load run on 127.0.0.1: errors, latency percentiles, server memory.
+load: $(BIN)/.dev-installed
+	$(BIN)/python bench/load.py
+
 bench: $(BIN)/.dev-installed
 	$(BIN)/python bench/run.py
 
 clean:
-	rm -rf $(VENV) .pytest_cache .mypy_cache .ruff_cache
+	rm -rf $(VENV) .pytest_cache .mypy_cache .ruff_cache node_modules $(VENDOR) test-output

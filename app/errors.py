@@ -18,6 +18,7 @@ import orjson
 from fastapi import FastAPI, Request, Response
 from fastapi.exceptions import RequestValidationError
 from starlette.exceptions import HTTPException as StarletteHTTPException
+from starlette.routing import Match
 
 from app.geometry.errors import DomainError, GeometryError
 from app.limits import LimitExceededError
@@ -59,6 +60,8 @@ def json_safe(value: Any) -> Any:
         return str(value)
     if isinstance(value, bytes):
         return value.decode("utf-8", "replace")
+    if isinstance(value, int) and not isinstance(value, bool) and not -(2**63) <= value < 2**63:
+        return str(value)  # JSON encoders stop at 64 bits
     if isinstance(value, str | int | float | bool) or value is None:
         return value
     if isinstance(value, list | tuple):
@@ -95,7 +98,7 @@ def _constraint(error: dict[str, Any], parameter: str) -> str:
 
 
 def _parameter(loc: tuple[Any, ...] | list[Any]) -> str:
-    parts = [str(p) for p in loc if p not in ("query", "body", "path", "header")]
+    parts = [str(p) or "(empty name)" for p in loc if p not in ("query", "body", "path", "header")]
     return ".".join(parts) if parts else "body"
 
 
@@ -146,6 +149,13 @@ async def _unknown_id_handler(request: Request, exc: Exception) -> Response:
 
 async def _http_handler(request: Request, exc: Exception) -> Response:
     assert isinstance(exc, StarletteHTTPException)
+    if exc.status_code == 400:  # a body that is not even text: the same 422 as invalid JSON
+        return problem(
+            422,
+            "Invalid parameters",
+            f"The request body could not be read: {exc.detail}.",
+            [{"parameter": "body", "constraint": "a JSON object in UTF-8", "value": None}],
+        )
     titles = {404: "Not found", 405: "Method not allowed"}
     response = problem(
         exc.status_code,
@@ -154,7 +164,19 @@ async def _http_handler(request: Request, exc: Exception) -> Response:
     )
     for key, value in (exc.headers or {}).items():
         response.headers[key] = value
+    if exc.status_code == 405:
+        response.headers["Allow"] = ", ".join(allowed_methods(request))
     return response
+
+
+def allowed_methods(request: Request) -> list[str]:
+    """The documented methods of every route at this path (GET and POST are separate routes)."""
+    methods: set[str] = set()
+    for route in request.app.router.routes:
+        match, _ = route.matches(request.scope)
+        if match != Match.NONE:
+            methods.update(getattr(route, "methods", None) or ())
+    return sorted(methods - {"HEAD"})
 
 
 async def _unexpected_handler(request: Request, exc: Exception) -> Response:

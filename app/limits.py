@@ -4,6 +4,11 @@ from __future__ import annotations
 
 from app.settings import Settings
 
+#: The cost of an mp step grows like (digits + this): below ~200 digits the Python overhead of
+#: each mpmath operation dominates (measured: 1000 D4b vertices take 0.5 s at 50 digits and
+#: 1.4 s at 1000 digits with the gmpy2 backend).
+MP_OVERHEAD_DIGITS = 200
+
 
 class LimitExceededError(ValueError):
     """A request asks for more work than the configured limits allow (a 422, not a 500)."""
@@ -46,11 +51,11 @@ def enforce_range(
             )
     if precision == "mp":
         enforce_digits(settings, digits)
-        if digits * steps > settings.max_mp_work:
+        if (digits + MP_OVERHEAD_DIGITS) * steps > settings.max_mp_work:
             raise LimitExceededError(
                 "digits",
-                f"digits × steps <= {settings.max_mp_work} in precision=mp "
-                f"(this range needs {steps} steps)",
+                f"(digits + {MP_OVERHEAD_DIGITS}) × steps <= {settings.max_mp_work} in "
+                f"precision=mp (this range needs {steps} steps)",
                 digits,
             )
 
@@ -77,4 +82,16 @@ def enforce_mesh(settings: Settings, rows: int, columns: int, precision: str, di
             f"digits × mesh vertices <= {settings.max_mp_work} in precision=mp "
             f"(this mesh has {vertices} vertices)",
             digits,
+        )
+
+
+def enforce_drawing(settings: Settings, i_min: int, i_max: int) -> None:
+    """Refuse pictures of polygons with more vertices than ``max_svg_vertices``."""
+    vertices = max(0, i_max - i_min + 1)
+    if vertices > settings.max_svg_vertices:
+        raise LimitExceededError(
+            "i_max",
+            f"i_max − i_min + 1 <= {settings.max_svg_vertices} (vertices) for a picture "
+            "(format=svg or /figures); use format=json or csv for longer ranges",
+            i_max,
         )

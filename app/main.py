@@ -4,7 +4,7 @@ from fastapi import FastAPI
 from fastapi.middleware.cors import CORSMiddleware
 
 from app import __version__, errors
-from app.routers import discretizations, health, surfaces, theorems
+from app.routers import discretizations, explorer, figures, health, surfaces, theorems
 from app.settings import Settings, get_settings
 
 DESCRIPTION = """\
@@ -23,6 +23,7 @@ A_i is the signed trapezoid area under the edge p_i p_{i+1}. `precision=mp` comp
 TAGS = [
     {"name": "discretizations", "description": "Discrete hyperbolic cosines and companions."},
     {"name": "theorems", "description": "The paper's statements, checked on computed data."},
+    {"name": "figures", "description": "The paper's figures, redrawn from computed data."},
     {"name": "surfaces", "description": "Catenoids, pseudosphere and Gauss images as meshes."},
     {"name": "service", "description": "Health."},
 ]
@@ -49,6 +50,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.include_router(discretizations.router)
     app.include_router(theorems.router)
     app.include_router(surfaces.router)
+    app.include_router(figures.router)
+    explorer.install(app)
     return app
 
 

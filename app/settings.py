@@ -24,9 +24,16 @@ class Settings(BaseSettings):
     )
     max_digits: int = Field(1000, ge=1, description="Most significant digits in precision=mp.")
     max_mp_work: int = Field(
-        400_000,
+        1_000_000,
         ge=1,
-        description="Most digits × steps in precision=mp (the cost of mp grows with both).",
+        description="Most (digits + 200) × steps in precision=mp (the cost of mp grows with "
+        "both; about 1.5 s at the limit on a 2-core machine).",
+    )
+    max_svg_vertices: int = Field(
+        20_001,
+        ge=2,
+        description="Most vertices of one polygon drawn as SVG (format=svg and /figures): a "
+        "picture holds every vertex, and more than the pixels can show only adds bytes.",
     )
     max_mesh_vertices: int = Field(
         1_000_000,

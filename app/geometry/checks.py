@@ -114,6 +114,16 @@ def not_applicable(statement: Statement, tolerance: float, note: str) -> Check:
     )
 
 
+def relative_to(ar: Arithmetic, difference: Array, scale: Array) -> Array:
+    """|difference| / scale entry by entry, the scale floored at the smallest normal float.
+
+    Scales are data magnitudes; they vanish only for degenerate data (all zeros), where the
+    floor keeps 0/0 from becoming NaN (float64) or an exception (mp).
+    """
+    tiny = ar.scalar(np.finfo(np.float64).tiny)
+    return abs(difference) / np.where(scale > tiny, scale, tiny)
+
+
 def relative_difference(ar: Arithmetic, computed: Array, expected: Array) -> Array:
     """``|computed - expected| / max(|expected|, tiny)`` entry by entry."""
     scale = np.abs(expected)

@@ -1,7 +1,8 @@
-"""The defining conditions (D1), (D3) and eq. (2) as residuals of a polygon, with fitted constants.
+"""The conditions (D1), (D3), eqs. (2) and (7) as residuals of a polygon, with fitted constants.
 
-Each condition has the form lhs_i = c · rhs_i for one constant c > 0. ``fit`` finds c by least
-squares and reports, for each equation, |lhs_i − c·rhs_i| / (|lhs|_i + |c|·|rhs|_i), where
+Each condition has the form lhs_i = c · rhs_i for one constant c > 0 (eq. (7): two constants,
+``equation_7``). ``fit`` finds c by least squares and reports, for each equation,
+|lhs_i − c·rhs_i| / (|lhs|_i + |c|·|rhs|_i), where
 |lhs|_i and |rhs|_i are the magnitudes of the stored numbers the two sides are computed from
 (``polygon.*_magnitude``). So a residual is relative to what the data can resolve: cancellation
 in Δ² or in the edges of vertices far from the origin does not inflate it, and a polygon that
@@ -86,3 +87,51 @@ def equation_2(ar: Arithmetic, p: Array) -> ConditionFit:
         second_difference_magnitude(y),
         sizes[:-1] + sizes[1:],
     )
+
+
+@dataclass(frozen=True)
+class TwoConstantFit:
+    """Fitted constants (c_1, c_2) and per-equation residuals of eq. (7) on one polygon."""
+
+    constants: tuple[Scalar, Scalar] | None
+    """Least-squares (c_1, c_2); ``None`` when they are not determined (too few equations)."""
+    residuals: Array
+    """``(m,)`` relative residuals; equation k has index i = i_min + k."""
+
+
+def equation_7(ar: Arithmetic, p: Array, i_min: int) -> TwoConstantFit:
+    """Eq. (7): Δ²p_i^y = c_1 A_i + c_2 A_{i+1} (i even), c_2 A_i + c_1 A_{i+1} (i odd).
+
+    ``p`` holds p_{i_min} .. p_{i_max}; equations i = i_min .. i_max − 2. (c_1, c_2) solve the
+    weighted least-squares problem (each equation divided by the magnitude of its Δ²) through
+    its 2×2 normal equations; the residual of equation i is
+    |Δ²p_i^y − c_1 u_i − c_2 v_i| / (|Δ²|_i + |c_1| |u|_i + |c_2| |v|_i) with (u_i, v_i) the areas
+    multiplying c_1 and c_2.
+    """
+    y = p[:, 1]
+    lhs = second_difference(y)
+    areas = signed_areas(p)
+    sizes = area_magnitude(p)
+    even = (np.arange(i_min, i_min + len(lhs)) % 2) == 0
+    u = np.where(even, areas[:-1], areas[1:])  # multiplies c_1
+    v = np.where(even, areas[1:], areas[:-1])  # multiplies c_2
+    u_size = np.where(even, sizes[:-1], sizes[1:])
+    v_size = np.where(even, sizes[1:], sizes[:-1])
+    lhs_size = second_difference_magnitude(y)
+    tiny = ar.scalar(np.finfo(np.float64).tiny)
+    weight = np.where(lhs_size > tiny, lhs_size, tiny)
+    uw, vw, lw = u / weight, v / weight, lhs / weight
+    zero = ar.scalar(0)
+    suu, svv, suv = np.sum(uw * uw), np.sum(vw * vw), np.sum(uw * vw)
+    slu, slv = np.sum(lw * uw), np.sum(lw * vw)
+    det = suu * svv - suv * suv if len(lhs) else zero
+    if len(lhs) >= 2 and abs(det) > ar.eps * ar.eps * abs(suu * svv):
+        c1 = (slu * svv - slv * suv) / det
+        c2 = (suu * slv - suv * slu) / det
+        constants: tuple[Scalar, Scalar] | None = (c1, c2)
+    else:
+        c1 = c2 = zero
+        constants = None
+    scale = lhs_size + abs(c1) * u_size + abs(c2) * v_size
+    scale = np.where(scale > tiny, scale, tiny)
+    return TwoConstantFit(constants, abs(lhs - c1 * u - c2 * v) / scale)

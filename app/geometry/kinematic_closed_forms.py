@@ -12,7 +12,7 @@ a·cosh(u) as exp(ln(a/2) + |u|)·(1 + e^{−2|u|}) and a/cosh(u) as exp(ln(2a) 
 which are accurate for every index whose value is representable.
 
 Tilted start (an extension, not in the paper): for a first stick at angle β0 the construction is
-the vertical one advanced by the non-integer index τ = artanh(−cos β0)/L, so p_i and d_i are
+the vertical one advanced by the non-integer index τ = ln(tan(β0/2))/L, so p_i and d_i are
 (14) and (16) at i + τ, translated back by 2dτ along the x-axis. τ = 0 for β0 = π/2.
 """
 
@@ -27,10 +27,15 @@ def log_ratio(ar: Arithmetic, h: Scalar, d: Scalar) -> Scalar:
 
 
 def tilt_shift(ar: Arithmetic, h: Scalar, d: Scalar, beta0: float | None) -> Scalar:
-    """τ = artanh(−cos β0)/L, the index shift of a tilted first stick (0 when vertical)."""
+    """τ = artanh(−cos β0)/L = ln(tan(β0/2))/L, the index shift of a tilted first stick.
+
+    0 for the vertical stick. The logarithmic form stays finite for β0 within an ulp of 0 or π,
+    where −cos β0 rounds to ±1.
+    """
     if beta0 is None:
         return ar.scalar(0)
-    return ar.atanh(-ar.cos(ar.scalar(beta0))) / log_ratio(ar, h, d)
+    half = ar.scalar(beta0) / 2
+    return ar.log(ar.sin(half) / ar.cos(half)) / log_ratio(ar, h, d)
 
 
 def amplitude_cosh(ar: Arithmetic, a: Scalar, u: Array) -> Array:

@@ -46,6 +46,8 @@ class Arithmetic:
     digits: int
     eps: float
     """Unit of the *requested* precision: 2**-52 in float64, 10**-digits in mp."""
+    working_eps: float
+    """Unit of the precision actually computed with (mp carries guard digits)."""
 
     def scalar(self, value: float | int | str) -> Scalar:
         """One number in this precision; floats are read as their shortest decimal."""
@@ -109,6 +111,7 @@ class Float64(Arithmetic):
     mode: PrecisionMode = "float64"
     digits = 16
     eps = float(np.finfo(np.float64).eps)
+    working_eps = eps
 
     exp = staticmethod(np.exp)
     log = staticmethod(np.log)
@@ -157,9 +160,11 @@ class MultiPrecision(Arithmetic):
             raise DomainError("digits", "digits >= 1", digits)
         self.digits = digits
         self.eps = 10.0 ** (-digits)
+        self.working_eps = 10.0 ** (-digits - GUARD_DIGITS)
         self.ctx = mpmath.MPContext()
         self.ctx.dps = digits + GUARD_DIGITS
         ctx = self.ctx
+        ctx.npconvert = _array_aware_npconvert(ctx.npconvert)
         self.exp = _elementwise(ctx.exp)
         self.log = _elementwise(ctx.log)
         self.sqrt = _elementwise(ctx.sqrt)
@@ -203,6 +208,22 @@ class MultiPrecision(Arithmetic):
         nstr = self.ctx.nstr
         digits = self.digits
         return [nstr(v, digits) for v in values]
+
+
+def _array_aware_npconvert(convert: Callable[[Any], Any]) -> Callable[[Any], Any]:
+    """mpmath's numpy conversion, refusing arrays at once.
+
+    ``mpf * array`` asks mpmath to convert the array first; mpmath refuses with a TypeError whose
+    message holds the repr of the whole array (formatting every entry) before numpy takes over
+    elementwise. Refusing without the repr keeps ``scalar * array`` O(n) arithmetic only.
+    """
+
+    def npconvert(x: Any) -> Any:
+        if isinstance(x, np.ndarray) and x.ndim > 0:
+            raise TypeError("cannot create mpf from an array")
+        return convert(x)
+
+    return npconvert
 
 
 def _elementwise(function: Callable[..., Any], arity: int = 1) -> Callable[..., Any]:

@@ -10,11 +10,15 @@ from pydantic import BaseModel, ValidationError
 from app.errors import UnknownIdError
 from app.geometry.curve import Curve
 from app.geometry.precision import arithmetic
-from app.limits import enforce_range
+from app.limits import enforce_drawing, enforce_range
 from app.registry import DISCRETIZATIONS, Discretization
+from app.rendering.curves import SVG_MEDIA_TYPE, curve_svg
 from app.responses import CSV_MEDIA_TYPE, JSONBytesResponse, curve_csv, curve_document, encode_json
 from app.schemas.common import CurveQuery
 from app.settings import Settings
+
+#: An SVG opened on its own is a document: it may style itself but load and run nothing.
+SVG_HEADERS = {"Content-Security-Policy": "default-src 'none'; style-src 'unsafe-inline'"}
 
 
 def settings_of(request: Request) -> Settings:
@@ -70,6 +74,8 @@ def compute(entry: Discretization, query: CurveQuery, settings: Settings) -> Cur
         query.precision,
         query.digits,
     )
+    if query.format == "svg":
+        enforce_drawing(settings, arguments["i_min"], arguments["i_max"])
     ar = arithmetic(query.precision, query.digits)
     return entry.compute(ar, **arguments)
 
@@ -77,4 +83,6 @@ def compute(entry: Discretization, query: CurveQuery, settings: Settings) -> Cur
 def curve_response(curve: Curve, response_format: str) -> Response:
     if response_format == "csv":
         return Response(curve_csv(curve), media_type=CSV_MEDIA_TYPE)
+    if response_format == "svg":
+        return Response(curve_svg(curve), media_type=SVG_MEDIA_TYPE, headers=SVG_HEADERS)
     return JSONBytesResponse(encode_json(curve_document(curve)))

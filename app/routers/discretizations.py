@@ -2,14 +2,16 @@
 
 from typing import Annotated, Any
 
+import orjson
 from fastapi import APIRouter, Depends, Query, Request, Response
 
 from app.errors import UnknownIdError
+from app.geometry.precision import Float64
 from app.registry import DISCRETIZATIONS, Discretization
-from app.responses import cached, canonical_key
+from app.responses import cached, canonical_key, curve_document, encode_json
 from app.routers.common import compute, curve_response, reject_repeated_parameters, settings_of
 from app.schemas.catalog import DiscretizationEntry, ParameterInfo
-from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES, CurveQuery
+from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES, CurveQuery, StrictModel
 from app.schemas.curve import CurveResponse
 
 router = APIRouter(prefix="/discretizations", tags=["discretizations"])
@@ -17,7 +19,7 @@ router = APIRouter(prefix="/discretizations", tags=["discretizations"])
 COMMON_FIELDS = frozenset(CurveQuery.model_fields)
 
 
-def parameter_infos(model: type[CurveQuery]) -> list[ParameterInfo]:
+def parameter_infos(model: type[StrictModel]) -> list[ParameterInfo]:
     """The catalog's parameter list, read from the request model's JSON schema."""
     properties: dict[str, Any] = model.model_json_schema()["properties"]
     infos = []
@@ -73,9 +75,11 @@ CURVE_RESPONSES: dict[int | str, dict[str, Any]] = {
             "text/csv": {
                 "schema": {"type": "string"},
                 "example": "curve,index,x,y\np,0,-0.1,1.0\np,1,0.1,1.0\n",
-            }
+            },
+            "image/svg+xml": {"schema": {"type": "string"}},
         },
-        "description": "The curve as JSON (default) or CSV (`format=csv`). GET responses carry "
+        "description": "The curve as JSON (default), CSV (`format=csv`) or SVG (`format=svg`: p "
+        "and its companions with axes, legend and equal scales). GET responses carry "
         "an ETag and Cache-Control; a matching If-None-Match gets 304.",
     },
     304: {"description": "Not modified (the If-None-Match ETag matches)."},
@@ -83,9 +87,39 @@ CURVE_RESPONSES: dict[int | str, dict[str, Any]] = {
 }
 
 
+def example_document(entry: Discretization) -> Any:
+    """A real response (default parameters, three vertices from index 0) to show in /docs.
+
+    Numbers are rounded to 12 digits so that the stored OpenAPI document does not depend on the
+    last bits of a CPU's exp and log.
+    """
+    query = entry.query.model_validate({})
+    arguments = query.core_arguments()
+    first = 0 if arguments["i_min"] <= 0 <= arguments["i_max"] else arguments["i_min"]
+    arguments.update(i_min=first, i_max=first + 2)
+    curve = entry.compute(Float64(), **arguments)
+    return _rounded(orjson.loads(encode_json(curve_document(curve))))
+
+
+def _rounded(value: Any) -> Any:
+    if isinstance(value, float):
+        return float(f"{value:.12g}")
+    if isinstance(value, list):
+        return [_rounded(v) for v in value]
+    if isinstance(value, dict):
+        return {k: _rounded(v) for k, v in value.items()}
+    return value
+
+
+def _with_example(responses: dict[int | str, dict[str, Any]], example: Any) -> dict[int | str, Any]:
+    ok = dict(responses[200])
+    ok["content"] = {"application/json": {"example": example}, **ok["content"]}
+    return {**responses, 200: ok}
+
+
 def _register(entry: Discretization) -> None:
     """Add GET and POST /discretizations/{id} for one discretization."""
-    model = entry.query
+    model, body = entry.query, entry.body
     identifier = entry.info.id
 
     def get_curve(request: Request, query: Annotated[model, Query()]) -> Response:  # type: ignore[valid-type]
@@ -98,13 +132,13 @@ def _register(entry: Discretization) -> None:
             lambda: curve_response(compute(entry, parsed, settings), parsed.format),
         )
 
-    def post_curve(request: Request, query: model) -> Response:  # type: ignore[valid-type]
+    def post_curve(request: Request, query: body) -> Response:  # type: ignore[valid-type]
         parsed: CurveQuery = query
         return curve_response(compute(entry, parsed, settings_of(request)), parsed.format)
 
     common = {
         "response_model": CurveResponse,
-        "responses": CURVE_RESPONSES,
+        "responses": _with_example(CURVE_RESPONSES, example_document(entry)),
         "description": entry.description,
     }
     router.add_api_route(

@@ -32,6 +32,15 @@ class DiscretizationEntry(BaseModel):
     statements: list[str] = Field(description="Ids of the statements checked (GET /theorems).")
 
 
+class FigureEntry(BaseModel):
+    id: str = Field(description="Id used in /figures/{id}.svg, e.g. `figure-4`.")
+    title: str
+    reference: str = Field(description="Where the paper shows it.")
+    description: str = Field(description="What is drawn, and where its data come from.")
+    url: str = Field(description="Path of the picture (default parameters).")
+    parameters: list[ParameterInfo] = Field(description="Adjustable parameters (query).")
+
+
 class StatementInfo(BaseModel):
     id: str
     reference: str

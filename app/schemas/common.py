@@ -26,12 +26,14 @@ class CurveQuery(StrictModel):
         ge=1,
         le=100_000,
         description="Significant digits for precision=mp (at most DCOSH_MAX_DIGITS, default "
-        "1000; digits × steps is bounded by DCOSH_MAX_MP_WORK). Ignored in float64.",
+        "1000; (digits + 200) × steps is bounded by DCOSH_MAX_MP_WORK). Ignored in float64.",
     )
-    format: Literal["json", "csv"] = Field(
+    format: Literal["json", "csv", "svg"] = Field(
         "json",
-        description="`json` (default) or `csv` (columns curve,index,x,y: the polygon `p` "
-        "followed by each companion).",
+        description="`json` (default), `csv` (columns curve,index,x,y: the polygon `p` "
+        "followed by each companion) or `svg` (a self-contained picture of `p` and its "
+        "companions with axes and a legend, equal scales; at most DCOSH_MAX_SVG_VERTICES "
+        "vertices per polygon).",
     )
     detail: bool = Field(
         False, description="Fill each check's `per_index` with the residual at every index."
@@ -40,6 +42,18 @@ class CurveQuery(StrictModel):
     def core_arguments(self) -> dict[str, Any]:
         """The keyword arguments of the core's ``compute`` (the paper's parameters)."""
         return self.model_dump(exclude={"precision", "digits", "format"})
+
+
+def strict_body(model: type[CurveQuery]) -> type[CurveQuery]:
+    """The JSON-body variant of a request model: the same fields, validated strictly.
+
+    Query strings are text and must be parsed leniently ("0.3" is a number); a JSON body has real
+    types, so `false` is not an integer and `"1"` is not a number there.
+    """
+    name = model.__name__.removesuffix("Query") + "Body"
+    config = ConfigDict(**{**model.model_config, "strict": True})
+    namespace = {"model_config": config, "__doc__": model.__doc__, "__module__": model.__module__}
+    return type(name, (model,), namespace)
 
 
 class ProblemParameterError(BaseModel):

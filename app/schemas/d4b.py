@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from typing import Any, Literal
+from typing import Annotated, Any, Literal
 
 from pydantic import Field
 
@@ -28,36 +28,51 @@ In float64, coordinates are kept below 1e150 and d/h ≥ 1e-6; beyond, use preci
 """
 
 
-class D4bQuery(CurveQuery):
-    """(D4b) parameters; the paper's symbols h, d, beta0 (= β0)."""
-
-    h: float = Field(
-        1.0,
+StickLength = Annotated[
+    float,
+    Field(
         gt=0,
         le=1e100,
         description="Stick length h (> 0); also p_1^y when beta0 = π/2.",
         json_schema_extra={"domain": "h > 0"},
-    )
-    d: float = Field(
-        0.1,
+    ),
+]
+HalfStep = Annotated[
+    float,
+    Field(
         gt=0,
         le=1e100,
         description="Half the step of the stick's end along the x-axis (x_i = (2di, 0)); "
         "0 < d < h.",
         json_schema_extra={"domain": "0 < d < h"},
-    )
-    beta0: float = Field(
-        math.pi / 2,
+    ),
+]
+StickAngle = Annotated[
+    float,
+    Field(
         gt=0,
         lt=math.pi,
         description="Angle of stick 0 with the positive x-axis, radians, 0 < beta0 < π. The "
         "default (the double nearest π/2) means exactly vertical, also in precision=mp.",
         json_schema_extra={"domain": "0 < beta0 < π"},
-    )
-    i_min: int = Field(-10, ge=-10_000_000, le=10_000_000, description="First index i (inclusive).")
-    i_max: int = Field(
-        10, ge=-10_000_000, le=10_000_000, description="Last index i (inclusive), >= i_min."
-    )
+    ),
+]
+Index = Annotated[int, Field(ge=-10_000_000, le=10_000_000)]
+
+
+def stick_angle(beta0: float) -> float | None:
+    """The core's ``beta0``: ``None`` (exactly vertical in every precision) for the default."""
+    return None if beta0 == math.pi / 2 else beta0
+
+
+class D4bQuery(CurveQuery):
+    """(D4b) parameters; the paper's symbols h, d, beta0 (= β0)."""
+
+    h: StickLength = 1.0
+    d: HalfStep = 0.1
+    beta0: StickAngle = math.pi / 2
+    i_min: Index = Field(-10, description="First index i (inclusive).")
+    i_max: Index = Field(10, description="Last index i (inclusive), >= i_min.")
     method: Literal["construction", "closed-form"] = Field(
         "construction",
         description="`construction`: from the definition (compared with Theorems 5, 6). "
@@ -66,6 +81,5 @@ class D4bQuery(CurveQuery):
 
     def core_arguments(self) -> dict[str, Any]:
         arguments = super().core_arguments()
-        if arguments["beta0"] == math.pi / 2:
-            arguments["beta0"] = None  # exactly vertical, in every precision
+        arguments["beta0"] = stick_angle(self.beta0)
         return arguments

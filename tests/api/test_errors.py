@@ -35,13 +35,19 @@ def problem(response, status: int) -> dict:
         ("i_min=5&i_max=4", "i_max", "i_min <= i_max"),
         ("i_max=20000000", "i_max", "i_max <= 10000000"),
         ("d=0.5&i_max=400", "i_max", "|i_max| <= 312 in float64"),
-        ("d=1e-9", "d", "d/h >= 1e-06 in float64"),
+        ("d=1e-9", "d", "d/h >= 1.5e-06 in float64"),
+        ("d=1e-30&precision=mp&digits=30", "d", "d/h >= 1e-18 in mp with 30 digits"),
+        ("=1", "(empty name)", "not a parameter of this endpoint"),
         ("precision=quad", "precision", "precision is one of 'float64' or 'mp'"),
         ("method=guess", "method", "method is one of"),
         ("format=xml", "format", "format is one of"),
         ("digits=0&precision=mp", "digits", "digits >= 1"),
         ("digits=5000&precision=mp", "digits", "1 <= digits <= 1000"),
-        ("precision=mp&digits=1000&i_min=-300&i_max=300", "digits", "digits × steps <= 400000"),
+        (
+            "precision=mp&digits=1000&i_min=-500&i_max=500",
+            "digits",
+            "(digits + 200) × steps <= 1000000",
+        ),
         ("i_min=-600000&i_max=600000", "i_max", "i_max − i_min + 1 <= 1000001"),
         ("method=construction&i_min=3000000&i_max=3000001", "i_max", "method=construction"),
         ("color=red", "color", "not a parameter of this endpoint"),
@@ -75,9 +81,23 @@ def test_bad_post_body_is_a_422(client: TestClient) -> None:
     )
 
 
+def test_unreadable_bodies_and_huge_integers_are_422(client: TestClient) -> None:
+    headers = {"content-type": "application/json"}
+    body = problem(
+        client.post("/discretizations/d4b", content=b"o\xdf\x87\xff", headers=headers), 422
+    )
+    assert body["errors"][0]["parameter"] == "body"
+    body = problem(client.post("/discretizations/d4b", json={"digits": 2**64}), 422)
+    assert body["errors"][0] == {
+        "parameter": "digits",
+        "constraint": "digits <= 100000",
+        "value": str(2**64),
+    }
+
+
 def test_unknown_ids_are_404_listing_the_valid_ones(client: TestClient) -> None:
     body = problem(client.get("/discretizations/d9"), 404)
-    assert body["valid"] == ["d2b", "d4b"]
+    assert body["valid"] == ["d2a-hex", "d2a-quad", "d2b", "d4b"]
     assert "d4b" in body["detail"]
     body = problem(client.get("/theorems/theorem-99"), 404)
     assert "theorem-5" in body["valid"]

@@ -41,8 +41,9 @@ LOCAL_STEPS = 16
 #: two coordinates (areas, dot products), stay finite.
 FLOAT64_COORDINATE_LIMIT = 1e150
 
-#: Below this step ratio d/h the second differences of p^y drown in float64 rounding.
-FLOAT64_MIN_STEP_RATIO = 1e-6
+#: Δ²p^y/p^y is about (2d/h)²; the constants of (D1), (2) are resolved when that exceeds the
+#: working precision by this factor squared (float64: d/h >= 1.5e-6).
+RESOLUTION_MARGIN = 100
 
 S = Statement
 HYPOTHESIS = S(
@@ -325,6 +326,7 @@ def compute(
     validate(h, d, beta0)
     if i_max < i_min:
         raise DomainError("i_max", "i_min <= i_max", i_max, f"i_min = {i_min}")
+    _require_resolvable(ar, h, d)
     if ar.mode == "float64":
         _require_float64_representable(h, d, beta0, i_min, i_max)
     data = polygons(ar, h, d, beta0, i_min, i_max, method)
@@ -418,7 +420,7 @@ def _equation_2(ctx: _Context, fits: dict[str, conditions.ConditionFit]) -> Chec
     c, c1, c2 = (fits[k].constant for k in ("eq2", "d1", "d3"))
     residuals = fits["eq2"].residuals
     if c is not None and c1 is not None and c2 is not None and len(residuals):
-        quotient = abs(c - c1 / c2) / abs(c)
+        quotient = abs(c - c1 / c2) / max(abs(c), abs(c1 / c2), ctx.ar.scalar(1e-300))
         residuals = np.maximum(residuals, quotient)
     return _fitted(ctx, THEOREM_4_III, conditions.ConditionFit(c, residuals))
 
@@ -503,21 +505,40 @@ def _nikolaides(ctx: _Context, p: Array, tractrix: Array, axis: Array) -> Check:
     return ctx.check(NIKOLAIDES, 0, np.maximum(at_p, at_next))
 
 
+def _require_resolvable(ar: Arithmetic, h: float, d: float) -> None:
+    """Refuse steps so small that Δ²p^y vanishes in the working precision."""
+    smallest = RESOLUTION_MARGIN * math.sqrt(ar.working_eps)
+    if d / h < smallest:
+        more = "use precision=mp" if ar.mode == "float64" else "use more digits"
+        raise NotRepresentableError(
+            "d",
+            f"d/h >= {smallest:.2g} in {ar.mode} with {ar.digits} digits",
+            d,
+            f"d/h = {d / h:.3g}: the second differences of p^y are below the working "
+            f"precision; {more}",
+        )
+
+
 def _require_float64_representable(
     h: float, d: float, beta0: float | None, i_min: int, i_max: int
 ) -> None:
     """Refuse, before computing, ranges whose coordinates leave the float64 limits."""
-    if d / h < FLOAT64_MIN_STEP_RATIO:
-        raise NotRepresentableError(
-            "d",
-            f"d/h >= {FLOAT64_MIN_STEP_RATIO:g} in float64",
-            d,
-            "the second differences of p^y are below float64 resolution; use precision=mp",
-        )
     L = 2 * math.atanh(d / h)
-    tau = 0.0 if beta0 is None else math.atanh(-math.cos(beta0)) / L
+    tan_half = 1.0 if beta0 is None else math.tan(beta0 / 2)
+    if not 0 < tan_half < math.inf:  # β0 within a subnormal of 0
+        raise NotRepresentableError(
+            "beta0", "a first stick steep enough for float64", beta0, "use precision=mp"
+        )
+    tau = math.log(tan_half) / L
     budget = math.log(FLOAT64_COORDINATE_LIMIT) - max(0.0, math.log(h))
     largest = math.floor(budget / L - abs(tau) - 1.5)  # |i + 1 − ½ + τ|·L within the budget
+    if largest < 0:
+        raise NotRepresentableError(
+            "beta0",
+            "a first stick steep enough for float64",
+            beta0,
+            f"p_0^y would exceed {FLOAT64_COORDINATE_LIMIT:g}; use precision=mp",
+        )
     for name, value in (("i_max", i_max), ("i_min", i_min)):
         if abs(value) > largest:
             raise NotRepresentableError(

@@ -160,6 +160,8 @@ class GaussImages:
     closed_contact: Array
     closed_gauss: Array
     constructed: bool
+    contact_edges_before: Array | None = None
+    """p_{i_min−1} and p_{i_min}: the edge before the range, which m_{i_min} also uses."""
     conditioning: float = 1.0
     """Σ over the tractrix edges used by n of (|d_k| + |d_{k+1}|)/|d_{k+1} − d_k| (coordinates
     summed): the edge directions that the inscribed recursion accumulates are known only to
@@ -191,7 +193,12 @@ def build(
         ar, h, d, ar.indices(i_min - 1, i_max + 1), shift
     )
     if tractrix_hull is None or first_direction is None or p_extended is None:
-        return GaussImages(closed_n, closed_c, closed_m, closed_n, closed_c, closed_m, False)
+        before = kinematic_closed_forms.hyperbolic_cosine(
+            ar, h, d, ar.indices(i_min - 1, i_min), shift
+        )
+        return GaussImages(
+            closed_n, closed_c, closed_m, closed_n, closed_c, closed_m, False, before
+        )
     ux, uy = first_direction
     start = 0 - hull_start
     n_hull = gauss_image.inscribed_parallel(
@@ -212,6 +219,7 @@ def build(
         closed_contact=closed_c,
         closed_gauss=closed_m,
         constructed=True,
+        contact_edges_before=p_extended[:2],
         conditioning=float(np.sum(ratios)),
     )
 
@@ -267,6 +275,7 @@ def evaluate(
         formula: Array,
         erratum: Erratum,
         tolerance: float = construction_tolerance,
+        scale: Any = None,
     ) -> Check:
         if not images.constructed:
             return not_applicable(
@@ -275,6 +284,8 @@ def evaluate(
                 "method=closed-form: the Gauss image was not constructed to compare",
             )
         residuals = relative_point_difference(ar, built[:n], formula[:n])
+        if scale is not None:
+            residuals = ar.to_floats(residuals) * ar.to_floats(scale[:n])
         return check(statement, residuals, tolerance, erratum)
 
     def printed_erratum(entry: tuple[str, str, str], built: Array, formula: Array) -> Erratum:
@@ -290,12 +301,22 @@ def evaluate(
     theorem_8 = np.maximum(
         ar.to_floats(minimal_residuals(catenoid)), ar.to_floats(catenoid.parallel)
     )
+    # ñ and m come from the edges of p, which the stored vertices resolve only to eps times
+    # |p_i| + |p_{i+1}| (coordinates summed): residuals of quantities built from edge directions
+    # are scaled by the resolution |e_i| / (|p_i| + |p_{i+1}|) <= 1 (docs/checks.md)
+    resolution = _edge_resolution(ar, p)  # edges i_min .. i_max (p_i p_{i+1})
+    assert images.contact_edges_before is not None
+    before = _edge_resolution(ar, images.contact_edges_before)
+    pole_resolution = np.minimum(
+        ar.to_floats(np.concatenate([before, resolution[:-1]])), ar.to_floats(resolution)
+    )
     edges = p[1:] - p[:-1]
     slope = edges[:, 1] / edges[:, 0]  # k_{i+1} of the edge p_i p_{i+1}, eq. (12)
     from_slope = kinematic_closed_forms.normal_from_slope(ar, slope)
     slope_printed = kinematic_closed_forms.normal_from_slope_printed(ar, slope)
     rotated = stack_points(-nt[:, 1], nt[:, 0])
     inverted = kinematic_closed_forms.pole_by_inversion(c[:-1], c[1:])  # i_min .. i_max + 1
+    del from_slope
     return [
         equation_17_check(ar, shown, [(tractrix, nt), (p, m)], construction_tolerance, detail),
         closed(
@@ -307,13 +328,11 @@ def evaluate(
         ),
         check(
             EQUATION_18_SLOPE,
-            point_distance(ar, nt[:n], from_slope[:n]),
+            _along(ar, nt[:n], p[: n + 1]),
             n_tolerance,
             Erratum(
                 *ERRATUM_18_SLOPE,
-                printed_residual=printed_residual(
-                    ar, point_distance(ar, nt[:n], slope_printed[:n])
-                ),
+                printed_residual=printed_residual(ar, _along(ar, slope_printed[:n], p[: n + 1])),
             ),
         ),
         closed(
@@ -321,18 +340,45 @@ def evaluate(
             c[1:],
             images.closed_contact[1:],
             printed_erratum(ERRATUM_19, c[1:], printed["19"]),
+            scale=resolution,
         ),
         check(
             EQUATION_19_ROTATION,
-            point_distance(ar, c[1 : n + 1], rotated[:n]),
+            ar.to_floats(point_distance(ar, c[1 : n + 1], rotated[:n]))
+            * ar.to_floats(resolution[:n]),
             n_tolerance,
         ),
         check(
             EQUATION_20_INVERSION,
-            relative_point_difference(ar, m[:n], inverted[:n]),
+            ar.to_floats(relative_point_difference(ar, m[:n], inverted[:n])) * pole_resolution[:n],
             local_tolerance,
         ),
-        closed(EQUATION_20, m, images.closed_gauss, printed_erratum(ERRATUM_20, m, printed["20"])),
+        closed(
+            EQUATION_20,
+            m,
+            images.closed_gauss,
+            printed_erratum(ERRATUM_20, m, printed["20"]),
+            scale=pole_resolution,
+        ),
         check(THEOREM_7, theorem_7[:n], n_tolerance),
         check(THEOREM_8, theorem_8[:n], construction_tolerance),
     ]
+
+
+def _edge_resolution(ar: Arithmetic, points: Array) -> Array:
+    """|p_{i+1} − p_i| / (|p_i| + |p_{i+1}|) per edge (coordinates summed): at most 1."""
+    edges = points[1:] - points[:-1]
+    return ar.hypot(edges[:, 0], edges[:, 1]) / magnitude(points[:-1], points[1:])
+
+
+def _along(ar: Arithmetic, vectors: Array, points: Array) -> Array:
+    """How far unit vectors v_i are from pointing along the edges p_i p_{i+1}.
+
+    |v_i × e_i| / (|p_i| + |p_{i+1}|), or 1 where v_i points against the edge: 0 when v_i is
+    the unit vector of the edge's direction (the line of slope k_{i+1} through the centre).
+    """
+    edges = points[1:] - points[:-1]
+    crossed = abs(vectors[:, 0] * edges[:, 1] - vectors[:, 1] * edges[:, 0])
+    residual = crossed / magnitude(points[:-1], points[1:])
+    backwards = vectors[:, 0] * edges[:, 0] + vectors[:, 1] * edges[:, 1] < 0
+    return np.where(backwards, ar.scalar(1), residual)

@@ -1,0 +1,184 @@
+"""The discrete hyperbolic cosine (D2a): Christoffel duals of stereographic conformal meshes.
+
+Definition (Section 4.1). A rotationally symmetric conformal mesh of the yz-plane has a discrete
+parameter line (f_i) on the y-axis; the stereographic projection (``stereographic.project``)
+maps it to the meridian polygon φ_i = Φ(f_i) of a discrete Gaussian image on the unit sphere; the
+discrete Christoffel dual of that polygon is the discrete hyperbolic cosine:
+
+    quad mesh, eq. (4):      p_i = p_{i−1} + Δφ_{i−1}/‖Δφ_{i−1}‖²,
+    hexagonal mesh, eq. (6): p_{i+1} = p_i + k_i Δφ_i/‖Δφ_i‖², k_i = 3 (i even), 2 (i odd),
+
+with Δφ_i = φ_{i+1} − φ_i and p_0 = (0, r). The parameter lines are
+    quad, eq. (3):  f_i = f_{i−1} f_1/f_0, so f_i = f_0 (f_1/f_0)^i,
+    hexagonal:      f_i = f_{i−2} b/a for even i (f_0 = a, f_2 = b, so f_{2k} = a (b/a)^k) and
+                    f_i = λ f_{i+1} + (1 − λ) f_{i−1} for odd i.
+
+Coordinates: the first coordinate of φ (the symmetry axis) is x, the second (the distance from
+the axis) is y; then the x-steps of p are constant (quad) or 2-periodic (hexagonal), as the proofs
+state. With this orientation and (4) as printed, the polygon of Theorem 1 lies below the x-axis
+(its heights are −K(f_i + 1/f_i), see docs/errata.md, Section 4.1).
+
+The polygon is a cumulative sum of its edge vectors (numpy ``cumsum``, also on mp object
+arrays): forwards from p_0 for i > 0, backwards for i < 0. Nothing here uses a formula of the
+proofs of Theorems 1–3; ``christoffel_closed_forms`` holds those, and the checks compare.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from app.geometry.errors import DomainError
+from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
+from app.geometry.stereographic import CircleImages, chords, project
+
+
+@dataclass(frozen=True)
+class ChristoffelDual:
+    """(D2a) on the indices i_min .. i_max; arrays are aligned with ``indices``."""
+
+    indices: np.ndarray[Any, np.dtype[np.int64]]
+    f: Array
+    """f_i, the parameter line of the conformal mesh on the y-axis, ``(n,)``."""
+    gauss: Array
+    """φ_i = Φ(f_i) on the unit circle, ``(n, 2)``."""
+    gauss_edges: Array
+    """Δφ_i = φ_{i+1} − φ_i for i = i_min .. i_max − 1, ``(n − 1, 2)``."""
+    p: Array
+    """p_i, the discrete hyperbolic cosine, ``(n, 2)``."""
+
+
+def _finite_positive(name: str, value: float, constraint: str) -> None:
+    if not math.isfinite(value) or value <= 0:
+        raise DomainError(name, constraint, value)
+
+
+def validate_quad(f0: float, f1: float, r: float | None = None) -> None:
+    """Raise ``DomainError`` unless 0 < f0 < f1 (and r, if given, is finite)."""
+    _finite_positive("f0", f0, "0 < f0 < f1")
+    if not math.isfinite(f1) or f1 <= f0:
+        raise DomainError(
+            "f1",
+            "0 < f0 < f1",
+            f1,
+            f"f0 = {f0!r}; f1 = f0 makes every Gauss image edge vanish (no dual), and the "
+            "paper orders f0 < f1",
+        )
+    _validate_r(r)
+
+
+def validate_hex(a: float, b: float, lam: float, r: float | None = None) -> None:
+    """Raise ``DomainError`` unless 0 < a < b and 0 < λ < 1 (and r, if given, is finite)."""
+    _finite_positive("a", a, "0 < a < b")
+    if not math.isfinite(b) or b <= a:
+        raise DomainError(
+            "b", "0 < a < b", b, f"a = {a!r}; b = a makes every Gauss image edge vanish"
+        )
+    if not math.isfinite(lam) or not 0 < lam < 1:
+        raise DomainError(
+            "lambda",
+            "0 < lambda < 1",
+            lam,
+            "at λ = 0 or 1 an odd point coincides with an even neighbour, and the dual edge "
+            "Δφ/‖Δφ‖² is infinite",
+        )
+    _validate_r(r)
+
+
+def _validate_r(r: float | None) -> None:
+    if r is not None and not math.isfinite(r):
+        raise DomainError("r", "r is a finite number", r)
+
+
+def quad_sequence(ar: Arithmetic, f0: Scalar, f1: Scalar, i: Array) -> Array:
+    """Eq. (3): f_i = f_{i−1} f_1/f_0, i.e. f_0 (f_1/f_0)^i (the similarity applied i times)."""
+    return f0 * ar.exp(i * ar.log(f1 / f0))
+
+
+def hex_sequence(
+    ar: Arithmetic, a: Scalar, b: Scalar, lam: Scalar, i_min: int, i_max: int
+) -> Array:
+    """Section 4.1, hexagonal case: f_{2k} = a (b/a)^k; odd f_i = λ f_{i+1} + (1 − λ) f_{i−1}."""
+    i = np.arange(i_min, i_max + 1, dtype=np.int64)
+    odd = (i % 2) == 1
+    k = ar.array((i - (i % 2)) // 2)  # even index 2k at or below i
+    log_s = ar.log(b / a)
+    below = a * ar.exp(k * log_s)  # f_{i} (i even) or f_{i−1} (i odd)
+    above = a * ar.exp((k + 1) * log_s)  # f_{i+1} for odd i
+    return np.where(odd, lam * above + (1 - lam) * below, below)
+
+
+def dual_edges(ar: Arithmetic, edges: Array, weights: Array | int) -> Array:
+    """The Christoffel dual edges k Δφ/‖Δφ‖² of eqs. (4), (6); ``(m, 2) -> (m, 2)``."""
+    dx, dy = edges[:, 0], edges[:, 1]
+    scale = weights / (dx * dx + dy * dy)
+    return stack_points(dx * scale, dy * scale)
+
+
+def accumulate(ar: Arithmetic, start: Array, edges: Array, lo: int) -> Array:
+    """Vertices from p_0 = ``start`` and the edges e_k = p_{k+1} − p_k, k = lo .. hi − 1.
+
+    ``lo <= 0``; returns p_lo .. p_hi, ``(hi − lo + 1, 2)``: forward partial sums for k >= 0,
+    backward (subtracting) partial sums for k < 0.
+    """
+    back = edges[:-lo] if lo < 0 else edges[:0]
+    ahead = edges[-lo:] if lo < 0 else edges
+    columns = []
+    for axis in (0, 1):
+        origin = start[axis]
+        before = origin - np.cumsum(back[::-1, axis])[::-1] if len(back) else back[:, axis]
+        after = origin + np.cumsum(ahead[:, axis]) if len(ahead) else ahead[:, axis]
+        columns.append(np.concatenate([before, ar.array([origin]), after]))
+    return stack_points(columns[0], columns[1])
+
+
+def _assemble(
+    ar: Arithmetic,
+    f: Array,
+    weights: Array | int,
+    r: Scalar,
+    lo: int,
+    i_min: int,
+    i_max: int,
+) -> ChristoffelDual:
+    images: CircleImages = project(ar, f)
+    gauss_edges = chords(images)
+    start = ar.array([0, r])
+    p = accumulate(ar, start, dual_edges(ar, gauss_edges, weights), lo)
+    window = slice(i_min - lo, i_max - lo + 1)
+    return ChristoffelDual(
+        indices=np.arange(i_min, i_max + 1, dtype=np.int64),
+        f=f[window],
+        gauss=images.points()[window],
+        gauss_edges=gauss_edges[i_min - lo : i_max - lo],
+        p=p[window],
+    )
+
+
+def quad(
+    ar: Arithmetic, f0: float, f1: float, r: Scalar, i_min: int, i_max: int
+) -> ChristoffelDual:
+    """(D2a), quad mesh: eqs. (3), (4) with p_0 = (0, r), on i_min .. i_max.
+
+    Vectorized: the edges come from the whole sequence at once, the vertices are their
+    cumulative sums from p_0 (so the work is max(|i_min|, |i_max|) edges).
+    """
+    validate_quad(f0, f1)
+    lo, hi = min(0, i_min), max(0, i_max)
+    f = quad_sequence(ar, ar.scalar(f0), ar.scalar(f1), ar.indices(lo, hi))
+    return _assemble(ar, f, 1, r, lo, i_min, i_max)
+
+
+def hexagonal(
+    ar: Arithmetic, a: float, b: float, lam: float, r: Scalar, i_min: int, i_max: int
+) -> ChristoffelDual:
+    """(D2a), hexagonal mesh: the sequence of Section 4.1 and eq. (6), p_0 = (0, r)."""
+    validate_hex(a, b, lam)
+    lo, hi = min(0, i_min), max(0, i_max)
+    f = hex_sequence(ar, ar.scalar(a), ar.scalar(b), ar.scalar(lam), lo, hi)
+    k = np.arange(lo, hi, dtype=np.int64)
+    weights = ar.array(np.where(k % 2 == 0, 3, 2))
+    return _assemble(ar, f, weights, r, lo, i_min, i_max)

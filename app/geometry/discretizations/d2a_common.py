@@ -1,0 +1,175 @@
+"""What the two (D2a) discretizations share: residual measures, check context, float64 limits."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+from typing import Any
+
+import numpy as np
+
+from app.geometry import conditions
+from app.geometry.checks import (
+    Check,
+    Erratum,
+    Statement,
+    check_residuals,
+    not_applicable,
+    printed_residual,
+)
+from app.geometry.errors import NotRepresentableError
+from app.geometry.polygon import magnitude
+from app.geometry.precision import Arithmetic, Array, Scalar
+
+#: Local checks combine a handful of neighbouring values; their tolerance allows this many
+#: rounding steps. Checks that compare vertices with closed forms add the number of edges
+#: summed from p_0 (rounding grows along the cumulative sum).
+LOCAL_STEPS = 16
+
+#: In float64 every f_i and 1/f_i stays below this bound, so that the printed formulas (which
+#: hold f⁴) and the areas (products of coordinates) stay finite.
+FLOAT64_F_LIMIT = 1e50
+
+#: Below this relative gap between consecutive f_i the Gauss image edges are differences of
+#: nearly equal points and float64 loses most digits (error about 1e-16/gap); use precision=mp.
+FLOAT64_MIN_GAP = 1e-4
+
+
+def require_mp_gap(ar: Arithmetic, parameter: str, what: str, value: float, gap: float) -> None:
+    """In mp, refuse relative gaps below √(working eps): their Gauss image edges vanish."""
+    smallest = math.sqrt(ar.working_eps)
+    if gap < smallest:
+        raise NotRepresentableError(
+            parameter,
+            f"{what} >= {smallest:.2g} in mp with {ar.digits} digits",
+            value,
+            "nearly equal f_i give Gauss image edges below the working precision; use more digits",
+        )
+
+
+SHARED_D1 = Statement(
+    "d1",
+    "(D1), Section 3",
+    "Δ²p_i^y = c (l_i + l_{i+1}) with one constant c (least-squares fit, in the note). Residual: "
+    "largest |Δ²p_i^y − c(l_i + l_{i+1})|, relative to the magnitude of the coordinates it is "
+    "computed from (docs/checks.md).",
+)
+SHARED_D3 = Statement(
+    "d3",
+    "(D3), Section 3",
+    "A_i = c l_i with one constant c (least-squares fit, in the note). Residual: largest "
+    "|A_i − c l_i|, relative to the magnitude of the coordinates (docs/checks.md).",
+)
+SHARED_EQUATION_2 = Statement(
+    "equation-2",
+    "Section 4.1, eq. (2)",
+    "Δ²p_i^y = c (A_i + A_{i+1}) with one constant c (least-squares fit, in the note). Residual: "
+    "largest |Δ²p_i^y − c(A_i + A_{i+1})|, relative to the magnitude of the coordinates.",
+)
+
+
+class Context:
+    """What every check of one computation shares."""
+
+    def __init__(
+        self,
+        ar: Arithmetic,
+        indices: np.ndarray[Any, np.dtype[np.int64]],
+        steps: int,
+        detail: bool,
+        gap: Scalar,
+    ) -> None:
+        """``gap``: the smallest relative gap (f_{i+1} − f_i)/f_{i+1} of the parameter line.
+
+        The Gauss image edges are differences of points whose relative distance is about the gap,
+        so every quantity derived from them carries rounding of about eps/gap: the local
+        tolerance is the core's ``Arithmetic.tolerance(16)`` times this conditioning factor 1/gap.
+        Comparisons of vertices with closed forms add ``Arithmetic.tolerance(steps)`` for the
+        rounding accumulated along the cumulative sum from p_0.
+        """
+        self.ar, self.indices, self.detail = ar, indices, detail
+        conditioning = max(1.0, 1 / ar.to_float(gap))
+        self.local = ar.tolerance(LOCAL_STEPS) * conditioning
+        self.summed = ar.tolerance(steps) + self.local
+
+    def check(
+        self,
+        statement: Statement,
+        first: int,
+        residuals: Array,
+        erratum: Erratum | None = None,
+        summed: bool = False,
+        note: str | None = None,
+        at: np.ndarray[Any, np.dtype[np.int64]] | None = None,
+    ) -> Check:
+        """A check whose k-th residual belongs to index ``indices[first + k]`` (or ``at[k]``)."""
+        idx = self.indices[first : first + len(residuals)] if at is None else at
+        tolerance = self.summed if summed else self.local
+        return check_residuals(
+            statement, self.ar, idx, residuals, tolerance, self.detail, erratum, note
+        )
+
+    def erratum(self, entry: tuple[str, str, str], residuals: Array) -> Erratum:
+        """An ``Erratum`` whose printed residual is the largest of ``residuals``."""
+        return Erratum(*entry, printed_residual=printed_residual(self.ar, residuals))
+
+
+def scaled_difference(ar: Arithmetic, computed: Array, expected: Array, size: Array) -> Array:
+    """|computed − expected| / max(|expected|, size), entry by entry (size: data magnitude)."""
+    tiny = ar.scalar(np.finfo(np.float64).tiny)
+    scale = np.maximum(np.maximum(abs(expected), size), tiny)
+    return abs(computed - expected) / scale
+
+
+def scaled_point_difference(ar: Arithmetic, computed: Array, expected: Array, size: Array) -> Array:
+    """|computed_i − expected_i| / max(|expected_i|, size_i) for ``(m, 2)`` point arrays."""
+    tiny = ar.scalar(np.finfo(np.float64).tiny)
+    norm = ar.hypot(expected[:, 0], expected[:, 1])
+    scale = np.maximum(np.maximum(norm, size), tiny)
+    dx, dy = computed[:, 0] - expected[:, 0], computed[:, 1] - expected[:, 1]
+    return ar.hypot(dx, dy) / scale
+
+
+def vertex_magnitude(*points: Array) -> Array:
+    """Sum of the absolute coordinates of the given ``(m, 2)`` vertex arrays."""
+    return magnitude(*points)
+
+
+def fitted_condition(
+    ctx: Context,
+    statement: Statement,
+    fit: conditions.ConditionFit,
+    note_holds: str,
+    note_fails: str,
+) -> Check:
+    """A (D1)/(D3)/(2) check with the fitted constant named in the note."""
+    check = ctx.check(statement, 0, fit.residuals)
+    if check.holds is None:
+        return check
+    constant = "undetermined" if fit.constant is None else f"{ctx.ar.to_float(fit.constant):.6g}"
+    note = note_holds if check.holds else note_fails
+    return replace(check, note=f"least-squares c = {constant}; {note}")
+
+
+def shifted(p: Array, dy: Scalar) -> Array:
+    """The polygon moved vertically by ``dy``."""
+    moved = p.copy()
+    moved[:, 1] = p[:, 1] + dy
+    return moved
+
+
+def not_enough(ctx: Context, statement: Statement, what: str) -> Check:
+    """A check that needs more vertices than the range has."""
+    return not_applicable(statement, ctx.summed, f"needs {what}")
+
+
+def require_f_range(name: str, log_f: list[float], value: int) -> None:
+    """Refuse a float64 range whose f_i or 1/f_i would exceed ``FLOAT64_F_LIMIT``."""
+    limit = math.log(FLOAT64_F_LIMIT)
+    if max(abs(v) for v in log_f) > limit:
+        raise NotRepresentableError(
+            name,
+            f"every f_i and 1/f_i <= {FLOAT64_F_LIMIT:g} in float64",
+            value,
+            "the conformal points leave the float64 range of the checks; use precision=mp",
+        )

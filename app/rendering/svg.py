@@ -1,0 +1,391 @@
+"""A dependency-free SVG plot writer: axes with ticks and labels, a legend, polylines, points
+and segments, optionally with equal aspect (for geometry).
+
+The output is one self-contained document: no external fonts, stylesheets, images or scripts;
+a ``viewBox`` so that it scales to any container; every text escaped. Data coordinates map to
+the picture by ``X = a_x + b_x·x`` and ``Y = a_y − b_y·y`` (y grows upwards), and each tick
+carries its value as visible text, so a reader can invert the transform from two ticks of each
+axis.
+
+Structure (what tests and scripts can rely on)::
+
+    <svg class="dcosh-plot">
+      <g class="axes"> <g class="tick x"><line/><text>0.5</text></g> ... </g>
+      <g class="data" clip-path="...">
+        <g class="series" data-name="p"> <polyline points="X,Y X,Y ..."/> <circle/>... </g>
+        <g class="series" data-name="sticks"> <path d="M X Y L X Y M ..."/> </g>
+      </g>
+      <g class="legend"> ... </g>
+    </svg>
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Literal
+from xml.sax.saxutils import escape, quoteattr
+
+import numpy as np
+
+#: Colour-blind-safe palette (Okabe–Ito), in the order series are added without a colour.
+PALETTE = (
+    "#0072B2",
+    "#D55E00",
+    "#009E73",
+    "#CC79A7",
+    "#E69F00",
+    "#56B4E9",
+    "#000000",
+    "#F0E442",
+)
+
+#: Series with more vertices than this are drawn without a marker per vertex.
+MAX_MARKERS = 400
+
+#: Pixel coordinates are written with this many decimals (1/1000 px).
+DECIMALS = 3
+
+SeriesKind = Literal["line", "points", "segments"]
+
+
+@dataclass(frozen=True)
+class Series:
+    """One thing to draw: ``(n, 2)`` finite float points (for ``segments``: ``(2m, 2)``, pairs)."""
+
+    name: str
+    label: str
+    points: np.ndarray
+    kind: SeriesKind = "line"
+    color: str | None = None
+    markers: bool = True
+    dashed: bool = False
+    width: float = 1.5
+    description: str = ""
+
+
+@dataclass
+class Plot:
+    """A 2D plot; add series, then ``render()``."""
+
+    title: str
+    x_label: str = "x"
+    y_label: str = "y"
+    equal_aspect: bool = True
+    width: int = 800
+    height: int = 560
+    """Size of the plot with its axes; the legend and footnote add rows below."""
+    subtitle: str = ""
+    footnote: str = ""
+    series: list[Series] = field(default_factory=list)
+
+    def add(self, series: Series) -> None:
+        """Add one series (its points must be finite)."""
+        points = np.asarray(series.points, dtype=np.float64).reshape(-1, 2)
+        if not np.all(np.isfinite(points)):
+            raise ValueError(f"series {series.name!r} has non-finite points")
+        color = series.color or PALETTE[len(self.series) % len(PALETTE)]
+        self.series.append(
+            Series(
+                series.name,
+                series.label,
+                points,
+                series.kind,
+                color,
+                series.markers,
+                series.dashed,
+                series.width,
+                series.description,
+            )
+        )
+
+    def render(self) -> str:
+        """The SVG document."""
+        return _Renderer(self).render()
+
+
+@dataclass(frozen=True)
+class Transform:
+    """Data -> picture coordinates: ``X = ax + bx·x``, ``Y = ay − by·y``."""
+
+    ax: float
+    bx: float
+    ay: float
+    by: float
+
+    def apply(self, points: np.ndarray) -> np.ndarray:
+        out = np.empty_like(points)
+        out[:, 0] = self.ax + self.bx * points[:, 0]
+        out[:, 1] = self.ay - self.by * points[:, 1]
+        return out
+
+
+def nice_step(span: float, target: int) -> float:
+    """A tick step of the form 1, 2 or 5 × 10^k giving about ``target`` ticks over ``span``."""
+    raw = span / max(target, 1)
+    magnitude = 10 ** math.floor(math.log10(raw))
+    for factor in (1, 2, 5, 10):
+        if factor * magnitude >= raw:
+            return float(factor * magnitude)
+    return float(10 * magnitude)  # pragma: no cover (10 always qualifies)
+
+
+def ticks(low: float, high: float, target: int) -> list[float]:
+    """Tick values covering [low, high] at a nice step."""
+    step = nice_step(high - low, target)
+    first = math.ceil(low / step - 1e-9)
+    last = math.floor(high / step + 1e-9)
+    return [k * step for k in range(first, last + 1)]
+
+
+def tick_label(value: float, step: float) -> str:
+    """A tick value with as many decimals as the step needs; a real minus sign."""
+    decimals = max(0, -math.floor(math.log10(step) + 1e-9))
+    if abs(value) < step * 1e-6:
+        value = 0.0
+    text = f"{value:.{decimals}f}"
+    if abs(value) >= 1e6 or (value != 0 and abs(value) < 1e-4):
+        text = f"{value:.3g}"
+    return text.replace("-", "\u2212")
+
+
+def parse_tick_label(text: str) -> float:
+    """The inverse of ``tick_label``."""
+    return float(text.replace("\u2212", "-"))
+
+
+def _fmt(value: float) -> str:
+    text = f"{value:.{DECIMALS}f}".rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "") else text
+
+
+def _points_attribute(points: np.ndarray) -> str:
+    return " ".join(f"{_fmt(x)},{_fmt(y)}" for x, y in points.tolist())
+
+
+def _data_range(values: np.ndarray) -> tuple[float, float]:
+    low, high = float(np.min(values)), float(np.max(values))
+    if high - low < 1e-12 * max(1.0, abs(low), abs(high)):
+        pad = max(0.5, abs(low) * 0.1)
+        return low - pad, high + pad
+    return low, high
+
+
+class _Renderer:
+    MARGIN_LEFT = 64
+    MARGIN_RIGHT = 16
+    MARGIN_TOP = 48
+    MARGIN_BOTTOM = 48
+
+    def __init__(self, plot: Plot) -> None:
+        self.plot = plot
+        legend_rows = len(plot.series)
+        self.legend_height = 18 * legend_rows + 12 if legend_rows else 0
+        self.footnote_height = 18 if plot.footnote else 0
+        self.left = self.MARGIN_LEFT
+        self.top = self.MARGIN_TOP + (16 if plot.subtitle else 0)
+        self.right = plot.width - self.MARGIN_RIGHT
+        self.bottom = plot.height - self.MARGIN_BOTTOM
+        self.total_height = plot.height + self.legend_height + self.footnote_height
+        self.x_range, self.y_range, self.transform = self._fit()
+
+    def _fit(self) -> tuple[tuple[float, float], tuple[float, float], Transform]:
+        series = self.plot.series
+        if series:
+            every = np.concatenate(
+                [s.points for s in series if len(s.points)] or [np.zeros((1, 2))]
+            )
+        else:
+            every = np.zeros((1, 2))
+        x0, x1 = _data_range(every[:, 0])
+        y0, y1 = _data_range(every[:, 1])
+        padx, pady = 0.04 * (x1 - x0), 0.06 * (y1 - y0)
+        x0, x1, y0, y1 = x0 - padx, x1 + padx, y0 - pady, y1 + pady
+        width, height = self.right - self.left, self.bottom - self.top
+        bx, by = width / (x1 - x0), height / (y1 - y0)
+        if self.plot.equal_aspect:
+            b = min(bx, by)
+            cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+            x0, x1 = cx - width / (2 * b), cx + width / (2 * b)
+            y0, y1 = cy - height / (2 * b), cy + height / (2 * b)
+            bx = by = b
+        transform = Transform(self.left - bx * x0, bx, self.top + by * y1, by)
+        return (x0, x1), (y0, y1), transform
+
+    def render(self) -> str:
+        plot = self.plot
+        w, h = plot.width, self.total_height
+        parts = [
+            '<svg xmlns="http://www.w3.org/2000/svg" class="dcosh-plot" '
+            f'viewBox="0 0 {w} {h}" width="{w}" height="{h}" role="img" '
+            'aria-labelledby="plot-title plot-desc" '
+            'font-family="DejaVu Sans, Helvetica, Arial, sans-serif" font-size="12">',
+            f'<title id="plot-title">{escape(plot.title)}</title>',
+            f'<desc id="plot-desc">{escape(self._description())}</desc>',
+            "<defs>",
+            f'<clipPath id="plot-area"><rect x="{self.left}" y="{self.top}" '
+            f'width="{self.right - self.left}" height="{self.bottom - self.top}"/></clipPath>',
+            "</defs>",
+            f'<rect class="background" x="0" y="0" width="{w}" height="{h}" fill="#ffffff"/>',
+            f'<text class="title" x="{w / 2:g}" y="22" text-anchor="middle" font-size="15" '
+            f'font-weight="bold">{escape(plot.title)}</text>',
+        ]
+        if plot.subtitle:
+            parts.append(
+                f'<text class="subtitle" x="{w / 2:g}" y="40" text-anchor="middle" '
+                f'fill="#444444">{escape(plot.subtitle)}</text>'
+            )
+        parts.append(self._axes())
+        parts.append('<g class="data" clip-path="url(#plot-area)">')
+        parts.extend(self._series(s) for s in plot.series)
+        parts.append("</g>")
+        parts.append(self._legend())
+        if plot.footnote:
+            parts.append(
+                f'<text class="footnote" x="{self.left}" y="{h - 8}" font-size="10" '
+                f'fill="#555555">{escape(plot.footnote)}</text>'
+            )
+        parts.append("</svg>")
+        return "\n".join(parts) + "\n"
+
+    def _description(self) -> str:
+        names = ", ".join(s.label for s in self.plot.series)
+        return f"{self.plot.title}. Axes {self.plot.x_label} and {self.plot.y_label}. {names}."
+
+    def _axes(self) -> str:
+        t = self.transform
+        left, right, top, bottom = self.left, self.right, self.top, self.bottom
+        out = [
+            '<g class="axes" stroke="#333333" fill="#222222">',
+            f'<rect class="frame" x="{left}" y="{top}" width="{right - left}" '
+            f'height="{bottom - top}" fill="none" stroke="#999999"/>',
+        ]
+        x_target = max(3, (right - left) // 90)
+        y_target = max(3, (bottom - top) // 60)
+        x_step = nice_step(self.x_range[1] - self.x_range[0], x_target)
+        y_step = nice_step(self.y_range[1] - self.y_range[0], y_target)
+        for value in ticks(*self.x_range, x_target):
+            X = _fmt(t.ax + t.bx * value)
+            out.append(
+                f'<g class="tick x"><line x1="{X}" y1="{top}" x2="{X}" y2="{bottom}" '
+                f'stroke="#eeeeee"/><line x1="{X}" y1="{bottom}" x2="{X}" y2="{bottom + 5}"/>'
+                f'<text x="{X}" y="{bottom + 18}" text-anchor="middle" stroke="none">'
+                f"{tick_label(value, x_step)}</text></g>"
+            )
+        for value in ticks(*self.y_range, y_target):
+            Y = _fmt(t.ay - t.by * value)
+            out.append(
+                f'<g class="tick y"><line x1="{left}" y1="{Y}" x2="{right}" y2="{Y}" '
+                f'stroke="#eeeeee"/><line x1="{left - 5}" y1="{Y}" x2="{left}" y2="{Y}"/>'
+                f'<text x="{left - 8}" y="{Y}" dy="0.35em" text-anchor="end" stroke="none">'
+                f"{tick_label(value, y_step)}</text></g>"
+            )
+        # the coordinate axes themselves, where they cross the plot
+        if self.y_range[0] <= 0 <= self.y_range[1]:
+            Y = _fmt(t.ay)
+            out.append(
+                f'<line class="axis x" x1="{left}" y1="{Y}" x2="{right}" y2="{Y}" '
+                'stroke="#777777"/>'
+            )
+        if self.x_range[0] <= 0 <= self.x_range[1]:
+            X = _fmt(t.ax)
+            out.append(
+                f'<line class="axis y" x1="{X}" y1="{top}" x2="{X}" y2="{bottom}" '
+                'stroke="#777777"/>'
+            )
+        out.append(
+            f'<text class="label x" x="{(left + right) / 2:g}" y="{bottom + 36}" '
+            f'text-anchor="middle" stroke="none">{escape(self.plot.x_label)}</text>'
+        )
+        out.append(
+            f'<text class="label y" x="16" y="{(top + bottom) / 2:g}" text-anchor="middle" '
+            f'stroke="none" transform="rotate(-90 16 {(top + bottom) / 2:g})">'
+            f"{escape(self.plot.y_label)}</text>"
+        )
+        out.append("</g>")
+        return "\n".join(out)
+
+    def _series(self, s: Series) -> str:
+        pixels = self.transform.apply(s.points)
+        dash = ' stroke-dasharray="6 4"' if s.dashed else ""
+        head = (
+            f'<g class="series {s.kind}" data-name={quoteattr(s.name)} '
+            f"data-label={quoteattr(s.label)}>"
+        )
+        if s.description:
+            head += f"<title>{escape(s.label)}: {escape(s.description)}</title>"
+        body: list[str] = [head]
+        if s.kind == "line" and len(pixels) >= 2:
+            body.append(
+                f'<polyline points="{_points_attribute(pixels)}" fill="none" stroke="{s.color}" '
+                f'stroke-width="{s.width:g}" stroke-linejoin="round"{dash}/>'
+            )
+        elif s.kind == "segments":
+            pairs = pixels.reshape(-1, 2, 2)
+            d = " ".join(
+                f"M {_fmt(a[0])} {_fmt(a[1])} L {_fmt(b[0])} {_fmt(b[1])}"
+                for a, b in pairs.tolist()
+            )
+            body.append(
+                f'<path d="{d}" fill="none" stroke="{s.color}" stroke-width="{s.width:g}"{dash}/>'
+            )
+        draw_markers = s.kind == "points" or (s.kind == "line" and (s.markers or len(pixels) < 2))
+        if draw_markers and len(pixels) <= MAX_MARKERS:
+            r = 3.0 if s.kind == "points" else 2.2
+            body.extend(
+                f'<circle cx="{_fmt(x)}" cy="{_fmt(y)}" r="{r:g}" fill="{s.color}"/>'
+                for x, y in pixels.tolist()
+            )
+        elif s.kind == "points":
+            # too many to mark one by one: a polyline of zero-length dashes keeps them visible
+            body.append(
+                f'<polyline points="{_points_attribute(pixels)}" fill="none" stroke="{s.color}" '
+                'stroke-width="3" stroke-linecap="round" stroke-dasharray="0 1e9"/>'
+            )
+        body.append("</g>")
+        return "".join(body)
+
+    def _legend(self) -> str:
+        if not self.plot.series:
+            return ""
+        y = self.bottom + self.MARGIN_BOTTOM + 14
+        out = ['<g class="legend">']
+        for k, s in enumerate(self.plot.series):
+            row = y + 18 * k
+            x = self.left
+            dash = ' stroke-dasharray="6 4"' if s.dashed else ""
+            if s.kind == "points":
+                swatch = f'<circle cx="{x + 12}" cy="{row - 4}" r="3" fill="{s.color}"/>'
+            else:
+                swatch = (
+                    f'<line x1="{x}" y1="{row - 4}" x2="{x + 24}" y2="{row - 4}" '
+                    f'stroke="{s.color}" stroke-width="{max(s.width, 2):g}"{dash}/>'
+                )
+            text = s.label + (f" — {s.description}" if s.description else "")
+            out.append(
+                f'<g class="entry" data-name={quoteattr(s.name)}>{swatch}'
+                f'<text x="{x + 32}" y="{row}">{escape(text)}</text></g>'
+            )
+        out.append("</g>")
+        return "\n".join(out)
+
+
+def segments(starts: np.ndarray, ends: np.ndarray) -> np.ndarray:
+    """Interleave ``(m, 2)`` start and end points into the ``(2m, 2)`` layout of ``segments``."""
+    out = np.empty((2 * len(starts), 2), dtype=np.float64)
+    out[0::2], out[1::2] = starts, ends
+    return out
+
+
+def describe_parameters(parameters: dict[str, object], names: Sequence[str] | None = None) -> str:
+    """``h = 1, d = 0.25, …`` for a subtitle (numbers to 6 significant digits)."""
+    shown = []
+    for key, value in parameters.items():
+        if names is not None and key not in names:
+            continue
+        if isinstance(value, float):
+            shown.append(f"{key} = {value:.6g}")
+        elif value is not None:
+            shown.append(f"{key} = {value}")
+    return ", ".join(shown)

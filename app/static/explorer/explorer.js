@@ -1,0 +1,543 @@
+// The explorer: one page on top of the public API (GET /discretizations, /discretizations/{id},
+// /figures, /openapi.json, and /smooth/*, /surfaces/* when the service offers them).
+// Every value from the API is inserted as text (textContent), never as HTML.
+
+import { plotSVG, PALETTE } from './plot.js';
+
+const $ = (id) => document.getElementById(id);
+const state = {
+  catalog: [],
+  entry: null,
+  openapi: null,
+  curve: null,
+  controller: null,
+  hidden: new Set(),
+  smooth: {},
+  surfaces: [],
+};
+
+function html(tag, attributes = {}, text = null) {
+  const node = document.createElement(tag);
+  for (const [key, value] of Object.entries(attributes)) {
+    if (value === false || value === null || value === undefined) continue;
+    node.setAttribute(key, value === true ? '' : String(value));
+  }
+  if (text !== null) node.textContent = text;
+  return node;
+}
+
+async function getJSON(url) {
+  const response = await fetch(url, { headers: { Accept: 'application/json' } });
+  if (!response.ok) throw new Error(`${url}: HTTP ${response.status}`);
+  return response.json();
+}
+
+// ---- the parameter form, built from the catalog ------------------------------------------------
+
+function schemaOf(parameter) {
+  const schema = parameter.json_schema || {};
+  if (schema.anyOf) {
+    const concrete = schema.anyOf.find((s) => s.type !== 'null') || {};
+    return { ...concrete, ...schema, anyOf: undefined, nullable: true };
+  }
+  return schema;
+}
+
+function defaultText(parameter) {
+  const value = parameter.default;
+  if (value === null || value === undefined) return '';
+  if (Array.isArray(value)) return value.join(', ');
+  return String(value);
+}
+
+function fieldKind(parameter) {
+  const schema = schemaOf(parameter);
+  if (schema.enum) return 'enum';
+  if (schema.type === 'boolean') return 'boolean';
+  if (schema.type === 'array') return 'array';
+  if (schema.type === 'integer') return 'integer';
+  if (schema.type === 'number') return 'number';
+  return 'text';
+}
+
+function buildField(parameter, initial) {
+  const name = parameter.name;
+  const kind = fieldKind(parameter);
+  const id = `param-${name}`;
+  const wrap = html('div', { class: `field ${kind === 'boolean' ? 'checkbox' : ''}`, 'data-parameter': name });
+  const help = html('p', { class: 'domain', id: `help-${name}` },
+    [parameter.domain, parameter.description].filter(Boolean).join(' — '));
+  const error = html('p', { class: 'field-error', id: `error-${name}`, hidden: true, role: 'alert' });
+  let input;
+  if (kind === 'enum') {
+    input = html('select', { id, name });
+    for (const option of schemaOf(parameter).enum) input.append(html('option', { value: option }, String(option)));
+    input.value = initial ?? defaultText(parameter);
+  } else if (kind === 'boolean') {
+    input = html('input', { id, name, type: 'checkbox' });
+    input.checked = initial !== undefined ? initial === 'true' : parameter.default === true;
+  } else if (kind === 'array') {
+    input = html('textarea', { id, name, rows: 3, placeholder: 'numbers separated by commas' });
+    input.value = initial ?? defaultText(parameter);
+  } else {
+    input = html('input', {
+      id, name, type: 'text', autocomplete: 'off', spellcheck: 'false',
+      inputmode: kind === 'integer' ? 'numeric' : kind === 'number' ? 'decimal' : 'text',
+    });
+    input.value = initial ?? defaultText(parameter);
+  }
+  input.setAttribute('aria-describedby', `help-${name} error-${name}`);
+  input.dataset.kind = kind;
+  input.dataset.default = kind === 'boolean' ? String(parameter.default === true) : defaultText(parameter);
+  const label = html('label', { for: id }, name);
+  if (kind === 'boolean') wrap.append(input, ' ', label, help, error);
+  else wrap.append(label, input, help, error);
+  return wrap;
+}
+
+function buildForm(entry, values) {
+  const paper = $('paper-parameters');
+  const common = $('common-parameters');
+  for (const fieldset of [paper, common]) {
+    for (const node of [...fieldset.children]) if (node.tagName !== 'LEGEND') node.remove();
+  }
+  for (const parameter of entry.parameters) {
+    if (parameter.name === 'format') continue; // downloads choose the format
+    const target = parameter.kind === 'common' ? common : paper;
+    target.append(buildField(parameter, values.get(parameter.name) ?? undefined));
+  }
+  $('summary').textContent = entry.summary;
+  $('reference').textContent = `Paper: ${entry.reference}`;
+}
+
+function inputs() {
+  return [...document.querySelectorAll('#form [data-parameter] input, #form [data-parameter] select, #form [data-parameter] textarea')];
+}
+
+// The parameters that differ from their defaults (what the request and the shared URL carry).
+function changedValues() {
+  const values = [];
+  for (const input of inputs()) {
+    const value = input.dataset.kind === 'boolean' ? String(input.checked) : input.value.trim();
+    if (value === '' || value === input.dataset.default) continue;
+    values.push([input.name, value, input.dataset.kind]);
+  }
+  return values;
+}
+
+function requestFor(values) {
+  const id = state.entry.id;
+  const needsBody = values.some(([, , kind]) => kind === 'array');
+  const query = new URLSearchParams(values.filter(([, , kind]) => kind !== 'array').map(([n, v]) => [n, v]));
+  if (!needsBody) return { method: 'GET', url: `/discretizations/${id}?${query}`, query };
+  const body = {};
+  for (const [name, value, kind] of values) {
+    if (kind === 'array') body[name] = value.split(/[\s,;]+/).filter(Boolean).map(Number);
+    else if (kind === 'integer' || kind === 'number') body[name] = Number(value);
+    else if (kind === 'boolean') body[name] = value === 'true';
+    else body[name] = value;
+  }
+  return { method: 'POST', url: `/discretizations/${id}`, body, query };
+}
+
+// ---- errors from the API, shown by the field they name ----------------------------------------
+
+function clearErrors() {
+  for (const node of document.querySelectorAll('.field-error')) { node.hidden = true; node.textContent = ''; }
+  for (const input of inputs()) input.removeAttribute('aria-invalid');
+  $('form-error').hidden = true;
+  $('form-error').textContent = '';
+}
+
+function showProblem(problem) {
+  let placed = 0;
+  const unplaced = [];
+  for (const error of problem.errors || []) {
+    const name = String(error.parameter || '').split('.').pop();
+    const box = $(`error-${name}`);
+    const input = $(`param-${name}`);
+    const received = error.value === null || error.value === undefined ? '' : ` (received ${JSON.stringify(error.value)})`;
+    const message = `${error.constraint}${received}`;
+    if (box && input) {
+      box.textContent = message;
+      box.hidden = false;
+      input.setAttribute('aria-invalid', 'true');
+      placed += 1;
+    } else {
+      unplaced.push(`${error.parameter}: ${message}`);
+    }
+  }
+  const box = $('form-error');
+  const lines = [problem.title ? `${problem.title}: ${problem.detail || ''}` : String(problem.detail || 'Error')];
+  if (unplaced.length) lines.push(...unplaced);
+  box.textContent = lines.join(' ');
+  box.hidden = false;
+  return placed;
+}
+
+// ---- computing and drawing -------------------------------------------------------------------
+
+function numbers(points) {
+  return points.map(([x, y]) => [Number(x), Number(y)]);
+}
+
+function curveSeries(curve) {
+  const series = [{ name: 'p', label: 'p — the discrete hyperbolic cosine', points: numbers(curve.vertices), color: PALETTE[0], width: 2 }];
+  let k = 1;
+  for (const [name, polyline] of Object.entries(curve.companions || {})) {
+    series.push({ name, label: `${name} — ${polyline.description || ''}`, points: numbers(polyline.vertices), color: PALETTE[k % PALETTE.length], width: 1.2 });
+    k += 1;
+  }
+  for (const [name, smooth] of Object.entries(state.smooth)) {
+    if (smooth.points) series.push({ name, label: smooth.label, points: smooth.points, color: '#555555', dashed: true, markers: false, width: 1.2 });
+  }
+  return series;
+}
+
+function drawPlot() {
+  const plot = $('plot');
+  if (!state.curve) return;
+  const all = curveSeries(state.curve);
+  const shown = all.filter((s) => !state.hidden.has(s.name));
+  plot.replaceChildren(plotSVG(shown, { title: state.curve.title }));
+  const layers = $('layers');
+  for (const node of [...layers.children]) if (node.tagName !== 'LEGEND') node.remove();
+  for (const s of all) {
+    const id = `layer-${s.name}`;
+    const label = html('label', { for: id });
+    const box = html('input', { type: 'checkbox', id, 'data-layer': s.name });
+    box.checked = !state.hidden.has(s.name);
+    box.addEventListener('change', () => {
+      if (box.checked) state.hidden.delete(s.name); else state.hidden.add(s.name);
+      drawPlot();
+      $(id).focus();
+    });
+    const swatch = html('span', { class: 'swatch', 'aria-hidden': 'true' });
+    swatch.style.background = s.color;
+    label.append(box, swatch, s.label);
+    layers.append(label);
+  }
+}
+
+function formatNumber(value) {
+  if (value === null || value === undefined) return '—';
+  if (typeof value === 'string') return value;
+  if (value === 0) return '0';
+  return Math.abs(value) < 1e-3 || Math.abs(value) >= 1e6 ? value.toExponential(2) : value.toPrecision(4);
+}
+
+function drawChecks(curve) {
+  const body = $('checks-table').querySelector('tbody');
+  body.replaceChildren();
+  let holds = 0, fails = 0, na = 0;
+  for (const check of curve.checks) {
+    const row = html('tr', { 'data-check': check.id });
+    const statement = html('td');
+    statement.append(html('strong', {}, check.id), html('br'), html('span', {}, check.reference),
+      html('div', { class: 'claim' }, check.claim));
+    if (check.note) statement.append(html('div', { class: 'claim' }, `Note: ${check.note}`));
+    const verdict = check.holds === true ? ['holds', '✓ holds'] : check.holds === false ? ['fails', '✗ fails'] : ['na', 'n/a'];
+    if (check.holds === true) holds += 1; else if (check.holds === false) fails += 1; else na += 1;
+    const erratum = html('td');
+    if (check.erratum) {
+      const e = check.erratum;
+      erratum.append(html('strong', {}, e.id), html('div', {}, `printed: ${e.printed}`),
+        html('div', {}, `corrected: ${e.corrected}`),
+        html('div', {}, `residual of the printed form: ${formatNumber(e.printed_residual)}`));
+    }
+    row.append(statement, html('td', { class: 'number' }, formatNumber(check.residual)),
+      html('td', { class: 'number' }, formatNumber(check.tolerance)),
+      html('td', { class: `verdict-${verdict[0]}` }, verdict[1]), erratum);
+    body.append(row);
+  }
+  $('checks-summary').textContent = `${holds} hold, ${fails} fail, ${na} not applicable (${curve.precision.mode}, ${curve.precision.digits} digits).`;
+  const constants = $('constants');
+  constants.replaceChildren();
+  const described = state.entry.constants || {};
+  for (const [name, value] of Object.entries(curve.constants || {})) {
+    constants.append(html('dt', { title: described[name] || '' }, name), html('dd', {}, `${value}${described[name] ? ` — ${described[name]}` : ''}`));
+  }
+}
+
+function updateDownloads(request) {
+  const list = $('downloads');
+  list.replaceChildren();
+  const id = state.entry.id;
+  for (const format of ['json', 'csv', 'svg']) {
+    const query = new URLSearchParams(request.query);
+    query.set('format', format);
+    const a = html('a', { href: `/discretizations/${id}?${query}`, download: `${id}.${format}`, 'data-format': format }, `${format.toUpperCase()} of this curve`);
+    list.append(html('li', {}, null));
+    list.lastChild.append(a);
+  }
+  if (request.method === 'POST') list.append(html('li', { class: 'hint' }, 'These links use GET: list parameters are sent only by POST.'));
+}
+
+function shareURL() {
+  const query = new URLSearchParams([['id', state.entry.id], ...changedValues().map(([n, v]) => [n, v])]);
+  return `${location.pathname}?${query}`;
+}
+
+async function compute() {
+  if (!state.entry) return;
+  state.controller?.abort();
+  const controller = new AbortController();
+  state.controller = controller;
+  clearErrors();
+  const request = requestFor(changedValues());
+  $('status').textContent = 'Computing…';
+  let response;
+  try {
+    response = await fetch(request.url, {
+      method: request.method,
+      headers: { Accept: 'application/json', ...(request.body ? { 'Content-Type': 'application/json' } : {}) },
+      body: request.body ? JSON.stringify(request.body) : undefined,
+      signal: controller.signal,
+    });
+  } catch (error) {
+    if (error.name === 'AbortError') return;
+    $('status').textContent = `The service did not answer: ${error.message}`;
+    return;
+  }
+  if (controller !== state.controller) return;
+  history.replaceState(null, '', shareURL());
+  if (!response.ok) {
+    let problem = { title: `HTTP ${response.status}`, detail: '', errors: [] };
+    try { problem = await response.json(); } catch { /* not JSON */ }
+    const placed = showProblem(problem);
+    $('plot').classList.add('stale');
+    $('status').textContent = placed
+      ? `Not computed: the service refused ${placed === 1 ? 'a value' : 'some values'} (see the marked field${placed === 1 ? '' : 's'}).`
+      : `Not computed: ${problem.detail || problem.title}`;
+    document.body.dataset.state = 'error';
+    return;
+  }
+  const curve = await response.json();
+  if (controller !== state.controller) return;
+  state.curve = curve;
+  $('plot').classList.remove('stale');
+  await loadSmooth(curve);
+  drawPlot();
+  drawChecks(curve);
+  updateDownloads(request);
+  $('status').textContent = `${curve.title}: ${curve.vertices.length} vertices, indices ${curve.indices[0]} … ${curve.indices[curve.indices.length - 1]}.`;
+  document.body.dataset.state = 'ready';
+  document.body.dataset.computed = String(Number(document.body.dataset.computed || 0) + 1);
+}
+
+// ---- smooth references (/smooth/catenary, /smooth/tractrix), when the service has them ---------
+
+function queryParameters(path) {
+  const operation = state.openapi?.paths?.[path]?.get;
+  if (!operation) return null;
+  return (operation.parameters || []).filter((p) => p.in === 'query').map((p) => p.name);
+}
+
+function pick(names, candidates) {
+  return candidates.find((c) => names.includes(c));
+}
+
+function smoothPoints(body) {
+  if (Array.isArray(body.vertices)) return numbers(body.vertices);
+  if (Array.isArray(body.points)) return numbers(body.points);
+  if (Array.isArray(body.x) && Array.isArray(body.y)) return body.x.map((x, k) => [Number(x), Number(body.y[k])]);
+  return null;
+}
+
+function overlayH(curve) {
+  const typed = Number($('overlay-h').value);
+  if ($('overlay-h').value.trim() !== '' && Number.isFinite(typed) && typed > 0) return typed;
+  if (typeof curve.parameters.h === 'number') return curve.parameters.h;
+  if (curve.constants.d3 !== undefined) return Number(curve.constants.d3); // c of (D3) is h for h·cosh(x/h)
+  return Math.min(...curve.vertices.map(([, y]) => Number(y)));
+}
+
+async function loadSmooth(curve) {
+  state.smooth = {};
+  const wanted = [['catenary', 'smooth catenary h·cosh(x/h)', true]];
+  if (curve.companions?.tractrix) wanted.push(['tractrix', 'smooth tractrix', false]);
+  const available = wanted.filter(([name]) => queryParameters(`/smooth/${name}`));
+  $('overlay').hidden = available.length === 0;
+  if (!available.length) return;
+  const h = overlayH(curve);
+  if ($('overlay-h').value.trim() === '') $('overlay-h').placeholder = String(h);
+  const xs = curve.vertices.map(([x]) => Number(x));
+  const [xMin, xMax] = [Math.min(...xs), Math.max(...xs)];
+  const notes = [];
+  for (const [name, label] of available) {
+    const names = queryParameters(`/smooth/${name}`);
+    const query = new URLSearchParams();
+    if (names.includes('h')) query.set('h', String(h));
+    const low = pick(names, ['x_min', 'a', 'start']);
+    const high = pick(names, ['x_max', 'b', 'stop', 'end']);
+    const count = pick(names, ['count', 'n', 'samples', 'points']);
+    if (low) query.set(low, String(xMin));
+    if (high) query.set(high, String(xMax));
+    if (count) query.set(count, '200');
+    try {
+      const body = await getJSON(`/smooth/${name}?${query}`);
+      const points = smoothPoints(body);
+      if (points) state.smooth[`smooth-${name}`] = { label: `${label}, h = ${h}`, points };
+      else notes.push(`${name}: unexpected response shape`);
+    } catch (error) {
+      notes.push(`${name}: ${error.message}`);
+    }
+  }
+  $('overlay-status').textContent = notes.length ? `Overlay not drawn — ${notes.join('; ')}` : `Drawn with h = ${h} (from GET /smooth/…).`;
+}
+
+// ---- surfaces (GET /surfaces/{id}?format=glb), when the service has them ------------------------
+
+function discoverSurfaces() {
+  const found = [];
+  for (const [path, item] of Object.entries(state.openapi?.paths || {})) {
+    if (!path.startsWith('/surfaces/') || !item.get) continue;
+    const parameters = item.get.parameters || [];
+    const pathParameter = parameters.find((p) => p.in === 'path');
+    const query = parameters.filter((p) => p.in === 'query').map((p) => p.name);
+    if (pathParameter) {
+      const schema = pathParameter.schema || {};
+      const ids = schema.enum || (schema.anyOf || []).flatMap((s) => s.enum || []);
+      for (const id of ids) found.push({ id, path: path.replace(`{${pathParameter.name}}`, id), query });
+    } else {
+      found.push({ id: path.slice('/surfaces/'.length), path, query });
+    }
+  }
+  return found;
+}
+
+function surfaceURL(surface, format) {
+  const query = new URLSearchParams();
+  const values = new Map(changedValues().map(([n, v]) => [n, v]));
+  for (const name of surface.query) {
+    if (name === 'format') continue;
+    if (['discretization', 'meridian'].includes(name)) { query.set(name, state.entry.id); continue; }
+    if (values.has(name)) query.set(name, values.get(name));
+  }
+  query.set('format', format);
+  return `${surface.path}?${query}`;
+}
+
+function setupSurfaces() {
+  state.surfaces = discoverSurfaces();
+  const select = $('surface');
+  select.replaceChildren();
+  if (!state.surfaces.length) {
+    $('surface-status').textContent = 'The 3D view needs GET /surfaces/{id}, which this service does not offer yet (it is not in /openapi.json).';
+    return;
+  }
+  for (const surface of state.surfaces) select.append(html('option', { value: surface.id }, surface.id));
+  select.disabled = false;
+  $('show-3d').disabled = false;
+  $('surface-status').textContent = `${state.surfaces.length} surface${state.surfaces.length === 1 ? '' : 's'} available.`;
+  select.addEventListener('change', updateSurfaceDownloads);
+  updateSurfaceDownloads();
+}
+
+function updateSurfaceDownloads() {
+  const list = $('surface-downloads');
+  list.replaceChildren();
+  const surface = state.surfaces.find((s) => s.id === $('surface').value);
+  if (!surface) return;
+  for (const format of ['json', 'obj', 'ply', 'glb']) {
+    const li = html('li');
+    li.append(html('a', { href: surfaceURL(surface, format), download: `${surface.id}.${format}`, 'data-format': format }, `${format.toUpperCase()} of ${surface.id}`));
+    list.append(li);
+  }
+}
+
+async function show3D() {
+  const surface = state.surfaces.find((s) => s.id === $('surface').value);
+  if (!surface) return;
+  const status = $('surface-status');
+  status.textContent = 'Loading the 3D view…';
+  let view;
+  try {
+    view = await import('./view3d.js');
+  } catch (error) {
+    status.textContent = `The 3D view is unavailable: three.js was not built into /static/vendor (run make assets). ${error.message}`;
+    return;
+  }
+  const response = await fetch(surfaceURL(surface, 'glb'));
+  if (!response.ok) {
+    let problem = {};
+    try { problem = await response.json(); } catch { /* not JSON */ }
+    status.textContent = `The service refused the surface: ${problem.detail || response.status}`;
+    return;
+  }
+  const container = $('view3d');
+  container.hidden = false;
+  $('view3d-keys').hidden = false;
+  try {
+    const info = await view.showSurface(container, await response.arrayBuffer(), $('colour-by').value);
+    $('colour-legend').textContent = info.legend;
+    status.textContent = `${surface.id}: ${info.triangles} triangles. Drag or use the arrow keys to rotate.`;
+    updateSurfaceDownloads();
+  } catch (error) {
+    status.textContent = `The surface could not be drawn: ${error.message}`;
+  }
+}
+
+// ---- figures --------------------------------------------------------------------------------
+
+async function setupFigures() {
+  let figures = [];
+  try { figures = await getJSON('/figures'); } catch { return; }
+  const list = $('figure-list');
+  list.replaceChildren();
+  for (const figure of figures) {
+    const li = html('li');
+    const link = html('a', { href: figure.url });
+    link.append(html('img', { src: figure.url, alt: figure.title, loading: 'lazy', width: 800, height: 640 }));
+    li.append(link, html('p', {}, `${figure.title} (${figure.reference})`));
+    list.append(li);
+  }
+}
+
+// ---- start ----------------------------------------------------------------------------------
+
+let timer = null;
+function scheduleCompute() {
+  clearTimeout(timer);
+  timer = setTimeout(compute, 350);
+}
+
+function selectDiscretization(id, values = new URLSearchParams()) {
+  state.entry = state.catalog.find((e) => e.id === id) || state.catalog[0];
+  $('discretization').value = state.entry.id;
+  state.hidden.clear();
+  buildForm(state.entry, values);
+}
+
+async function start() {
+  try {
+    state.catalog = await getJSON('/discretizations');
+  } catch (error) {
+    $('status').textContent = `The catalog could not be loaded: ${error.message}`;
+    return;
+  }
+  try { state.openapi = await getJSON('/openapi.json'); } catch { state.openapi = null; }
+  const select = $('discretization');
+  for (const entry of state.catalog) select.append(html('option', { value: entry.id }, `${entry.id} — ${entry.title}`));
+  const params = new URLSearchParams(location.search);
+  selectDiscretization(params.get('id') || state.catalog[0].id, params);
+
+  select.addEventListener('change', () => { selectDiscretization(select.value); compute(); });
+  const form = $('form');
+  form.addEventListener('submit', (event) => { event.preventDefault(); clearTimeout(timer); compute(); });
+  form.addEventListener('input', (event) => { if (event.target !== select) scheduleCompute(); });
+  form.addEventListener('change', (event) => { if (event.target !== select) { clearTimeout(timer); compute(); } });
+  $('defaults').addEventListener('click', () => { selectDiscretization(state.entry.id); compute(); });
+  $('copy-link').addEventListener('click', async () => {
+    const url = new URL(shareURL(), location.href).href;
+    try { await navigator.clipboard.writeText(url); $('copy-status').textContent = 'Copied.'; } catch { $('copy-status').textContent = url; }
+  });
+  $('overlay-h').addEventListener('change', async () => { if (state.curve) { await loadSmooth(state.curve); drawPlot(); } });
+  $('show-3d').addEventListener('click', show3D);
+  $('colour-by').addEventListener('change', () => { if (!$('view3d').hidden) show3D(); });
+  setupSurfaces();
+  setupFigures();
+  await compute();
+}
+
+start();

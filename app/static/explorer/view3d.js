@@ -1,0 +1,133 @@
+// The 3D view: a surface from GET /surfaces/{id}?format=glb, drawn with three.js, coloured by
+// the per-face curvature attributes `_K` / `_H` of the glTF file (three.js names them `_k`, `_h`).
+
+import * as THREE from 'three';
+import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
+import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+
+let current = null;
+
+function parse(buffer) {
+  return new Promise((resolve, reject) => new GLTFLoader().parse(buffer, '', resolve, reject));
+}
+
+// blue (negative) – white (0) – red (positive), symmetric about 0 when the values change sign;
+// a constant quantity is drawn in one colour and said so in the legend.
+function colour(value, low, high) {
+  const c = new THREE.Color();
+  if (!(high > low)) return c.setRGB(0.35, 0.55, 0.85);
+  if (low < 0 && high > 0) {
+    const m = Math.max(-low, high);
+    const t = value / m;
+    return t < 0 ? c.setRGB(1 + t * 0.8, 1 + t * 0.6, 1) : c.setRGB(1, 1 - t * 0.7, 1 - t * 0.8);
+  }
+  const t = (value - low) / (high - low);
+  return c.setRGB(0.2 + 0.75 * t, 0.35 + 0.3 * (1 - Math.abs(2 * t - 1)), 0.95 - 0.75 * t);
+}
+
+function attribute(geometry, name) {
+  return geometry.getAttribute(name) || geometry.getAttribute(name.toUpperCase());
+}
+
+function paint(meshes, quantity) {
+  let low = Infinity, high = -Infinity, found = false;
+  for (const mesh of meshes) {
+    const values = attribute(mesh.geometry, quantity);
+    if (!values) continue;
+    found = true;
+    for (let k = 0; k < values.count; k++) { const v = values.getX(k); low = Math.min(low, v); high = Math.max(high, v); }
+  }
+  for (const mesh of meshes) {
+    const geometry = mesh.geometry;
+    const values = attribute(geometry, quantity);
+    const count = geometry.getAttribute('position').count;
+    const colours = new Float32Array(count * 3);
+    for (let k = 0; k < count; k++) {
+      const c = values ? colour(values.getX(k), low, high) : new THREE.Color(0.55, 0.65, 0.8);
+      colours.set([c.r, c.g, c.b], 3 * k);
+    }
+    geometry.setAttribute('color', new THREE.BufferAttribute(colours, 3));
+    mesh.material = new THREE.MeshLambertMaterial({ vertexColors: true, side: THREE.DoubleSide, flatShading: true });
+  }
+  if (quantity === 'none') return 'Plain colour.';
+  if (!found) return `This file carries no ${quantity.toUpperCase().slice(1)} attribute.`;
+  const name = quantity === '_k' ? 'K' : 'H';
+  if (!(high > low)) return `${name} = ${low.toPrecision(6)} on every face.`;
+  return `${name} from ${low.toPrecision(4)} (blue) to ${high.toPrecision(4)} (${low < 0 && high > 0 ? 'red; white is 0' : 'red'}).`;
+}
+
+export async function showSurface(container, buffer, quantity) {
+  const gltf = await parse(buffer);
+  current?.dispose();
+  const scene = new THREE.Scene();
+  scene.background = new THREE.Color(0xf4f6f8);
+  const meshes = [];
+  gltf.scene.traverse((node) => { if (node.isMesh) meshes.push(node); });
+  if (!meshes.length) throw new Error('the file holds no mesh');
+  const legend = paint(meshes, quantity);
+  const group = new THREE.Group();
+  group.add(gltf.scene);
+  const box = new THREE.Box3().setFromObject(gltf.scene);
+  const centre = box.getCenter(new THREE.Vector3());
+  const size = box.getSize(new THREE.Vector3()).length() || 1;
+  gltf.scene.position.sub(centre);
+  scene.add(group);
+  scene.add(new THREE.HemisphereLight(0xffffff, 0x667788, 2.2));
+  const light = new THREE.DirectionalLight(0xffffff, 1.5);
+  light.position.set(1, 2, 3);
+  scene.add(light);
+
+  const width = container.clientWidth || 600, height = container.clientHeight || 400;
+  const camera = new THREE.PerspectiveCamera(40, width / height, size / 100, size * 100);
+  camera.position.set(0.2 * size, 0.5 * size, 1.2 * size);
+  const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+  renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
+  renderer.setSize(width, height, false);
+  container.replaceChildren(renderer.domElement);
+  renderer.domElement.setAttribute('aria-hidden', 'true');
+  const controls = new OrbitControls(camera, renderer.domElement);
+  const render = () => {
+    renderer.render(scene, camera);
+    container.dataset.triangles = String(renderer.info.render.triangles);
+    container.dataset.rendered = String(Number(container.dataset.rendered || 0) + 1);
+  };
+  controls.addEventListener('change', render);
+
+  const step = Math.PI / 18;
+  const act = (what) => {
+    if (what === 'left') group.rotation.y -= step;
+    else if (what === 'right') group.rotation.y += step;
+    else if (what === 'up') group.rotation.x -= step;
+    else if (what === 'down') group.rotation.x += step;
+    else if (what === 'in') camera.position.multiplyScalar(0.9);
+    else if (what === 'out') camera.position.multiplyScalar(1 / 0.9);
+    else return false;
+    render();
+    return true;
+  };
+  const keys = { ArrowLeft: 'left', ArrowRight: 'right', ArrowUp: 'up', ArrowDown: 'down', '+': 'in', '=': 'in', '-': 'out' };
+  const onKey = (event) => { if (keys[event.key] && act(keys[event.key])) event.preventDefault(); };
+  container.addEventListener('keydown', onKey);
+  const buttons = [...document.querySelectorAll('[data-rotate]')];
+  const onButton = (event) => act(event.currentTarget.dataset.rotate);
+  for (const b of buttons) b.addEventListener('click', onButton);
+  const onResize = () => {
+    const w = container.clientWidth || width, h = container.clientHeight || height;
+    camera.aspect = w / h;
+    camera.updateProjectionMatrix();
+    renderer.setSize(w, h, false);
+    render();
+  };
+  window.addEventListener('resize', onResize);
+  render();
+  current = {
+    dispose() {
+      container.removeEventListener('keydown', onKey);
+      for (const b of buttons) b.removeEventListener('click', onButton);
+      window.removeEventListener('resize', onResize);
+      controls.dispose();
+      renderer.dispose();
+    },
+  };
+  return { triangles: renderer.info.render.triangles, legend };
+}
