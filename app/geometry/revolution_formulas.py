@@ -60,12 +60,18 @@ def equation_17_residuals(
 class FaceAreas(Protocol):
     """A(f), A(n), A(f, n) of faces and the magnitudes they are computed from (``curvature``)."""
 
-    area: Array
-    gauss_area: Array
-    mixed_area: Array
-    area_magnitude: Array
-    gauss_area_magnitude: Array
-    mixed_area_magnitude: Array
+    @property
+    def area(self) -> Array: ...
+    @property
+    def gauss_area(self) -> Array: ...
+    @property
+    def mixed_area(self) -> Array: ...
+    @property
+    def area_magnitude(self) -> Array: ...
+    @property
+    def gauss_area_magnitude(self) -> Array: ...
+    @property
+    def mixed_area_magnitude(self) -> Array: ...
 
 
 def face_residuals(
