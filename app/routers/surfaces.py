@@ -5,6 +5,7 @@ from typing import Annotated, Any
 from fastapi import APIRouter, Body, Depends, Path, Request, Response
 
 from app import surface_service
+from app.registry import DISCRETIZATIONS
 from app.responses import cached, canonical_key
 from app.routers.common import (
     discretization,
@@ -23,6 +24,40 @@ from app.schemas.surfaces import (
 router = APIRouter(prefix="/surfaces", tags=["surfaces"])
 
 SURFACE_FIELDS = frozenset(SurfaceQuery.model_fields)
+
+
+def documented_parameters() -> list[dict[str, Any]]:
+    """Query parameters for OpenAPI: the surface's own, then every discretization's.
+
+    The endpoint validates the discretization's parameters against the chosen discretization's
+    model; OpenAPI lists the union so that clients (the explorer) see the names.
+    """
+    parameters: list[dict[str, Any]] = []
+    seen: set[str] = set()
+    models: list[tuple[str, Any]] = [("surface", SurfaceQuery)]
+    models += [(identifier, entry.query) for identifier, entry in DISCRETIZATIONS.items()]
+    for owner, model in models:
+        for name, schema in model.model_json_schema()["properties"].items():
+            if name in seen or (owner != "surface" and name in {"format", "detail"}):
+                continue
+            seen.add(name)
+            schema = dict(schema)
+            description = schema.pop("description", "")
+            schema.pop("title", None)
+            schema.pop("domain", None)
+            if owner != "surface":
+                description = f"Parameter of the discretization ({owner}: {description})"
+            parameters.append(
+                {
+                    "name": name,
+                    "in": "query",
+                    "required": False,
+                    "description": description,
+                    "schema": schema,
+                }
+            )
+    return parameters
+
 
 RESPONSES: dict[int | str, dict[str, Any]] = {
     200: {
@@ -76,11 +111,16 @@ def _build(identifier: str, values: dict[str, Any], request: Request) -> tuple[A
     response_model=SurfaceResponse,
     responses=RESPONSES,
     dependencies=[Depends(reject_repeated_parameters)],
+    openapi_extra={"parameters": documented_parameters()},
 )
 def get_surface(
     request: Request,
     surface_id: Annotated[
-        str, Path(description="`catenoid`, `pseudosphere`, or either's `-gauss-image`.")
+        str,
+        Path(
+            description="`catenoid`, `pseudosphere`, or either's `-gauss-image`.",
+            json_schema_extra={"enum": list(surface_service.KINDS)},
+        ),
     ],
 ) -> Response:
     kind, (surface, curve_query) = _build(surface_id, dict(request.query_params), request)
