@@ -66,6 +66,25 @@ def enforce_digits(settings: Settings, digits: int) -> None:
         raise LimitExceededError("digits", f"1 <= digits <= {settings.max_digits}", digits)
 
 
+def enforce_mesh(settings: Settings, rows: int, columns: int, precision: str, digits: int) -> None:
+    """Refuse surface meshes over the vertex budget (and mp meshes over the mp budget)."""
+    vertices = rows * columns
+    if vertices > settings.max_mesh_vertices:
+        raise LimitExceededError(
+            "m",
+            f"meridian vertices × vertices around <= {settings.max_mesh_vertices} "
+            f"(here {rows} × {columns})",
+            vertices,
+        )
+    if precision == "mp" and digits * vertices > settings.max_mp_work:
+        raise LimitExceededError(
+            "digits",
+            f"digits × mesh vertices <= {settings.max_mp_work} in precision=mp "
+            f"(this mesh has {vertices} vertices)",
+            digits,
+        )
+
+
 def enforce_drawing(settings: Settings, i_min: int, i_max: int) -> None:
     """Refuse pictures of polygons with more vertices than ``max_svg_vertices``."""
     vertices = max(0, i_max - i_min + 1)

@@ -4,7 +4,7 @@ from fastapi import FastAPI
 from fastapi.middleware.cors import CORSMiddleware
 
 from app import __version__, errors
-from app.routers import discretizations, docs, explorer, figures, health, theorems
+from app.routers import discretizations, docs, explorer, figures, health, surfaces, theorems
 from app.security import SecurityHeaders
 from app.settings import Settings, get_settings
 
@@ -25,6 +25,7 @@ TAGS = [
     {"name": "discretizations", "description": "Discrete hyperbolic cosines and companions."},
     {"name": "theorems", "description": "The paper's statements, checked on computed data."},
     {"name": "figures", "description": "The paper's figures, redrawn from computed data."},
+    {"name": "surfaces", "description": "Catenoids, pseudosphere and Gauss images as meshes."},
     {"name": "service", "description": "Health."},
 ]
 
@@ -52,6 +53,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.include_router(health.router)
     app.include_router(discretizations.router)
     app.include_router(theorems.router)
+    app.include_router(surfaces.router)
     app.include_router(figures.router)
     explorer.install(app)
     docs.install(app)

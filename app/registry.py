@@ -12,9 +12,10 @@ from functools import cached_property
 
 from app.geometry.checks import Statement
 from app.geometry.curve import Curve, DiscretizationInfo
-from app.geometry.discretizations import d2a_hex, d2a_quad, d4b
+from app.geometry.discretizations import d2a_hex, d2a_quad, d2b, d4b
 from app.schemas.common import CurveQuery, strict_body
 from app.schemas.d2a import D2A_HEX_DESCRIPTION, D2A_QUAD_DESCRIPTION, D2aHexQuery, D2aQuadQuery
+from app.schemas.d2b import D2B_DESCRIPTION, D2bQuery
 from app.schemas.d4b import D4B_DESCRIPTION, D4bQuery
 
 
@@ -37,6 +38,7 @@ _ENTRIES = (
     Discretization(d4b.INFO, D4bQuery, d4b.compute, D4B_DESCRIPTION),
     Discretization(d2a_quad.INFO, D2aQuadQuery, d2a_quad.compute, D2A_QUAD_DESCRIPTION),
     Discretization(d2a_hex.INFO, D2aHexQuery, d2a_hex.compute, D2A_HEX_DESCRIPTION),
+    Discretization(d2b.INFO, D2bQuery, d2b.compute, D2B_DESCRIPTION),
 )
 
 DISCRETIZATIONS: dict[str, Discretization] = {entry.info.id: entry for entry in _ENTRIES}

@@ -35,6 +35,12 @@ class Settings(BaseSettings):
         description="Most vertices of one polygon drawn as SVG (format=svg and /figures): a "
         "picture holds every vertex, and more than the pixels can show only adds bytes.",
     )
+    max_mesh_vertices: int = Field(
+        1_000_000,
+        ge=4,
+        description="Most vertices of one surface mesh: meridian vertices × vertices around "
+        "(2m for a closed surface, steps + 1 otherwise). GLB stores 4 vertices per face.",
+    )
     cors_origins: list[str] = Field(
         default_factory=lambda: ["*"],
         description="Origins allowed to call the API from a browser (JSON list; ['*'] for any).",

@@ -138,3 +138,84 @@ def two_step_printed(d: Scalar, before: Array, current: Array) -> Array:
         + d**4 * (2 * b**3 + 2 * a + 3 * b)
     )
     return numerator / (d**2 - a * b) ** 2
+
+
+# Section 5: the Gauss images of the pseudosphere and of the catenoid, eqs. (18)–(20).
+# With t = (i + τ)L, the power forms reduce to hyperbolic functions: ((h+d)/(h−d))^i = e^{iL}, so
+# 2(h−d)^i(h+d)^i / ((h−d)^{2i} + (h+d)^{2i}) = sech(t) and
+# ((h+d)^{2i} − (h−d)^{2i}) / ((h−d)^{2i} + (h+d)^{2i}) = tanh(t). The functions below evaluate
+# these exact rewritings (no overflow); the tests compare them with the literal power forms.
+
+
+def tractrix_gauss_image(ar: Arithmetic, h: Scalar, d: Scalar, i: Array, shift: Scalar) -> Array:
+    """(18) corrected: n_i = (sech t, tanh t), t = (i+τ)L, the unit normal of stick i."""
+    t = (i + shift) * log_ratio(ar, h, d)
+    one = ar.scalar(1)
+    return stack_points(amplitude_sech(ar, one, t), ar.tanh(t))
+
+
+def tractrix_gauss_image_printed(
+    ar: Arithmetic, h: Scalar, d: Scalar, i: Array, shift: Scalar
+) -> Array:
+    """(18) as printed: (2(h−d)^i(h+d)^i, (h−d)^{2i} − (h+d)^{2i}) / B = (sech t, −tanh t)."""
+    t = (i + shift) * log_ratio(ar, h, d)
+    one = ar.scalar(1)
+    return stack_points(amplitude_sech(ar, one, t), -ar.tanh(t))
+
+
+def normal_from_slope(ar: Arithmetic, k: Array) -> Array:
+    """(18), first form, corrected: (1, k)/√(1 + k²), the unit vector of slope k = k_{i+1}."""
+    q = ar.sqrt(1 + k * k)
+    return stack_points(1 / q, k / q)
+
+
+def normal_from_slope_printed(ar: Arithmetic, k: Array) -> Array:
+    """(18), first form, as printed: (√(1/(1 + k²)), √(k²/(1 + k²))), which loses the sign of k."""
+    return stack_points(ar.sqrt(1 / (1 + k * k)), ar.sqrt(k * k / (1 + k * k)))
+
+
+def contact_points(ar: Arithmetic, h: Scalar, d: Scalar, i: Array, shift: Scalar) -> Array:
+    """(19) corrected: ñ_i = (−tanh t, sech t), the unit normal of the edge p_i p_{i+1}."""
+    t = (i + shift) * log_ratio(ar, h, d)
+    one = ar.scalar(1)
+    return stack_points(-ar.tanh(t), amplitude_sech(ar, one, t))
+
+
+def contact_points_printed(ar: Arithmetic, h: Scalar, d: Scalar, i: Array, shift: Scalar) -> Array:
+    """(19) as printed: ((h+d)^{2i} − (h−d)^{2i}, 2(h−d)^i(h+d)^i) / B = (tanh t, sech t)."""
+    t = (i + shift) * log_ratio(ar, h, d)
+    one = ar.scalar(1)
+    return stack_points(ar.tanh(t), amplitude_sech(ar, one, t))
+
+
+def circumscribed_gauss_image(
+    ar: Arithmetic, h: Scalar, d: Scalar, i: Array, shift: Scalar
+) -> Array:
+    """(20) corrected: m_i = (dB − hA, 2h(h²−d²)^i)/(hB − dA) = (−tanh u, h/(a cosh u)).
+
+    u = (i − ½ + τ)L and a = √(h² − d²), so m_i^y = h / p_i^y with p_i^y from (14).
+    """
+    u = (i - 0.5 + shift) * log_ratio(ar, h, d)
+    amplitude = h / ar.sqrt((h - d) * (h + d))
+    return stack_points(-ar.tanh(u), amplitude_sech(ar, amplitude, u))
+
+
+def circumscribed_gauss_image_printed(
+    ar: Arithmetic, h: Scalar, d: Scalar, i: Array, shift: Scalar
+) -> Array:
+    """(20) as printed, read as the column vector (hA − dB, 2h(h²−d²)^i) over dA + hB.
+
+    Divided by B: ((h tanh t − d), h sech t) / (h + d tanh t), t = (i+τ)L.
+    """
+    t = (i + shift) * log_ratio(ar, h, d)
+    tanh = ar.tanh(t)
+    one = ar.scalar(1)
+    denominator = h + d * tanh
+    return stack_points((h * tanh - d) / denominator, h * amplitude_sech(ar, one, t) / denominator)
+
+
+def pole_by_inversion(before: Array, after: Array) -> Array:
+    """(20), first form: 2(ñ_{i−1} + ñ_i)/|ñ_{i−1} + ñ_i|², the midpoint inverted in the circle."""
+    total = before + after
+    squared = total[:, 0] * total[:, 0] + total[:, 1] * total[:, 1]
+    return stack_points(2 * total[:, 0] / squared, 2 * total[:, 1] / squared)

@@ -1,11 +1,11 @@
 """What the curve and theorem endpoints share: parsing, limits, computing, encoding."""
 
 from collections.abc import Mapping
-from typing import Any
+from typing import Any, TypeVar
 
 from fastapi import Request, Response
 from fastapi.exceptions import RequestValidationError
-from pydantic import ValidationError
+from pydantic import BaseModel, ValidationError
 
 from app.errors import UnknownIdError
 from app.geometry.curve import Curve
@@ -51,7 +51,10 @@ def discretization(identifier: str) -> Discretization:
         raise UnknownIdError("discretization", identifier, sorted(DISCRETIZATIONS)) from None
 
 
-def parse_query(model: type[CurveQuery], values: Mapping[str, Any]) -> CurveQuery:
+Model = TypeVar("Model", bound=BaseModel)
+
+
+def parse_query(model: type[Model], values: Mapping[str, Any]) -> Model:
     """Validate raw query values against a request model, as FastAPI would."""
     try:
         return model.model_validate(dict(values))

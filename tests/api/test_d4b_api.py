@@ -32,7 +32,14 @@ def test_default_curve_matches_the_core_and_the_schema(client: TestClient) -> No
     assert body["indices"] == list(range(-10, 11))
     core = d4b.compute(Float64(), 1.0, 0.1, None, -10, 10)
     np.testing.assert_array_equal(np.array(body["vertices"]), core.polygon.vertices)
-    assert set(body["companions"]) == {"tractrix", "axis_points", "darboux"}
+    assert set(body["companions"]) == {
+        "tractrix",
+        "axis_points",
+        "darboux",
+        "tractrix_gauss_image",
+        "contact_points",
+        "gauss_image",
+    }
     assert body["vertices"][10] == [-0.1, 1.0]  # p_0 = (−d, h)
     assert body["vertices"][11] == [0.1, 1.0]  # p_1 = (d, h)
     assert all(check["holds"] for check in body["checks"])
@@ -73,9 +80,9 @@ def test_csv_lists_the_polygon_then_the_companions(client: TestClient) -> None:
     assert response.status_code == 200
     assert response.headers["content-type"].startswith("text/csv")
     rows = list(csv.DictReader(io.StringIO(response.text)))
-    assert [r["curve"] for r in rows] == ["p"] * 3 + ["tractrix"] * 3 + ["axis_points"] * 3 + [
-        "darboux"
-    ] * 3
+    names = ["p", "tractrix", "axis_points", "darboux"]
+    names += ["tractrix_gauss_image", "contact_points", "gauss_image"]
+    assert [r["curve"] for r in rows] == [name for name in names for _ in range(3)]
     assert (float(rows[1]["x"]), float(rows[1]["y"])) == (0.1, 1.0)
     assert (float(rows[3]["x"]), float(rows[3]["y"])) == (0.0, 1.0)  # d_0 = (0, h)
 

@@ -1,8 +1,9 @@
-"""(D4b) Wunderlich's discrete hyperbolic cosine, with Theorems 4, 5, 6 checked on it.
+"""(D4b) Wunderlich's discrete hyperbolic cosine, with Theorems 4–8 checked on it.
 
 The polygon comes from the construction (``kinematic_tractrix``) by default, or from the closed
 forms (``kinematic_closed_forms``) with ``method="closed-form"``; the checks compare the two and
-test the properties that Section 4.2 proves.
+test the properties that Section 4.2 proves. The Gauss images of Section 5 and Theorems 7, 8 are
+assembled in ``d4b_curvature``.
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ from app.geometry.checks import (
     relative_point_difference,
 )
 from app.geometry.curve import Curve, DiscretizationInfo, Polyline
+from app.geometry.discretizations import d4b_curvature
 from app.geometry.errors import DomainError, NotRepresentableError
 from app.geometry.kinematic_tractrix import construct, validate
 from app.geometry.polygon import second_difference, second_difference_magnitude
@@ -136,12 +138,13 @@ STATEMENTS: tuple[Statement, ...] = (
     DARBOUX,
     DARBOUX_DISTANCE,
     NIKOLAIDES,
+    *d4b_curvature.STATEMENTS,
 )
 
 INFO = DiscretizationInfo(
     id="d4b",
     title="Wunderlich's kinematic discrete hyperbolic cosine (D4b)",
-    reference="Section 3 (D4b); Section 4.2, Theorems 4-6",
+    reference="Section 3 (D4b); Section 4.2, Theorems 4-6; Section 5, Theorems 7, 8",
     summary=(
         "A stick of length h slides with one end along the x-axis in steps of 2d; each step is a "
         "rotation, and the rotation centres p_i form the discrete hyperbolic cosine. The other end "
@@ -153,6 +156,7 @@ INFO = DiscretizationInfo(
         "tractrix": "d_i, the free end of stick i (the discrete tractrix), same indices as p",
         "axis_points": "x_i = (2di, 0), the end of stick i on the x-axis",
         "darboux": "e_i = 2d_i − x_i, the reflection of x_i in d_i (a Darboux transform of x)",
+        **d4b_curvature.COMPANIONS,
     },
     constants={
         "d1": "c of (D1), Δ²p_i^y = c(l_i + l_{i+1}); equals d/h",
@@ -199,6 +203,8 @@ class D4bPolygons:
     closed_p: Array
     closed_tractrix: Array
     constructed: bool
+    gauss: d4b_curvature.GaussImages
+    """Section 5: n_i, ñ_i, m_i (see ``d4b_curvature.GaussImages`` for their alignment)."""
     exponent: float = 0.0
     """Largest |(i + τ)L| of the closed forms: each closed-form vertex carries a relative error of
     about eps·exponent from rounding that argument. The comparisons with the construction allow
@@ -214,22 +220,44 @@ def polygons(
     i_max: int,
     method: Method = "construction",
 ) -> D4bPolygons:
-    """Construction (Section 3) and closed forms (14), (16) on i_min .. i_max + 1."""
+    """Construction (Section 3) and closed forms (14), (16) on i_min .. i_max + 1.
+
+    The construction runs on the hull of 0 and i_min − 1 .. i_max + 2 (it starts at stick 0
+    anyway): the Gauss image n starts at index 0, and m_i needs p_{i−1} .. p_{i+1}.
+    """
     hh, dd = ar.scalar(h), ar.scalar(d)
     shift = kinematic_closed_forms.tilt_shift(ar, hh, dd, beta0)
     i = ar.indices(i_min, i_max + 1)
     closed_p = kinematic_closed_forms.hyperbolic_cosine(ar, hh, dd, i, shift)
     closed_d = kinematic_closed_forms.tractrix(ar, hh, dd, i, shift)
     if method == "construction":
-        built = construct(ar, h, d, beta0, i_min, i_max + 1)
-        p, tractrix, axis = built.centres, built.tractrix, built.axis_points
+        lo, hi = min(0, i_min - 1), max(0, i_max + 2)
+        built = construct(ar, h, d, beta0, lo, hi)
+        window = slice(i_min - lo, i_max + 2 - lo)
+        p, tractrix, axis = built.centres[window], built.tractrix[window], built.axis_points[window]
+        u0 = built.directions[0 - lo]
+        gauss = d4b_curvature.build(
+            ar,
+            hh,
+            dd,
+            shift,
+            i_min,
+            i_max,
+            lo,
+            built.tractrix,
+            (u0[0], u0[1]),
+            built.centres[i_min - 1 - lo : i_max + 3 - lo],
+        )
     else:
         p, tractrix = closed_p, closed_d
         axis = stack_points(2 * dd * i, ar.zeros(len(i)))
+        gauss = d4b_curvature.build(ar, hh, dd, shift, i_min, i_max, 0, None, None, None)
     e = darboux.reflect_in_points(axis, tractrix)
     constructed = method == "construction"
     exponent = ar.to_float(np.max(abs((i + shift) * kinematic_closed_forms.log_ratio(ar, hh, dd))))
-    return D4bPolygons(i_min, p, tractrix, axis, e, closed_p, closed_d, constructed, exponent)
+    return D4bPolygons(
+        i_min, p, tractrix, axis, e, closed_p, closed_d, constructed, gauss, exponent
+    )
 
 
 def conditioning(h: float, d: float) -> float:
@@ -244,7 +272,12 @@ def conditioning(h: float, d: float) -> float:
 
 
 def evaluate(
-    ar: Arithmetic, h: float, d: float, data: D4bPolygons, detail: bool = False
+    ar: Arithmetic,
+    h: float,
+    d: float,
+    data: D4bPolygons,
+    detail: bool = False,
+    beta0: float | None = None,
 ) -> tuple[dict[str, Scalar], list[Check]]:
     """Fitted constants and every check of ``STATEMENTS`` on the given polygons."""
     hh, dd = ar.scalar(h), ar.scalar(d)
@@ -276,6 +309,20 @@ def evaluate(
         ctx.check(DARBOUX_DISTANCE, 0, darboux.distance_residuals(ar, axis[:n], e[:n], 2 * hh)),
         _nikolaides(ctx, p, tractrix, axis),
     ]
+    shift = kinematic_closed_forms.tilt_shift(ar, hh, dd, beta0)
+    checks += d4b_curvature.evaluate(
+        ar,
+        hh,
+        p,
+        tractrix,
+        data.gauss,
+        d4b_curvature.printed_forms(ar, hh, dd, shift, data.i_min, data.i_min + n - 1),
+        indices,
+        n,
+        ctx.tolerance,
+        ar.tolerance(max(steps, LOCAL_STEPS)),
+        detail,
+    )
     return constants, checks
 
 
@@ -297,7 +344,7 @@ def compute(
     if ar.mode == "float64":
         _require_float64_representable(h, d, beta0, i_min, i_max)
     data = polygons(ar, h, d, beta0, i_min, i_max, method)
-    constants, checks = evaluate(ar, h, d, data, detail)
+    constants, checks = evaluate(ar, h, d, data, detail, beta0)
     indices = np.arange(i_min, i_max + 1, dtype=np.int64)
     n = len(indices)
     parameters: dict[str, Any] = {
@@ -323,6 +370,9 @@ def compute(
             "tractrix": shown("tractrix", data.tractrix),
             "axis_points": shown("axis_points", data.axis),
             "darboux": shown("darboux", data.darboux),
+            "tractrix_gauss_image": shown("tractrix_gauss_image", data.gauss.tractrix_gauss),
+            "contact_points": shown("contact_points", data.gauss.contact[1:]),
+            "gauss_image": shown("gauss_image", data.gauss.gauss),
         },
         constants=constants,
         checks=checks,

@@ -1,0 +1,86 @@
+"""Request and response models of /surfaces (documentation and validation only)."""
+
+from __future__ import annotations
+
+from typing import Any, Literal
+
+from pydantic import BaseModel, Field
+
+from app.schemas.common import StrictModel
+from app.schemas.curve import CheckModel, Coordinate, PrecisionInfo
+
+SURFACES_DESCRIPTION = """\
+A discrete surface of revolution (eq. (15)): the meridian polygon of a discretization rotated
+about the x-axis in steps of π/m, with its Gauss image, the mixed-area curvatures K = A(n)/A(f)
+and H = −A(f,n)/A(f) (Bobenko–Pottmann–Wallner) on every face, and the planarity of every face.
+
+Surfaces: `catenoid` (meridian: the discrete hyperbolic cosine p of `discretization`, default
+`d4b`; Gauss image: the discretization's own `gauss_image` companion (d4b: the circumscribed m of
+Theorem 8; d2b: the inscribed n) or, with `gauss_image=circumscribed`, the polygon tangent to the
+unit circle with edges parallel to p, built from p on i_min − 1 .. i_max + 1); `pseudosphere`
+(meridian: the discrete tractrix, Gauss image n of (18); Theorem 7); `catenoid-gauss-image`
+and `pseudosphere-gauss-image`: the Gauss image meshes, with the same per-face K and H.
+
+Layout: vertex (i, j) is number k·columns + j with k = i − i_min; the quad of meridian edge k and
+step j is number k·steps + j, with corners (k, j), (k, j+1), (k+1, j+1), (k+1, j). A closed
+surface (steps = 2m, the default) has 2m columns, an open one steps + 1.
+
+Formats: `json`; `obj` (quads kept, geometry only); `ply` (binary little-endian, float64
+vertices, per-face float64 K, H, planarity); `glb` (glTF 2.0 binary, triangulated, float32, four
+vertices per face, attributes POSITION, NORMAL, `_K`, `_H`; three.js's GLTFLoader shows them as
+`geometry.attributes._k` and `._h`). Besides the parameters below, every parameter of the
+chosen discretization is accepted (see GET /discretizations). Mesh size (meridian vertices ×
+vertices around) is limited by DCOSH_MAX_MESH_VERTICES (default 10^6).
+"""
+
+
+class SurfaceQuery(StrictModel):
+    """The parameters /surfaces adds to those of the discretization."""
+
+    discretization: str = Field("d4b", description="Discretization giving the meridian.")
+    m: int = Field(
+        16, ge=1, le=1_000_000, description="Rotation step π/m of eq. (15); 2m steps close it."
+    )
+    steps: int | None = Field(
+        None, ge=1, le=2_000_000, description="Rotation steps, 1 <= steps <= 2m (default 2m)."
+    )
+    gauss_image: Literal["auto", "circumscribed"] = Field(
+        "auto",
+        description="Catenoid only: `auto` (the discretization's own Gauss image, else the "
+        "circumscribed one) or `circumscribed`.",
+    )
+    format: Literal["json", "obj", "ply", "glb"] = Field("json", description="Output format.")
+
+
+class SurfaceLayout(BaseModel):
+    rows: int = Field(description="Meridian vertices.")
+    columns: int = Field(description="Vertices around (2m if closed, steps + 1 otherwise).")
+    closed: bool
+    m: int
+    steps: int
+    meridian_indices: list[int] = Field(description="Paper index i of each row.")
+
+
+class SurfaceResponse(BaseModel):
+    id: str
+    title: str
+    reference: str
+    mesh: Literal["surface", "gauss_image"]
+    discretization: str
+    parameters: dict[str, Any]
+    precision: PrecisionInfo
+    layout: SurfaceLayout
+    vertices: list[tuple[Coordinate, Coordinate, Coordinate]]
+    faces: list[tuple[int, int, int, int]]
+    face_values: dict[str, list[Coordinate]] = Field(
+        description="Per face: K, H (of the surface with respect to its Gauss image) and the "
+        "planarity of this mesh."
+    )
+    checks: list[CheckModel]
+
+
+class SurfaceEntry(BaseModel):
+    id: str
+    title: str
+    reference: str
+    url: str
