@@ -4,7 +4,7 @@ from fastapi import FastAPI
 from fastapi.middleware.cors import CORSMiddleware
 
 from app import __version__, errors
-from app.routers import discretizations, health, theorems
+from app.routers import discretizations, health, smooth, theorems
 from app.settings import Settings, get_settings
 
 DESCRIPTION = """\
@@ -23,6 +23,7 @@ A_i is the signed trapezoid area under the edge p_i p_{i+1}. `precision=mp` comp
 TAGS = [
     {"name": "discretizations", "description": "Discrete hyperbolic cosines and companions."},
     {"name": "theorems", "description": "The paper's statements, checked on computed data."},
+    {"name": "smooth", "description": "Smooth references of Section 2: catenary and tractrix."},
     {"name": "service", "description": "Health."},
 ]
 
@@ -47,6 +48,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.include_router(health.router)
     app.include_router(discretizations.router)
     app.include_router(theorems.router)
+    app.include_router(smooth.router)
     return app
 
 

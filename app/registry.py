@@ -11,8 +11,11 @@ from dataclasses import dataclass
 
 from app.geometry.checks import Statement
 from app.geometry.curve import Curve, DiscretizationInfo
-from app.geometry.discretizations import d4b
+from app.geometry.discretizations import d1, d3, d4a, d4b
 from app.schemas.common import CurveQuery
+from app.schemas.d1 import D1_DESCRIPTION, D1Query
+from app.schemas.d3 import D3_DESCRIPTION, D3Query
+from app.schemas.d4a import D4A_DESCRIPTION, D4aQuery
 from app.schemas.d4b import D4B_DESCRIPTION, D4bQuery
 
 
@@ -26,7 +29,12 @@ class Discretization:
     description: str
 
 
-_ENTRIES = (Discretization(d4b.INFO, D4bQuery, d4b.compute, D4B_DESCRIPTION),)
+_ENTRIES = (
+    Discretization(d1.INFO, D1Query, d1.compute, D1_DESCRIPTION),
+    Discretization(d3.INFO, D3Query, d3.compute, D3_DESCRIPTION),
+    Discretization(d4a.INFO, D4aQuery, d4a.compute, D4A_DESCRIPTION),
+    Discretization(d4b.INFO, D4bQuery, d4b.compute, D4B_DESCRIPTION),
+)
 
 DISCRETIZATIONS: dict[str, Discretization] = {entry.info.id: entry for entry in _ENTRIES}
 
@@ -46,7 +54,13 @@ def _statements() -> dict[str, StatementEntry]:
             known = found.get(statement.id)
             owners = (known.discretizations if known else ()) + (entry.info.id,)
             found[statement.id] = StatementEntry(known.statement if known else statement, owners)
-    return found
+    # a property named after a discretization (d1, d3, ...) is checked on it by default
+    return {
+        key: StatementEntry(
+            entry.statement, tuple(sorted(entry.discretizations, key=lambda owner: owner != key))
+        )
+        for key, entry in found.items()
+    }
 
 
 STATEMENTS: dict[str, StatementEntry] = _statements()

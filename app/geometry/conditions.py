@@ -86,3 +86,28 @@ def equation_2(ar: Arithmetic, p: Array) -> ConditionFit:
         second_difference_magnitude(y),
         sizes[:-1] + sizes[1:],
     )
+
+
+def equilibrium(ar: Arithmetic, p: Array) -> ConditionFit:
+    """Hanging sticks in equilibrium: k_{i+1} − k_i = c (l_i + l_{i+1}) for the edge slopes k_i.
+
+    Homogeneous sticks on the edges (weight w per length), joined by weightless hinges: each
+    stick's moment balance puts half of its weight on each end, and the hinge balance with a
+    constant horizontal tension T gives T (k_{i+1} − k_i) = (w/2)(l_i + l_{i+1}), so c = w/(2T).
+    With constant spacing δ this is (D1) divided by δ. For polygons with increasing x;
+    equations i = i_min .. i_max − 2. A slope's magnitude is (|y_i| + |y_{i+1}| + |k_i|(|x_i| +
+    |x_{i+1}|))/|x_{i+1} − x_i|, the size of the numbers it is computed from.
+    """
+    x, y = p[:, 0], p[:, 1]
+    dx = x[1:] - x[:-1]
+    slopes = (y[1:] - y[:-1]) / dx
+    sizes = (abs(y[1:]) + abs(y[:-1]) + abs(slopes) * (abs(x[1:]) + abs(x[:-1]))) / abs(dx)
+    lengths = edge_lengths(ar, p)
+    edge_sizes = edge_magnitude(p)
+    return fit(
+        ar,
+        slopes[1:] - slopes[:-1],
+        lengths[:-1] + lengths[1:],
+        sizes[:-1] + sizes[1:],
+        edge_sizes[:-1] + edge_sizes[1:],
+    )

@@ -75,6 +75,8 @@ class Arithmetic:
     sin: Callable[[Any], Any]
     tanh: Callable[[Any], Any]
     atanh: Callable[[Any], Any]
+    asinh: Callable[[Any], Any]
+    acosh: Callable[[Any], Any]
     atan2: Callable[[Any, Any], Any]
     hypot: Callable[[Any, Any], Any]
 
@@ -117,6 +119,8 @@ class Float64(Arithmetic):
     sin = staticmethod(np.sin)
     tanh = staticmethod(np.tanh)
     atanh = staticmethod(np.arctanh)
+    asinh = staticmethod(np.arcsinh)
+    acosh = staticmethod(np.arccosh)
     atan2 = staticmethod(np.arctan2)
     hypot = staticmethod(np.hypot)
 
@@ -168,6 +172,8 @@ class MultiPrecision(Arithmetic):
         self.sin = _elementwise(ctx.sin)
         self.tanh = _elementwise(ctx.tanh)
         self.atanh = _elementwise(ctx.atanh)
+        self.asinh = _elementwise(ctx.asinh)
+        self.acosh = _elementwise(ctx.acosh)
         self.atan2 = _elementwise(ctx.atan2, 2)
         self.hypot = _elementwise(ctx.hypot, 2)
         self._isfinite = np.frompyfunc(ctx.isfinite, 1, 1)
