@@ -3,14 +3,15 @@
 from collections.abc import Callable
 from typing import Annotated, Any
 
+import orjson
 from fastapi import APIRouter, Depends, Query, Request, Response
 
 from app.errors import UnknownIdError
 from app.geometry import smooth_curves
 from app.geometry.curve import Curve
-from app.geometry.precision import Arithmetic, arithmetic
+from app.geometry.precision import Arithmetic, Float64, arithmetic
 from app.limits import MP_OVERHEAD_DIGITS, LimitExceededError, enforce_digits
-from app.responses import cached, canonical_key
+from app.responses import cached, canonical_key, curve_document, encode_json
 from app.routers.common import curve_response, reject_repeated_parameters, settings_of
 from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES
 from app.schemas.curve import CurveResponse
@@ -41,6 +42,23 @@ RESPONSES: dict[int | str, dict[str, Any]] = {
     304: {"description": "Not modified (the If-None-Match ETag matches)."},
     **PROBLEM_RESPONSES,
 }
+
+
+def example_document(compute: Callable[..., Curve]) -> Any:
+    """A real response (default parameters, three samples) to show in /docs, rounded to 12
+    digits so that the stored OpenAPI document does not depend on a CPU's last bits."""
+    document = orjson.loads(encode_json(curve_document(compute(Float64(), count=3))))
+    return _rounded(document)
+
+
+def _rounded(value: Any) -> Any:
+    if isinstance(value, float):
+        return float(f"{value:.12g}")
+    if isinstance(value, list):
+        return [_rounded(v) for v in value]
+    if isinstance(value, dict):
+        return {k: _rounded(v) for k, v in value.items()}
+    return value
 
 
 def enforce_samples(settings: Settings, query: SmoothQuery) -> None:
@@ -77,7 +95,16 @@ def _register(name: str, compute: Callable[..., Curve], title: str, description:
         description=description,
         operation_id=f"get_smooth_{name}",
         response_model=CurveResponse,
-        responses=RESPONSES,
+        responses={
+            **RESPONSES,
+            200: {
+                **RESPONSES[200],
+                "content": {
+                    "application/json": {"example": example_document(compute)},
+                    **RESPONSES[200]["content"],
+                },
+            },
+        },
         dependencies=[Depends(reject_repeated_parameters)],
     )
 
