@@ -23,10 +23,13 @@ y0 ≥ √(c² − delta²/4): from a lower p_0 no edge reaches area/length = c 
 area/length over a step delta from height y0 is √(y0² + delta²/4)); √(c² − delta²/4) is the
 lowest height of every (D3) polygon.
 
+With the defaults and `branch=down` the polygon is the d1 default (D4b's with h = 1, d = 0.1,
+shifted by d); `up` gives the same catenary one vertex further on.
+
 Checks: (D3) itself; (D1), eq. (2) and the hanging-sticks equilibrium, which (D3) implies here
 (constants delta/(2c), delta/(2c²), 1/(2c)); and the closed form y_i = a cosh(v_0 ± 2iD).
-Conventions as for D1. Next to the lowest point the step is ill-conditioned by nature (a vertex
-within ε of a loses about half of its digits in the next one).
+Conventions as for D1. Next to the lowest point the step is ill-conditioned by nature: a vertex
+within a relative ε of √(c² − delta²/4) can cost up to log10(1/ε)/2 digits in the next one.
 """
 
 

@@ -402,11 +402,18 @@ def _require_float64_representable(
     budget = math.log(FLOAT64_COORDINATE_LIMIT) - math.log(2 * h) + math.log(sin0)
     per_stick = -math.log1p(-s / h)
     largest = math.floor(budget / per_stick) - 4
+    if largest < 0:
+        raise NotRepresentableError(
+            "beta0",
+            "sin(beta0) large enough for p_0^y ≈ h / sin(beta0) to stay below 1e150 in float64",
+            beta0,
+            "use precision=mp",
+        )
     for name, value in (("i_max", i_max), ("i_min", i_min)):
         if abs(value) > largest:
             raise NotRepresentableError(
                 name,
-                f"|{name}| <= {max(largest, 0)} in float64",
+                f"|{name}| <= {largest} in float64",
                 value,
                 f"beyond it p_i^y may exceed {FLOAT64_COORDINATE_LIMIT:g}; use precision=mp",
             )
