@@ -76,8 +76,9 @@ class StepQuadratic:
 
 
 def lowest_height(c: float, delta: float) -> float:
-    """a = √(c² − δ²/4) in float64: the smallest admissible y0."""
-    return float(np.sqrt((c - delta / 2) * (c + delta / 2)))
+    """a = √(c² − δ²/4) = c√(1 − ρ²), ρ = δ/(2c), in float64: the smallest admissible y0."""
+    rho = delta / (2 * c)
+    return float(c * np.sqrt((1 - rho) * (1 + rho)))
 
 
 def validate(c: float, delta: float, y0: float, branch: str) -> None:
@@ -108,14 +109,19 @@ def validate(c: float, delta: float, y0: float, branch: str) -> None:
 
 
 def quadratic(ar: Arithmetic, c: Scalar, delta: Scalar) -> StepQuadratic:
-    """The coefficients of the step's quadratic for given c and δ."""
-    c2, d2 = 4 * c * c, delta * delta
-    difference = (2 * c - delta) * (2 * c + delta)
+    """The coefficients of the step's quadratic for given c and δ.
+
+    Written with ρ = δ/(2c) (no squares of c or δ, which would overflow or underflow first):
+    (4c² + δ²)/(4c² − δ²) = (1 + ρ²)/(1 − ρ²), 4cδ/(4c² − δ²) = 2ρ/(1 − ρ²),
+    4c²δ²/(4c² − δ²) = δ²/(1 − ρ²), √(c² − δ²/4) = c√(1 − ρ²).
+    """
+    rho = delta / (2 * c)
+    gap = (1 - rho) * (1 + rho)
     return StepQuadratic(
-        sum_factor=(c2 + d2) / difference,
-        root_factor=4 * c * delta / difference,
-        product_term=c2 * d2 / difference,
-        lowest=ar.sqrt((c - delta / 2) * (c + delta / 2)),
+        sum_factor=(1 + rho * rho) / gap,
+        root_factor=2 * rho / gap,
+        product_term=delta * (delta / gap),
+        lowest=c * ar.sqrt(gap),
     )
 
 

@@ -30,8 +30,9 @@ def half_step(ar: Arithmetic, c: Scalar, delta: Scalar) -> Scalar:
 
 
 def amplitude(ar: Arithmetic, c: Scalar, delta: Scalar) -> Scalar:
-    """a = √(c² − δ²/4), the lowest height of the catenary."""
-    return ar.sqrt((c - delta / 2) * (c + delta / 2))
+    """a = √(c² − δ²/4) = c√(1 − ρ²) with ρ = δ/(2c), the lowest height of the catenary."""
+    rho = delta / (2 * c)
+    return c * ar.sqrt((1 - rho) * (1 + rho))
 
 
 def hyperbolic_cosine(

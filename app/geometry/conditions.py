@@ -47,6 +47,9 @@ def fit(
     tiny = ar.scalar(np.finfo(np.float64).tiny)
     weight = np.where(lhs_magnitude > tiny, lhs_magnitude, tiny)
     u, v = lhs / weight, rhs / weight
+    largest = np.max(abs(v)) if len(v) else ar.scalar(0)
+    if largest > 0:  # scaled so that the squares cannot overflow
+        u, v = u / largest, v / largest
     vv = np.sum(v * v) if len(v) else ar.scalar(0)
     constant = np.sum(u * v) / vv if vv > 0 else None
     c = constant if constant is not None else ar.scalar(0)

@@ -73,6 +73,7 @@ class Arithmetic:
     sqrt: Callable[[Any], Any]
     cos: Callable[[Any], Any]
     sin: Callable[[Any], Any]
+    sinh: Callable[[Any], Any]
     tanh: Callable[[Any], Any]
     atanh: Callable[[Any], Any]
     asinh: Callable[[Any], Any]
@@ -117,6 +118,7 @@ class Float64(Arithmetic):
     sqrt = staticmethod(np.sqrt)
     cos = staticmethod(np.cos)
     sin = staticmethod(np.sin)
+    sinh = staticmethod(np.sinh)
     tanh = staticmethod(np.tanh)
     atanh = staticmethod(np.arctanh)
     asinh = staticmethod(np.arcsinh)
@@ -170,6 +172,7 @@ class MultiPrecision(Arithmetic):
         self.sqrt = _elementwise(ctx.sqrt)
         self.cos = _elementwise(ctx.cos)
         self.sin = _elementwise(ctx.sin)
+        self.sinh = _elementwise(ctx.sinh)
         self.tanh = _elementwise(ctx.tanh)
         self.atanh = _elementwise(ctx.atanh)
         self.asinh = _elementwise(ctx.asinh)

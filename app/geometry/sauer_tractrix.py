@@ -92,23 +92,21 @@ class _Stepper:
     def __init__(self, ar: Arithmetic, h: Scalar, s: Scalar) -> None:
         self.ar, self.h, self.s = ar, h, s
         self.carry = h - s  # distance from a stick's axis end to the tractrix point it carries
-        self.widening = s * (2 * h - s)  # h² − (h − s)²
+        ratio = s / h
+        self.keep = (h - s) / h  # not 1 − s/h, which loses digits when s is close to h
+        self.widening = ratio * (2 - ratio)  # (h² − (h − s)²)/h²
 
     def is_cusp(self, sin_b: Scalar) -> bool:
         """No stick can carry this stick's end: d^y = h sin β > h − s."""
-        return bool(self.h * sin_b > self.carry)
-
-    def _offset(self, cos_b: Scalar, sin_b: Scalar) -> Scalar:
-        """√(h² − (h − s)² sin²β): horizontal distance from x + (h − s)u to its axis points."""
-        h = self.h
-        return self.ar.sqrt(h * h * cos_b * cos_b + self.widening * sin_b * sin_b)
+        return bool(sin_b > self.keep)
 
     def pull(self, x: Scalar, cos_b: Scalar, sin_b: Scalar, ahead: bool) -> tuple[Scalar, ...]:
         """The stick whose end is this stick's carried point x + (h − s)u, leader ahead/behind."""
-        end_x, end_y = x + self.carry * cos_b, self.carry * sin_b
-        offset = self._offset(cos_b, sin_b)
+        end_x = x + self.carry * cos_b
+        root = self.ar.sqrt(cos_b * cos_b + self.widening * sin_b * sin_b)  # offset / h
+        offset = self.h * root
         new_x = end_x + offset if ahead else end_x - offset
-        return new_x, (-offset if ahead else offset) / self.h, end_y / self.h
+        return new_x, (-root if ahead else root), self.keep * sin_b
 
     def carrier(
         self, x: Scalar, cos_b: Scalar, sin_b: Scalar, lean_back: bool
@@ -118,7 +116,7 @@ class _Stepper:
         Of the two such sticks (mirror images in the vertical through d) it is the one leaning
         back (β > π/2) on the pursuit side and forward on the mirrored side.
         """
-        sin_n = self.h * sin_b / self.carry
+        sin_n = sin_b / self.keep
         cos_n = self.ar.sqrt((1 - sin_n) * (1 + sin_n))
         if lean_back:
             cos_n = -cos_n

@@ -19,10 +19,14 @@ from app.geometry.checks import Check, Statement, check_residuals, point_distanc
 from app.geometry.curve import Curve, Polyline
 from app.geometry.errors import NotRepresentableError
 from app.geometry.polygon import magnitude
-from app.geometry.precision import Arithmetic, Array, stack_points
+from app.geometry.precision import GUARD_DIGITS, Arithmetic, Array, stack_points
 
 #: Samples stay below this size in float64, as the discretizations' coordinates do.
 FLOAT64_COORDINATE_LIMIT = 1e150
+
+#: In mp, cosh(x/h) is resolved to about |x/h| units of the working precision, which carries
+#: GUARD_DIGITS more digits than requested: |x|/h up to 10^GUARD_DIGITS keeps the requested ones.
+MP_ARGUMENT_LIMIT = 10.0**GUARD_DIGITS
 
 LOCAL_STEPS = 16
 
@@ -154,8 +158,7 @@ def compute_catenary(
 ) -> Curve:
     """(S1): the catenary h cosh(x/h) sampled at ``count`` points of [x_min, x_max]."""
     smooth.validate(h, x_min, x_max, count)
-    if ar.mode == "float64":
-        _require_float64_representable(h, x_min, x_max)
+    _require_representable(ar, h, x_min, x_max)
     x = smooth.sample(ar, x_min, x_max, count)
     return _curve(
         CATENARY, ar, h, x_min, x_max, count, smooth.catenary(ar, ar.scalar(h), x), {}, []
@@ -172,8 +175,7 @@ def compute_tractrix(
 ) -> Curve:
     """(S4): the tractrix with stick h, its evolute and the catenary, with the (S4) checks."""
     smooth.validate(h, x_min, x_max, count)
-    if ar.mode == "float64":
-        _require_float64_representable(h, x_min, x_max)
+    _require_representable(ar, h, x_min, x_max)
     data = tractrix_samples(ar, h, x_min, x_max, count)
     companions = {
         "evolute": data.evolute,
@@ -211,14 +213,16 @@ def _curve(
     )
 
 
-def _require_float64_representable(h: float, x_min: float, x_max: float) -> None:
-    """Refuse sample ranges where h cosh(x/h) exceeds the float64 coordinate limit."""
-    budget = math.log(FLOAT64_COORDINATE_LIMIT) - math.log(h / 2)
+def _require_representable(ar: Arithmetic, h: float, x_min: float, x_max: float) -> None:
+    """Refuse sample ranges the precision cannot represent (float64) or resolve (mp)."""
+    if ar.mode == "float64":
+        budget = math.log(FLOAT64_COORDINATE_LIMIT) - math.log(h / 2)
+        reason = f"beyond it h·cosh(x/h) exceeds {FLOAT64_COORDINATE_LIMIT:g}; use precision=mp"
+        mode = "in float64"
+    else:
+        budget = MP_ARGUMENT_LIMIT
+        reason = "beyond it cosh(x/h) is not resolved to the requested digits"
+        mode = "in precision=mp"
     for name, value in (("x_max", x_max), ("x_min", x_min)):
         if abs(value) / h > budget:
-            raise NotRepresentableError(
-                name,
-                f"|{name}|/h <= {budget:.6g} in float64",
-                value,
-                f"beyond it h·cosh(x/h) exceeds {FLOAT64_COORDINATE_LIMIT:g}; use precision=mp",
-            )
+            raise NotRepresentableError(name, f"|{name}|/h <= {budget:.6g} {mode}", value, reason)

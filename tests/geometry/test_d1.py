@@ -205,6 +205,8 @@ def test_range_order_and_float64_limits(float64: Float64) -> None:
         d1.compute(float64, 0.1, 0.2, 1.0, 1.0, 3, 2)
     with pytest.raises(NotRepresentableError, match=r"\|i_max\| <= \d+ in float64"):
         d1.compute(float64, 0.5, 1.0, 1.0, 1.0, 0, 400)
+    with pytest.raises(NotRepresentableError, match=r"c must satisfy delta/\(2c\) <= 1e\+150"):
+        d1.compute(float64, 1e-300, 1.0, 1.0, 1.0, 0, 2)
     with pytest.raises(NotRepresentableError, match=r"y1 must satisfy \|y1 − y0\|/delta"):
         d1.compute(float64, 0.1, 1e-300, 0.0, 1e100, 0, 2)
     # the same range in mp is fine

@@ -32,8 +32,9 @@ CLOSED_FORM = Statement(
     "Section 3, (D1) with constant spacing: closed form (derived here, not in the paper)",
     "p_i = (iδ, C + a cosh(u_0 + (i − ½)E)) with E = 2 artanh c, a = δ√(1 − c²)/(2c), "
     "u_0 = arsinh((y_1 − y_0)/δ), C = y_0 − a cosh(u_0 − E/2): the slope angles advance by E "
-    "per edge, tanh((u_{i+1} − u_i)/2) = c. Residual: largest |p_i − closed form| divided by "
-    "|iδ| + |C| + a cosh(…), the size of the closed form's terms.",
+    "per edge, tanh((u_{i+1} − u_i)/2) = c. Evaluated as y_0 + 2a sinh(iE/2) sinh(u_0 + "
+    "(i − 1)E/2) (no cancellation). Residual: largest |p_i − closed form| divided by "
+    "|iδ| + |y_0| + |2a sinh(…) sinh(…)|, the size of the closed form's terms.",
 )
 
 STATEMENTS: tuple[Statement, ...] = (*properties.PROPERTIES, CLOSED_FORM)
@@ -71,7 +72,7 @@ class D1Polygons:
     p: Array
     closed: Array
     closed_size: Array
-    """|iδ| + |C| + a cosh(…) per vertex (the closed form's terms)."""
+    """|iδ| + |y_0| + |2a sinh(iE/2) sinh(u_0 + (i − 1)E/2)| per vertex (the terms)."""
     constructed: bool
 
 
@@ -175,7 +176,9 @@ def _closed_form(ctx: properties.Context, data: D1Polygons, steps: int) -> Check
         return not_applicable(
             CLOSED_FORM, tolerance, "method=closed-form: the construction was not run to compare"
         )
-    residuals = point_distance(ar, data.p, data.closed) / data.closed_size
+    tiny = ar.scalar(np.finfo(np.float64).tiny)
+    size = np.where(data.closed_size > tiny, data.closed_size, tiny)  # p_0 = (0, 0): absolute
+    residuals = point_distance(ar, data.p, data.closed) / size
     return check_residuals(CLOSED_FORM, ar, ctx.indices, residuals, tolerance, ctx.detail)
 
 
@@ -187,6 +190,14 @@ def _require_float64_representable(
     |y_i| <= |y0| + n δ cosh(|u_0| + nE) with n = max(|i_min|, |i_max|) + 1 steps from p_0
     (each slope is sinh of an angle growing by E = 2 artanh c per edge).
     """
+    if delta / (2 * c) > FLOAT64_COORDINATE_LIMIT:
+        raise NotRepresentableError(
+            "c",
+            f"delta/(2c) <= {FLOAT64_COORDINATE_LIMIT:g} in float64",
+            c,
+            "the closed form's amplitude a = delta·√(1 − c²)/(2c) leaves the float64 range; "
+            "use precision=mp",
+        )
     slope = (y1 - y0) / delta
     if not math.isfinite(slope) or abs(slope) > FLOAT64_COORDINATE_LIMIT:
         raise NotRepresentableError(

@@ -117,15 +117,24 @@ def checks(
     ctx: Context,
     found: dict[str, conditions.ConditionFit],
     expected: dict[str, str] | None = None,
+    tolerance: float | None = None,
 ) -> list[Check]:
-    """One check per property, in ``PROPERTIES`` order; ``expected`` adds a note per id."""
+    """One check per property, in ``PROPERTIES`` order; ``expected`` adds a note per id.
+
+    ``tolerance`` replaces the local one when the polygon is resolved worse than its rounding
+    (D4a's p).
+    """
     out = []
     for statement in PROPERTIES:
         fit = found[statement.id]
-        note = _constant_note(ctx.ar, fit.constant, (expected or {}).get(statement.id))
-        check = ctx.check(statement, 0, fit.residuals, note=note)
+        note = (
+            _constant_note(ctx.ar, fit.constant, (expected or {}).get(statement.id))
+            if len(fit.residuals)
+            else None  # not applicable: the check says why
+        )
+        check = ctx.check(statement, 0, fit.residuals, note=note, tolerance=tolerance)
         if fit.constant is not None and not fit.constant > 0 and check.holds:
-            check = replace(check, holds=False, note=f"{note}; the fitted constant is not > 0")
+            check = replace(check, holds=False, note=f"{note}; the best constant is not > 0")
         out.append(check)
     return out
 
