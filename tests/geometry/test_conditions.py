@@ -88,3 +88,11 @@ def test_hanging_sticks_with_uneven_spacing_are_in_equilibrium_but_not_d1(float6
     assert fit.constant == pytest.approx(c, rel=1e-12)
     assert np.max(fit.residuals) < 1e-13
     assert np.max(conditions.d1(float64, p).residuals) > 1e-2  # (D1) needs equal spacing
+
+
+def test_fit_does_not_overflow_for_tiny_left_hand_sides(float64: Float64) -> None:
+    # areas of 1e-300 against lengths of 2: the normalized right-hand sides are about 1e300
+    p = np.array([[0.0, 0.0], [2.0, 1e-300], [4.0, 3e-300]])
+    with np.errstate(all="raise"):
+        fit = conditions.d3(float64, p)
+    assert fit.constant == pytest.approx(np.sum(signed_areas(p) * 2) / 8, rel=1e-6)

@@ -212,3 +212,14 @@ def test_range_order_and_float64_limits(float64: Float64) -> None:
     # the same range in mp is fine
     curve = d1.compute(MultiPrecision(20), 0.5, 1.0, 1.0, 1.0, 399, 400, "closed-form")
     assert float(curve.polygon.vertices[1, 1]) > 1e150
+
+
+def test_closed_form_keeps_its_digits_for_a_nearly_straight_chain(float64: Float64) -> None:
+    # a = δ√(1 − c²)/(2c) ≈ 7.5e5 ≫ |y|: C + a cosh(…) would cancel; the product form does not
+    built = d1.compute(float64, 1e-6, 1.5, 0.0, 2.0, 0, 400)
+    closed = d1.compute(float64, 1e-6, 1.5, 0.0, 2.0, 0, 400, "closed-form")
+    assert verdicts(built.checks)["d1-closed-form"] is True
+    assert verdicts(closed.checks)["d1"] is True  # the served closed form satisfies (D1)
+    # p_0 at the origin is compared absolutely
+    origin = d1.compute(float64, 0.1, 2.0, 0.0, 1e-300, 0, 3)
+    assert verdicts(origin.checks)["d1-closed-form"] is True

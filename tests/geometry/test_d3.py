@@ -177,3 +177,25 @@ def test_range_order_and_float64_limits(float64: Float64) -> None:
         d3.compute(float64, 1.0, 1.9, 1.0, "up", -200, 0)
     curve = d3.compute(MultiPrecision(20), 1.0, 1.9, 1.0, "up", 199, 200, "closed-form")
     assert float(curve.polygon.vertices[1, 1]) > 1e150
+
+
+def test_closed_form_tolerance_allows_the_conditioning_next_to_the_lowest_point(
+    float64: Float64,
+) -> None:
+    c, delta = 487.42349999455126, 974.0284171398698
+    a = area_length.lowest_height(c, delta)
+    curve = d3.compute(float64, c, delta, a * (1 + 4e-12), "up", 0, 5)
+    check = next(ch for ch in curve.checks if ch.id == "d3-closed-form")
+    assert check.holds is True and "lowest point" in (check.note or "")
+    assert check.tolerance > 1e3 * float64.tolerance(16)
+    data = d3.polygons(float64, c, delta, a * (1 + 4e-12), "up", 0, 5)
+    p = data.p.copy()
+    p[3, 1] *= 1 + 1e-7
+    bad = next(
+        ch for ch in d3.evaluate(float64, c, delta, replace(data, p=p))[1] if ch.id == check.id
+    )
+    assert bad.holds is False
+    generic = next(
+        ch for ch in d3.compute(float64, 2.0, 1.0, 5.0, "up", 0, 5).checks if ch.id == check.id
+    )
+    assert generic.note is None

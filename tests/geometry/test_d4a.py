@@ -239,3 +239,15 @@ def test_range_order_and_float64_limits(float64: Float64) -> None:
     curve = d4a.compute(MultiPrecision(20), 1.0, 0.5, None, 598, 600, "closed-form")
     assert float(curve.polygon.vertices[0, 1]) > 1e150
     assert d4a.compute(MultiPrecision(20), 1.0, 1e-4, None, -2, 2).checks[0].holds is True
+
+
+def test_a_step_close_to_the_stick_length_keeps_its_digits(float64: Float64) -> None:
+    # k = (h − s)/h ≈ 3.4e-5; computing it as 1 − s/h would lose five digits
+    curve = d4a.compute(float64, 0.00027376008574665897, 0.0002737507782835455, 3.0133, -5, 1)
+    results = verdicts(curve.checks)
+    assert all(results[k] for k in results if k not in {"d1", "d3", "equation-2", "hanging-sticks"})
+
+
+def test_mp_refuses_steps_below_its_resolution() -> None:
+    with pytest.raises(NotRepresentableError, match=r"s must satisfy s/h >= 1e-20 with digits=20"):
+        d4a.compute(MultiPrecision(20), 1.0, 1e-25, None, -2, 2)

@@ -99,3 +99,8 @@ def test_float64_range_limit(float64: Float64) -> None:
         smooth_curves.compute_catenary(float64, 1.0, 0.0, 400.0, 3)
     far = smooth_curves.compute_catenary(MultiPrecision(20), 1.0, 0.0, 400.0, 3)
     assert float(far.polygon.vertices[-1, 1]) == pytest.approx(math.exp(400) / 2, rel=1e-12)
+
+
+def test_mp_refuses_arguments_it_cannot_resolve() -> None:
+    with pytest.raises(NotRepresentableError, match=r"x_min must satisfy \|x_min\|/h <= 1e\+10"):
+        smooth_curves.compute_tractrix(MultiPrecision(5), 0.1, -1e100, -1.0, 2)
