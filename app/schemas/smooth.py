@@ -9,7 +9,8 @@ from app.schemas.common import CurveQuery
 CATENARY_DESCRIPTION = """\
 The smooth catenary (S1)–(S3), x ↦ (x, h·cosh(x/h)), sampled at `count` equally spaced x in
 [`x_min`, `x_max`] (both included), for overlays, convergence studies and figures. `indices`
-numbers the samples 0 … count − 1. In float64, |x|/h is limited so that h·cosh(x/h) < 1e150.
+numbers the samples 0 … count − 1. In float64, |x|/h is limited so that h·cosh(x/h) < 1e150;
+in precision=mp, to |x|/h <= 1e10 (beyond, cosh(x/h) is not resolved to the requested digits).
 """
 
 TRACTRIX_DESCRIPTION = """\
