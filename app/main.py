@@ -4,7 +4,7 @@ from fastapi import FastAPI
 from fastapi.middleware.cors import CORSMiddleware
 
 from app import __version__, errors
-from app.routers import discretizations, docs, explorer, figures, health, surfaces, theorems
+from app.routers import discretizations, docs, explorer, figures, health, smooth, surfaces, theorems
 from app.security import SecurityHeaders
 from app.settings import Settings, get_settings
 
@@ -26,6 +26,7 @@ TAGS = [
     {"name": "theorems", "description": "The paper's statements, checked on computed data."},
     {"name": "figures", "description": "The paper's figures, redrawn from computed data."},
     {"name": "surfaces", "description": "Catenoids, pseudosphere and Gauss images as meshes."},
+    {"name": "smooth", "description": "Smooth references of Section 2: catenary and tractrix."},
     {"name": "service", "description": "Health."},
 ]
 
@@ -53,6 +54,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.include_router(health.router)
     app.include_router(discretizations.router)
     app.include_router(theorems.router)
+    app.include_router(smooth.router)
     app.include_router(surfaces.router)
     app.include_router(figures.router)
     explorer.install(app)

@@ -12,10 +12,13 @@ from functools import cached_property
 
 from app.geometry.checks import Statement
 from app.geometry.curve import Curve, DiscretizationInfo
-from app.geometry.discretizations import d2a_hex, d2a_quad, d2b, d4b
+from app.geometry.discretizations import d1, d2a_hex, d2a_quad, d2b, d3, d4a, d4b
 from app.schemas.common import CurveQuery, strict_body
+from app.schemas.d1 import D1_DESCRIPTION, D1Query
 from app.schemas.d2a import D2A_HEX_DESCRIPTION, D2A_QUAD_DESCRIPTION, D2aHexQuery, D2aQuadQuery
 from app.schemas.d2b import D2B_DESCRIPTION, D2bQuery
+from app.schemas.d3 import D3_DESCRIPTION, D3Query
+from app.schemas.d4a import D4A_DESCRIPTION, D4aQuery
 from app.schemas.d4b import D4B_DESCRIPTION, D4bQuery
 
 
@@ -34,11 +37,14 @@ class Discretization:
         return strict_body(self.query)
 
 
-_ENTRIES = (
-    Discretization(d4b.INFO, D4bQuery, d4b.compute, D4B_DESCRIPTION),
+_ENTRIES = (  # in the paper's order
+    Discretization(d1.INFO, D1Query, d1.compute, D1_DESCRIPTION),
     Discretization(d2a_quad.INFO, D2aQuadQuery, d2a_quad.compute, D2A_QUAD_DESCRIPTION),
     Discretization(d2a_hex.INFO, D2aHexQuery, d2a_hex.compute, D2A_HEX_DESCRIPTION),
     Discretization(d2b.INFO, D2bQuery, d2b.compute, D2B_DESCRIPTION),
+    Discretization(d3.INFO, D3Query, d3.compute, D3_DESCRIPTION),
+    Discretization(d4a.INFO, D4aQuery, d4a.compute, D4A_DESCRIPTION),
+    Discretization(d4b.INFO, D4bQuery, d4b.compute, D4B_DESCRIPTION),
 )
 
 DISCRETIZATIONS: dict[str, Discretization] = {entry.info.id: entry for entry in _ENTRIES}
@@ -59,7 +65,13 @@ def _statements() -> dict[str, StatementEntry]:
             known = found.get(statement.id)
             owners = (known.discretizations if known else ()) + (entry.info.id,)
             found[statement.id] = StatementEntry(known.statement if known else statement, owners)
-    return found
+    # a property named after a discretization (d1, d3, ...) is checked on it by default
+    return {
+        key: StatementEntry(
+            entry.statement, tuple(sorted(entry.discretizations, key=lambda owner: owner != key))
+        )
+        for key, entry in found.items()
+    }
 
 
 STATEMENTS: dict[str, StatementEntry] = _statements()

@@ -48,6 +48,9 @@ def fit(
     tiny = ar.scalar(np.finfo(np.float64).tiny)
     weight = np.where(lhs_magnitude > tiny, lhs_magnitude, tiny)
     u, v = lhs / weight, rhs / weight
+    largest = np.max(abs(v)) if len(v) else ar.scalar(0)
+    if largest > 0:  # scaled so that the squares cannot overflow
+        u, v = u / largest, v / largest
     vv = np.sum(v * v) if len(v) else ar.scalar(0)
     constant = np.sum(u * v) / vv if vv > 0 else None
     c = constant if constant is not None else ar.scalar(0)
@@ -135,3 +138,28 @@ def equation_7(ar: Arithmetic, p: Array, i_min: int) -> TwoConstantFit:
     scale = lhs_size + abs(c1) * u_size + abs(c2) * v_size
     scale = np.where(scale > tiny, scale, tiny)
     return TwoConstantFit(constants, abs(lhs - c1 * u - c2 * v) / scale)
+
+
+def equilibrium(ar: Arithmetic, p: Array) -> ConditionFit:
+    """Hanging sticks in equilibrium: k_{i+1} − k_i = c (l_i + l_{i+1}) for the edge slopes k_i.
+
+    Homogeneous sticks on the edges (weight w per length), joined by weightless hinges: each
+    stick's moment balance puts half of its weight on each end, and the hinge balance with a
+    constant horizontal tension T gives T (k_{i+1} − k_i) = (w/2)(l_i + l_{i+1}), so c = w/(2T).
+    With constant spacing δ this is (D1) divided by δ. For polygons with increasing x;
+    equations i = i_min .. i_max − 2. A slope's magnitude is (|y_i| + |y_{i+1}| + |k_i|(|x_i| +
+    |x_{i+1}|))/|x_{i+1} − x_i|, the size of the numbers it is computed from.
+    """
+    x, y = p[:, 0], p[:, 1]
+    dx = x[1:] - x[:-1]
+    slopes = (y[1:] - y[:-1]) / dx
+    sizes = (abs(y[1:]) + abs(y[:-1]) + abs(slopes) * (abs(x[1:]) + abs(x[:-1]))) / abs(dx)
+    lengths = edge_lengths(ar, p)
+    edge_sizes = edge_magnitude(p)
+    return fit(
+        ar,
+        slopes[1:] - slopes[:-1],
+        lengths[:-1] + lengths[1:],
+        sizes[:-1] + sizes[1:],
+        edge_sizes[:-1] + edge_sizes[1:],
+    )

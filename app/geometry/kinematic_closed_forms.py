@@ -18,8 +18,6 @@ the vertical one advanced by the non-integer index τ = ln(tan(β0/2))/L, so p_i
 
 from __future__ import annotations
 
-import numpy as np
-
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 
 
@@ -46,15 +44,13 @@ def tilt_shift(ar: Arithmetic, h: Scalar, d: Scalar, beta0: float | None) -> Sca
 
 
 def amplitude_cosh(ar: Arithmetic, a: Scalar, u: Array) -> Array:
-    """a·cosh(u) for a > 0, finite whenever the value is representable; ``u`` is overwritten.
+    """a·cosh(u) for a > 0 (scalar or array), finite whenever the value is representable.
 
     With E = (a/2)·e^{|u|} = exp(ln(a/2) + |u|): a·cosh(u) = E + (a/2)·((a/2)/E), one exp and
     five passes over the array (the hot loop of ``method=closed-form``, see bench/).
     """
     half = a / 2
-    e = np.abs(u, out=u)
-    e += ar.log(half)
-    e = ar.exp(e)
+    e = ar.exp(abs(u) + ar.log(half))
     return e + half * (half / e)
 
 

@@ -76,8 +76,11 @@ class Arithmetic:
     sqrt: Callable[[Any], Any]
     cos: Callable[[Any], Any]
     sin: Callable[[Any], Any]
+    sinh: Callable[[Any], Any]
     tanh: Callable[[Any], Any]
     atanh: Callable[[Any], Any]
+    asinh: Callable[[Any], Any]
+    acosh: Callable[[Any], Any]
     atan2: Callable[[Any, Any], Any]
     hypot: Callable[[Any, Any], Any]
 
@@ -120,8 +123,11 @@ class Float64(Arithmetic):
     sqrt = staticmethod(np.sqrt)
     cos = staticmethod(np.cos)
     sin = staticmethod(np.sin)
+    sinh = staticmethod(np.sinh)
     tanh = staticmethod(np.tanh)
     atanh = staticmethod(np.arctanh)
+    asinh = staticmethod(np.arcsinh)
+    acosh = staticmethod(np.arccosh)
     atan2 = staticmethod(np.arctan2)
     hypot = staticmethod(np.hypot)
 
@@ -173,8 +179,11 @@ class MultiPrecision(Arithmetic):
         self.sqrt = _elementwise(ctx.sqrt)
         self.cos = _elementwise(ctx.cos)
         self.sin = _elementwise(ctx.sin)
+        self.sinh = _elementwise(ctx.sinh)
         self.tanh = _elementwise(ctx.tanh)
         self.atanh = _elementwise(ctx.atanh)
+        self.asinh = _elementwise(ctx.asinh)
+        self.acosh = _elementwise(ctx.acosh)
         self.atan2 = _elementwise(ctx.atan2, 2)
         self.hypot = _elementwise(ctx.hypot, 2)
         self._isfinite = np.frompyfunc(ctx.isfinite, 1, 1)

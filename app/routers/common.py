@@ -3,6 +3,7 @@
 from collections.abc import Mapping
 from typing import Any, TypeVar
 
+import orjson
 from fastapi import Request, Response
 from fastapi.exceptions import RequestValidationError
 from pydantic import BaseModel, ValidationError
@@ -14,11 +15,52 @@ from app.limits import enforce_drawing, enforce_range
 from app.registry import DISCRETIZATIONS, Discretization
 from app.rendering.curves import SVG_MEDIA_TYPE, curve_svg
 from app.responses import CSV_MEDIA_TYPE, JSONBytesResponse, curve_csv, curve_document, encode_json
-from app.schemas.common import CurveQuery
+from app.schemas.common import PROBLEM_RESPONSES, CurveQuery
 from app.settings import Settings
 
 #: An SVG opened on its own is a document: it may style itself but load and run nothing.
 SVG_HEADERS = {"Content-Security-Policy": "default-src 'none'; style-src 'unsafe-inline'"}
+
+
+CURVE_RESPONSES: dict[int | str, dict[str, Any]] = {
+    200: {
+        "content": {
+            "text/csv": {
+                "schema": {"type": "string"},
+                "example": "curve,index,x,y\np,0,-0.1,1.0\np,1,0.1,1.0\n",
+            },
+            "image/svg+xml": {"schema": {"type": "string"}},
+        },
+        "description": "The curve as JSON (default), CSV (`format=csv`) or SVG (`format=svg`: p "
+        "and its companions with axes, legend and equal scales). GET responses carry "
+        "an ETag and Cache-Control; a matching If-None-Match gets 304.",
+    },
+    304: {"description": "Not modified (the If-None-Match ETag matches)."},
+    **PROBLEM_RESPONSES,
+}
+
+
+def example_of(curve: Curve) -> Any:
+    """A curve's JSON document to show in /docs, numbers rounded to 12 digits (so that the stored
+    OpenAPI document does not depend on the last bits of a CPU's exp and log)."""
+    return _rounded(orjson.loads(encode_json(curve_document(curve))))
+
+
+def _rounded(value: Any) -> Any:
+    if isinstance(value, float):
+        return float(f"{value:.12g}")
+    if isinstance(value, list):
+        return [_rounded(v) for v in value]
+    if isinstance(value, dict):
+        return {k: _rounded(v) for k, v in value.items()}
+    return value
+
+
+def with_example(responses: dict[int | str, dict[str, Any]], example: Any) -> dict[int | str, Any]:
+    """``responses`` with a JSON example for the 200."""
+    ok = dict(responses[200])
+    ok["content"] = {"application/json": {"example": example}, **ok["content"]}
+    return {**responses, 200: ok}
 
 
 def settings_of(request: Request) -> Settings:

@@ -2,16 +2,23 @@
 
 from typing import Annotated, Any
 
-import orjson
 from fastapi import APIRouter, Depends, Query, Request, Response
 
 from app.errors import UnknownIdError
 from app.geometry.precision import Float64
 from app.registry import DISCRETIZATIONS, Discretization
-from app.responses import cached, canonical_key, curve_document, encode_json
-from app.routers.common import compute, curve_response, reject_repeated_parameters, settings_of
+from app.responses import cached, canonical_key
+from app.routers.common import (
+    CURVE_RESPONSES,
+    compute,
+    curve_response,
+    example_of,
+    reject_repeated_parameters,
+    settings_of,
+    with_example,
+)
 from app.schemas.catalog import DiscretizationEntry, ParameterInfo
-from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES, CurveQuery, StrictModel
+from app.schemas.common import NOT_FOUND_RESPONSE, CurveQuery, StrictModel
 from app.schemas.curve import CurveResponse
 
 router = APIRouter(prefix="/discretizations", tags=["discretizations"])
@@ -69,52 +76,13 @@ def list_discretizations() -> list[DiscretizationEntry]:
     return [catalog_entry(entry) for entry in DISCRETIZATIONS.values()]
 
 
-CURVE_RESPONSES: dict[int | str, dict[str, Any]] = {
-    200: {
-        "content": {
-            "text/csv": {
-                "schema": {"type": "string"},
-                "example": "curve,index,x,y\np,0,-0.1,1.0\np,1,0.1,1.0\n",
-            },
-            "image/svg+xml": {"schema": {"type": "string"}},
-        },
-        "description": "The curve as JSON (default), CSV (`format=csv`) or SVG (`format=svg`: p "
-        "and its companions with axes, legend and equal scales). GET responses carry "
-        "an ETag and Cache-Control; a matching If-None-Match gets 304.",
-    },
-    304: {"description": "Not modified (the If-None-Match ETag matches)."},
-    **PROBLEM_RESPONSES,
-}
-
-
 def example_document(entry: Discretization) -> Any:
-    """A real response (default parameters, three vertices from index 0) to show in /docs.
-
-    Numbers are rounded to 12 digits so that the stored OpenAPI document does not depend on the
-    last bits of a CPU's exp and log.
-    """
+    """A real response (default parameters, three vertices from index 0) to show in /docs."""
     query = entry.query.model_validate({})
     arguments = query.core_arguments()
     first = 0 if arguments["i_min"] <= 0 <= arguments["i_max"] else arguments["i_min"]
     arguments.update(i_min=first, i_max=first + 2)
-    curve = entry.compute(Float64(), **arguments)
-    return _rounded(orjson.loads(encode_json(curve_document(curve))))
-
-
-def _rounded(value: Any) -> Any:
-    if isinstance(value, float):
-        return float(f"{value:.12g}")
-    if isinstance(value, list):
-        return [_rounded(v) for v in value]
-    if isinstance(value, dict):
-        return {k: _rounded(v) for k, v in value.items()}
-    return value
-
-
-def _with_example(responses: dict[int | str, dict[str, Any]], example: Any) -> dict[int | str, Any]:
-    ok = dict(responses[200])
-    ok["content"] = {"application/json": {"example": example}, **ok["content"]}
-    return {**responses, 200: ok}
+    return example_of(entry.compute(Float64(), **arguments))
 
 
 def _register(entry: Discretization) -> None:
@@ -138,7 +106,7 @@ def _register(entry: Discretization) -> None:
 
     common = {
         "response_model": CurveResponse,
-        "responses": _with_example(CURVE_RESPONSES, example_document(entry)),
+        "responses": with_example(CURVE_RESPONSES, example_document(entry)),
         "description": entry.description,
     }
     router.add_api_route(

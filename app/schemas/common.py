@@ -4,13 +4,30 @@ from __future__ import annotations
 
 from typing import Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator
+from pydantic_core import PydanticCustomError
+
+#: Nonzero real parameters are at least this large in magnitude: the checks square coordinates,
+#: and squares of smaller numbers underflow float64 (subnormal inputs are refused, not garbled).
+SMALLEST_MAGNITUDE = 1e-100
 
 
 class StrictModel(BaseModel):
-    """Base of every request model: unknown fields and NaN/Infinity are rejected."""
+    """Base of every request model: rejects unknown fields, NaN/Infinity and tiny magnitudes."""
 
     model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
+
+    @field_validator("*", mode="after")
+    @classmethod
+    def _representable(cls, value: Any, info: ValidationInfo) -> Any:
+        """Refuse 0 < |x| < 1e-100 for every real parameter (a 422 naming it)."""
+        if isinstance(value, float) and value != 0 and abs(value) < SMALLEST_MAGNITUDE:
+            raise PydanticCustomError(
+                "magnitude",
+                "{name} is 0 or at least 1e-100 in magnitude",
+                {"name": info.field_name},
+            )
+        return value
 
 
 class CurveQuery(StrictModel):

@@ -55,3 +55,20 @@ def test_theorem_rejects_unknown_parameters(client: TestClient) -> None:
     response = client.get("/theorems/theorem-5", params={"zeta": 1})
     assert response.status_code == 422
     assert response.json()["errors"][0]["parameter"] == "zeta"
+
+
+def test_catalog_lists_the_stick_and_chain_family_with_domains(client: TestClient) -> None:
+    entries = {e["id"]: e for e in client.get("/discretizations").json()}
+    domains = {
+        "d1": {"c": "0 < c < 1", "delta": "delta > 0"},
+        "d3": {"c": "c > 0", "delta": "0 < delta < 2c", "y0": "y0 >= √(c² − delta²/4)"},
+        "d4a": {"h": "h > 0", "s": "0 < s < h", "beta0": "0 < beta0 < π"},
+    }
+    for identifier, expected in domains.items():
+        entry = entries[identifier]
+        parameters = {p["name"]: p for p in entry["parameters"]}
+        assert {k: parameters[k]["domain"] for k in expected} == expected
+        assert entry["methods"] == ["construction", "closed-form"]
+        assert entry["url"] == f"/discretizations/{identifier}"
+    assert entries["d4a"]["statements"][:2] == ["d4a-sticks", "d4a-arc-length"]
+    assert set(entries["d1"]["constants"]) == {"d1", "d3", "eq2", "equilibrium"}

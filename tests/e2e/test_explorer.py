@@ -76,8 +76,14 @@ def test_the_page_loads_and_draws_the_default_curve_with_its_checks(
     expect(page.locator("#param-d")).to_have_value("0.1")
     body = api(page, server, "/discretizations/d4b")
     drawn = plotted(page)
-    assert set(drawn) == {"p", *body["companions"]}
+    # the smooth references are overlaid with the discretization's h (= 1 here)
+    assert set(drawn) == {"p", *body["companions"], "smooth-catenary", "smooth-tractrix"}
     np.testing.assert_allclose(drawn["p"], body["vertices"], atol=resolution(page))
+    x, y = drawn["smooth-catenary"].T
+    np.testing.assert_allclose(y, np.cosh(x), atol=resolution(page))
+    x, y = drawn["smooth-tractrix"].T  # the tractrix (t − tanh t, 1/cosh t) has y = 1/cosh t
+    t = np.arccosh(np.clip(1 / np.maximum(y, 1e-12), 1, None)) * np.sign(x)
+    np.testing.assert_allclose(x, t - np.tanh(t), atol=3 * resolution(page))
     rows = page.locator("#checks-table tbody tr")
     expect(rows).to_have_count(len(body["checks"]))
     expect(page.locator("#checks-table tbody .verdict-holds")).to_have_count(len(body["checks"]))

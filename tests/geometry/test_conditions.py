@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from app.geometry import conditions
+from app.geometry import conditions, hanging_chain
 from app.geometry.polygon import edge_lengths, second_difference, signed_areas
 from app.geometry.precision import Float64
 
@@ -51,3 +51,48 @@ def test_a_small_perturbation_is_far_above_the_float64_tolerance(float64: Float6
     p[4, 1] *= 1 + 1e-6
     # residuals are relative to the coordinates' magnitude (|y| = 2 against a spacing of 0.25)
     assert np.max(conditions.d3(float64, p).residuals) > 1e4 * float64.tolerance(16)
+
+
+def test_equilibrium_is_d1_over_the_spacing_when_the_spacing_is_constant(float64: Float64) -> None:
+    p = hanging_chain.construct(float64, 0.2, 0.3, 2.0, 2.1, -6, 6).vertices
+    assert conditions.d1(float64, p).constant == pytest.approx(0.2, rel=1e-13)
+    assert conditions.equilibrium(float64, p).constant == pytest.approx(0.2 / 0.3, rel=1e-13)
+    assert np.max(conditions.equilibrium(float64, p).residuals) < 1e-14
+
+
+def test_hanging_sticks_with_uneven_spacing_are_in_equilibrium_but_not_d1(float64: Float64) -> None:
+    # sticks of any horizontal extents: the hinge balance fixes each next slope
+    # k_{i+1} = k_i + c(l_i + l_{i+1}), solved for k_{i+1} (l_{i+1} depends on it)
+    c = 0.2
+    spacing = [0.5, 0.3, 0.7, 0.4, 0.6, 0.2, 0.5]
+    x, y, k = [0.0, 0.5], [1.0, 0.8], (0.8 - 1.0) / 0.5
+    for dx in spacing[1:]:
+        length = (
+            np.hypot(spacing[0], k * spacing[0])
+            if len(x) == 2
+            else np.hypot(x[-1] - x[-2], y[-1] - y[-2])
+        )
+        # k' − c·dx·√(1 + k'²) = k + c·length: monotone in k', solve by bisection
+        lo, hi = -100.0, 100.0
+        for _ in range(200):
+            mid = (lo + hi) / 2
+            if mid - c * dx * np.hypot(1, mid) < k + c * length:
+                lo = mid
+            else:
+                hi = mid
+        k = (lo + hi) / 2
+        x.append(x[-1] + dx)
+        y.append(y[-1] + k * dx)
+    p = np.column_stack([x, y])
+    fit = conditions.equilibrium(float64, p)
+    assert fit.constant == pytest.approx(c, rel=1e-12)
+    assert np.max(fit.residuals) < 1e-13
+    assert np.max(conditions.d1(float64, p).residuals) > 1e-2  # (D1) needs equal spacing
+
+
+def test_fit_does_not_overflow_for_tiny_left_hand_sides(float64: Float64) -> None:
+    # areas of 1e-300 against lengths of 2: the normalized right-hand sides are about 1e300
+    p = np.array([[0.0, 0.0], [2.0, 1e-300], [4.0, 3e-300]])
+    with np.errstate(all="raise"):
+        fit = conditions.d3(float64, p)
+    assert fit.constant == pytest.approx(np.sum(signed_areas(p) * 2) / 8, rel=1e-6)

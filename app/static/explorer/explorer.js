@@ -520,7 +520,9 @@ async function start() {
   const select = $('discretization');
   for (const entry of state.catalog) select.append(html('option', { value: entry.id }, `${entry.id} — ${entry.title}`));
   const params = new URLSearchParams(location.search);
-  selectDiscretization(params.get('id') || state.catalog[0].id, params);
+  // Wunderlich's (D4b) opens first: the construction the paper proves the most about
+  const opening = state.catalog.some((e) => e.id === 'd4b') ? 'd4b' : state.catalog[0].id;
+  selectDiscretization(params.get('id') || opening, params);
 
   select.addEventListener('change', () => { selectDiscretization(select.value); compute(); });
   const form = $('form');

@@ -1,0 +1,142 @@
+"""The hanging chain of sticks (D1), Section 3, built from its difference equation.
+
+The polygon has constant horizontal spacing δ, p_i = (iδ, y_i), starts at p_0 = (0, y0) and
+p_1 = (δ, y1), and satisfies (D1) at every index:
+
+    Δ²y_i = y_{i+2} − 2y_{i+1} + y_i = c (l_i + l_{i+1}),    l_i = |p_{i+1} − p_i|.
+
+With constant spacing this is also the equilibrium of homogeneous sticks hanging from hinges
+(force balance at each hinge with constant horizontal tension T and weight w per length gives
+T(k_{i+1} − k_i) = (w/2)(l_i + l_{i+1}) for the slopes k_i; see ``conditions.equilibrium``).
+
+**One step.** With the slopes m_i = (y_{i+1} − y_i)/δ, (D1) divided by δ reads
+
+    m_{i+1} − m_i = c (√(1 + m_i²) + √(1 + m_{i+1}²)).
+
+Put κ = m_i + c√(1 + m_i²). Then m_{i+1} − κ = c√(1 + m_{i+1}²), and squaring gives the quadratic
+
+    (1 − c²) m² − 2κ m + κ² − c² = 0,    m± = (κ ± c√(κ² + 1 − c²)) / (1 − c²).
+
+The admissible root is m+: the unsquared equation needs m − κ ≥ 0, and since
+√(κ² + 1 − c²) > |κ| ≥ c|κ|, m+ − κ = c(cκ + √(κ² + 1 − c²))/(1 − c²) > 0 while m− − κ < 0.
+The root m− solves m − κ = −c√(1 + m²): it is the step of the chain with −c, an arch standing
+upside down, brought in by the squaring.
+
+**Domain of c.** For 0 < c < 1 the root m+ is real for every slope (κ² + 1 − c² > 0), so every
+start (y0, y1) continues for ever in both directions. For c ≥ 1 no next vertex exists at all:
+|m_{i+1} − m_i| ≤ |m_i| + |m_{i+1}| < c(√(1 + m_i²) + √(1 + m_{i+1}²)). c = 0 is a straight
+line and c < 0 the arch; (D1) asks for c > 0. Hence 0 < c < 1, delta > 0, any finite y0, y1.
+
+**Backwards.** Reversing the indices maps (D1) to itself with the slopes negated, so the step
+from edge i+1 back to edge i is m_i = −F(−m_{i+1}), F the forward step. Any index range works.
+
+**Numerics.** F is evaluated without cancellation: for m < 0, κ = ((1 − c²)m² − c²)/(m − c√(1+m²))
+and for κ < 0, m+ = (κ − c)(κ + c)/(κ − c√(κ² + 1 − c²)) (both are the product of the two roots
+divided by the other one). The slopes are sequential (each step needs the previous slope), so
+they are computed in a scalar loop over max(|i_min|, |i_max|) steps (about 1.8 µs per step in
+float64 on an idle 2-core machine); the heights are then partial sums (numpy cumsum). The step
+is a hyperbolic rotation of (√(1 + m²), m), so vectorizing it means solving the recursion: that
+is the closed form (``hanging_chain_closed_forms``), a theorem the checks compare with this
+construction, so it is not used here; ``method=closed-form`` serves long ranges from it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from app.geometry.errors import DomainError
+from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
+
+
+@dataclass(frozen=True)
+class HangingChain:
+    """(D1) on the indices i_min .. i_max: vertices ``(n, 2)`` and edge slopes ``(n − 1,)``."""
+
+    indices: np.ndarray[Any, np.dtype[np.int64]]
+    vertices: Array
+    slopes: Array
+    """m_i = (y_{i+1} − y_i)/δ for i = i_min .. i_max − 1, as the recursion computed them."""
+
+
+def validate(c: float, delta: float, y0: float, y1: float) -> None:
+    """Raise ``DomainError`` unless 0 < c < 1, delta > 0 and y0, y1 are finite."""
+    if not np.isfinite(c) or not 0 < c < 1:
+        raise DomainError(
+            "c",
+            "0 < c < 1",
+            c,
+            "for c >= 1 no polygon satisfies (D1) with constant spacing (no real next vertex)",
+        )
+    if not np.isfinite(delta) or delta <= 0:
+        raise DomainError("delta", "delta > 0", delta)
+    for name, value in (("y0", y0), ("y1", y1)):
+        if not np.isfinite(value):
+            raise DomainError(name, f"{name} is a finite number", value)
+
+
+@dataclass(frozen=True)
+class StepConstants:
+    """c, 1 − c² and √(1 − c²), the numbers every step uses."""
+
+    c: Scalar
+    one_minus_c2: Scalar
+    root: Scalar
+
+    @classmethod
+    def of(cls, ar: Arithmetic, c: Scalar) -> StepConstants:
+        one_minus_c2 = (1 - c) * (1 + c)
+        return cls(c, one_minus_c2, ar.sqrt(one_minus_c2))
+
+
+def forward_slope(ar: Arithmetic, k: StepConstants, m: Scalar) -> Scalar:
+    """(D1) solved for m_{i+1} given m_i: the admissible root m+ of the step's quadratic."""
+    c = k.c
+    r = ar.hypot(1, m)
+    kappa = m + c * r if m >= 0 else (k.one_minus_c2 * m * m - c * c) / (m - c * r)
+    root = ar.hypot(kappa, k.root)
+    if kappa >= 0:
+        return (kappa + c * root) / k.one_minus_c2
+    return (kappa - c) * (kappa + c) / (kappa - c * root)
+
+
+def backward_slope(ar: Arithmetic, k: StepConstants, m: Scalar) -> Scalar:
+    """(D1) solved for m_i given m_{i+1}: the forward step of the reversed chain, negated."""
+    return -forward_slope(ar, k, -m)
+
+
+def construct(
+    ar: Arithmetic,
+    c: float,
+    delta: float,
+    y0: float,
+    y1: float,
+    i_min: int,
+    i_max: int,
+) -> HangingChain:
+    """(D1), Section 3: the polygon with spacing delta from p_0 = (0, y0), p_1 = (delta, y1)."""
+    validate(c, delta, y0, y1)
+    cc, dd = ar.scalar(c), ar.scalar(delta)
+    yy0, yy1 = ar.scalar(y0), ar.scalar(y1)
+    k = StepConstants.of(ar, cc)
+    lo, hi = min(0, i_min), max(1, i_max)  # vertices lo .. hi, edges lo .. hi − 1
+    slopes: list[Scalar] = [ar.scalar(0)] * (hi - lo)
+    slopes[-lo] = (yy1 - yy0) / dd
+    for j in range(1, hi):  # edge j from edge j − 1
+        slopes[j - lo] = forward_slope(ar, k, slopes[j - 1 - lo])
+    for j in range(-1, lo - 1, -1):  # edge j from edge j + 1
+        slopes[j - lo] = backward_slope(ar, k, slopes[j + 1 - lo])
+    m = ar.array(slopes)
+    # heights: y_1 = y1 exactly, y_{j+1} = y_j + δ m_j forwards, y_{j−1} = y_j − δ m_{j−1} back
+    ahead = np.cumsum(dd * m[1 - lo :]) if hi > 1 else ar.array([])
+    behind = np.cumsum(dd * m[-lo - 1 :: -1]) if lo < 0 else ar.array([])
+    y = np.concatenate([(yy0 - behind)[::-1], ar.array([yy0, yy1]), yy1 + ahead])
+    window = slice(i_min - lo, i_max - lo + 1)
+    i = ar.indices(i_min, i_max)
+    return HangingChain(
+        indices=np.arange(i_min, i_max + 1, dtype=np.int64),
+        vertices=stack_points(dd * i, y[window]),
+        slopes=m[i_min - lo : i_max - lo],
+    )

@@ -1,0 +1,93 @@
+"""GET /smooth/catenary and GET /smooth/tractrix: the smooth references of Section 2."""
+
+from collections.abc import Callable
+from typing import Annotated, Any
+
+from fastapi import APIRouter, Depends, Query, Request, Response
+
+from app.errors import UnknownIdError
+from app.geometry import smooth_curves
+from app.geometry.curve import Curve
+from app.geometry.precision import Arithmetic, Float64, arithmetic
+from app.limits import MP_OVERHEAD_DIGITS, LimitExceededError, enforce_digits
+from app.responses import cached, canonical_key
+from app.routers.common import (
+    CURVE_RESPONSES,
+    curve_response,
+    example_of,
+    reject_repeated_parameters,
+    settings_of,
+    with_example,
+)
+from app.schemas.common import NOT_FOUND_RESPONSE
+from app.schemas.curve import CurveResponse
+from app.schemas.smooth import CATENARY_DESCRIPTION, TRACTRIX_DESCRIPTION, SmoothQuery
+from app.settings import Settings
+
+router = APIRouter(prefix="/smooth", tags=["smooth"])
+
+CURVES: dict[str, tuple[Callable[..., Curve], str, str]] = {
+    "catenary": (
+        smooth_curves.compute_catenary,
+        smooth_curves.CATENARY.title,
+        CATENARY_DESCRIPTION,
+    ),
+    "tractrix": (
+        smooth_curves.compute_tractrix,
+        smooth_curves.TRACTRIX.title,
+        TRACTRIX_DESCRIPTION,
+    ),
+}
+
+
+def example_document(compute: Callable[..., Curve]) -> Any:
+    """A real response (default parameters, three samples) to show in /docs."""
+    return example_of(compute(Float64(), count=3))
+
+
+def enforce_samples(settings: Settings, query: SmoothQuery) -> None:
+    """Refuse more samples, or more mp work, than the settings allow."""
+    if query.count > settings.max_vertices:
+        raise LimitExceededError("count", f"count <= {settings.max_vertices}", query.count)
+    if query.precision == "mp":
+        enforce_digits(settings, query.digits)
+        if (query.digits + MP_OVERHEAD_DIGITS) * query.count > settings.max_mp_work:
+            raise LimitExceededError(
+                "digits",
+                f"(digits + {MP_OVERHEAD_DIGITS}) × count <= {settings.max_mp_work} in "
+                "precision=mp",
+                query.digits,
+            )
+
+
+def _register(name: str, compute: Callable[..., Curve], title: str, description: str) -> None:
+    def get_curve(request: Request, query: Annotated[SmoothQuery, Query()]) -> Response:
+        settings = settings_of(request)
+
+        def build() -> Response:
+            enforce_samples(settings, query)
+            ar: Arithmetic = arithmetic(query.precision, query.digits)
+            return curve_response(compute(ar, **query.core_arguments()), query.format)
+
+        return cached(request, canonical_key(request.url.path, query.model_dump()), settings, build)
+
+    router.add_api_route(
+        f"/{name}",
+        get_curve,
+        methods=["GET"],
+        summary=title,
+        description=description,
+        operation_id=f"get_smooth_{name}",
+        response_model=CurveResponse,
+        responses=with_example(CURVE_RESPONSES, example_document(compute)),
+        dependencies=[Depends(reject_repeated_parameters)],
+    )
+
+
+for _name, (_compute, _title, _description) in CURVES.items():
+    _register(_name, _compute, _title, _description)
+
+
+@router.get("/{curve}", include_in_schema=False, responses=NOT_FOUND_RESPONSE)
+def unknown_curve(curve: str) -> Response:
+    raise UnknownIdError("smooth curve", curve, sorted(CURVES))
