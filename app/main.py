@@ -4,7 +4,15 @@ from fastapi import FastAPI
 from fastapi.middleware.cors import CORSMiddleware
 
 from app import __version__, errors
-from app.routers import discretizations, explorer, figures, health, theorems
+from app.routers import (
+    convergence,
+    discretizations,
+    explorer,
+    figures,
+    health,
+    relations,
+    theorems,
+)
 from app.settings import Settings, get_settings
 
 DESCRIPTION = """\
@@ -23,6 +31,14 @@ A_i is the signed trapezoid area under the edge p_i p_{i+1}. `precision=mp` comp
 TAGS = [
     {"name": "discretizations", "description": "Discrete hyperbolic cosines and companions."},
     {"name": "theorems", "description": "The paper's statements, checked on computed data."},
+    {
+        "name": "relations",
+        "description": "Section 4: every discretization against every property.",
+    },
+    {
+        "name": "convergence",
+        "description": "Section 6: refinement studies, sup errors and observed orders.",
+    },
     {"name": "figures", "description": "The paper's figures, redrawn from computed data."},
     {"name": "service", "description": "Health."},
 ]
@@ -48,6 +64,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.include_router(health.router)
     app.include_router(discretizations.router)
     app.include_router(theorems.router)
+    app.include_router(relations.router)
+    app.include_router(convergence.router)
     app.include_router(figures.router)
     explorer.install(app)
     return app

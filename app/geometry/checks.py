@@ -25,6 +25,8 @@ class Statement:
     id: str
     reference: str
     claim: str
+    conditions: tuple[str, ...] = ()
+    """Hypotheses the text leaves implicit or states needlessly, in words (docs/errata.md)."""
 
 
 @dataclass(frozen=True)

@@ -75,6 +75,8 @@ class Arithmetic:
     sqrt: Callable[[Any], Any]
     cos: Callable[[Any], Any]
     sin: Callable[[Any], Any]
+    cosh: Callable[[Any], Any]
+    sinh: Callable[[Any], Any]
     tanh: Callable[[Any], Any]
     atanh: Callable[[Any], Any]
     atan2: Callable[[Any, Any], Any]
@@ -118,6 +120,8 @@ class Float64(Arithmetic):
     sqrt = staticmethod(np.sqrt)
     cos = staticmethod(np.cos)
     sin = staticmethod(np.sin)
+    cosh = staticmethod(np.cosh)
+    sinh = staticmethod(np.sinh)
     tanh = staticmethod(np.tanh)
     atanh = staticmethod(np.arctanh)
     atan2 = staticmethod(np.arctan2)
@@ -170,6 +174,8 @@ class MultiPrecision(Arithmetic):
         self.sqrt = _elementwise(ctx.sqrt)
         self.cos = _elementwise(ctx.cos)
         self.sin = _elementwise(ctx.sin)
+        self.cosh = _elementwise(ctx.cosh)
+        self.sinh = _elementwise(ctx.sinh)
         self.tanh = _elementwise(ctx.tanh)
         self.atanh = _elementwise(ctx.atanh)
         self.atan2 = _elementwise(ctx.atan2, 2)

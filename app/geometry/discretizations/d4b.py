@@ -44,11 +44,26 @@ FLOAT64_COORDINATE_LIMIT = 1e150
 RESOLUTION_MARGIN = 100
 
 S = Statement
+HYPOTHESIS_NEEDLESS = (
+    "Stated needlessly for (D4b): every (D4b) polygon has p_{i−1}^y p_i^y >= h² > d², for every "
+    "0 < d < h and every first stick; the condition matters only for sequences that merely "
+    "satisfy (13) (docs/errata.md, Section 3, implicit conditions)."
+)
+HYPOTHESIS_ALWAYS = (
+    "Theorem 4's hypothesis d² < p_{i−1}^y p_i^y always holds for (D4b) (theorem-4-hypothesis), "
+    "so the statement holds for every 0 < d < h."
+)
+VERTICAL_START = (
+    "Assumes a vertical first stick (d_0^y = p_1^y = h). For a first stick at angle beta0 the "
+    "construction is the vertical one shifted by the index τ = ln(tan(β0/2))/L, and the service "
+    "checks the formula at i + τ (an extension; docs/errata.md, Section 3)."
+)
 HYPOTHESIS = S(
     "theorem-4-hypothesis",
     "Theorem 4, hypothesis",
     "d² < p_{i−1}^y p_i^y for every i. Residual: largest max(0, d² − p_{i−1}^y p_i^y)/d². "
     "Every (D4b) polygon satisfies it, since p_{i−1}^y p_i^y ≥ h² > d² (see docs/errata.md).",
+    conditions=(HYPOTHESIS_NEEDLESS,),
 )
 THEOREM_4_I = S(
     "theorem-4-i",
@@ -56,18 +71,21 @@ THEOREM_4_I = S(
     "Δ²p_i^y = c (l_i + l_{i+1}) with one constant c > 0 (constants.d1, least-squares fit). "
     "Residual: largest |Δ²p_i^y − c(l_i + l_{i+1})|, relative to the magnitude of the "
     "coordinates it is computed from (docs/checks.md).",
+    conditions=(HYPOTHESIS_ALWAYS,),
 )
 THEOREM_4_II = S(
     "theorem-4-ii",
     "Theorem 4 (ii), (D3)",
     "A_i = c l_i with one constant c > 0 (constants.d3, least-squares fit). Residual: largest "
     "|A_i − c l_i|, relative to the magnitude of the coordinates (docs/checks.md).",
+    conditions=(HYPOTHESIS_ALWAYS,),
 )
 THEOREM_4_III = S(
     "theorem-4-iii",
     "Theorem 4 (iii), eq. (2)",
     "Δ²p_i^y = c (A_i + A_{i+1}) with one constant c > 0 (constants.eq2) and c = c_(D1)/c_(D3). "
     "Residual: the larger of the fit residual (as in theorem-4-i) and |c − c_(D1)/c_(D3)|/c.",
+    conditions=(HYPOTHESIS_ALWAYS,),
 )
 ROTATION_ANGLE = S(
     "theorem-4-rotation-angle",
@@ -93,12 +111,14 @@ THEOREM_5 = S(
     "The closed form p_i = ((2i−1)d, (h−d)^i/(2(h+d)^{i−1}) + (h+d)^i/(2(h−d)^{i−1})) equals the "
     "constructed centres (for a tilted first stick: at the shifted index i + τ, see the "
     "kinematic_closed_forms module). Residual: largest |p_i − closed form| / |closed form|.",
+    conditions=(VERTICAL_START,),
 )
 THEOREM_6 = S(
     "theorem-6",
     "Theorem 6, eq. (16)",
     "The closed form (16) of the tractrix equals the constructed stick ends d_i. "
     "Residual: largest |d_i − closed form| / |closed form|.",
+    conditions=(VERTICAL_START,),
 )
 DARBOUX = S(
     "darboux-d4b",
