@@ -61,6 +61,9 @@ LOCAL_STEPS = 16
 #: The compact set is |x| <= x_max with x_max <= MAX_SPAN·h (cosh(x/h) stays far from overflow).
 MAX_SPAN = 20
 
+#: Work counts are capped here: more than any budget allows, and still an exact integer.
+WORK_CAP = 10**15
+
 #: mp work of one sample point in units of one construction step (both distance brackets, the
 #: curves and the proofs' forms; measured against ``construct``).
 SAMPLE_COST = 30
@@ -241,9 +244,11 @@ def work(h: float, d0: float, levels: int, x_max: float, samples: int) -> tuple[
     validate(h, d0, levels, x_max, samples)
     total = 0
     for d in steps(d0, levels):
+        if not (d > 0 and x_max / d < WORK_CAP):  # a step below any budget (or underflowed)
+            return WORK_CAP, samples * levels
         i_min, i_max = index_range(d, x_max)
         total += max(1 - i_min, 0) + max(i_max, 0) + 1
-    return total, samples * levels
+    return min(total, WORK_CAP), samples * levels
 
 
 def mp_work(h: float, d0: float, levels: int, x_max: float, samples: int) -> int:
@@ -502,14 +507,16 @@ class _Identity:
         residuals: Array,
         steps: int,
         printed: Array | None = None,
+        keep: np.ndarray[Any, np.dtype[np.bool_]] | None = None,
     ) -> None:
+        """Residuals of the points in ``keep`` (all if None) whose values are finite."""
         values = ar.to_floats(residuals)
-        finite = np.isfinite(values)
-        self.dropped += int(np.count_nonzero(~finite))
-        self.residuals.extend(values[finite].tolist())
+        usable = np.isfinite(values) if keep is None else np.isfinite(values) & keep
+        self.dropped += int(np.count_nonzero(~usable))
+        self.residuals.extend(values[usable].tolist())
         if printed is not None:
             p = ar.to_floats(printed)
-            self.printed.extend(p[np.isfinite(p)].tolist())
+            self.printed.extend(p[usable & np.isfinite(p)].tolist())
         self.steps = max(self.steps, steps)
 
     def check(self, ar: Arithmetic, statement: Statement, erratum: tuple[str, ...] = ()) -> Check:
@@ -517,8 +524,8 @@ class _Identity:
         note = None
         if self.dropped:
             note = (
-                f"{self.dropped} points left out: the printed powers overflow in float64 there; "
-                "precision=mp evaluates them all"
+                f"{self.dropped} points left out: a printed power (h ± d)^t leaves the normal "
+                "float64 range there; precision=mp evaluates them all"
             )
         if not self.residuals:
             return not_applicable(statement, tolerance, note or "no points to evaluate")
@@ -550,6 +557,29 @@ def _power_steps(ar: Arithmetic, h: Scalar, d: Scalar, x_max: float) -> int:
     exponent = (x_max + ar.to_float(d)) / ar.to_float(d)
     logs = max(abs(math.log(ar.to_float(h + d))), abs(math.log(ar.to_float(h - d))))
     return LOCAL_STEPS + math.ceil(2 * exponent * (1 + logs))
+
+
+def _unit_power_steps(ar: Arithmetic, h: Scalar, d: Scalar, x_max: float) -> int:
+    """Rounding steps of a power (1 ± d/h)^t with t ~ x/d (the proofs' dimensionless forms)."""
+    return LOCAL_STEPS + math.ceil(2 * (x_max + ar.to_float(d)) / ar.to_float(d))
+
+
+#: In float64 a printed power whose natural logarithm exceeds this in size overflows or falls
+#: into the subnormal range (where it loses digits): such points are left out of identities.
+FLOAT64_LOG_LIMIT = 700
+
+
+def _printable(
+    ar: Arithmetic, h: Scalar, d: Scalar, x: Array, per_step: float
+) -> np.ndarray[Any, np.dtype[np.bool_]]:
+    """The points where every printed power (h ± d)^t, |t| <= per_step·(|x| + d)/d, and its
+    products with h stay normal float64 numbers (all points in mp)."""
+    if ar.mode == "mp":
+        return np.ones(len(x), dtype=bool)
+    hf, df = ar.to_float(h), ar.to_float(d)
+    logs = max(abs(math.log(hf + df)), abs(math.log(hf - df)))
+    exponent = per_step * (np.abs(ar.to_floats(x)) + df) / df
+    return np.asarray(logs * (exponent + 2) < FLOAT64_LOG_LIMIT, dtype=bool)
 
 
 def _sup(ar: Arithmetic, values: Array) -> float | None:
@@ -625,11 +655,11 @@ def theorem_14(
                     "distance": ar.tolerance(LOCAL_STEPS) * scale,
                     "vertices": noise,
                     "vertices-distance": noise,
-                    "equation-21": ar.tolerance(powers),
+                    "equation-21": ar.tolerance(_unit_power_steps(ar, hh, dd, x_max)),
                 },
             )
         )
-        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        with np.errstate(over="ignore", under="ignore", invalid="ignore", divide="ignore"):
             printed = lc.theorem_14_curve_printed(ar, hh, dd, p[:, 0])
             interpolation.add(
                 ar,
@@ -638,6 +668,7 @@ def theorem_14(
                     relative_point_difference(ar, lc.theorem_14_curve(ar, hh, dd, p[:, 0]), p),
                 ),
                 2 * size + powers,
+                keep=_printable(ar, hh, dd, p[:, 0], 0.5),
             )
             rearrangement.add(
                 ar,
@@ -647,12 +678,13 @@ def theorem_14(
                     lc.theorem_14_curve_printed(ar, hh, dd, x)[:, 1],
                 ),
                 powers,
+                keep=_printable(ar, hh, dd, x, 0.5),
             )
             xs = x[nonzero]
             substitution.add(
                 ar,
                 _relative(ar, lc.power_21_substituted(ar, hh, dd, xs), lc.power_21(ar, hh, dd, xs)),
-                powers,
+                _unit_power_steps(ar, hh, dd, x_max),
             )
     parameters = {"h": h, "d0": d0, "levels": levels, "x_max": x_max, "samples": samples}
 
@@ -722,12 +754,12 @@ def theorem_15(
                     "vertices": noise,
                     "vertices-distance": noise,
                     "natural": noise,
-                    "inequality-22-y": ar.tolerance(powers) / ar.to_float(hh),
-                    "inequality-22-x": ar.tolerance(powers),
+                    "inequality-22-y": ar.tolerance(_unit_power_steps(ar, hh, dd, x_max)),
+                    "inequality-22-x": ar.tolerance(_unit_power_steps(ar, hh, dd, x_max)),
                 },
             )
         )
-        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        with np.errstate(over="ignore", under="ignore", invalid="ignore", divide="ignore"):
             printed = lc.theorem_15_curve_printed(ar, hh, dd, parameter)
             interpolation.add(
                 ar,
@@ -736,14 +768,17 @@ def theorem_15(
                     relative_point_difference(ar, lc.theorem_15_curve(ar, hh, dd, parameter), tip),
                 ),
                 2 * size + powers,
+                keep=_printable(ar, hh, dd, parameter, 1.0),
             )
             curve = lc.theorem_15_curve_printed(ar, hh, dd, x)
+            keep = _printable(ar, hh, dd, x, 1.0)
             pf, pg = lc.substitution_15_y(ar, hh, dd, x, printed=True)
             proof_y.add(
                 ar,
                 _relative(ar, 2 * hh / (f_y + g_y), curve[:, 1]),
                 powers,
                 _relative(ar, 2 * hh / (pf + pg), curve[:, 1]),
+                keep,
             )
             fraction = (x + dd - curve[:, 0]) / hh
             qf, qg = lc.substitution_15_x(ar, hh, dd, x, printed=True)
@@ -752,6 +787,7 @@ def theorem_15(
                 abs((g_x - f_x) / (g_x + f_x) - fraction),
                 powers,
                 abs((qg - qf) / (qg + qf) - fraction),
+                keep,
             )
     parameters = {"h": h, "d0": d0, "levels": levels, "x_max": x_max, "samples": samples}
 

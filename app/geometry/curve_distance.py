@@ -23,22 +23,27 @@ RootFunction = Callable[[Array, np.ndarray[Any, np.dtype[np.intp]]], tuple[Array
 
 
 def bracketed_root(
-    ar: Arithmetic, func: RootFunction, lo: Array, hi: Array, increasing: bool
+    ar: Arithmetic, func: RootFunction, lo: Array, hi: Array, increasing: bool, scale: float = 1.0
 ) -> Array:
     """A root of ``func`` in [lo, hi] for every entry, where func rises (or falls) through it.
 
     Safeguarded Newton: the bracket shrinks to the side where the sign says the root lies; a
     Newton step that leaves it is replaced by bisection. Entries stop when their step is below
-    the working precision; only the entries still moving are evaluated (a Python loop over
-    iterations, each vectorized over the entries). At most enough iterations for bisection to
-    reach the working precision from the widest bracket.
+    the working precision relative to ``scale + |s|`` (``scale``: the size of the variable, so
+    that the result does not depend on units); only the entries still moving are evaluated (a
+    Python loop over iterations, each vectorized over the entries). At most enough iterations
+    for bisection to reach the working precision from the widest bracket.
     """
     lo, hi = lo.copy(), hi.copy()
     s = (lo + hi) / 2
     width = float(np.max(ar.to_floats(abs(hi - lo)))) if len(s) else 0.0
-    scale = float(np.max(ar.to_floats(abs(s)))) + 1.0 if len(s) else 1.0
+    size = float(np.max(ar.to_floats(abs(s)))) + scale if len(s) else scale
     tolerance = 4 * ar.working_eps
-    cap = 8 + max(0, math.ceil(math.log2(max(width, 1e-300) / (tolerance * scale))))
+    if 0 < width < math.inf and 0 < size < math.inf:
+        cap = 8 + max(0, math.ceil(math.log2(width) - math.log2(tolerance) - math.log2(size)))
+    else:  # an empty bracket needs no iteration; a non-finite one gets bisection's worst case
+        cap = 8 if width == 0 else 8 + 2100
+    unit = ar.scalar(scale)
     active = np.arange(len(s))
     for _ in range(cap):
         if not len(active):
@@ -53,7 +58,7 @@ def bracketed_root(
         newton = x - value / np.where(usable, slope, 1)
         inside = usable & np.asarray((newton >= a) & (newton <= b), dtype=bool)
         following = np.where(exact, x, np.where(inside, newton, (a + b) / 2))
-        moved = np.asarray(abs(following - x) > tolerance * (1 + abs(x)), dtype=bool)
+        moved = np.asarray(abs(following - x) > tolerance * (unit + abs(x)), dtype=bool)
         s[active], lo[active], hi[active] = following, a, b
         active = active[moved & ~exact]
     return s
@@ -76,7 +81,7 @@ def distance_to_catenary(ar: Arithmetic, h: Scalar, q: Array) -> Array:
         gap = h * c - qy[where]
         return (s - qx[where]) + gap * sh, c * c + gap * c / h
 
-    s = bracketed_root(ar, f, qx - vertical, qx + vertical, increasing=True)
+    s = bracketed_root(ar, f, qx - vertical, qx + vertical, True, ar.to_float(h))
     nearest = ar.hypot(s - qx, h * ar.cosh(s / h) - qy)
     return np.minimum(nearest, vertical)
 
@@ -102,8 +107,9 @@ def distance_to_tractrix(ar: Arithmetic, h: Scalar, q: Array) -> Array:
         lever = qx[where] - s
         return lever * sh - qy[where] + h * c, lever * c / h
 
-    right = bracketed_root(ar, g, qx.copy(), np.maximum(qx, zero) + two_h, increasing=False)
-    left = bracketed_root(ar, g, np.minimum(qx, zero) - two_h, qx.copy(), increasing=True)
+    unit = ar.to_float(h)
+    right = bracketed_root(ar, g, qx.copy(), np.maximum(qx, zero) + two_h, False, unit)
+    left = bracketed_root(ar, g, np.minimum(qx, zero) - two_h, qx.copy(), True, unit)
 
     def to(s: Array) -> Array:
         return ar.hypot(s - h * ar.tanh(s / h) - qx, h / ar.cosh(s / h) - qy)
