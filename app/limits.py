@@ -95,3 +95,55 @@ def enforce_drawing(settings: Settings, i_min: int, i_max: int) -> None:
             "(format=svg or /figures); use format=json or csv for longer ranges",
             i_max,
         )
+
+
+def enforce_study(
+    settings: Settings,
+    arguments: dict[str, object],
+    size: tuple[int, int],
+    mp_work: int,
+    precision: str,
+    digits: int,
+) -> None:
+    """Refuse refinement studies over the limits: levels, samples, construction steps, mp work.
+
+    ``size`` is (construction steps, sample points) summed over the levels, ``mp_work`` the
+    study's cost in construction steps; both computed from the parameters before any work.
+    """
+    levels = arguments.get("levels")
+    if isinstance(levels, int) and levels > settings.max_convergence_levels:
+        raise LimitExceededError("levels", f"levels <= {settings.max_convergence_levels}", levels)
+    samples = arguments.get("samples")
+    if isinstance(samples, int) and samples > settings.max_convergence_samples:
+        raise LimitExceededError(
+            "samples", f"samples <= {settings.max_convergence_samples}", samples
+        )
+    built, _ = size
+    if built > settings.max_convergence_steps:
+        raise LimitExceededError(
+            "levels",
+            f"construction steps over all levels <= {settings.max_convergence_steps} (this "
+            f"study needs {built}: fewer levels, a larger d0 or a smaller x_max)",
+            levels,
+        )
+    if precision == "mp":
+        enforce_digits(settings, digits)
+        if (digits + MP_OVERHEAD_DIGITS) * mp_work > settings.max_mp_work:
+            raise LimitExceededError(
+                "digits",
+                f"(digits + {MP_OVERHEAD_DIGITS}) × work <= {settings.max_mp_work} in "
+                f"precision=mp (this study's work is {mp_work} construction steps; use fewer "
+                "levels or samples)",
+                digits,
+            )
+
+
+def enforce_relation_row(settings: Settings, parameter: str, i_min: int, i_max: int) -> None:
+    """Refuse a row of GET /relations with more vertices than ``max_relation_vertices``."""
+    vertices = max(0, i_max - i_min + 1)
+    if vertices > settings.max_relation_vertices:
+        raise LimitExceededError(
+            parameter,
+            f"i_max − i_min + 1 <= {settings.max_relation_vertices} (vertices of one row)",
+            i_max,
+        )

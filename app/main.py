@@ -4,7 +4,18 @@ from fastapi import FastAPI
 from fastapi.middleware.cors import CORSMiddleware
 
 from app import __version__, errors
-from app.routers import discretizations, docs, explorer, figures, health, smooth, surfaces, theorems
+from app.routers import (
+    convergence,
+    discretizations,
+    docs,
+    explorer,
+    figures,
+    health,
+    relations,
+    smooth,
+    surfaces,
+    theorems,
+)
 from app.security import SecurityHeaders
 from app.settings import Settings, get_settings
 
@@ -24,6 +35,14 @@ A_i is the signed trapezoid area under the edge p_i p_{i+1}. `precision=mp` comp
 TAGS = [
     {"name": "discretizations", "description": "Discrete hyperbolic cosines and companions."},
     {"name": "theorems", "description": "The paper's statements, checked on computed data."},
+    {
+        "name": "relations",
+        "description": "Section 4: every discretization against every property.",
+    },
+    {
+        "name": "convergence",
+        "description": "Section 6: refinement studies, sup errors and observed orders.",
+    },
     {"name": "figures", "description": "The paper's figures, redrawn from computed data."},
     {"name": "surfaces", "description": "Catenoids, pseudosphere and Gauss images as meshes."},
     {"name": "smooth", "description": "Smooth references of Section 2: catenary and tractrix."},
@@ -56,6 +75,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.include_router(theorems.router)
     app.include_router(smooth.router)
     app.include_router(surfaces.router)
+    app.include_router(relations.router)
+    app.include_router(convergence.router)
     app.include_router(figures.router)
     explorer.install(app)
     docs.install(app)

@@ -1,19 +1,28 @@
 """Which discretizations the service offers: core module, request model and description.
 
-Adding a discretization means adding one entry to ``_ENTRIES``; the routers, the catalog and
-the statement catalog read everything else from here.
+Adding a discretization means adding one entry to ``_ENTRIES`` (a refinement study: one entry
+to ``_STUDIES``); the routers, the catalogs, the statement catalog and the relations matrix read
+everything else from here.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 
+from app.geometry import convergence
 from app.geometry.checks import Statement
+from app.geometry.convergence import Study, StudyInfo
 from app.geometry.curve import Curve, DiscretizationInfo
 from app.geometry.discretizations import d1, d2a_hex, d2a_quad, d2b, d3, d4a, d4b
 from app.schemas.common import CurveQuery, strict_body
+from app.schemas.convergence import (
+    THEOREM_14_DESCRIPTION,
+    THEOREM_15_DESCRIPTION,
+    StudyQuery,
+    TractrixStudyQuery,
+)
 from app.schemas.d1 import D1_DESCRIPTION, D1Query
 from app.schemas.d2a import D2A_HEX_DESCRIPTION, D2A_QUAD_DESCRIPTION, D2aHexQuery, D2aQuadQuery
 from app.schemas.d2b import D2B_DESCRIPTION, D2bQuery
@@ -50,25 +59,68 @@ _ENTRIES = (  # in the paper's order
 DISCRETIZATIONS: dict[str, Discretization] = {entry.info.id: entry for entry in _ENTRIES}
 
 
+@dataclass(frozen=True, eq=False)
+class ConvergenceStudy:
+    """One refinement study as the API serves it (GET /convergence/{id})."""
+
+    info: StudyInfo
+    query: type[StudyQuery]
+    run: Callable[..., Study]
+    """The core's study: ``run(ar, **query.core_arguments())``."""
+    work: Callable[..., int]
+    """Its cost in construction steps for the mp budget, from the same arguments (validates)."""
+    size: Callable[..., tuple[int, int]]
+    """(construction steps, sample points) over all levels, from the same arguments."""
+    description: str
+
+
+_STUDIES = (
+    ConvergenceStudy(
+        convergence.THEOREM_14_INFO,
+        TractrixStudyQuery,
+        convergence.theorem_14,
+        convergence.mp_work,
+        convergence.work,
+        THEOREM_14_DESCRIPTION,
+    ),
+    ConvergenceStudy(
+        convergence.THEOREM_15_INFO,
+        TractrixStudyQuery,
+        convergence.theorem_15,
+        convergence.mp_work,
+        convergence.work,
+        THEOREM_15_DESCRIPTION,
+    ),
+)
+
+STUDIES: dict[str, ConvergenceStudy] = {entry.info.id: entry for entry in _STUDIES}
+
+
 @dataclass(frozen=True)
 class StatementEntry:
-    """A statement and the discretizations whose responses check it."""
+    """A statement and the discretizations (curve responses) or studies that check it."""
 
     statement: Statement
     discretizations: tuple[str, ...]
+    studies: tuple[str, ...] = ()
 
 
 def _statements() -> dict[str, StatementEntry]:
     found: dict[str, StatementEntry] = {}
-    for entry in _ENTRIES:
-        for statement in entry.info.statements:
-            known = found.get(statement.id)
-            owners = (known.discretizations if known else ()) + (entry.info.id,)
-            found[statement.id] = StatementEntry(known.statement if known else statement, owners)
+    sources = [(e.info.id, e.info.statements, False) for e in _ENTRIES]
+    sources += [(s.info.id, s.info.statements, True) for s in _STUDIES]
+    for owner, statements, is_study in sources:
+        for statement in statements:
+            known = found.get(statement.id) or StatementEntry(statement, ())
+            if is_study:
+                known = replace(known, studies=(*known.studies, owner))
+            else:
+                known = replace(known, discretizations=(*known.discretizations, owner))
+            found[statement.id] = known
     # a property named after a discretization (d1, d3, ...) is checked on it by default
     return {
-        key: StatementEntry(
-            entry.statement, tuple(sorted(entry.discretizations, key=lambda owner: owner != key))
+        key: replace(
+            entry, discretizations=tuple(sorted(entry.discretizations, key=lambda o: o != key))
         )
         for key, entry in found.items()
     }

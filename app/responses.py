@@ -16,6 +16,7 @@ from fastapi import Request, Response
 
 from app import __version__
 from app.geometry.checks import Check
+from app.geometry.convergence import Study
 from app.geometry.curve import Curve, Polyline
 from app.geometry.errors import NotRepresentableError
 from app.geometry.precision import Arithmetic, Array, MultiPrecision
@@ -172,3 +173,54 @@ def cached(
 def canonical_key(path: str, query: Any) -> str:
     """Path plus the validated query with defaults, keys sorted: one key per distinct answer."""
     return path + "?" + orjson.dumps(query, option=orjson.OPT_SORT_KEYS).decode()
+
+
+def study_document(study: Study) -> dict[str, Any]:
+    """The JSON document of ``ConvergenceResponse`` (see app/schemas/convergence.py)."""
+    info = study.info
+    return {
+        "id": info.id,
+        "title": info.title,
+        "reference": info.reference,
+        "summary": info.summary,
+        "refinement": info.refinement,
+        "step_name": info.step_name,
+        "parameters": study.parameters,
+        "precision": study.arithmetic.describe(),
+        "levels": [
+            {
+                "level": k,
+                "step": level.step,
+                "vertices": level.vertices,
+                "samples": level.samples,
+                "errors": level.errors,
+                "resolved": {m.id: level.resolved(m.id) for m in info.measures},
+            }
+            for k, level in enumerate(study.levels)
+        ],
+        "measures": [
+            {
+                "id": m.id,
+                "description": m.description,
+                "expected_order": m.expected_order,
+                "observed_order": study.fits[m.id].order,
+                "constant": study.fits[m.id].constant,
+                "levels_used": list(study.fits[m.id].levels),
+                "local_orders": list(study.fits[m.id].local_orders),
+            }
+            for m in info.measures
+        ],
+        "checks": [check_document(check) for check in study.checks],
+    }
+
+
+def study_csv(study: Study) -> bytes:
+    """``level,<step>,measure,error,resolved`` rows, level by level."""
+    lines = [f"level,{study.info.step_name},measure,error,resolved"]
+    for k, level in enumerate(study.levels):
+        for measure in study.info.measures:
+            error = level.errors.get(measure.id)
+            shown = "" if error is None else repr(error)
+            resolved = "true" if level.resolved(measure.id) else "false"
+            lines.append(f"{k},{level.step!r},{measure.id},{shown},{resolved}")
+    return ("\n".join(lines) + "\n").encode()

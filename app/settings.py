@@ -41,6 +41,27 @@ class Settings(BaseSettings):
         description="Most vertices of one surface mesh: meridian vertices × vertices around "
         "(2m for a closed surface, steps + 1 otherwise). GLB stores 4 vertices per face.",
     )
+    max_convergence_levels: int = Field(
+        16, ge=2, description="Most refinement levels of one study (GET /convergence/{id})."
+    )
+    max_convergence_samples: int = Field(
+        10_001,
+        ge=2,
+        description="Most sample points per level of one study (the smooth curve is measured "
+        "there).",
+    )
+    max_convergence_steps: int = Field(
+        500_000,
+        ge=1,
+        description="Most construction steps of one study, summed over its levels (each level "
+        "builds its polygon from the definition; about 1 s at the limit in float64).",
+    )
+    max_relation_vertices: int = Field(
+        100_001,
+        ge=3,
+        description="Most vertices of one row of GET /relations (every discretization is "
+        "computed for the matrix).",
+    )
     cors_origins: list[str] = Field(
         default_factory=lambda: ["*"],
         description="Origins allowed to call the API from a browser (JSON list; ['*'] for any).",

@@ -25,6 +25,11 @@ class Statement:
     id: str
     reference: str
     claim: str
+    conditions: tuple[str, ...] = ()
+    """Hypotheses the text leaves implicit or states needlessly, in words (docs/errata.md)."""
+    defaults: tuple[tuple[str, str], ...] = ()
+    """Parameters (name, value) under which the statement applies, used when a request to
+    /theorems/{id} does not set them (e.g. Remark 13 is about ``sequence=remark-13``)."""
 
 
 @dataclass(frozen=True)

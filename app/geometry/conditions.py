@@ -54,9 +54,17 @@ def fit(
     vv = np.sum(v * v) if len(v) else ar.scalar(0)
     constant = np.sum(u * v) / vv if vv > 0 else None
     c = constant if constant is not None else ar.scalar(0)
+    return ConditionFit(constant, misfit(ar, lhs, rhs, lhs_magnitude, rhs_magnitude, c))
+
+
+def misfit(
+    ar: Arithmetic, lhs: Array, rhs: Array, lhs_magnitude: Array, rhs_magnitude: Array, c: Scalar
+) -> Array:
+    """|lhs_i − c·rhs_i| / (|lhs|_i + |c|·|rhs|_i) for a given constant c; ``(m,)``."""
+    tiny = ar.scalar(np.finfo(np.float64).tiny)
     scale = lhs_magnitude + abs(c) * rhs_magnitude
     scale = np.where(scale > tiny, scale, tiny)
-    return ConditionFit(constant, abs(lhs - c * rhs) / scale)
+    return abs(lhs - c * rhs) / scale
 
 
 def d1(ar: Arithmetic, p: Array) -> ConditionFit:
@@ -89,6 +97,21 @@ def equation_2(ar: Arithmetic, p: Array) -> ConditionFit:
         areas[:-1] + areas[1:],
         second_difference_magnitude(y),
         sizes[:-1] + sizes[1:],
+    )
+
+
+def equation_2_misfit(ar: Arithmetic, p: Array, c: Scalar) -> Array:
+    """Eq. (2) with a given c: the residual of each equation, measured as in ``fit``."""
+    y = p[:, 1]
+    areas = signed_areas(p)
+    sizes = area_magnitude(p)
+    return misfit(
+        ar,
+        second_difference(y),
+        areas[:-1] + areas[1:],
+        second_difference_magnitude(y),
+        sizes[:-1] + sizes[1:],
+        c,
     )
 
 

@@ -34,6 +34,10 @@ class Curve:
     companions: dict[str, Polyline] = field(default_factory=dict)
     constants: dict[str, Scalar] = field(default_factory=dict)
     checks: list[Check] = field(default_factory=list)
+    local_tolerance: float | None = None
+    """Tolerance of a condition on a few neighbouring vertices of this polygon, such as (D1) or
+    eq. (2); ``None`` means ``arithmetic.tolerance(16)``. Discretizations whose vertices carry
+    more rounding (D2a: conditioning 1/gap) set it; ``relations`` uses it."""
 
 
 @dataclass(frozen=True)

@@ -76,6 +76,7 @@ class Arithmetic:
     sqrt: Callable[[Any], Any]
     cos: Callable[[Any], Any]
     sin: Callable[[Any], Any]
+    cosh: Callable[[Any], Any]
     sinh: Callable[[Any], Any]
     tanh: Callable[[Any], Any]
     atanh: Callable[[Any], Any]
@@ -123,6 +124,7 @@ class Float64(Arithmetic):
     sqrt = staticmethod(np.sqrt)
     cos = staticmethod(np.cos)
     sin = staticmethod(np.sin)
+    cosh = staticmethod(np.cosh)
     sinh = staticmethod(np.sinh)
     tanh = staticmethod(np.tanh)
     atanh = staticmethod(np.arctanh)
@@ -179,6 +181,7 @@ class MultiPrecision(Arithmetic):
         self.sqrt = _elementwise(ctx.sqrt)
         self.cos = _elementwise(ctx.cos)
         self.sin = _elementwise(ctx.sin)
+        self.cosh = _elementwise(ctx.cosh)
         self.sinh = _elementwise(ctx.sinh)
         self.tanh = _elementwise(ctx.tanh)
         self.atanh = _elementwise(ctx.atanh)

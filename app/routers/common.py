@@ -1,6 +1,6 @@
 """What the curve and theorem endpoints share: parsing, limits, computing, encoding."""
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from typing import Any, TypeVar
 
 import orjson
@@ -9,13 +9,15 @@ from fastapi.exceptions import RequestValidationError
 from pydantic import BaseModel, ValidationError
 
 from app.errors import UnknownIdError
+from app.geometry.convergence import Study
 from app.geometry.curve import Curve
 from app.geometry.precision import arithmetic
-from app.limits import enforce_drawing, enforce_range
-from app.registry import DISCRETIZATIONS, Discretization
+from app.limits import enforce_drawing, enforce_range, enforce_study
+from app.registry import DISCRETIZATIONS, STUDIES, ConvergenceStudy, Discretization
 from app.rendering.curves import SVG_MEDIA_TYPE, curve_svg
 from app.responses import CSV_MEDIA_TYPE, JSONBytesResponse, curve_csv, curve_document, encode_json
 from app.schemas.common import PROBLEM_RESPONSES, CurveQuery
+from app.schemas.convergence import StudyQuery
 from app.settings import Settings
 
 #: An SVG opened on its own is a document: it may style itself but load and run nothing.
@@ -93,16 +95,42 @@ def discretization(identifier: str) -> Discretization:
         raise UnknownIdError("discretization", identifier, sorted(DISCRETIZATIONS)) from None
 
 
+def study(identifier: str) -> ConvergenceStudy:
+    try:
+        return STUDIES[identifier]
+    except KeyError:
+        raise UnknownIdError("study", identifier, sorted(STUDIES)) from None
+
+
 Model = TypeVar("Model", bound=BaseModel)
 
 
-def parse_query(model: type[Model], values: Mapping[str, Any]) -> Model:
-    """Validate raw query values against a request model, as FastAPI would."""
+def parse_query(model: type[Model], values: Mapping[str, Any], prefix: str = "") -> Model:
+    """Validate raw query values against a request model, as FastAPI would.
+
+    ``prefix`` is prepended to the parameter names in errors (``d4b.`` in GET /relations).
+    """
     try:
         return model.model_validate(dict(values))
     except ValidationError as exc:
-        errors = [{**e, "loc": ("query", *e["loc"])} for e in exc.errors()]
+        errors = []
+        for e in exc.errors():
+            loc = tuple(e["loc"])
+            if prefix and loc:
+                loc = (f"{prefix}{loc[0]}", *loc[1:])
+            errors.append({**e, "loc": ("query", *loc)})
         raise RequestValidationError(errors) from None
+
+
+def prepare_study(
+    entry: ConvergenceStudy, query: StudyQuery, settings: Settings
+) -> Callable[[], Study]:
+    """Validate the study's parameters and check its budget now; return the run for later."""
+    arguments = query.core_arguments()
+    size = entry.size(**arguments)  # validates first: domain errors before limits
+    enforce_study(settings, arguments, size, entry.work(**arguments), query.precision, query.digits)
+    ar = arithmetic(query.precision, query.digits)
+    return lambda: entry.run(ar, **arguments)
 
 
 def compute(entry: Discretization, query: CurveQuery, settings: Settings) -> Curve:

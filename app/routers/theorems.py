@@ -1,54 +1,120 @@
 """GET /theorems (statement catalog) and GET /theorems/{id} (one statement checked)."""
 
+from functools import lru_cache
 from typing import Annotated, Any, Literal
+from urllib.parse import urlencode
 
 from fastapi import APIRouter, Depends, Path, Query, Request, Response
 
 from app.errors import UnknownIdError
-from app.registry import STATEMENTS
+from app.geometry.checks import Check
+from app.geometry.precision import Float64
+from app.registry import DISCRETIZATIONS, STATEMENTS, STUDIES, StatementEntry
 from app.responses import JSONBytesResponse, cached, canonical_key, check_document, encode_json
 from app.routers.common import (
     compute,
     discretization,
     parse_query,
+    prepare_study,
     reject_repeated_parameters,
     settings_of,
+    study,
 )
-from app.schemas.catalog import StatementInfo, TheoremResponse
-from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES
+from app.routers.discretizations import parameter_infos
+from app.schemas.catalog import ParameterInfo, StatementInfo, TheoremResponse
+from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES, StrictModel
 
 router = APIRouter(prefix="/theorems", tags=["theorems"])
+
+
+def _source_model(entry: StatementEntry) -> tuple[dict[str, str], type[StrictModel]]:
+    """The fixed query (``discretization=...``) and request model of a statement's default
+    source: its first discretization, else its first study."""
+    if entry.discretizations:
+        owner = entry.discretizations[0]
+        return {"discretization": owner}, DISCRETIZATIONS[owner].query
+    return {}, STUDIES[entry.studies[0]].query
+
+
+def example_url(
+    identifier: str,
+    fixed: dict[str, str],
+    parameters: list[ParameterInfo],
+    defaults: tuple[tuple[str, str], ...] = (),
+) -> str:
+    """/theorems/{id} with every paper parameter at its default (the statement's own first)."""
+    values: dict[str, Any] = dict(fixed)
+    values.update(
+        {p.name: p.default for p in parameters if p.kind == "paper" and p.default is not None}
+    )
+    values.update(dict(defaults))
+    return f"/theorems/{identifier}?{urlencode(values)}"
+
+
+@lru_cache(maxsize=1)
+def default_errata() -> dict[str, tuple[str, ...]]:
+    """Statement id -> ids of the errata its check carries at the default parameters (float64).
+
+    Computed once per process from every discretization and study at its defaults.
+    """
+    found: dict[str, set[str]] = {}
+
+    def collect(checks: list[Check]) -> None:
+        for check in checks:
+            if check.erratum is not None:
+                found.setdefault(check.id, set()).add(check.erratum.id)
+
+    for entry in DISCRETIZATIONS.values():
+        collect(entry.compute(Float64(), **entry.query.model_validate({}).core_arguments()).checks)
+    for source in STUDIES.values():
+        collect(source.run(Float64(), **source.query.model_validate({}).core_arguments()).checks)
+    return {k: tuple(sorted(v, key=lambda e: int(e[1:]))) for k, v in found.items()}
 
 
 @router.get(
     "",
     summary="List the checkable statements",
     description="Every statement of the paper the service checks (theorems, their parts and "
-    "hypotheses, recursions, printed formulas of the proofs, named properties), with its "
-    "reference, the claim in words and how its residual is measured.",
+    "hypotheses, recursions, printed formulas of the proofs, limits, named properties), with "
+    "its reference, the claim in words and how its residual is measured, the parameters it "
+    "accepts with their defaults, a ready-to-use example request, the hypotheses the text "
+    "leaves implicit, and the errata its check carries at the default parameters.",
     response_model=list[StatementInfo],
 )
 def list_statements() -> list[StatementInfo]:
-    return [
-        StatementInfo(
-            id=identifier,
-            reference=entry.statement.reference,
-            claim=entry.statement.claim,
-            discretizations=list(entry.discretizations),
-            url=f"/theorems/{identifier}",
+    errata = default_errata()
+    out = []
+    for identifier, entry in STATEMENTS.items():
+        fixed, model = _source_model(entry)
+        parameters = parameter_infos(model)
+        out.append(
+            StatementInfo(
+                id=identifier,
+                reference=entry.statement.reference,
+                claim=entry.statement.claim,
+                discretizations=list(entry.discretizations),
+                studies=list(entry.studies),
+                url=f"/theorems/{identifier}",
+                example_url=example_url(identifier, fixed, parameters, entry.statement.defaults),
+                parameters=parameters,
+                conditions=list(entry.statement.conditions),
+                errata=list(errata.get(identifier, ())),
+            )
         )
-        for identifier, entry in STATEMENTS.items()
-    ]
+    return out
 
 
 @router.get(
     "/{statement_id}",
     summary="Check one statement",
-    description="Computes the polygon of the statement's discretization (`discretization`, "
-    "default: the first that checks it) and returns this statement's check: residual, "
-    "tolerance, verdict and, where the printed formula is wrong, the erratum. Besides the "
-    "parameters below, every parameter of that discretization is accepted (see "
-    "GET /discretizations); unknown parameters are rejected.",
+    description="Computes what the statement is about and returns its check: residual, "
+    "tolerance, verdict and, where the printed formula is wrong, the erratum. A statement about "
+    "a discretization is checked on the polygon of `discretization` (default: the first that "
+    "checks it), and every parameter of that discretization is accepted (GET "
+    "/discretizations). A statement of Section 6 (limits, the proofs of Theorems 14 and 15) is "
+    "checked on its refinement study, and accepts the study's parameters (GET /convergence; "
+    "`detail` does not apply there). Unknown parameters are rejected; GET /theorems lists each "
+    "statement's parameters and an example.",
     response_model=TheoremResponse,
     responses={**PROBLEM_RESPONSES, **NOT_FOUND_RESPONSE, 304: {"description": "Not modified."}},
     dependencies=[Depends(reject_repeated_parameters)],
@@ -62,21 +128,47 @@ def check_statement(
     ] = None,
     precision: Annotated[Literal["float64", "mp"], Query(description="Arithmetic.")] = "float64",
     digits: Annotated[int, Query(ge=1, le=100_000, description="Digits for mp.")] = 30,
-    detail: Annotated[bool, Query(description="Residual per index.")] = False,
+    detail: Annotated[bool, Query(description="Residual per index (curves only).")] = False,
 ) -> Response:
     entry = STATEMENTS.get(statement_id)
     if entry is None:
         raise UnknownIdError("statement", statement_id, sorted(STATEMENTS))
+    values: dict[str, Any] = {**dict(entry.statement.defaults), **request.query_params}
+    settings = settings_of(request)
+    conditions = list(entry.statement.conditions)
+    if not entry.discretizations:
+        source = study(entry.studies[0])
+        values.pop("detail", None)
+        study_query = parse_query(source.query, values)
+        run = prepare_study(source, study_query, settings)
+
+        def build_study() -> Response:
+            result = run()
+            check = next(c for c in result.checks if c.id == statement_id)
+            document = {
+                "id": statement_id,
+                "reference": check.reference,
+                "claim": check.claim,
+                "discretization": None,
+                "study": source.info.id,
+                "parameters": result.parameters,
+                "precision": result.arithmetic.describe(),
+                "conditions": conditions,
+                "check": check_document(check),
+            }
+            return JSONBytesResponse(encode_json(document))
+
+        key = canonical_key(request.url.path, {"study": source.info.id, **study_query.model_dump()})
+        return cached(request, key, settings, build_study)
+
     owner = discretization_id or entry.discretizations[0]
     if owner not in entry.discretizations:
         raise UnknownIdError(
             "discretization for this statement", owner, list(entry.discretizations)
         )
     target = discretization(owner)
-    values: dict[str, Any] = dict(request.query_params)
     values.pop("discretization", None)
     query = parse_query(target.query, values)
-    settings = settings_of(request)
 
     def build() -> Response:
         curve = compute(target, query, settings)
@@ -86,8 +178,10 @@ def check_statement(
             "reference": check.reference,
             "claim": check.claim,
             "discretization": owner,
+            "study": None,
             "parameters": curve.parameters,
             "precision": curve.arithmetic.describe(),
+            "conditions": conditions,
             "check": check_document(check),
         }
         return JSONBytesResponse(encode_json(document))

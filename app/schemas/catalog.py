@@ -43,21 +43,51 @@ class FigureEntry(BaseModel):
 
 class StatementInfo(BaseModel):
     id: str
-    reference: str
-    claim: str
+    reference: str = Field(description="Where the paper states it.")
+    claim: str = Field(description="The claim in words, and how its residual is measured.")
     discretizations: list[str] = Field(description="Discretizations whose responses check it.")
+    studies: list[str] = Field(
+        default_factory=list,
+        description="Refinement studies whose responses check it (GET /convergence/{id}).",
+    )
     url: str = Field(description="Path that checks it with default parameters.")
+    example_url: str = Field(
+        description="A ready-to-use request with every parameter of the paper at its default "
+        "(change any of them)."
+    )
+    parameters: list[ParameterInfo] = Field(
+        description="The parameters GET /theorems/{id} accepts: those of its (first) "
+        "discretization or study, with domains and defaults."
+    )
+    conditions: list[str] = Field(
+        default_factory=list,
+        description="Hypotheses the text leaves implicit or states needlessly (see "
+        "docs/errata.md).",
+    )
+    errata: list[str] = Field(
+        default_factory=list,
+        description="Errata (docs/errata.md) the check carries at the default parameters: the "
+        "printed formula is wrong and the check tests the corrected one.",
+    )
 
 
 class TheoremResponse(BaseModel):
-    """One statement checked on one computed polygon."""
+    """One statement checked on one computed polygon or refinement study."""
 
     id: str
     reference: str
     claim: str
-    discretization: str = Field(description="The discretization it was checked on.")
-    parameters: dict[str, Any] = Field(description="Effective parameters of that polygon.")
+    discretization: str | None = Field(
+        description="The discretization it was checked on (null for a refinement study)."
+    )
+    study: str | None = Field(
+        None, description="The refinement study it was checked on (GET /convergence/{id})."
+    )
+    parameters: dict[str, Any] = Field(description="Effective parameters of that computation.")
     precision: PrecisionInfo
+    conditions: list[str] = Field(
+        default_factory=list, description="Hypotheses the text leaves implicit (see /theorems)."
+    )
     check: CheckModel
 
 

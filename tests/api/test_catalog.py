@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
+import pytest
 from fastapi.testclient import TestClient
 
 from app import __version__
 from app.geometry.discretizations import d4b
-from app.schemas.catalog import TheoremResponse
+from app.schemas.catalog import StatementInfo, TheoremResponse
 
 
 def test_health(client: TestClient) -> None:
@@ -72,3 +73,85 @@ def test_catalog_lists_the_stick_and_chain_family_with_domains(client: TestClien
         assert entry["url"] == f"/discretizations/{identifier}"
     assert entries["d4a"]["statements"][:2] == ["d4a-sticks", "d4a-arc-length"]
     assert set(entries["d1"]["constants"]) == {"d1", "d3", "eq2", "equilibrium"}
+
+
+def test_every_statement_lists_parameters_an_example_and_its_source(client: TestClient) -> None:
+    from app.registry import STATEMENTS, STUDIES
+
+    statements = client.get("/theorems").json()
+    assert [s["id"] for s in statements] == list(STATEMENTS)
+    for entry in statements:
+        StatementInfo.model_validate(entry)
+        assert bool(entry["discretizations"]) or bool(entry["studies"]), entry["id"]
+        names = {p["name"]: p for p in entry["parameters"]}
+        if entry["discretizations"]:
+            assert entry["example_url"].startswith(
+                f"/theorems/{entry['id']}?discretization={entry['discretizations'][0]}&"
+            )
+        else:
+            study = STUDIES[entry["studies"][0]]
+            assert set(names) == set(study.query.model_fields)
+            assert names["d0"]["default"] == 0.2
+        assert "precision" in names and names["precision"]["kind"] == "common"
+
+
+def test_every_example_url_checks_its_statement_with_the_defaults(client: TestClient) -> None:
+    fails_by_design = {  # Section 4: the (D2a) polygons do not satisfy these
+        ("d2a-quad", "d1"),
+        ("d2a-quad", "d3"),
+        ("d2a-hex", "d1"),
+        ("d2a-hex", "d3"),
+        ("d2a-hex", "equation-2"),
+    }
+    for entry in client.get("/theorems").json():
+        response = client.get(entry["example_url"])
+        assert response.status_code == 200, entry["id"]
+        body = TheoremResponse.model_validate(response.json())
+        assert body.id == entry["id"]
+        expected = (body.discretization, entry["id"]) not in fails_by_design
+        assert body.check.holds is expected, entry["id"]
+        erratum = body.check.erratum
+        assert ([erratum.id] if erratum else []) == entry["errata"], entry["id"]
+        assert body.conditions == entry["conditions"]
+
+
+def test_implicit_conditions_are_listed(client: TestClient) -> None:
+    statements = {s["id"]: s for s in client.get("/theorems").json()}
+    assert "stated needlessly" in statements["theorem-4-hypothesis"]["conditions"][0].lower()
+    assert "vertical first stick" in statements["theorem-5"]["conditions"][0]
+    assert "r* = " in statements["theorem-1"]["conditions"][0]
+    assert any("compact sets" in c for c in statements["theorem-14"]["conditions"])
+    assert any("pointwise" in c for c in statements["inequality-22"]["conditions"])
+    assert statements["theorem-15-proof-y"]["errata"] == ["E80"]
+    assert statements["theorem-15-proof-x"]["errata"] == ["E81"]
+
+
+def test_convergence_statements_are_checked_on_their_study(client: TestClient) -> None:
+    response = client.get(
+        "/theorems/theorem-15", params={"d0": 0.1, "levels": 3, "samples": 11, "x_max": 1.0}
+    )
+    assert response.status_code == 200
+    body = TheoremResponse.model_validate(response.json())
+    assert body.study == "theorem-15" and body.discretization is None
+    assert body.parameters["d0"] == 0.1
+    assert body.check.holds is True and body.check.tolerance == pytest.approx(2**-0.5)
+    assert "observed order parametric: 1.0" in (body.check.note or "")
+    proof = client.get("/theorems/theorem-15-proof-y", params={"levels": 3, "samples": 11})
+    assert proof.json()["check"]["erratum"]["printed_residual"] > 0.1
+
+
+@pytest.mark.parametrize(
+    ("params", "parameter"),
+    [
+        ({"discretization": "d4b"}, "discretization"),
+        ({"d0": 2.0}, "d0"),
+        ({"levels": 99}, "levels"),
+        ({"h": 1, "d": 0.1}, "d"),
+    ],
+)
+def test_convergence_statements_reject_foreign_or_invalid_parameters(
+    client: TestClient, params: dict, parameter: str
+) -> None:
+    response = client.get("/theorems/theorem-14", params=params)
+    assert response.status_code == 422
+    assert response.json()["errors"][0]["parameter"] == parameter

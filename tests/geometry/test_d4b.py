@@ -162,3 +162,21 @@ def test_mp_has_no_float64_range_limit() -> None:
     assert y > 10**190
     expected = math.exp(2 * math.atanh(0.5) * 399.5 + math.log(math.sqrt(0.75) / 2))
     assert float(y / 10**190) == pytest.approx(expected / 1e190, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("h", "d", "beta0", "i_min", "i_max", "method"),
+    [
+        (3.0, 2.97, None, 0, 4, "closed-form"),  # d/h = 0.99: rounding grows like h²/(h² − d²)
+        (0.0337, 0.0329, 1.36, -30, 30, "construction"),
+        (848.0, 0.848, 0.25, 0, 4, "closed-form"),  # d/h = 1e-3 on five vertices
+    ],
+)
+def test_every_check_holds_near_the_ends_of_the_domain(
+    float64: Float64, h: float, d: float, beta0: float | None, i_min: int, i_max: int, method: str
+) -> None:
+    """Cases found by the property test: the tolerances follow the conditioning h²/(h² − d²), and
+    c = c_(D1)/c_(D3) is tested through the equation (2), not by comparing constants."""
+    curve = d4b.compute(float64, h, d, beta0, i_min, i_max, method)  # type: ignore[arg-type]
+    assert [c.id for c in curve.checks if c.holds is False] == []
+    assert d4b.conditioning(h, d) == pytest.approx(h * h / ((h - d) * (h + d)))

@@ -25,6 +25,7 @@ from app.geometry.discretizations.d2a_common import (
     SHARED_EQUATION_2,
     Context,
     fitted_condition,
+    local_tolerance,
     not_enough,
     require_f_range,
     require_mp_gap,
@@ -36,6 +37,11 @@ from app.geometry.polygon import area_magnitude, second_difference, signed_areas
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 
 S = Statement
+ONLY_AT_R_STAR = (
+    "Holds only for the start height r* of the proof of Theorem 2 (with the denominator "
+    "corrected, E44), the default of r; and unlike (2), c_1 and c_2 need not be positive "
+    "(docs/errata.md, Section 4.1)."
+)
 THEOREM_2 = S(
     "theorem-2",
     "Theorem 2, eq. (7)",
@@ -44,6 +50,7 @@ THEOREM_2 = S(
     "c2_eq11). True exactly for r = r* (constants.r_theorem_2); for any other r (7) fails. "
     "Residual: the larger of the residuals of (7) with the fitted constants and with those of "
     "(11), each relative to the magnitude of the coordinates it is computed from.",
+    conditions=(ONLY_AT_R_STAR,),
 )
 START_HEIGHT = S(
     "theorem-2-start-height",
@@ -270,6 +277,7 @@ def compute(
         },
         constants=constants,
         checks=checks,
+        local_tolerance=local_tolerance(ar, smallest_gap(data.a, data.b, data.lam)),
     )
 
 

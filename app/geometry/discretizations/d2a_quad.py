@@ -24,6 +24,7 @@ from app.geometry.discretizations.d2a_common import (
     SHARED_D3,
     Context,
     fitted_condition,
+    local_tolerance,
     not_enough,
     require_f_range,
     require_mp_gap,
@@ -37,6 +38,11 @@ from app.geometry.polygon import area_magnitude, second_difference, signed_areas
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 
 S = Statement
+ONLY_AT_R_STAR = (
+    "Holds only for the start height r = r* = −f_1(1 + f_0²)/(2(f_1 − f_0)²), which the proof "
+    "calls 'that special r' without writing it out; r* is the default of r (docs/errata.md, "
+    "Section 4.1)."
+)
 THEOREM_1 = S(
     "theorem-1",
     "Theorem 1, eq. (2)",
@@ -46,6 +52,7 @@ THEOREM_1 = S(
     "same one moved vertically, and (2) fails. Residual: the larger of the residuals of (2) with "
     "the fitted c and with c_theorem_1, each relative to the magnitude of the coordinates it is "
     "computed from (docs/checks.md).",
+    conditions=(ONLY_AT_R_STAR,),
 )
 START_HEIGHT = S(
     "theorem-1-start-height",
@@ -91,6 +98,7 @@ EQUATION_5 = S(
     "Proof of Theorem 1, eq. (5)",
     "With r = r*, p_{i−1}^y = −(f_i + f_{i−1}²f_i)/(2(f_{i−1} − f_i)²) for every i. Residual: "
     "largest relative difference. Holds only for r = r* (by its definition).",
+    conditions=(ONLY_AT_R_STAR,),
 )
 HEIGHTS = S(
     "theorem-1-heights",
@@ -98,6 +106,7 @@ HEIGHTS = S(
     "With r = r*, p_i^y = −(f_{i−1} + f_{i−1}f_i²)/(2(f_{i−1} − f_i)²) and p_{i+1}^y = "
     "−(f_{i−1}² + f_i⁴)/(2f_i(f_{i−1} − f_i)²) for every i. Residual: largest relative "
     "difference of the two. Holds only for r = r*.",
+    conditions=(ONLY_AT_R_STAR,),
 )
 AREA_SUM = S(
     "theorem-1-area-sum",
@@ -105,6 +114,7 @@ AREA_SUM = S(
     "With r = r*, A_{i−1} + A_i = (f_{i−1} + f_i)³(1 + f_i²)/(8f_i(f_{i−1} − f_i)³) (signed "
     "areas; negative, the polygon lies below the x-axis). Residual: largest difference relative "
     "to the magnitude of the areas. Holds only for r = r*.",
+    conditions=(ONLY_AT_R_STAR,),
 )
 
 STATEMENTS: tuple[Statement, ...] = (
@@ -283,6 +293,7 @@ def compute(
         },
         constants=constants,
         checks=checks,
+        local_tolerance=local_tolerance(ar, (data.f1 - data.f0) / data.f1),
     )
 
 

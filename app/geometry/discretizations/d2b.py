@@ -99,6 +99,7 @@ REMARK_13 = S(
     "Remark 13",
     "n_i^x = s_i = i/(i + j) = g(i/j) with g(x) = x/(1 + x), strictly increasing with |s_i| < 1 "
     "and n_0 = (0, 1) on i > −j/2, where g' = 1/(1 + x)² is bounded. Residual: as for example-12.",
+    defaults=(("sequence", "remark-13"),),
 )
 
 STATEMENTS: tuple[Statement, ...] = (

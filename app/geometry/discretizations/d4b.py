@@ -29,7 +29,6 @@ from app.geometry.curve import Curve, DiscretizationInfo, Polyline
 from app.geometry.discretizations import d4b_curvature
 from app.geometry.errors import DomainError, NotRepresentableError
 from app.geometry.kinematic_tractrix import construct, validate
-from app.geometry.polygon import second_difference, second_difference_magnitude
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 
 Method = Literal["construction", "closed-form"]
@@ -47,11 +46,26 @@ FLOAT64_COORDINATE_LIMIT = 1e150
 RESOLUTION_MARGIN = 100
 
 S = Statement
+HYPOTHESIS_NEEDLESS = (
+    "Stated needlessly for (D4b): every (D4b) polygon has p_{i−1}^y p_i^y >= h² > d², for every "
+    "0 < d < h and every first stick; the condition matters only for sequences that merely "
+    "satisfy (13) (docs/errata.md, Section 3, implicit conditions)."
+)
+HYPOTHESIS_ALWAYS = (
+    "Theorem 4's hypothesis d² < p_{i−1}^y p_i^y always holds for (D4b) (theorem-4-hypothesis), "
+    "so the statement holds for every 0 < d < h."
+)
+VERTICAL_START = (
+    "Assumes a vertical first stick (d_0^y = p_1^y = h). For a first stick at angle beta0 the "
+    "construction is the vertical one shifted by the index τ = ln(tan(β0/2))/L, and the service "
+    "checks the formula at i + τ (an extension; docs/errata.md, Section 3)."
+)
 HYPOTHESIS = S(
     "theorem-4-hypothesis",
     "Theorem 4, hypothesis",
     "d² < p_{i−1}^y p_i^y for every i. Residual: largest max(0, d² − p_{i−1}^y p_i^y)/d². "
     "Every (D4b) polygon satisfies it, since p_{i−1}^y p_i^y ≥ h² > d² (see docs/errata.md).",
+    conditions=(HYPOTHESIS_NEEDLESS,),
 )
 THEOREM_4_I = S(
     "theorem-4-i",
@@ -59,19 +73,23 @@ THEOREM_4_I = S(
     "Δ²p_i^y = c (l_i + l_{i+1}) with one constant c > 0 (constants.d1, least-squares fit). "
     "Residual: largest |Δ²p_i^y − c(l_i + l_{i+1})|, relative to the magnitude of the "
     "coordinates it is computed from (docs/checks.md).",
+    conditions=(HYPOTHESIS_ALWAYS,),
 )
 THEOREM_4_II = S(
     "theorem-4-ii",
     "Theorem 4 (ii), (D3)",
     "A_i = c l_i with one constant c > 0 (constants.d3, least-squares fit). Residual: largest "
     "|A_i − c l_i|, relative to the magnitude of the coordinates (docs/checks.md).",
+    conditions=(HYPOTHESIS_ALWAYS,),
 )
 THEOREM_4_III = S(
     "theorem-4-iii",
     "Theorem 4 (iii), eq. (2)",
     "Δ²p_i^y = c (A_i + A_{i+1}) with one constant c > 0 (constants.eq2) and c = c_(D1)/c_(D3). "
-    "Residual: the larger of the fit residual (as in theorem-4-i) and |c − c_(D1)/c_(D3)|/c "
-    "divided by the constants' resolution max (|p_i^y| + 2|p_{i+1}^y| + |p_{i+2}^y|)/|Δ²p_i^y|.",
+    "Residual: the larger of the residuals of (2) with the fitted c and with c = c_(D1)/c_(D3), "
+    "each as in theorem-4-i (a difference of the constants themselves would exceed what the "
+    "data resolve for small d/h).",
+    conditions=(HYPOTHESIS_ALWAYS,),
 )
 ROTATION_ANGLE = S(
     "theorem-4-rotation-angle",
@@ -97,12 +115,14 @@ THEOREM_5 = S(
     "The closed form p_i = ((2i−1)d, (h−d)^i/(2(h+d)^{i−1}) + (h+d)^i/(2(h−d)^{i−1})) equals the "
     "constructed centres (for a tilted first stick: at the shifted index i + τ, see the "
     "kinematic_closed_forms module). Residual: largest |p_i − closed form| / |closed form|.",
+    conditions=(VERTICAL_START,),
 )
 THEOREM_6 = S(
     "theorem-6",
     "Theorem 6, eq. (16)",
     "The closed form (16) of the tractrix equals the constructed stick ends d_i. "
     "Residual: largest |d_i − closed form| / |closed form|.",
+    conditions=(VERTICAL_START,),
 )
 DARBOUX = S(
     "darboux-d4b",
@@ -299,7 +319,7 @@ def evaluate(
         _hypothesis(ctx, p),
         _fitted(ctx, THEOREM_4_I, fits["d1"], _ratio_erratum(ctx, p)),
         _fitted(ctx, THEOREM_4_II, fits["d3"]),
-        _equation_2(ctx, p, fits),
+        _equation_2(ctx, fits, p[:n]),
         _rotation_angle(ctx, p, axis),
         _recursion(ctx, p),
         _two_step(ctx, p),
@@ -438,21 +458,17 @@ def _fitted(
     return check
 
 
-def _equation_2(ctx: _Context, p: Array, fits: dict[str, conditions.ConditionFit]) -> Check:
-    """(2) fitted, and its constant equal to c_(D1)/c_(D3) to the constants' resolution.
+def _equation_2(ctx: _Context, fits: dict[str, conditions.ConditionFit], p: Array) -> Check:
+    """(2) with the fitted c and with c = c_(D1)/c_(D3), both residuals measured alike.
 
-    A fitted constant is only as precise as the second differences it divides: Δ²p^y is about
-    (2d/h)² of the heights, so the quotient's difference is measured against the largest
-    (|p_i| + 2|p_{i+1}| + |p_{i+2}|)/|Δ²p_i^y|, like the fit residuals against their magnitudes.
+    Comparing the constants themselves would ask more than the data resolve: a constant fitted
+    to second differences is known only to eps·|y|/|Δ²y| relative, about eps·(h/d)², while the
+    equation's residual stays relative to the magnitude of the numbers it is computed from.
     """
     c, c1, c2 = (fits[k].constant for k in ("eq2", "d1", "d3"))
     residuals = fits["eq2"].residuals
-    if c is not None and c1 is not None and c2 is not None and len(residuals):
-        ar = ctx.ar
-        quotient = abs(c - c1 / c2) / max(abs(c), abs(c1 / c2), ar.scalar(1e-300))
-        y = p[: ctx.n, 1]
-        resolution = np.max(second_difference_magnitude(y) / abs(second_difference(y)))
-        residuals = np.maximum(residuals, quotient / resolution)
+    if c1 is not None and c2 is not None and c2 != 0 and len(residuals):
+        residuals = np.maximum(residuals, conditions.equation_2_misfit(ctx.ar, p, c1 / c2))
     return _fitted(ctx, THEOREM_4_III, conditions.ConditionFit(c, residuals))
 
 

@@ -1,0 +1,180 @@
+"""Parameters and response of GET /convergence/{id}, the refinement studies of Section 6."""
+
+from __future__ import annotations
+
+from typing import Any, Literal
+
+from pydantic import BaseModel, Field
+
+from app.schemas.catalog import ParameterInfo
+from app.schemas.common import StrictModel
+from app.schemas.curve import CheckModel, PrecisionInfo
+
+
+class StudyQuery(StrictModel):
+    """Parameters every study accepts; subclasses add the study's own."""
+
+    precision: Literal["float64", "mp"] = Field(
+        "float64",
+        description="`float64` (numpy) or `mp` (mpmath with `digits` digits). Errors and orders "
+        "are numbers in both.",
+    )
+    digits: int = Field(
+        30,
+        ge=1,
+        le=100_000,
+        description="Significant digits for precision=mp (at most DCOSH_MAX_DIGITS; the mp work "
+        "of the whole study is bounded by DCOSH_MAX_MP_WORK). Ignored in float64.",
+    )
+    format: Literal["json", "csv", "svg"] = Field(
+        "json",
+        description="`json` (default), `csv` (columns level,d,measure,error,resolved) or `svg` "
+        "(log-log plot of every measure's sup error against the step, with fitted orders).",
+    )
+
+    def core_arguments(self) -> dict[str, Any]:
+        """The keyword arguments of the study's run function."""
+        return self.model_dump(exclude={"precision", "digits", "format"})
+
+
+class TractrixStudyQuery(StudyQuery):
+    """Theorems 14 and 15: refinement of (D4b) with vertical first stick; the paper's h."""
+
+    h: float = Field(
+        1.0,
+        ge=1e-50,
+        le=1e50,
+        description="Stick length h (> 0): the limits are h cosh(x/h) and the tractrix of h.",
+        json_schema_extra={"domain": "h > 0"},
+    )
+    d0: float = Field(
+        0.2,
+        gt=0,
+        le=1e50,
+        description="Coarsest step: level k uses d = d0/2^k. 0 < d0 < h.",
+        json_schema_extra={"domain": "0 < d0 < h"},
+    )
+    levels: int = Field(
+        8,
+        ge=2,
+        le=64,
+        description="Number of refinement levels (at most DCOSH_MAX_CONVERGENCE_LEVELS).",
+        json_schema_extra={"domain": "2 <= levels"},
+    )
+    x_max: float = Field(
+        2.0,
+        gt=0,
+        le=1e52,
+        description="The compact set is |x| <= x_max (x: the curves' parameter); "
+        "d0 <= x_max <= 20h.",
+        json_schema_extra={"domain": "d0 <= x_max <= 20h"},
+    )
+    samples: int = Field(
+        401,
+        ge=2,
+        le=10_000_000,
+        description="Points of a uniform grid of [−x_max, x_max] where the smooth interpolating "
+        "curve is measured, per level (at most DCOSH_MAX_CONVERGENCE_SAMPLES).",
+        json_schema_extra={"domain": "samples >= 2"},
+    )
+
+
+class MeasureModel(BaseModel):
+    id: str = Field(description="Measure id, a key of each level's `errors`.")
+    description: str = Field(description="What is compared with what, on which points.")
+    expected_order: float | None = Field(description="The order the analysis predicts.")
+    observed_order: float | None = Field(
+        description="Least-squares slope of ln(error) against ln(step) over `levels_used`; "
+        "null with fewer than two resolved levels."
+    )
+    constant: float | None = Field(description="C in error ≈ C·step^order.")
+    levels_used: list[int] = Field(description="Levels in the fit (errors above resolution).")
+    local_orders: list[float | None] = Field(
+        description="ln(e_k/e_{k+1})/ln 2 for consecutive levels (null where unresolved)."
+    )
+
+
+class LevelModel(BaseModel):
+    level: int = Field(description="k, the refinement level.")
+    step: float = Field(description="The step of this level, e.g. d = d0/2^k.")
+    vertices: int = Field(description="Constructed vertices on the compact set.")
+    samples: int = Field(description="Sample points of the interpolating curve.")
+    errors: dict[str, float | None] = Field(description="Sup error of each measure.")
+    resolved: dict[str, bool] = Field(
+        description="Whether the error is above the rounding resolution of the level."
+    )
+
+
+class ConvergenceResponse(BaseModel):
+    """One refinement study: errors per level, observed orders, checks of the statements."""
+
+    id: str
+    title: str
+    reference: str
+    summary: str
+    refinement: str = Field(description="How the levels refine and the compact set.")
+    step_name: str = Field(description="The refinement parameter (the fit's abscissa).")
+    parameters: dict[str, Any] = Field(description="Effective parameters, defaults filled in.")
+    precision: PrecisionInfo
+    levels: list[LevelModel]
+    measures: list[MeasureModel]
+    checks: list[CheckModel] = Field(description="The paper's statements checked on the study.")
+
+
+class MeasureInfo(BaseModel):
+    id: str = Field(description="Measure id.")
+    description: str = Field(description="What is compared with what, on which points.")
+    expected_order: float | None = Field(description="The order the analysis predicts.")
+
+
+class StudyEntry(BaseModel):
+    id: str = Field(description="Id used in /convergence/{id}.")
+    title: str
+    reference: str
+    summary: str
+    url: str = Field(description="Path of the study (default parameters).")
+    refinement: str = Field(description="How the levels refine and the compact set.")
+    parameters: list[ParameterInfo] = Field(description="Parameters with domains and defaults.")
+    measures: list[MeasureInfo] = Field(description="The error measures of every level.")
+    statements: list[str] = Field(description="Ids of the statements checked (GET /theorems).")
+
+
+_STUDY_CONVENTIONS = """\
+Levels k = 0 .. levels − 1 halve the step: d_k = d0/2^k. At each level the (D4b) polygon with a
+vertical first stick (the hypothesis of Theorems 5 and 6, which (14) and (16) need) is built from
+its definition on the indices with |(2i − 1)d| <= x_max, and the theorem's smooth curve c(x) is
+evaluated on `samples` points of [−x_max, x_max]. Every error is an absolute sup (maximum) over
+those points; `levels[k].errors` holds one per measure. The observed order is the least-squares
+slope of ln(error) against ln(d) over the levels whose error lies above the rounding resolution
+of that level (`resolved`). `checks` test the paper's statements of this section on the same
+data: limit claims by refinement (every halving of d must shrink the sup error by at least
+2^(−1/2)), identities by their residuals, with errata where the print is wrong (docs/errata.md).
+In precision=mp the study costs about (digits + 200) × (construction steps + 30 × samples ×
+levels), bounded by DCOSH_MAX_MP_WORK: use few levels and samples there.
+"""
+
+THEOREM_14_DESCRIPTION = (
+    """\
+Theorem 14: the smooth curve c(x) through the vertices of the discrete hyperbolic cosine (14)
+tends to the catenary x ↦ (x, h cosh(x/h)), uniformly on compact sets. Measures: `parametric`
+(|c(x) − (x, h cosh(x/h))|), `distance` (from c(x) to the catenary), `vertices` and
+`vertices-distance` (the same for the constructed centres p_i), `equation-21` (the limit (21)).
+All have order 2 except (21), which has order 1: its error cancels in the symmetric c(x).
+
+"""
+    + _STUDY_CONVENTIONS
+)
+
+THEOREM_15_DESCRIPTION = (
+    """\
+Theorem 15: the smooth curve c(x) through the vertices of the discrete tractrix (16) tends to
+the tractrix T(x) = (x − h tanh(x/h), h / cosh(x/h)), uniformly. Measures: `parametric`
+(|c(x) − T(x)|, order 1), `distance` (from c(x) to the tractrix, order 2), `vertices` and
+`vertices-distance` (the same for the constructed d_i), `natural` (|d_i − T(2di)|, order 2) and
+the two quantities of (22). The orders differ because c passes through d_i at x = (2i − 1)d
+while d_i is within O(d²) of T(2di), the tractrix point whose tangent meets the x-axis at the
+foot (2di, 0) of stick i: c(x) ≈ T(x + d) lies O(d²) from the curve but d·|tanh(x/h)| from T(x).
+
+"""
+    + _STUDY_CONVENTIONS
+)

@@ -1,0 +1,60 @@
+"""Response of GET /relations: Section 4 as a matrix of discretizations against properties."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from pydantic import BaseModel, Field
+
+from app.schemas.curve import Coordinate, PrecisionInfo
+
+RELATIONS_DESCRIPTION = """\
+Section 4 as a matrix. Rows: every discretization the service computes, at its default
+parameters or at those given as `<id>.<parameter>` (e.g. `d4b.d=0.3`, `d2a-quad.f1=2`,
+`d2a-hex.lambda=0.3`; the same names, domains and defaults as GET /discretizations/{id}).
+Columns: (D1) Δ²p_i^y = c(l_i + l_{i+1}); (D3) A_i = c l_i; eq. (2) Δ²p_i^y = c(A_i + A_{i+1});
+eq. (7) Δ²p_i^y = c_1 A_i + c_2 A_{i+1} (i even), c_2 A_i + c_1 A_{i+1} (i odd); H = 0 and
+K constant of the surface of revolution (Section 5, eq. (17)).
+
+Each cell fits the constant(s) by least squares on the row's polygon and reports the largest
+residual, relative to the magnitude of the numbers it is computed from (docs/checks.md), the
+tolerance of that polygon's local checks and the verdict. (D1), (D3) and (2) hold when the
+residual is within tolerance and c > 0, as the paper requires; (7) only asks for two constants.
+The columns H = 0 and K constant are not evaluated yet (`holds: null`, with a note): they need
+the discrete curvatures of Section 5 and a Gauss image for each discretization.
+
+`format=html` and `format=svg` return the same matrix as a table (symbol, residual, constants).
+"""
+
+
+class CellModel(BaseModel):
+    property: str = Field(description="Column id.")
+    residual: float | None = Field(description="Largest residual; null when not evaluated.")
+    tolerance: float = Field(description="Largest residual that counts as holding.")
+    holds: bool | None = Field(description="The verdict; null when not evaluated.")
+    constants: dict[str, Coordinate] = Field(description="Fitted constant(s): c, or c1 and c2.")
+    note: str | None = Field(None, description="Why a cell fails or is not evaluated.")
+
+
+class ColumnModel(BaseModel):
+    id: str
+    title: str = Field(description="The property as the paper names it.")
+    reference: str
+    claim: str = Field(description="The property, and how its residual is measured.")
+
+
+class RowModel(BaseModel):
+    id: str = Field(description="Discretization id.")
+    title: str
+    reference: str
+    parameters: dict[str, Any] = Field(description="Effective parameters of the polygon.")
+    url: str = Field(description="The curve request with these parameters.")
+    cells: list[CellModel] = Field(description="One per column, in column order.")
+
+
+class RelationsResponse(BaseModel):
+    """Every discretization against every property of Sections 3-5."""
+
+    precision: PrecisionInfo
+    columns: list[ColumnModel]
+    rows: list[RowModel]

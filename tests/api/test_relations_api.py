@@ -1,0 +1,206 @@
+"""GET /relations: the matrix against an independent high-precision computation, cell by cell."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+from fastapi.testclient import TestClient
+
+from app.geometry import relations
+from app.main import create_app
+from app.registry import DISCRETIZATIONS
+from app.schemas.relations import RelationsResponse
+from app.settings import Settings
+from tests.reference import curvature as reference_curvature
+from tests.reference import d1 as reference_d1
+from tests.reference import d2a as reference_d2a
+from tests.reference import d3 as reference_d3
+from tests.reference import d4a as reference_d4a
+from tests.reference import d4b as reference_d4b
+from tests.reference import relations as reference
+from tests.svg_reading import parse
+
+CONDITIONS = ("d1", "d3", "equation-2", "equation-7")
+POSITIVE = {"d1", "d3", "equation-2"}
+
+
+def reference_polygon(row: dict[str, Any], given: dict[str, Any]) -> dict:
+    """The row's polygon from the independent references (tests/reference).
+
+    r is passed only when the request gave it (else each reference uses its own r*: the row
+    shows r* rounded to float64).
+    """
+    q = row["parameters"]
+    r = repr(float(given[f"{row['id']}.r"])) if f"{row['id']}.r" in given else None
+    if row["id"] == "d4b":
+        beta0 = None if q["beta0"] == 1.5707963267948966 else repr(q["beta0"])
+        return reference_d4b.construct(repr(q["h"]), repr(q["d"]), beta0, q["i_min"], q["i_max"])[0]
+    if row["id"] == "d2a-quad":
+        return reference_d2a.quad(repr(q["f0"]), repr(q["f1"]), r, q["i_min"], q["i_max"])[0]
+    if row["id"] == "d2a-hex":
+        return reference_d2a.hexagonal(
+            repr(q["a"]), repr(q["b"]), repr(q["lambda"]), r, q["i_min"], q["i_max"]
+        )[0]
+    if row["id"] == "d1":
+        args = [repr(q[k]) for k in ("c", "delta", "y0", "y1")]
+        return reference_d1.construct(*args, q["i_min"], q["i_max"])
+    if row["id"] == "d3":
+        args = [repr(q[k]) for k in ("c", "delta", "y0")]
+        return reference_d3.construct(*args, q["branch"], q["i_min"], q["i_max"])
+    if row["id"] == "d4a":
+        beta0 = None if q["beta0"] == 1.5707963267948966 else repr(q["beta0"])
+        return reference_d4a.construct(repr(q["h"]), repr(q["s"]), beta0, q["i_min"], q["i_max"])[0]
+    if row["id"] == "d2b" and q["sequence"] == "example-12":
+        ctx = reference_curvature.context()
+        j = ctx.mpf(q["j"])
+        s = {i: 4 * ctx.mpf(i) ** 2 / (j * j + 4 * ctx.mpf(i) ** 2) for i in range(q["i_max"] + 1)}
+        return reference_curvature.d2b(ctx, s)[0]
+    raise AssertionError(f"no reference for {row['id']}: add one in tests/reference")
+
+
+def assert_cells_agree(
+    body: dict[str, Any], constant_tol: float, residual_tol: float, given: dict | None = None
+) -> None:
+    for row in body["rows"]:
+        expected = reference.conditions(reference_polygon(row, given or {}))
+        cells = {c["property"]: c for c in row["cells"]}
+        for key in CONDITIONS:
+            cell, (constants, residual) = cells[key], expected[key]
+            names = ["c"] if len(constants) == 1 else ["c1", "c2"]
+            for name, value in zip(names, constants, strict=True):
+                got = float(cell["constants"][name])
+                assert got == pytest.approx(float(value), rel=constant_tol), (row["id"], key, name)
+            ref = float(residual)
+            # residuals at rounding level agree within the tolerance; real misfits relatively
+            assert abs(cell["residual"] - ref) <= cell["tolerance"] + residual_tol * ref, (
+                row["id"],
+                key,
+            )
+            verdict = ref <= cell["tolerance"] and (key not in POSITIVE or float(constants[0]) > 0)
+            assert cell["holds"] is verdict, (row["id"], key)
+
+
+def test_default_matrix_agrees_with_the_reference_cell_by_cell(client: TestClient) -> None:
+    response = client.get("/relations")
+    assert response.status_code == 200
+    body = response.json()
+    RelationsResponse.model_validate(body)
+    assert [r["id"] for r in body["rows"]] == list(DISCRETIZATIONS)
+    assert [c["id"] for c in body["columns"]] == [p.id for p in relations.PROPERTIES]
+    assert_cells_agree(body, 1e-12, 1e-9)
+
+
+def test_matrix_at_40_digits_agrees_with_the_reference(client: TestClient) -> None:
+    body = client.get("/relations", params={"precision": "mp", "digits": 40}).json()
+    assert body["precision"] == {"mode": "mp", "digits": 40}
+    assert isinstance(body["rows"][0]["cells"][0]["constants"]["c"], str)
+    assert_cells_agree(body, 1e-35, 1e-30)
+
+
+def test_verdicts_of_section_4(client: TestClient) -> None:
+    body = client.get("/relations").json()
+    table = {r["id"]: {c["property"]: c["holds"] for c in r["cells"]} for r in body["rows"]}
+    assert table["d4b"] == {
+        "d1": True,
+        "d3": True,
+        "equation-2": True,
+        "equation-7": True,
+        "mean-curvature-zero": None,
+        "gaussian-curvature-constant": None,
+    }
+    assert [table["d2a-quad"][k] for k in CONDITIONS] == [False, False, True, True]
+    assert [table["d2a-hex"][k] for k in CONDITIONS] == [False, False, False, True]
+
+
+def test_rows_take_their_own_parameters(client: TestClient) -> None:
+    params = {
+        "d4b.h": 2.0,
+        "d4b.d": 0.7,
+        "d4b.beta0": 0.9,
+        "d4b.i_min": -4,
+        "d2a-quad.r": 0.0,  # off r*: Theorem 1 fails
+        "d2a-hex.lambda": 0.3,
+        "d2a-hex.b": 2.1,
+        "d2a-hex.a": 1.3,
+    }
+    body = client.get("/relations", params=params).json()
+    rows = {r["id"]: r for r in body["rows"]}
+    assert rows["d4b"]["parameters"]["d"] == 0.7 and rows["d4b"]["parameters"]["i_min"] == -4
+    assert rows["d2a-hex"]["parameters"]["lambda"] == 0.3
+    quad = {c["property"]: c["holds"] for c in rows["d2a-quad"]["cells"]}
+    assert quad["equation-2"] is False
+    assert_cells_agree(body, 1e-12, 1e-9, params)
+    # the row's url serves the same polygon
+    curve = client.get(rows["d4b"]["url"]).json()
+    assert curve["parameters"] == rows["d4b"]["parameters"]
+
+
+@pytest.mark.parametrize(
+    ("params", "parameter", "constraint"),
+    [
+        ({"d4b.d": 2.0}, "d4b.d", "0 < d < h"),
+        ({"d4b.h": -1}, "d4b.h", "d4b.h > 0"),
+        ({"d2a-quad.f1": 0.5}, "d2a-quad.f1", "0 < f0 < f1"),
+        ({"d2a-hex.lambda": 1.5}, "d2a-hex.lambda", "d2a-hex.lambda < 1"),
+        ({"d4b.zeta": 1}, "d4b.zeta", "not a parameter of this endpoint"),
+        ({"d4b.i_max": 200_000}, "d4b.i_max", "<= 100001"),
+        ({"d4b.i_max": -20}, "d4b.i_max", "i_min <= i_max"),
+        ({"precision": "mp", "digits": 5000}, "digits", "1 <= digits <= 1000"),
+        ({"format": "png"}, "format", "format is one of"),
+    ],
+)
+def test_invalid_parameters_are_422_naming_the_parameter(
+    client: TestClient, params: dict, parameter: str, constraint: str
+) -> None:
+    response = client.get("/relations", params=params)
+    assert response.status_code == 422
+    assert response.headers["content-type"] == "application/problem+json"
+    (error,) = response.json()["errors"]
+    assert error["parameter"] == parameter
+    assert constraint in error["constraint"]
+
+
+def test_row_limit_comes_from_the_settings() -> None:
+    client = TestClient(create_app(Settings(max_relation_vertices=50)))
+    response = client.get("/relations", params={"d2a-hex.i_max": 45})
+    assert response.status_code == 422
+    assert response.json()["errors"][0]["parameter"] == "d2a-hex.i_max"
+    assert client.get("/relations", params={"d2a-hex.i_max": 39}).status_code == 200
+
+
+def test_html_and_svg_tables_show_every_cell(client: TestClient) -> None:
+    body = client.get("/relations").json()
+    states = [
+        "none" if c["holds"] is None else "holds" if c["holds"] else "fails"
+        for r in body["rows"]
+        for c in r["cells"]
+    ]
+    html = client.get("/relations", params={"format": "html"})
+    assert html.status_code == 200 and html.headers["content-type"].startswith("text/html")
+    assert "default-src 'none'" in html.headers["content-security-policy"]
+    assert "<script" not in html.text
+    found = [
+        state for chunk in html.text.split("<td class=")[1:] for state in [chunk.split('"')[1]]
+    ]
+    assert found == states
+    svg = client.get("/relations", params={"format": "svg"})
+    assert svg.headers["content-type"] == "image/svg+xml"
+    root = parse(svg.content)
+    drawn = [
+        g.get("class", "").split()[1]
+        for g in root.iter("{http://www.w3.org/2000/svg}g")
+        if g.get("class", "").startswith("cell ")
+    ]
+    assert drawn == states
+    residual = body["rows"][1]["cells"][0]["residual"]
+    assert f"residual {residual:.2e}" in svg.text and f"residual {residual:.2e}" in html.text
+
+
+def test_relations_are_cached_with_an_etag(client: TestClient) -> None:
+    first = client.get("/relations", params={"d4b.d": 0.2})
+    etag = first.headers["etag"]
+    again = client.get("/relations", params={"d4b.d": 0.2}, headers={"If-None-Match": etag})
+    assert again.status_code == 304
+    other = client.get("/relations", params={"d4b.d": 0.3})
+    assert other.headers["etag"] != etag
