@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from app.geometry.precision import Arithmetic, arithmetic
 from app.settings import Settings
 
 #: The cost of an mp step grows like (digits + this): below ~200 digits the Python overhead of
@@ -147,3 +148,11 @@ def enforce_relation_row(settings: Settings, parameter: str, i_min: int, i_max: 
             f"i_max − i_min + 1 <= {settings.max_relation_vertices} (vertices of one row)",
             i_max,
         )
+
+
+def timed_arithmetic(settings: Settings, precision: str, digits: int) -> Arithmetic:
+    """The request's arithmetic with its clock started (DCOSH_TIME_LIMIT): a computation past
+    the limit stops with a 422 naming what drives its cost (digits in mp, else the range)."""
+    ar = arithmetic(precision, digits)  # type: ignore[arg-type]
+    ar.start_clock(settings.time_limit, "digits" if precision == "mp" else "i_max")
+    return ar

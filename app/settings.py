@@ -62,6 +62,13 @@ class Settings(BaseSettings):
         description="Most vertices of one row of GET /relations (every discretization is "
         "computed for the matrix).",
     )
+    time_limit: float = Field(
+        20.0,
+        gt=0,
+        description="Seconds a computation may run: the sequential constructions and the mp "
+        "operations check the clock and stop past it with a 422 (the work budget above keeps "
+        "requests well below it; this is the backstop).",
+    )
     cors_origins: list[str] = Field(
         default_factory=lambda: ["*"],
         description="Origins allowed to call the API from a browser (JSON list; ['*'] for any).",

@@ -16,8 +16,8 @@ from fastapi import Response
 from app.errors import UnknownIdError
 from app.geometry import gauss_image, rotational_surface
 from app.geometry.errors import DomainError, NotRepresentableError
-from app.geometry.precision import Arithmetic, MultiPrecision, arithmetic
-from app.limits import enforce_mesh, enforce_range
+from app.geometry.precision import Arithmetic, MultiPrecision
+from app.limits import enforce_mesh, enforce_range, timed_arithmetic
 from app.mesh_formats import glb_bytes, obj_bytes, ply_bytes
 from app.registry import DISCRETIZATIONS
 from app.responses import JSONBytesResponse, check_document, encode_json
@@ -138,7 +138,7 @@ def compute(
             "a discretization with a tractrix and its Gauss image: " + ", ".join(with_tractrix),
             surface.discretization,
         )
-    ar = arithmetic(curve_query.precision, curve_query.digits)
+    ar = timed_arithmetic(settings, curve_query.precision, curve_query.digits)
     try:
         curve = entry.compute(ar, **arguments)
     except DomainError as error:

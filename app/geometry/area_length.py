@@ -48,7 +48,7 @@ from typing import Any, Literal
 import numpy as np
 
 from app.geometry.errors import DomainError
-from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
+from app.geometry.precision import CLOCK_STEPS, Arithmetic, Array, Scalar, stack_points
 
 Branch = Literal["up", "down"]
 
@@ -158,8 +158,12 @@ def construct(
     big, small = step_roots(ar, q, yy0)
     y[1 - lo], y[-1 - lo] = (big, small) if branch == "up" else (small, big)
     for j in range(2, hi + 1):
+        if not j % CLOCK_STEPS:
+            ar.check_time()
         y[j - lo] = _other(y[j - 2 - lo], step_roots(ar, q, y[j - 1 - lo]))
     for j in range(-2, lo - 1, -1):
+        if not j % CLOCK_STEPS:
+            ar.check_time()
         y[j - lo] = _other(y[j + 2 - lo], step_roots(ar, q, y[j + 1 - lo]))
     i = ar.indices(i_min, i_max)
     return AreaLengthPolygon(

@@ -27,3 +27,7 @@ class DomainError(GeometryError):
 
 class NotRepresentableError(DomainError):
     """A requested value exists mathematically but does not fit the chosen precision."""
+
+
+class TimeLimitError(DomainError):
+    """A computation ran past its time limit (``Arithmetic.start_clock``) and was stopped."""

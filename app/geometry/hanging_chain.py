@@ -48,7 +48,7 @@ from typing import Any
 import numpy as np
 
 from app.geometry.errors import DomainError
-from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
+from app.geometry.precision import CLOCK_STEPS, Arithmetic, Array, Scalar, stack_points
 
 
 @dataclass(frozen=True)
@@ -125,8 +125,12 @@ def construct(
     slopes: list[Scalar] = [ar.scalar(0)] * (hi - lo)
     slopes[-lo] = (yy1 - yy0) / dd
     for j in range(1, hi):  # edge j from edge j − 1
+        if not j % CLOCK_STEPS:
+            ar.check_time()
         slopes[j - lo] = forward_slope(ar, k, slopes[j - 1 - lo])
     for j in range(-1, lo - 1, -1):  # edge j from edge j + 1
+        if not j % CLOCK_STEPS:
+            ar.check_time()
         slopes[j - lo] = backward_slope(ar, k, slopes[j + 1 - lo])
     m = ar.array(slopes)
     # heights: y_1 = y1 exactly, y_{j+1} = y_j + δ m_j forwards, y_{j−1} = y_j − δ m_{j−1} back

@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 
 from app.geometry.errors import DomainError
-from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
+from app.geometry.precision import CLOCK_STEPS, Arithmetic, Array, Scalar, stack_points
 
 
 @dataclass(frozen=True)
@@ -95,12 +95,16 @@ def construct(
     centre_y = list(cos_u)
     cos_u[-lo], sin_u[-lo] = initial_direction(ar, beta0)
     for j in range(1, hi + 1):  # forward: stick j−1 -> stick j about p_j
+        if not j % CLOCK_STEPS:
+            ar.check_time()
         c, s = cos_u[j - 1 - lo], sin_u[j - 1 - lo]
         p_y = (hh - dd * c) / s  # on x = (2j−1)d and on the normal of stick j−1 at d_{j−1}
         ca, sa = rotation_about(p_y, dd)
         centre_y[j - lo] = p_y
         cos_u[j - lo], sin_u[j - lo] = ca * c - sa * s, sa * c + ca * s
     for j in range(0, lo, -1):  # backward: stick j -> stick j−1 about p_j
+        if not j % CLOCK_STEPS:
+            ar.check_time()
         c, s = cos_u[j - lo], sin_u[j - lo]
         p_y = (hh + dd * c) / s  # on x = (2j−1)d and on the normal of stick j at d_j
         ca, sa = rotation_about(p_y, dd)

@@ -15,13 +15,15 @@ Conventions:
 
 from __future__ import annotations
 
+import time
 from collections.abc import Callable, Iterable
+from functools import partial
 from typing import Any, Literal
 
 import mpmath
 import numpy as np
 
-from app.geometry.errors import DomainError
+from app.geometry.errors import DomainError, TimeLimitError
 
 Array = np.ndarray[Any, np.dtype[Any]]
 """``(n,)`` float64 array in float64 mode, ``(n,)`` object array of ``mpf`` in mp mode."""
@@ -34,6 +36,9 @@ PrecisionMode = Literal["float64", "mp"]
 #: How many units of the working precision a residual may use per elementary step before a
 #: check calls it a failure. One constant for the whole core.
 TOLERANCE_SAFETY = 64
+
+#: Sequential loops call ``Arithmetic.check_time`` once per this many steps.
+CLOCK_STEPS = 4096
 
 #: Extra decimal digits carried by the mp context beyond the requested ``digits``.
 GUARD_DIGITS = 10
@@ -100,6 +105,30 @@ class Arithmetic:
     def all_finite(self, values: Array) -> bool:
         """Whether every entry is a finite number."""
         raise NotImplementedError
+
+    deadline: float | None = None
+    """``time.monotonic()`` after which ``check_time`` stops the computation (None: no limit)."""
+    limit: tuple[str, float] = ("i_max", 0.0)
+
+    def start_clock(self, seconds: float, parameter: str) -> None:
+        """Allow ``seconds`` from now; past them ``check_time`` raises, naming ``parameter``."""
+        self.deadline = time.monotonic() + seconds
+        self.limit = (parameter, seconds)
+
+    def check_time(self) -> None:
+        """Raise ``TimeLimitError`` once the deadline has passed (cheap: one clock read).
+
+        Called by the sequential construction loops every few thousand steps and by every
+        elementwise mp operation: the paths whose cost grows fastest with the request.
+        """
+        if self.deadline is not None and time.monotonic() > self.deadline:
+            parameter, seconds = self.limit
+            raise TimeLimitError(
+                parameter,
+                f"the computation finishes within {seconds:g} s (DCOSH_TIME_LIMIT)",
+                "over the limit",
+                "use a shorter range or fewer digits",
+            )
 
     def tolerance(self, steps: int = 1) -> float:
         """The tolerance for a residual built from ``steps`` elementary operations in sequence."""
@@ -175,20 +204,21 @@ class MultiPrecision(Arithmetic):
         self.ctx.dps = digits + GUARD_DIGITS
         ctx = self.ctx
         ctx.npconvert = _array_aware_npconvert(ctx.npconvert)
-        self.exp = _elementwise(ctx.exp)
-        self.log = _elementwise(ctx.log)
-        self.log1p = _elementwise(ctx.log1p)
-        self.sqrt = _elementwise(ctx.sqrt)
-        self.cos = _elementwise(ctx.cos)
-        self.sin = _elementwise(ctx.sin)
-        self.cosh = _elementwise(ctx.cosh)
-        self.sinh = _elementwise(ctx.sinh)
-        self.tanh = _elementwise(ctx.tanh)
-        self.atanh = _elementwise(ctx.atanh)
-        self.asinh = _elementwise(ctx.asinh)
-        self.acosh = _elementwise(ctx.acosh)
-        self.atan2 = _elementwise(ctx.atan2, 2)
-        self.hypot = _elementwise(ctx.hypot, 2)
+        self._elementwise = partial(_elementwise, clock=self.check_time)
+        self.exp = self._elementwise(ctx.exp)
+        self.log = self._elementwise(ctx.log)
+        self.log1p = self._elementwise(ctx.log1p)
+        self.sqrt = self._elementwise(ctx.sqrt)
+        self.cos = self._elementwise(ctx.cos)
+        self.sin = self._elementwise(ctx.sin)
+        self.cosh = self._elementwise(ctx.cosh)
+        self.sinh = self._elementwise(ctx.sinh)
+        self.tanh = self._elementwise(ctx.tanh)
+        self.atanh = self._elementwise(ctx.atanh)
+        self.asinh = self._elementwise(ctx.asinh)
+        self.acosh = self._elementwise(ctx.acosh)
+        self.atan2 = self._elementwise(ctx.atan2, 2)
+        self.hypot = self._elementwise(ctx.hypot, 2)
         self._isfinite = np.frompyfunc(ctx.isfinite, 1, 1)
 
     def scalar(self, value: float | int | str) -> Any:
@@ -241,12 +271,19 @@ def _array_aware_npconvert(convert: Callable[[Any], Any]) -> Callable[[Any], Any
     return npconvert
 
 
-def _elementwise(function: Callable[..., Any], arity: int = 1) -> Callable[..., Any]:
-    """Apply an mpmath function to scalars or, entry by entry, to object arrays."""
+def _elementwise(
+    function: Callable[..., Any], arity: int = 1, clock: Callable[[], None] | None = None
+) -> Callable[..., Any]:
+    """Apply an mpmath function to scalars or, entry by entry, to object arrays.
+
+    ``clock`` (the arithmetic's ``check_time``) runs before every array operation.
+    """
     ufunc = np.frompyfunc(function, arity, 1)
 
     def apply(*args: Any) -> Any:
         if any(isinstance(a, np.ndarray) for a in args):
+            if clock is not None:
+                clock()
             return ufunc(*args)
         return function(*args)
 

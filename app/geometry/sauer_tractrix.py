@@ -51,7 +51,7 @@ from typing import Any
 import numpy as np
 
 from app.geometry.errors import DomainError
-from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
+from app.geometry.precision import CLOCK_STEPS, Arithmetic, Array, Scalar, stack_points
 
 #: ``side`` values: the mirrored side (i < c), the cusp stick, the pursuit side (i > c).
 MIRRORED, CUSP, PURSUIT = -1, 0, 1
@@ -143,6 +143,8 @@ def construct_sticks(
     cos_u[k0], sin_u[k0] = c0, s0
     side[k0] = CUSP if step.is_cusp(s0) else (PURSUIT if c0 < 0 else MIRRORED)
     for k in range(k0 + 1, n):  # forward: stick k from stick k − 1
+        if not k % CLOCK_STEPS:
+            ar.check_time()
         args = (x[k - 1], cos_u[k - 1], sin_u[k - 1])
         if side[k - 1] >= CUSP:  # d_k lies on stick k − 1; the leader moves ahead
             x[k], cos_u[k], sin_u[k] = step.pull(*args, ahead=True)
@@ -151,6 +153,8 @@ def construct_sticks(
             x[k], cos_u[k], sin_u[k] = step.carrier(*args, lean_back=False)
             side[k] = CUSP if step.is_cusp(sin_u[k]) else MIRRORED
     for k in range(k0 - 1, -1, -1):  # backward: stick k from stick k + 1
+        if not k % CLOCK_STEPS:
+            ar.check_time()
         args = (x[k + 1], cos_u[k + 1], sin_u[k + 1])
         if side[k + 1] <= CUSP:  # d_k lies on stick k + 1; the leader moves behind
             x[k], cos_u[k], sin_u[k] = step.pull(*args, ahead=False)

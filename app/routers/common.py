@@ -11,8 +11,7 @@ from pydantic import BaseModel, ValidationError
 from app.errors import UnknownIdError
 from app.geometry.convergence import Study
 from app.geometry.curve import Curve
-from app.geometry.precision import arithmetic
-from app.limits import enforce_drawing, enforce_range, enforce_study
+from app.limits import enforce_drawing, enforce_range, enforce_study, timed_arithmetic
 from app.registry import DISCRETIZATIONS, STUDIES, ConvergenceStudy, Discretization
 from app.rendering.curves import SVG_MEDIA_TYPE, curve_svg
 from app.responses import CSV_MEDIA_TYPE, JSONBytesResponse, curve_csv, curve_document, encode_json
@@ -129,8 +128,7 @@ def prepare_study(
     arguments = query.core_arguments()
     size = entry.size(**arguments)  # validates first: domain errors before limits
     enforce_study(settings, arguments, size, entry.work(**arguments), query.precision, query.digits)
-    ar = arithmetic(query.precision, query.digits)
-    return lambda: entry.run(ar, **arguments)
+    return lambda: entry.run(timed_arithmetic(settings, query.precision, query.digits), **arguments)
 
 
 def compute(entry: Discretization, query: CurveQuery, settings: Settings) -> Curve:
@@ -146,8 +144,7 @@ def compute(entry: Discretization, query: CurveQuery, settings: Settings) -> Cur
     )
     if query.format == "svg":
         enforce_drawing(settings, arguments["i_min"], arguments["i_max"])
-    ar = arithmetic(query.precision, query.digits)
-    return entry.compute(ar, **arguments)
+    return entry.compute(timed_arithmetic(settings, query.precision, query.digits), **arguments)
 
 
 def curve_response(curve: Curve, response_format: str) -> Response:

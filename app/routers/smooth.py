@@ -8,8 +8,8 @@ from fastapi import APIRouter, Depends, Query, Request, Response
 from app.errors import UnknownIdError
 from app.geometry import smooth_curves
 from app.geometry.curve import Curve
-from app.geometry.precision import Arithmetic, Float64, arithmetic
-from app.limits import MP_OVERHEAD_DIGITS, LimitExceededError, enforce_digits
+from app.geometry.precision import Float64
+from app.limits import MP_OVERHEAD_DIGITS, LimitExceededError, enforce_digits, timed_arithmetic
 from app.responses import cached, canonical_key
 from app.routers.common import (
     CURVE_RESPONSES,
@@ -66,7 +66,7 @@ def _register(name: str, compute: Callable[..., Curve], title: str, description:
 
         def build() -> Response:
             enforce_samples(settings, query)
-            ar: Arithmetic = arithmetic(query.precision, query.digits)
+            ar = timed_arithmetic(settings, query.precision, query.digits)
             return curve_response(compute(ar, **query.core_arguments()), query.format)
 
         return cached(request, canonical_key(request.url.path, query.model_dump()), settings, build)

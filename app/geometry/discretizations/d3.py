@@ -82,6 +82,9 @@ class D3Polygons:
     p: Array
     closed: Array
     constructed: bool
+    start: float = math.inf
+    """y0: the walk (and the closed form's arcosh(y0/a)) starts there even when index 0 is not
+    in the range shown."""
 
 
 def polygons(
@@ -104,7 +107,7 @@ def polygons(
         p = construct(ar, c, delta, y0, branch, i_min, i_max).vertices
     else:
         p = closed
-    return D3Polygons(i_min, p, closed, constructed=method == "construction")
+    return D3Polygons(i_min, p, closed, constructed=method == "construction", start=y0)
 
 
 def evaluate(
@@ -180,11 +183,11 @@ def _closed_form(
     Rounding grows along the construction (``steps``), and where the polygon passes close to
     its lowest point a (argument v of the catenary near 0) both the step and the closed form's
     arcosh(y_0/a) turn a rounding error into about 1/v of them: the tolerance allows
-    steps · max(1, 1/v_min), v_min = arcosh(min y_i / a) (at least √eps).
+    steps · max(1, 1/v_min), v_min = arcosh(min(y_0, min y_i) / a) (at least √eps).
     """
     ar = ctx.ar
     a = closed_forms.amplitude(ar, ar.scalar(c), ar.scalar(delta))
-    ratio = np.min(data.p[:, 1]) / a
+    ratio = min(np.min(data.p[:, 1]), ar.scalar(data.start)) / a
     v_min = ar.to_float(ar.acosh(ratio)) if ratio > 1 else 0.0
     amplification = math.ceil(1 / max(v_min, math.sqrt(ar.eps), 1e-300))
     amplification = max(1, amplification)
