@@ -55,7 +55,7 @@ run: $(BIN)/.runtime-installed $(VENDOR)/.built
 	$(SERVER_ENV) $(BIN)/python -m uvicorn app.main:app --host $(HOST) --port $(PORT) --workers $(WORKERS)
 
 test: $(BIN)/.dev-installed $(VENDOR)/.built browser
-	DCOSH_CHROMIUM=$(CHROMIUM) $(BIN)/python -m pytest $(PYTEST_ARGS)
+	DCOSH_CHROMIUM=$(CHROMIUM) $(BIN)/python -m pytest -n auto $(PYTEST_ARGS)
 
 lint: $(BIN)/.dev-installed
 	$(BIN)/ruff check app tests bench
