@@ -225,14 +225,19 @@ def polygons(
     return D2bPolygons(sequence, name_j, data, n, p, i_min - data.i_min, i_max - i_min + 1, refined)
 
 
+def construction_tolerance(ar: Arithmetic, data: D2bPolygons) -> float:
+    """Tolerance of statements on p, which the definition builds by cumulative products and sums
+    from i = 0 (one rounding step per vertex)."""
+    return ar.tolerance(max(len(data.p) + 1, LOCAL_STEPS))
+
+
 def evaluate(ar: Arithmetic, data: D2bPolygons, detail: bool = False) -> list[Check]:
     """Every check of ``STATEMENTS`` on the given polygons (shown range i_min .. i_max)."""
     window = slice(data.first, data.first + data.count)
     p, n = data.p[window], data.n[window]
     i_min = data.sequence.i_min + data.first
     indices = np.arange(i_min, i_min + data.count, dtype=np.int64)
-    steps = len(data.p) + 1
-    tolerance = ar.tolerance(max(steps, LOCAL_STEPS))
+    tolerance = construction_tolerance(ar, data)
     local = ar.tolerance(LOCAL_STEPS)
 
     def check(
@@ -407,4 +412,5 @@ def compute(
         },
         constants={},
         checks=checks,
+        companion_tolerances={"gauss_image": construction_tolerance(ar, data)},
     )

@@ -310,11 +310,8 @@ def evaluate(
         "eq2": conditions.equation_2(ar, p[:n]),
     }
     constants = {k: f.constant for k, f in fits.items() if f.constant is not None}
-    rounding = 4 * math.ceil(data.exponent)  # steps' worth of the closed forms' own rounding
-    kappa = conditioning(h, d)
-    local = kappa * ar.tolerance(LOCAL_STEPS + (0 if data.constructed else rounding))
+    local, construction, steps = tolerances(ar, h, d, data)
     ctx = _Context(ar, hh, dd, indices, n, local, detail)
-    steps = max(abs(data.i_min - 1), abs(data.i_min + n)) + 1 + rounding
     checks = [
         _hypothesis(ctx, p),
         _fitted(ctx, THEOREM_4_I, fits["d1"], _ratio_erratum(ctx, p)),
@@ -340,10 +337,25 @@ def evaluate(
         indices,
         n,
         ctx.tolerance,
-        ar.tolerance(max(steps, LOCAL_STEPS)),
+        construction,
         detail,
     )
     return constants, checks
+
+
+def tolerances(ar: Arithmetic, h: float, d: float, data: D4bPolygons) -> tuple[float, float, int]:
+    """(local tolerance, construction tolerance, construction steps) of one computation.
+
+    Local: a check on a few neighbouring vertices, times the conditioning κ (and the closed
+    forms' own rounding when the polygons are the closed forms). Construction: comparisons
+    along the whole recursion from stick 0.
+    """
+    n = len(data.p) - 1
+    rounding = 4 * math.ceil(data.exponent)  # steps' worth of the closed forms' own rounding
+    kappa = conditioning(h, d)
+    local = kappa * ar.tolerance(LOCAL_STEPS + (0 if data.constructed else rounding))
+    steps = max(abs(data.i_min - 1), abs(data.i_min + n)) + 1 + rounding
+    return local, ar.tolerance(max(steps, LOCAL_STEPS)), steps
 
 
 def compute(
@@ -365,6 +377,7 @@ def compute(
         _require_float64_representable(h, d, beta0, i_min, i_max)
     data = polygons(ar, h, d, beta0, i_min, i_max, method)
     constants, checks = evaluate(ar, h, d, data, detail, beta0)
+    local, construction, _ = tolerances(ar, h, d, data)
     indices = np.arange(i_min, i_max + 1, dtype=np.int64)
     n = len(indices)
     parameters: dict[str, Any] = {
@@ -396,6 +409,8 @@ def compute(
         },
         constants=constants,
         checks=checks,
+        local_tolerance=local,
+        companion_tolerances=d4b_curvature.companion_tolerances(ar, data.gauss, construction),
     )
 
 

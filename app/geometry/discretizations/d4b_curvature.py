@@ -224,6 +224,23 @@ def build(
     )
 
 
+def companion_tolerances(
+    ar: Arithmetic, images: GaussImages, construction_tolerance: float
+) -> dict[str, float]:
+    """Tolerances of face-wise statements on the two Gauss images (Theorems 7 and 8).
+
+    n accumulates the rounding of every tractrix edge direction it was built from (see
+    ``GaussImages.conditioning``); m is built locally from p, whose vertices come from the whole
+    construction.
+    """
+    return {
+        "tractrix_gauss_image": max(
+            construction_tolerance, ar.tolerance(math.ceil(images.conditioning))
+        ),
+        "gauss_image": construction_tolerance,
+    }
+
+
 def printed_forms(
     ar: Arithmetic, h: Scalar, d: Scalar, shift: Scalar, i_min: int, i_max: int
 ) -> dict[str, Array]:
@@ -256,8 +273,7 @@ def evaluate(
     """
     nt, c, m = images.tractrix_gauss, images.contact, images.gauss
     shown = indices[:n]
-    # n accumulates the rounding of every edge direction it was built from (see GaussImages)
-    n_tolerance = max(construction_tolerance, ar.tolerance(math.ceil(images.conditioning)))
+    n_tolerance = companion_tolerances(ar, images, construction_tolerance)["tractrix_gauss_image"]
 
     def check(
         statement: Statement,
