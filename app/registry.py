@@ -11,15 +11,17 @@ from collections.abc import Callable
 from dataclasses import dataclass, replace
 from functools import cached_property
 
-from app.geometry import convergence
+from app.geometry import catenoid_refinement, convergence
 from app.geometry.checks import Statement
 from app.geometry.convergence import Study, StudyInfo
 from app.geometry.curve import Curve, DiscretizationInfo
 from app.geometry.discretizations import d1, d2a_hex, d2a_quad, d2b, d3, d4a, d4b
 from app.schemas.common import CurveQuery, strict_body
 from app.schemas.convergence import (
+    THEOREM_11_DESCRIPTION,
     THEOREM_14_DESCRIPTION,
     THEOREM_15_DESCRIPTION,
+    CatenoidStudyQuery,
     StudyQuery,
     TractrixStudyQuery,
 )
@@ -74,7 +76,15 @@ class ConvergenceStudy:
     description: str
 
 
-_STUDIES = (
+_STUDIES = (  # in the paper's order
+    ConvergenceStudy(
+        catenoid_refinement.THEOREM_11_INFO,
+        CatenoidStudyQuery,
+        catenoid_refinement.theorem_11,
+        catenoid_refinement.mp_work,
+        catenoid_refinement.work,
+        THEOREM_11_DESCRIPTION,
+    ),
     ConvergenceStudy(
         convergence.THEOREM_14_INFO,
         TractrixStudyQuery,

@@ -6,17 +6,18 @@ order is the slope of the least-squares line through (ln d_k, ln e_k); a limit c
 paper is checked by refinement (``converges``): every halving must shrink the error by at least
 ``CONVERGENCE_RATIO``.
 
-Studies (``STUDIES``):
+Studies (registered in ``app.registry``):
 - ``theorem-14``: the curve of Theorem 14 through the vertices of (14), and the constructed
   (D4b) centres p_i, against the catenary x ↦ (x, h cosh(x/h)); plus the limit (21).
 - ``theorem-15``: the curve of Theorem 15 through the vertices of (16), and the constructed
   (D4b) tractrix d_i, against the tractrix x ↦ (x − h tanh(x/h), h / cosh(x/h)); plus (22).
+- ``theorem-11`` (module ``catenoid_refinement``): the (D2b) meridians of Example 12 and Remark
+  13 against the catenary, built from the same pieces.
 
 The vertices come from the construction (``kinematic_tractrix``); the interpolating curves and
 limits are the theorems (``limit_curves``); distances to the smooth curves from
-``curve_distance``. A later study (e.g. Theorem 11 with the sequences of Example 12 and Remark
-13) is a ``StudyInfo`` and a ``run`` function built from the same pieces (``Level``,
-``observed_order``, ``converges``).
+``curve_distance``. A study is a ``StudyInfo`` and a ``run`` function built from ``Level``,
+``observed_order`` and ``converges``.
 
 Why the tractrix has two orders. Theorem 15's curve passes through d_i at x = (2i − 1)d, the
 x-coordinate of p_i; but the stick of d_i meets the x-axis at x_i = 2di, and the tractrix point
@@ -169,9 +170,13 @@ def observed_order(levels: list[Level], measure: str) -> OrderFit:
 
 
 def converges(
-    statement: Statement, levels: list[Level], measures: tuple[str, ...], fits: dict[str, OrderFit]
+    statement: Statement,
+    levels: list[Level],
+    measures: tuple[str, ...],
+    fits: dict[str, OrderFit],
+    step_name: str = "d",
 ) -> Check:
-    """A limit claim checked by refinement on the given measures.
+    """A limit claim checked by refinement on the given measures (``step_name``: for the note).
 
     Residual: the largest ratio e_{k+1}/e_k of consecutive resolved levels over the measures;
     holds when it is at most ``CONVERGENCE_RATIO``. The note gives each observed order.
@@ -190,7 +195,7 @@ def converges(
     errors = ", ".join(
         f"{m}: {finest.errors[m]:.3g}" for m in measures if finest.errors[m] is not None
     )
-    note = f"observed order {orders}; sup error at d = {finest.step:.6g}: {errors}"
+    note = f"observed order {orders}; sup error at {step_name} = {finest.step:.6g}: {errors}"
     if not ratios:
         return not_applicable(
             statement,
@@ -801,12 +806,3 @@ def theorem_15(
         ]
 
     return _finish(THEOREM_15_INFO, ar, parameters, result, checks)
-
-
-StudyRunner = Callable[..., Study]
-
-STUDIES: dict[str, tuple[StudyInfo, StudyRunner]] = {
-    THEOREM_14_INFO.id: (THEOREM_14_INFO, theorem_14),
-    THEOREM_15_INFO.id: (THEOREM_15_INFO, theorem_15),
-}
-"""Study id -> (catalog facts, run function with the study's parameters as keywords)."""

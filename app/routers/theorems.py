@@ -8,6 +8,7 @@ from fastapi import APIRouter, Depends, Path, Query, Request, Response
 
 from app.errors import UnknownIdError
 from app.geometry.checks import Check
+from app.geometry.errors import DomainError
 from app.geometry.precision import Float64
 from app.registry import DISCRETIZATIONS, STATEMENTS, STUDIES, StatementEntry
 from app.responses import JSONBytesResponse, cached, canonical_key, check_document, encode_json
@@ -27,13 +28,30 @@ from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES, StrictMode
 router = APIRouter(prefix="/theorems", tags=["theorems"])
 
 
-def _source_model(entry: StatementEntry) -> tuple[dict[str, str], type[StrictModel]]:
-    """The fixed query (``discretization=...``) and request model of a statement's default
-    source: its first discretization, else its first study."""
-    if entry.discretizations:
-        owner = entry.discretizations[0]
-        return {"discretization": owner}, DISCRETIZATIONS[owner].query
-    return {}, STUDIES[entry.studies[0]].query
+def default_source(identifier: str, entry: StatementEntry) -> tuple[str, str]:
+    """("study" or "discretization", id) a statement is checked on by default.
+
+    A statement named like a study (theorem-11, theorem-14, theorem-15) is a limit claim: its
+    study checks it. Otherwise its first discretization, else its first study.
+    """
+    if identifier in entry.studies or not entry.discretizations:
+        return "study", identifier if identifier in entry.studies else entry.studies[0]
+    return "discretization", entry.discretizations[0]
+
+
+def _source_model(
+    identifier: str, entry: StatementEntry
+) -> tuple[dict[str, str], type[StrictModel], tuple[tuple[str, str], ...]]:
+    """The fixed query, request model and statement defaults of a statement's default source.
+
+    The fixed query names the source (``discretization=...`` or, for a statement that curves
+    check too, ``study=...``); the statement's defaults apply to curves only.
+    """
+    kind, owner = default_source(identifier, entry)
+    if kind == "discretization":
+        return {"discretization": owner}, DISCRETIZATIONS[owner].query, entry.statement.defaults
+    fixed = {"study": owner} if entry.discretizations else {}
+    return fixed, STUDIES[owner].query, ()
 
 
 def example_url(
@@ -85,7 +103,7 @@ def list_statements() -> list[StatementInfo]:
     errata = default_errata()
     out = []
     for identifier, entry in STATEMENTS.items():
-        fixed, model = _source_model(entry)
+        fixed, model, defaults = _source_model(identifier, entry)
         parameters = parameter_infos(model)
         out.append(
             StatementInfo(
@@ -95,7 +113,7 @@ def list_statements() -> list[StatementInfo]:
                 discretizations=list(entry.discretizations),
                 studies=list(entry.studies),
                 url=f"/theorems/{identifier}",
-                example_url=example_url(identifier, fixed, parameters, entry.statement.defaults),
+                example_url=example_url(identifier, fixed, parameters, defaults),
                 parameters=parameters,
                 conditions=list(entry.statement.conditions),
                 errata=list(errata.get(identifier, ())),
@@ -111,10 +129,12 @@ def list_statements() -> list[StatementInfo]:
     "tolerance, verdict and, where the printed formula is wrong, the erratum. A statement about "
     "a discretization is checked on the polygon of `discretization` (default: the first that "
     "checks it), and every parameter of that discretization is accepted (GET "
-    "/discretizations). A statement of Section 6 (limits, the proofs of Theorems 14 and 15) is "
-    "checked on its refinement study, and accepts the study's parameters (GET /convergence; "
-    "`detail` does not apply there). Unknown parameters are rejected; GET /theorems lists each "
-    "statement's parameters and an example.",
+    "/discretizations). A statement of Section 6 (limits, the proofs of Theorems 11, 14 and "
+    "15) is checked on its refinement study, and accepts the study's parameters (GET "
+    "/convergence; `detail` does not apply there). Statements that both check (theorem-11, "
+    "lemma-10, example-12, remark-13) take `study=theorem-11` or `discretization=d2b`; "
+    "theorem-11 defaults to its study, the others to the curve. Unknown parameters are "
+    "rejected; GET /theorems lists each statement's parameters and an example.",
     response_model=TheoremResponse,
     responses={**PROBLEM_RESPONSES, **NOT_FOUND_RESPONSE, 304: {"description": "Not modified."}},
     dependencies=[Depends(reject_repeated_parameters)],
@@ -126,6 +146,10 @@ def check_statement(
         str | None,
         Query(alias="discretization", description="Discretization to check it on."),
     ] = None,
+    study_id: Annotated[
+        str | None,
+        Query(alias="study", description="Refinement study to check it on (GET /convergence)."),
+    ] = None,
     precision: Annotated[Literal["float64", "mp"], Query(description="Arithmetic.")] = "float64",
     digits: Annotated[int, Query(ge=1, le=100_000, description="Digits for mp.")] = 30,
     detail: Annotated[bool, Query(description="Residual per index (curves only).")] = False,
@@ -133,12 +157,31 @@ def check_statement(
     entry = STATEMENTS.get(statement_id)
     if entry is None:
         raise UnknownIdError("statement", statement_id, sorted(STATEMENTS))
-    values: dict[str, Any] = {**dict(entry.statement.defaults), **request.query_params}
+    if discretization_id is not None and study_id is not None:
+        raise DomainError(
+            "study",
+            "at most one of discretization and study",
+            study_id,
+            f"discretization = {discretization_id}",
+        )
+    values: dict[str, Any] = dict(request.query_params)
     settings = settings_of(request)
     conditions = list(entry.statement.conditions)
-    if not entry.discretizations:
-        source = study(entry.studies[0])
+    kind, default_owner = default_source(statement_id, entry)
+    if study_id is not None or (discretization_id is None and kind == "study"):
+        owner_study = study_id or default_owner
+        if not entry.studies:
+            raise DomainError(
+                "study",
+                "a study that checks this statement: none, it is checked on curves "
+                f"(discretization={entry.discretizations[0]})",
+                owner_study,
+            )
+        if owner_study not in entry.studies:
+            raise UnknownIdError("study for this statement", owner_study, list(entry.studies))
+        source = study(owner_study)
         values.pop("detail", None)
+        values.pop("study", None)
         study_query = parse_query(source.query, values)
         run = prepare_study(source, study_query, settings)
 
@@ -161,12 +204,20 @@ def check_statement(
         key = canonical_key(request.url.path, {"study": source.info.id, **study_query.model_dump()})
         return cached(request, key, settings, build_study)
 
+    if not entry.discretizations:
+        raise DomainError(
+            "discretization",
+            "a discretization that checks this statement: none, it is checked on a study "
+            f"(GET /convergence/{entry.studies[0]})",
+            discretization_id,
+        )
     owner = discretization_id or entry.discretizations[0]
     if owner not in entry.discretizations:
         raise UnknownIdError(
             "discretization for this statement", owner, list(entry.discretizations)
         )
     target = discretization(owner)
+    values = {**dict(entry.statement.defaults), **values}
     values.pop("discretization", None)
     query = parse_query(target.query, values)
 

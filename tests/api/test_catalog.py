@@ -84,14 +84,20 @@ def test_every_statement_lists_parameters_an_example_and_its_source(client: Test
         StatementInfo.model_validate(entry)
         assert bool(entry["discretizations"]) or bool(entry["studies"]), entry["id"]
         names = {p["name"]: p for p in entry["parameters"]}
-        if entry["discretizations"]:
+        on_study = entry["id"] in entry["studies"] or not entry["discretizations"]
+        if not on_study:
             assert entry["example_url"].startswith(
                 f"/theorems/{entry['id']}?discretization={entry['discretizations'][0]}&"
             )
         else:
-            study = STUDIES[entry["studies"][0]]
+            study = STUDIES[entry["id"] if entry["id"] in STUDIES else entry["studies"][0]]
             assert set(names) == set(study.query.model_fields)
-            assert names["d0"]["default"] == 0.2
+            default = names["j0"]["default"] if "j0" in names else names["d0"]["default"]
+            assert default == (4 if "j0" in names else 0.2)
+            if entry["discretizations"]:  # both check it: the example names the study
+                assert entry["example_url"].startswith(
+                    f"/theorems/{entry['id']}?study={study.info.id}&"
+                )
         assert "precision" in names and names["precision"]["kind"] == "common"
 
 
@@ -154,4 +160,41 @@ def test_convergence_statements_reject_foreign_or_invalid_parameters(
 ) -> None:
     response = client.get("/theorems/theorem-14", params=params)
     assert response.status_code == 422
+    assert response.json()["errors"][0]["parameter"] == parameter
+
+
+def test_statements_of_theorem_11_are_checked_on_the_study_or_the_curve(
+    client: TestClient,
+) -> None:
+    small = {"levels": 3}
+    body = client.get("/theorems/theorem-11", params=small).json()
+    assert body["study"] == "theorem-11" and body["discretization"] is None
+    assert body["check"]["holds"] is True and body["check"]["tolerance"] == pytest.approx(2**-0.5)
+    curve = client.get("/theorems/theorem-11", params={"discretization": "d2b", "j": 4}).json()
+    assert curve["discretization"] == "d2b" and curve["check"]["tolerance"] == 1.0
+    lemma = client.get("/theorems/lemma-10", params={"study": "theorem-11", **small}).json()
+    assert lemma["study"] == "theorem-11" and lemma["check"]["erratum"]["id"] == "E64"
+    remark = client.get("/theorems/remark-13", params={"study": "theorem-11", **small}).json()
+    assert remark["check"]["holds"] is True and "every vertex" in remark["check"]["note"]
+    on_curve = client.get("/theorems/remark-13").json()  # the statement's default sequence
+    assert on_curve["parameters"]["sequence"] == "remark-13"
+    uniform = client.get("/theorems/remark-13-uniform", params=small).json()
+    assert uniform["check"]["erratum"]["id"] == "E66"
+    assert uniform["check"]["erratum"]["printed_residual"] > uniform["check"]["tolerance"]
+
+
+@pytest.mark.parametrize(
+    ("statement", "params", "status", "parameter"),
+    [
+        ("theorem-11", {"study": "theorem-11", "discretization": "d2b"}, 422, "study"),
+        ("theorem-5", {"study": "theorem-11"}, 422, "study"),
+        ("lemma-10", {"study": "theorem-14"}, 404, "id"),
+        ("lemma-10", {"study": "theorem-11", "j": 5}, 422, "j"),
+    ],
+)
+def test_the_source_of_a_statement_is_validated(
+    client: TestClient, statement: str, params: dict, status: int, parameter: str
+) -> None:
+    response = client.get(f"/theorems/{statement}", params=params)
+    assert response.status_code == status
     assert response.json()["errors"][0]["parameter"] == parameter

@@ -71,35 +71,78 @@ RECURSION = S(
     "|(p_i^x − p_{i−1}^x) Δn_{i−1}^y − Δp_{i−1}^y Δn_{i−1}^x| (the recursion multiplied out, "
     "which stays defined where Δn^y rounds to 0) relative to the magnitude of its terms.",
 )
+_EXAMPLE_DOMAIN = (
+    "Example 12 is defined on i >= 0 only: s_i = 4i²/(j² + 4i²) is even in i, hence not "
+    "strictly increasing on Z, and g(x) = 4x²/(1 + 4x²) is even with g'(0) = 0, so Lemma 10's "
+    "hypotheses (g' > 0 on R) fail on Z; on i >= 0 everything works (the example says i ∈ N). "
+    "The meridian then runs towards −x, as Figure 8 shows (C ∩ {x <= 0}); the service refuses "
+    "i_min < 0 for this sequence."
+)
+_REMARK_DOMAIN = (
+    "Remark 13 is defined on i > −j/2 only: s_i = i/(i + j) has |s_i| < 1 exactly there (s = −1 "
+    "at i = −j/2, undefined at i = −j), and g(x) = x/(1 + x) maps (−½, ∞), not R, onto (−1, 1). "
+    "There g' = 1/(1 + x)² <= 4 is bounded, as the remark needs; the service refuses "
+    "i_min <= −j/2."
+)
+_LEMMA_HYPOTHESES = (
+    "Lemma 10 asks for g: R → (−1, 1) of class C¹ with g(0) = 0 and g' > 0; neither named "
+    "sequence has such a g on all of R (Example 12: g'(0) = 0, g even; Remark 13: g defined on "
+    "(−1, ∞)). On the index sets the service allows (i >= 0; i > −j/2) the conclusions hold.",
+    "The closed form needs none of this: with u = artanh s its terms are (s_k − s_{k+1}) / "
+    "(√(1 − s_k²)√(1 − s_{k+1}²)) = −sinh(u_{k+1} − u_k), so p_i^x = −Σ sinh Δu_k for every "
+    "sequence with |s| < 1 and s_0 = 0, while c^x(i/j) = −u_i. Convergence on compact sets "
+    "follows from max |Δu_k| → 0, which (s^j) ↪ g (Definition 9) with g continuous and s "
+    "increasing gives; the error Σ (sinh Δu − Δu) ≈ (1/(6j²))∫ u'³ has order 2.",
+)
 LEMMA_10 = S(
     "lemma-10",
     "Lemma 10",
     "p_i = (Σ_{k=0}^{i−1} (s_k − s_{k+1})/((1 − s_k²)^{1/2}(1 − s_{k+1}²)^{1/2}), "
-    "(1 − s_i²)^{−1/2}), with Σ_{k=0}^{i−1} = −Σ_{k=i}^{−1} for i < 0 (corrected convention; "
-    "see erratum). Residual: largest |p_i − closed form| / |closed form|.",
+    "(1 − s_i²)^{−1/2}) is the constructed (D2b) meridian, with Σ_{k=0}^{i−1} = −Σ_{k=i}^{−1} "
+    "for i < 0 (corrected convention; see erratum). Residual: largest |p_i − closed form| / "
+    "|closed form|, on a curve over its range, on /convergence/theorem-11 over every vertex of "
+    "every level of both sequences.",
+    conditions=_LEMMA_HYPOTHESES,
 )
 THEOREM_11 = S(
     "theorem-11",
     "Theorem 11 (with Example 12 / Remark 13)",
-    "The meridians converge to the catenary C = {(x, cosh x)}: the distance "
-    "max_i |p_i^j − c(i/j)| to the points c(t) = (−artanh g(t), cosh artanh g(t)) of C "
-    "decreases when j is doubled over the same parameter interval (indices 2i_min .. 2i_max). "
-    "Residual: the ratio of the distances at 2j and at j, which must not exceed 1 (the note "
-    "gives both distances and the observed order; about 2). Named sequences only.",
+    "The meridians p^j converge to the catenary C = {(x, cosh x)} uniformly on compact sets as "
+    "j → ∞, measured by max_i |p_i^j − c(i/j)| with the points c(t) = (−artanh g(t), cosh "
+    "artanh g(t)) of C (and by the distance to C). On the refinement study "
+    "/convergence/theorem-11 (the default): both named sequences at j = j0·2^k over the same "
+    "parameter interval; holds when every doubling of j shrinks each sup error by at least "
+    "2^(−1/2) (observed order about 2). On a d2b curve (named sequences only): residual = the "
+    "ratio of the distances at 2j and at j over the same parameter interval (indices 2i_min .. "
+    "2i_max), which must not exceed 1; the note gives both distances and the observed order.",
+    conditions=(
+        "Theorem 11 takes p_0^j = (0, 1, 0) and n_0^j = (0, 1) (s_0 = 0), and sequences with "
+        "the hypotheses of Lemma 10 on the indices used: Example 12 on i >= 0, Remark 13 on "
+        "i > −j/2 (see example-12, remark-13).",
+        "'Compact sets' are sets of the parameter t = i/j (equivalently of x on C). The error "
+        "is horizontal (p_i^y = c^y(i/j) exactly) and about (1/(6j²))|∫_0^t u'³| with "
+        "u = artanh g: order 2, and uniform on any set where ∫|u'|³ is finite, which a bounded "
+        "g' does not ensure (remark-13-uniform, E66).",
+    ),
 )
 EXAMPLE_12 = S(
     "example-12",
     "Example 12",
     "n_i^x = s_i = 4i²/(j² + 4i²) = g(i/j) with g(x) = 4x²/(1 + 4x²), strictly increasing with "
     "|s_i| < 1 and n_0 = (0, 1) on i >= 0, as Lemma 10 requires. Residual: the largest of "
-    "|n_i^x − g(i/j)|, the monotonicity and bound violations and |n_0 − (0, 1)|.",
+    "|n_i^x − g(i/j)|, the monotonicity and bound violations and |n_0 − (0, 1)|, on a curve "
+    "over its range, on /convergence/theorem-11 over every level.",
+    conditions=(_EXAMPLE_DOMAIN,),
 )
 REMARK_13 = S(
     "remark-13",
     "Remark 13",
     "n_i^x = s_i = i/(i + j) = g(i/j) with g(x) = x/(1 + x), strictly increasing with |s_i| < 1 "
-    "and n_0 = (0, 1) on i > −j/2, where g' = 1/(1 + x)² is bounded. Residual: as for example-12.",
+    "and n_0 = (0, 1) on i > −j/2, where g' = 1/(1 + x)² is bounded. Residual: as for "
+    "example-12 (on /convergence/theorem-11: every vertex −j/2 < i of every level). The "
+    "remark's conclusion, uniform convergence, is remark-13-uniform.",
     defaults=(("sequence", "remark-13"),),
+    conditions=(_REMARK_DOMAIN,),
 )
 
 STATEMENTS: tuple[Statement, ...] = (
@@ -347,8 +390,23 @@ def _example(
 ) -> Check:
     if data.sequence_name != name or data.j is None:
         return not_applicable(statement, tolerance, f"applies to sequence={name} only")
+    residual = hypothesis_residuals(ar, name, data.j, indices, n)
+    check = check_residuals(statement, ar, indices, residual, tolerance, detail)
+    return replace(check, note=hypothesis_note(ar, name, data.j, int(indices[0])))
+
+
+def hypothesis_residuals(
+    ar: Arithmetic,
+    name: SequenceName,
+    j: int,
+    indices: np.ndarray[Any, np.dtype[np.int64]],
+    n: Array,
+) -> Array:
+    """Example 12 / Remark 13 on a Gauss image n (indices given): per index the largest of
+    |n_i^x − g(i/j)|, the drop n_i^x − n_{i+1}^x (strictly increasing), |n_i^x| − 1 (bound) and,
+    at i = 0, |n_0 − (0, 1)|; 0 where the sequence is what the paper says."""
     x = n[:, 0]
-    t = ar.array(indices.tolist()) / ar.scalar(data.j)
+    t = ar.array(indices.tolist()) / ar.scalar(j)
     g = (
         catenoid_convergence.example_12_g(t)
         if name == "example-12"
@@ -364,14 +422,16 @@ def _example(
     if len(at_zero):
         k = int(at_zero[0])
         residual[k] = max(residual[k], abs(n[k, 0]) + abs(n[k, 1] - 1))
-    note = None
+    return residual
+
+
+def hypothesis_note(ar: Arithmetic, name: SequenceName, j: int, i_min: int) -> str:
+    """What the hypothesis checks of Example 12 / Remark 13 cannot see (g' on the range)."""
     if name == "remark-13":
-        bound = ar.to_float(1 / ((1 + t[0]) * (1 + t[0])))
-        note = f"sup g' on the range = {bound:.6g} (bounded)"
-    else:
-        note = "g'(0) = 0 and g is even: Lemma 10's hypothesis g' > 0 holds on t > 0 only"
-    check = check_residuals(statement, ar, indices, residual, tolerance, detail)
-    return replace(check, note=note)
+        t = ar.scalar(i_min) / ar.scalar(j)
+        bound = ar.to_float(1 / ((1 + t) * (1 + t)))
+        return f"sup g' on the range = {bound:.6g} (bounded)"
+    return "g'(0) = 0 and g is even: Lemma 10's hypothesis g' > 0 holds on t > 0 only"
 
 
 def compute(
