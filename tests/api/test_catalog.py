@@ -76,14 +76,19 @@ def test_catalog_lists_the_stick_and_chain_family_with_domains(client: TestClien
 
 
 def test_every_statement_lists_parameters_an_example_and_its_source(client: TestClient) -> None:
-    from app.registry import STATEMENTS, STUDIES
+    from app.registry import SMOOTH, STATEMENTS, STUDIES
 
     statements = client.get("/theorems").json()
     assert [s["id"] for s in statements] == list(STATEMENTS)
     for entry in statements:
         StatementInfo.model_validate(entry)
-        assert bool(entry["discretizations"]) or bool(entry["studies"]), entry["id"]
+        sources = entry["discretizations"] + entry["studies"] + entry["smooth"]
+        assert sources, entry["id"]
         names = {p["name"]: p for p in entry["parameters"]}
+        if not entry["discretizations"] and not entry["studies"]:
+            assert set(names) == set(SMOOTH[entry["smooth"][0]].query.model_fields)
+            assert entry["example_url"].startswith(f"/theorems/{entry['id']}?h=1.0&")
+            continue
         on_study = entry["id"] in entry["studies"] or not entry["discretizations"]
         if not on_study:
             assert entry["example_url"].startswith(
@@ -198,3 +203,16 @@ def test_the_source_of_a_statement_is_validated(
     response = client.get(f"/theorems/{statement}", params=params)
     assert response.status_code == status
     assert response.json()["errors"][0]["parameter"] == parameter
+
+
+def test_statements_of_section_2_are_checked_on_the_smooth_tractrix(client: TestClient) -> None:
+    statements = {s["id"]: s for s in client.get("/theorems").json()}
+    for key in ("tractrix-s4", "evolute-s4", "nikolaides-s4"):
+        assert statements[key]["smooth"] == ["tractrix"], key
+    body = client.get("/theorems/nikolaides-s4", params={"h": 2.0, "count": 11}).json()
+    TheoremResponse.model_validate(body)
+    assert body["smooth"] == "tractrix" and body["discretization"] is None
+    assert body["parameters"]["h"] == 2.0 and body["check"]["holds"] is True
+    assert client.get("/theorems/evolute-s4", params={"count": 1}).status_code == 422
+    wrong = client.get("/theorems/evolute-s4", params={"discretization": "d4b"})
+    assert wrong.status_code == 422 and "GET /smooth/tractrix" in wrong.text
