@@ -80,6 +80,10 @@ REMARK_13_UNIFORM = S(
         "u' = 1 and an error (i/j)/(6j²) that grows without bound in i for fixed j.",
     ),
 )
+PROOF_PARAMETERS = (
+    "The sums need g and g' at the parameters t_k = k/j, not at the values s_k = g(t_k) (E65); "
+    "the proof's 'w.l.o.g. i > 0' covers i < 0 through the sum convention of Lemma 10 (E64)."
+)
 LEMMA_10_PROOF = S(
     "lemma-10-proof",
     "Proof of Lemma 10, the Riemann sums",
@@ -87,6 +91,7 @@ LEMMA_10_PROOF = S(
     "(−artanh g(t), …) = ∫_0^t g'/(g² − 1): Σ_{k<i} g'(t_k)/(1 − g(t_k)²)(t_k − t_{k+1}) and "
     "Σ_{k<i} (s_k − s_{k+1})/(1 − s_k²), with t_k = k/j (printed with g and g' evaluated at "
     "s_k, E65). Measures `riemann-sum`, `difference-sum` (order 1). " + _REFINEMENT,
+    conditions=(PROOF_PARAMETERS,),
 )
 
 ERRATUM_REMARK_13 = (

@@ -274,6 +274,15 @@ _REFINEMENT = (
     "of d shrinks the error by at least 2^(−1/2) (local order >= 1/2). Observed orders in the "
     "note."
 )
+ORDER_21 = (
+    "(21) converges with order 1: (1 − d/h)^{(x+d)/(2d)} = e^{−x/(2h)}(1 − d/(2h) − xd/(4h²) "
+    "+ O(d²)); the first-order terms cancel between the two products of c(x), which converges "
+    "with order 2."
+)
+PROOF_SUBSTITUTION = (
+    "The substituted f(d), g(d) must carry the exponents (x + d)/(2d) resp. (x + d)/d (E80, "
+    "E81); then f(d), g(d) > 0 with positive limits e^{∓x/h}, as (22) requires."
+)
 THEOREM_14 = S(
     "theorem-14",
     "Theorem 14",
@@ -302,6 +311,7 @@ REARRANGEMENT_14 = S(
     "The rearranged c^y(x) = h(1 − d/h)^{(x+d)/(2d)}/(2(1 + d/h)^{(x−d)/(2d)}) + "
     "h(1 + d/h)^{(x+d)/(2d)}/(2(1 − d/h)^{(x−d)/(2d)}) equals the printed c^y(x). Residual: "
     "largest relative difference at the sample points of every level.",
+    conditions=(_VERTICAL,),
 )
 SUBSTITUTION_21 = S(
     "equation-21-substitution",
@@ -319,6 +329,7 @@ EQUATION_21 = S(
     "(1 − d/h)^{(x+d)/(2d)} → e^{−x/(2h)} as d → 0. Measure: its sup error on the compact set "
     "(`equation-21`; observed order 1, while the symmetric combination in c(x) converges with "
     "order 2). " + _REFINEMENT,
+    conditions=(ORDER_21,),
 )
 THEOREM_15 = S(
     "theorem-15",
@@ -353,6 +364,7 @@ PROOF_15_Y = S(
     "with f(d) = ((1 − d/h)/(1 + d/h))^{(x+d)/(2d)} and g(d) = 1/f(d) (printed without the "
     "exponent, E80); then f(d) → e^{−x/h}, g(d) → e^{x/h} by (21) and (22) applies. Residual: "
     "largest relative difference at the sample points of every level.",
+    conditions=(PROOF_SUBSTITUTION,),
 )
 PROOF_15_X = S(
     "theorem-15-proof-x",
@@ -361,6 +373,7 @@ PROOF_15_X = S(
     "g(d) = (1 + d/h)^{(x+d)/d} (printed without the exponent, E81); then f(d) → e^{−x/h}, "
     "g(d) → e^{x/h} and (22) gives c^x(x) → x − h tanh(x/h). Residual: largest absolute "
     "difference (both sides lie in [−1, 1]) at the sample points of every level.",
+    conditions=(PROOF_SUBSTITUTION,),
 )
 INEQUALITY_22 = S(
     "inequality-22",

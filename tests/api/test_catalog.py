@@ -135,6 +135,15 @@ def test_implicit_conditions_are_listed(client: TestClient) -> None:
     assert any("pointwise" in c for c in statements["inequality-22"]["conditions"])
     assert statements["theorem-15-proof-y"]["errata"] == ["E80"]
     assert statements["theorem-15-proof-x"]["errata"] == ["E81"]
+    assert any("0 < c < 1" in c for c in statements["d1"]["conditions"])
+    assert any("cusp stick" in c for c in statements["d4a-sticks"]["conditions"])
+    assert any("H = −A(f,n)/A(f)" in c for c in statements["equation-17"]["conditions"])
+    assert any("i >= 0" in c for c in statements["example-12"]["conditions"])
+    assert any("bounded g' does not" in c for c in statements["theorem-11"]["conditions"])
+    assert any("E45" in c for c in statements["equation-2"]["conditions"])
+    assert statements["theorem-2"]["errata"] == ["E45"]
+    # every statement says what the text leaves implicit about it
+    assert [s for s, entry in statements.items() if not entry["conditions"]] == []
 
 
 def test_convergence_statements_are_checked_on_their_study(client: TestClient) -> None:
