@@ -146,7 +146,7 @@ NO_TRACTRIX = (
 NO_TRACTRIX_GAUSS_IMAGE = (
     "not applicable: the paper pairs a Gauss image with a discrete tractrix only for (D4b) "
     "(Theorem 7, eq. (18)); for this tractrix it defines none, and the inscribed parallel "
-    "polygons are a one-parameter family none of which is singled out (docs/errata.md, E67)"
+    "polygons are a one-parameter family none of which is singled out (docs/errata.md, Section 5)"
 )
 
 

@@ -186,7 +186,7 @@ def test_d4a_has_a_tractrix_but_no_gauss_image_for_it(float64: Float64) -> None:
 def test_no_inscribed_gauss_image_gives_the_d4a_pseudosphere_constant_curvature(
     float64: Float64,
 ) -> None:
-    """E67: the one-parameter family of inscribed parallel polygons (start n_1 on the circle)
+    """Section 5 remark: the one-parameter family of inscribed parallel polygons (start n_1)
     contains none with constant K for Sauer's tractrix (after the cusp: i = 1 .. 12)."""
     from app.geometry import conditions, gauss_image
     from app.geometry.discretizations.curvature_checks import ring_curvatures

@@ -138,9 +138,12 @@ INFO = DiscretizationInfo(
 ERRATUM_EQUATION_2 = (
     "E45",
     "Section 4.1: '(2) is fulfilled by polygons constructed in (D2a) with the Christoffel "
-    "duality. This is the content of Theorems 1 and 2'",
+    "duality. This is the content of Theorems 1 and 2'; Figure 6: 'Theorem 2 states that this "
+    "type of discretization also fulfills a modified version of (D3)'; before the proof of "
+    "Theorem 2: 'we can show the analog of (D3)'",
     "(2) holds for the quad polygons (Theorem 1, at r = r*); the hexagonal polygons satisfy "
-    "the modified (7) with two constants c_1 ≠ c_2 (Theorem 2), not (2)",
+    "the modified (2), eq. (7), with two constants c_1 ≠ c_2 (Theorem 2), and neither (2) nor "
+    "(D3), not even with alternating constants",
 )
 ERRATUM_EVEN = (
     "E43",
