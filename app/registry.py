@@ -11,15 +11,17 @@ from collections.abc import Callable
 from dataclasses import dataclass, replace
 from functools import cached_property
 
-from app.geometry import convergence
+from app.geometry import catenoid_refinement, convergence, smooth_curves
 from app.geometry.checks import Statement
 from app.geometry.convergence import Study, StudyInfo
 from app.geometry.curve import Curve, DiscretizationInfo
 from app.geometry.discretizations import d1, d2a_hex, d2a_quad, d2b, d3, d4a, d4b
 from app.schemas.common import CurveQuery, strict_body
 from app.schemas.convergence import (
+    THEOREM_11_DESCRIPTION,
     THEOREM_14_DESCRIPTION,
     THEOREM_15_DESCRIPTION,
+    CatenoidStudyQuery,
     StudyQuery,
     TractrixStudyQuery,
 )
@@ -29,6 +31,7 @@ from app.schemas.d2b import D2B_DESCRIPTION, D2bQuery
 from app.schemas.d3 import D3_DESCRIPTION, D3Query
 from app.schemas.d4a import D4A_DESCRIPTION, D4aQuery
 from app.schemas.d4b import D4B_DESCRIPTION, D4bQuery
+from app.schemas.smooth import CATENARY_DESCRIPTION, TRACTRIX_DESCRIPTION, SmoothQuery
 
 
 @dataclass(frozen=True, eq=False)
@@ -74,7 +77,15 @@ class ConvergenceStudy:
     description: str
 
 
-_STUDIES = (
+_STUDIES = (  # in the paper's order
+    ConvergenceStudy(
+        catenoid_refinement.THEOREM_11_INFO,
+        CatenoidStudyQuery,
+        catenoid_refinement.theorem_11,
+        catenoid_refinement.mp_work,
+        catenoid_refinement.work,
+        THEOREM_11_DESCRIPTION,
+    ),
     ConvergenceStudy(
         convergence.THEOREM_14_INFO,
         TractrixStudyQuery,
@@ -96,26 +107,53 @@ _STUDIES = (
 STUDIES: dict[str, ConvergenceStudy] = {entry.info.id: entry for entry in _STUDIES}
 
 
+@dataclass(frozen=True, eq=False)
+class SmoothReference:
+    """One smooth reference curve of Section 2 as the API serves it (GET /smooth/{id})."""
+
+    info: smooth_curves.SmoothInfo
+    query: type[SmoothQuery]
+    compute: Callable[..., Curve]
+    description: str
+
+
+_SMOOTH = (
+    SmoothReference(
+        smooth_curves.CATENARY, SmoothQuery, smooth_curves.compute_catenary, CATENARY_DESCRIPTION
+    ),
+    SmoothReference(
+        smooth_curves.TRACTRIX, SmoothQuery, smooth_curves.compute_tractrix, TRACTRIX_DESCRIPTION
+    ),
+)
+
+SMOOTH: dict[str, SmoothReference] = {entry.info.id: entry for entry in _SMOOTH}
+
+
 @dataclass(frozen=True)
 class StatementEntry:
-    """A statement and the discretizations (curve responses) or studies that check it."""
+    """A statement and the discretizations (curve responses), studies or smooth references that
+    check it."""
 
     statement: Statement
     discretizations: tuple[str, ...]
     studies: tuple[str, ...] = ()
+    smooth: tuple[str, ...] = ()
 
 
 def _statements() -> dict[str, StatementEntry]:
     found: dict[str, StatementEntry] = {}
-    sources = [(e.info.id, e.info.statements, False) for e in _ENTRIES]
-    sources += [(s.info.id, s.info.statements, True) for s in _STUDIES]
-    for owner, statements, is_study in sources:
+    sources = [(e.info.id, e.info.statements, "discretizations") for e in _ENTRIES]
+    sources += [(s.info.id, s.info.statements, "studies") for s in _STUDIES]
+    sources += [(s.info.id, s.info.statements, "smooth") for s in _SMOOTH]
+    for owner, statements, kind in sources:
         for statement in statements:
             known = found.get(statement.id) or StatementEntry(statement, ())
-            if is_study:
+            if kind == "discretizations":
+                known = replace(known, discretizations=(*known.discretizations, owner))
+            elif kind == "studies":
                 known = replace(known, studies=(*known.studies, owner))
             else:
-                known = replace(known, discretizations=(*known.discretizations, owner))
+                known = replace(known, smooth=(*known.smooth, owner))
             found[statement.id] = known
     # a property named after a discretization (d1, d3, ...) is checked on it by default
     return {

@@ -94,3 +94,39 @@ def example_12_g(t: Array) -> Array:
 def remark_13_g(t: Array) -> Array:
     """g(t) = t/(1 + t) of Remark 13."""
     return t / (1 + t)
+
+
+def example_12_g_prime(t: Array) -> Array:
+    """g'(t) = 8t/(1 + 4t²)² of Example 12."""
+    q = 1 + 4 * t * t
+    return 8 * t / (q * q)
+
+
+def remark_13_g_prime(t: Array) -> Array:
+    """g'(t) = 1/(1 + t)² of Remark 13."""
+    return 1 / ((1 + t) * (1 + t))
+
+
+def _partial_sums(ar: Arithmetic, terms: Array) -> Array:
+    """0, t_0, t_0 + t_1, …: the sums Σ_{k=0}^{i−1} for i = 0 .. len(terms)."""
+    return np.concatenate([ar.zeros(1), np.cumsum(terms)])
+
+
+def riemann_sums(ar: Arithmetic, g: Array, g_prime: Array, t: Array) -> Array:
+    """Proof of Lemma 10: Σ_{k=0}^{i−1} g'(t_k)/(1 − g(t_k)²)(t_k − t_{k+1}), i = 0 .. N.
+
+    ``t`` are the parameters t_0 = 0, t_1, … (k/j), ``g``, ``g_prime`` g and g' there. The
+    printed sum evaluates g and g' at s_k = g(t_k) instead (E65): pass those values for it.
+    """
+    return _partial_sums(ar, g_prime[:-1] / (1 - g[:-1] * g[:-1]) * (t[:-1] - t[1:]))
+
+
+def difference_sums(ar: Arithmetic, s: Array, one_minus_s2: Array) -> Array:
+    """Proof of Lemma 10: Σ_{k=0}^{i−1} (s_k − s_{k+1})/(1 − s_k²), i = 0 .. N (g' by its
+    difference quotient)."""
+    return _partial_sums(ar, (s[:-1] - s[1:]) / one_minus_s2[:-1])
+
+
+def difference_sums_printed(ar: Arithmetic, g_of_s: Array) -> Array:
+    """The printed Σ_{k=0}^{i−1} (g(s_k) − g(s_{k+1}))/(1 − g(s_k)²) (g of the values s_k, E65)."""
+    return _partial_sums(ar, (g_of_s[:-1] - g_of_s[1:]) / (1 - g_of_s[:-1] * g_of_s[:-1]))

@@ -6,17 +6,18 @@ order is the slope of the least-squares line through (ln d_k, ln e_k); a limit c
 paper is checked by refinement (``converges``): every halving must shrink the error by at least
 ``CONVERGENCE_RATIO``.
 
-Studies (``STUDIES``):
+Studies (registered in ``app.registry``):
 - ``theorem-14``: the curve of Theorem 14 through the vertices of (14), and the constructed
   (D4b) centres p_i, against the catenary x ↦ (x, h cosh(x/h)); plus the limit (21).
 - ``theorem-15``: the curve of Theorem 15 through the vertices of (16), and the constructed
   (D4b) tractrix d_i, against the tractrix x ↦ (x − h tanh(x/h), h / cosh(x/h)); plus (22).
+- ``theorem-11`` (module ``catenoid_refinement``): the (D2b) meridians of Example 12 and Remark
+  13 against the catenary, built from the same pieces.
 
 The vertices come from the construction (``kinematic_tractrix``); the interpolating curves and
 limits are the theorems (``limit_curves``); distances to the smooth curves from
-``curve_distance``. A later study (e.g. Theorem 11 with the sequences of Example 12 and Remark
-13) is a ``StudyInfo`` and a ``run`` function built from the same pieces (``Level``,
-``observed_order``, ``converges``).
+``curve_distance``. A study is a ``StudyInfo`` and a ``run`` function built from ``Level``,
+``observed_order`` and ``converges``.
 
 Why the tractrix has two orders. Theorem 15's curve passes through d_i at x = (2i − 1)d, the
 x-coordinate of p_i; but the stick of d_i meets the x-axis at x_i = 2di, and the tractrix point
@@ -169,9 +170,13 @@ def observed_order(levels: list[Level], measure: str) -> OrderFit:
 
 
 def converges(
-    statement: Statement, levels: list[Level], measures: tuple[str, ...], fits: dict[str, OrderFit]
+    statement: Statement,
+    levels: list[Level],
+    measures: tuple[str, ...],
+    fits: dict[str, OrderFit],
+    step_name: str = "d",
 ) -> Check:
-    """A limit claim checked by refinement on the given measures.
+    """A limit claim checked by refinement on the given measures (``step_name``: for the note).
 
     Residual: the largest ratio e_{k+1}/e_k of consecutive resolved levels over the measures;
     holds when it is at most ``CONVERGENCE_RATIO``. The note gives each observed order.
@@ -190,7 +195,7 @@ def converges(
     errors = ", ".join(
         f"{m}: {finest.errors[m]:.3g}" for m in measures if finest.errors[m] is not None
     )
-    note = f"observed order {orders}; sup error at d = {finest.step:.6g}: {errors}"
+    note = f"observed order {orders}; sup error at {step_name} = {finest.step:.6g}: {errors}"
     if not ratios:
         return not_applicable(
             statement,
@@ -269,6 +274,15 @@ _REFINEMENT = (
     "of d shrinks the error by at least 2^(−1/2) (local order >= 1/2). Observed orders in the "
     "note."
 )
+ORDER_21 = (
+    "(21) converges with order 1: (1 − d/h)^{(x+d)/(2d)} = e^{−x/(2h)}(1 − d/(2h) − xd/(4h²) "
+    "+ O(d²)); the first-order terms cancel between the two products of c(x), which converges "
+    "with order 2."
+)
+PROOF_SUBSTITUTION = (
+    "The substituted f(d), g(d) must carry the exponents (x + d)/(2d) resp. (x + d)/d (E80, "
+    "E81); then f(d), g(d) > 0 with positive limits e^{∓x/h}, as (22) requires."
+)
 THEOREM_14 = S(
     "theorem-14",
     "Theorem 14",
@@ -297,6 +311,7 @@ REARRANGEMENT_14 = S(
     "The rearranged c^y(x) = h(1 − d/h)^{(x+d)/(2d)}/(2(1 + d/h)^{(x−d)/(2d)}) + "
     "h(1 + d/h)^{(x+d)/(2d)}/(2(1 − d/h)^{(x−d)/(2d)}) equals the printed c^y(x). Residual: "
     "largest relative difference at the sample points of every level.",
+    conditions=(_VERTICAL,),
 )
 SUBSTITUTION_21 = S(
     "equation-21-substitution",
@@ -314,6 +329,7 @@ EQUATION_21 = S(
     "(1 − d/h)^{(x+d)/(2d)} → e^{−x/(2h)} as d → 0. Measure: its sup error on the compact set "
     "(`equation-21`; observed order 1, while the symmetric combination in c(x) converges with "
     "order 2). " + _REFINEMENT,
+    conditions=(ORDER_21,),
 )
 THEOREM_15 = S(
     "theorem-15",
@@ -348,6 +364,7 @@ PROOF_15_Y = S(
     "with f(d) = ((1 − d/h)/(1 + d/h))^{(x+d)/(2d)} and g(d) = 1/f(d) (printed without the "
     "exponent, E80); then f(d) → e^{−x/h}, g(d) → e^{x/h} by (21) and (22) applies. Residual: "
     "largest relative difference at the sample points of every level.",
+    conditions=(PROOF_SUBSTITUTION,),
 )
 PROOF_15_X = S(
     "theorem-15-proof-x",
@@ -356,6 +373,7 @@ PROOF_15_X = S(
     "g(d) = (1 + d/h)^{(x+d)/d} (printed without the exponent, E81); then f(d) → e^{−x/h}, "
     "g(d) → e^{x/h} and (22) gives c^x(x) → x − h tanh(x/h). Residual: largest absolute "
     "difference (both sides lie in [−1, 1]) at the sample points of every level.",
+    conditions=(PROOF_SUBSTITUTION,),
 )
 INEQUALITY_22 = S(
     "inequality-22",
@@ -801,12 +819,3 @@ def theorem_15(
         ]
 
     return _finish(THEOREM_15_INFO, ar, parameters, result, checks)
-
-
-StudyRunner = Callable[..., Study]
-
-STUDIES: dict[str, tuple[StudyInfo, StudyRunner]] = {
-    THEOREM_14_INFO.id: (THEOREM_14_INFO, theorem_14),
-    THEOREM_15_INFO.id: (THEOREM_15_INFO, theorem_15),
-}
-"""Study id -> (catalog facts, run function with the study's parameters as keywords)."""

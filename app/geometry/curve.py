@@ -38,6 +38,11 @@ class Curve:
     """Tolerance of a condition on a few neighbouring vertices of this polygon, such as (D1) or
     eq. (2); ``None`` means ``arithmetic.tolerance(16)``. Discretizations whose vertices carry
     more rounding (D2a: conditioning 1/gap) set it; ``relations`` uses it."""
+    companion_tolerances: dict[str, float] = field(default_factory=dict)
+    """Gauss image companion name -> tolerance of a face-wise curvature statement (H = 0, K
+    constant) on the surface it pairs with, where that is larger than ``local_tolerance``: a
+    Gauss image built by a long recursion (D4b's inscribed n) or paired with a long
+    construction carries that rounding. ``relations`` uses it."""
 
 
 @dataclass(frozen=True)

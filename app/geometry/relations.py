@@ -6,9 +6,19 @@ curvature H and constant Gaussian curvature K of the surface of revolution. Each
 property's constant(s) on the curve's polygon (``conditions``), reports the residual and the
 verdict, with the curve's own local tolerance (``Curve.local_tolerance``).
 
-H and K need a Gauss image and the discrete curvatures (17) of Section 5; until a curvature
-module exists their cells are "not applicable" with a note. Adding them means writing one
-``Property`` whose ``evaluate`` reads the curve's Gauss image companion and computes (17).
+H = 0 and K constant are tested on surfaces of revolution (15) with the mixed-area curvatures
+of [3] (``curvature``, on one ring of three-dimensional faces, ``curvature_checks``), never with
+(17). Which surface and which Gauss image (``surface_pair``):
+
+- H = 0: the row's meridian p with its own ``gauss_image`` companion where it has one (D2a: φ,
+  the sphere its Christoffel dual is built on; D2b: the inscribed n of its definition; D4b: the
+  circumscribed m of Theorem 8), else with the circumscribed Gauss image built from p (edges
+  tangent to the unit circle, parallel to p's; as in Theorem 8 and ``GET /surfaces``), on the
+  interior vertices of p.
+- K constant: the row's tractrix with its ``tractrix_gauss_image`` (the discrete pseudosphere of
+  Theorem 7). A row without a tractrix generates a catenoid, whose Gaussian curvature is not
+  constant even in the smooth case, and a row whose tractrix has no Gauss image in the paper
+  (D4a) has no surface the claim is about: both are "not applicable" with the reason.
 """
 
 from __future__ import annotations
@@ -18,8 +28,16 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from app.geometry import conditions
+from app.geometry import conditions, gauss_image
+from app.geometry.curvature import FaceCurvatures
 from app.geometry.curve import Curve
+from app.geometry.discretizations.curvature_checks import (
+    constant_curvature_residuals,
+    minimal_residuals,
+    ring_curvatures,
+)
+from app.geometry.errors import DomainError
+from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array, Scalar
 
 #: Local conditions combine a handful of neighbouring values (as in the discretizations' checks).
@@ -106,17 +124,136 @@ def _equation_7(curve: Curve) -> Cell:
     return Cell("equation-7", residual, tolerance, residual <= tolerance, {"c1": c1, "c2": c2})
 
 
-CURVATURE_NOTE = (
-    "not evaluated yet: needs the discrete curvatures (17) of Section 5 and a Gauss image for "
-    "this discretization (curvature module not merged); the column is part of the matrix design"
+@dataclass(frozen=True)
+class SurfacePair:
+    """A meridian and the Gauss image meridian its surface of revolution is paired with."""
+
+    meridian: Array
+    gauss: Array
+    description: str
+    tolerance: float
+    resolution: Array | None = None
+    """Per face, for a Gauss image built here from the meridian's edge directions: the worst
+    resolution |e| / (|p_k| + |p_{k+1}|) of the edges it uses; residuals are multiplied by it
+    (docs/checks.md). ``None``: the Gauss image is the discretization's own."""
+
+
+NO_TRACTRIX = (
+    "not applicable: this discretization has no tractrix; its surface of revolution is a "
+    "catenoid, whose Gaussian curvature is not constant even in the smooth case (K constant is "
+    "Theorem 7's claim about the pseudosphere)"
+)
+NO_TRACTRIX_GAUSS_IMAGE = (
+    "not applicable: the paper pairs a Gauss image with a discrete tractrix only for (D4b) "
+    "(Theorem 7, eq. (18)); for this tractrix it defines none, and the inscribed parallel "
+    "polygons are a one-parameter family none of which is singled out (docs/errata.md, Section 5)"
 )
 
 
-def _not_yet(property_id: str) -> Callable[[Curve], Cell]:
-    def evaluate(curve: Curve) -> Cell:
-        return Cell(property_id, None, tolerance_of(curve), None, note=CURVATURE_NOTE)
+def surface_pair(curve: Curve, claim: str) -> SurfacePair | str:
+    """The surface a curvature column tests on this row, or the reason there is none.
 
-    return evaluate
+    ``claim`` is ``"minimal"`` (H = 0: p with its Gauss image) or ``"constant-curvature"`` (K
+    constant: the tractrix with its Gauss image).
+    """
+    ar = curve.arithmetic
+    local = tolerance_of(curve)
+    if claim == "constant-curvature":
+        if "tractrix" not in curve.companions:
+            return NO_TRACTRIX
+        if "tractrix_gauss_image" not in curve.companions:
+            return NO_TRACTRIX_GAUSS_IMAGE
+        return SurfacePair(
+            curve.companions["tractrix"].vertices,
+            curve.companions["tractrix_gauss_image"].vertices,
+            "the tractrix with its Gauss image tractrix_gauss_image (Theorem 7)",
+            max(local, curve.companion_tolerances.get("tractrix_gauss_image", local)),
+        )
+    p = curve.polygon.vertices
+    if "gauss_image" in curve.companions:
+        return SurfacePair(
+            p,
+            curve.companions["gauss_image"].vertices,
+            "p with its own Gauss image (companion gauss_image)",
+            max(local, curve.companion_tolerances.get("gauss_image", local)),
+        )
+    if len(p) < 4:
+        return "needs 4 vertices (the circumscribed Gauss image uses the interior vertices)"
+    edges = p[1:] - p[:-1]
+    resolution = ar.hypot(edges[:, 0], edges[:, 1]) / magnitude(p[:-1], p[1:])
+    # face k of the interior meridian p_{k+1} .. p_{k+2} uses the edges k, k + 1, k + 2 of p
+    worst = np.minimum(np.minimum(resolution[:-2], resolution[1:-1]), resolution[2:])
+    return SurfacePair(
+        p[1:-1],
+        gauss_image.circumscribed(ar, p),
+        "p (interior vertices) with the circumscribed Gauss image built from p",
+        local,
+        worst,
+    )
+
+
+def _curvatures(pair: SurfacePair, ar: Arithmetic) -> FaceCurvatures:
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        return ring_curvatures(ar, pair.meridian, pair.gauss)
+
+
+def _scaled(ar: Arithmetic, pair: SurfacePair, *residuals: Array) -> Array:
+    """The largest of the residuals per face, times the pair's resolution where it has one."""
+    worst = ar.to_floats(residuals[0])
+    for more in residuals[1:]:
+        worst = np.maximum(worst, ar.to_floats(more))
+    if pair.resolution is not None:
+        worst = worst * ar.to_floats(pair.resolution)
+    return worst
+
+
+def _mean_curvature_zero(curve: Curve) -> Cell:
+    """H = 0 on every face of the row's surface of revolution (mixed areas, [3])."""
+    key, ar = "mean-curvature-zero", curve.arithmetic
+    try:
+        pair = surface_pair(curve, "minimal")
+    except DomainError as error:
+        return Cell(key, None, tolerance_of(curve), None, note=f"not evaluable: {error}")
+    if isinstance(pair, str):
+        return Cell(key, None, tolerance_of(curve), None, note=pair)
+    if len(pair.meridian) < 2:
+        return Cell(key, None, pair.tolerance, None, note="needs a face (two vertices)")
+    try:
+        faces = _curvatures(pair, ar)
+    except DomainError as error:
+        return Cell(key, None, pair.tolerance, None, note=f"not evaluable: {error}")
+    residual = _residual(ar, _scaled(ar, pair, minimal_residuals(faces), faces.parallel))
+    product = pair.meridian[:, 1] * pair.gauss[:, 1]
+    constants = {}
+    if bool(np.all(product != 0)):  # a vertex on the axis would take all the weight
+        fit = conditions.fit(ar, product, 1 + 0 * product, abs(product), 0 * product)
+        if fit.constant is not None:
+            constants["a"] = fit.constant
+    holds = residual is not None and residual <= pair.tolerance
+    return Cell(key, residual, pair.tolerance, holds, constants, pair.description)
+
+
+def _gaussian_curvature_constant(curve: Curve) -> Cell:
+    """K = A(n)/A(f) the same on every face of the row's pseudosphere (mixed areas, [3])."""
+    key, ar = "gaussian-curvature-constant", curve.arithmetic
+    pair = surface_pair(curve, "constant-curvature")
+    if isinstance(pair, str):
+        return Cell(key, None, tolerance_of(curve), None, note=pair)
+    if len(pair.meridian) < 2:
+        return Cell(key, None, pair.tolerance, None, note="needs a face (two vertices)")
+    try:
+        faces = _curvatures(pair, ar)
+    except DomainError as error:
+        return Cell(key, None, pair.tolerance, None, note=f"not evaluable: {error}")
+    fit = conditions.fit(
+        ar, faces.gauss_area, faces.area, faces.gauss_area_magnitude, faces.area_magnitude
+    )
+    if fit.constant is None:
+        return Cell(key, None, pair.tolerance, False, note="every face has zero area")
+    misfit = constant_curvature_residuals(faces, fit.constant)
+    residual = _residual(ar, _scaled(ar, pair, misfit, faces.parallel))
+    holds = residual is not None and residual <= pair.tolerance
+    return Cell(key, residual, pair.tolerance, holds, {"K": fit.constant}, pair.description)
 
 
 PROPERTIES: tuple[Property, ...] = (
@@ -157,18 +294,32 @@ PROPERTIES: tuple[Property, ...] = (
     Property(
         "mean-curvature-zero",
         "H = 0",
-        "Section 5, eq. (17); (D2b)",
-        "The surface of revolution of p has vanishing discrete mean curvature H of (17) with "
-        "respect to a Gauss image of the discretization.",
-        _not_yet("mean-curvature-zero"),
+        "Section 5, Theorem 8; (D2b); Section 1 (Christoffel duals)",
+        "The surface of revolution (15) of p is a discrete minimal surface: H = −A(f,n)/A(f) = 0 "
+        "on every face (mixed areas of [3] on three-dimensional faces, not (17)) with respect to "
+        "the row's Gauss image: its own gauss_image companion where it has one (d2a: φ = Φ(f_i), "
+        "the sphere of its Christoffel dual; d2b: the inscribed n of its definition; d4b: the "
+        "circumscribed m of Theorem 8), else the circumscribed Gauss image built from p (edges "
+        "tangent to the unit circle and parallel to p's, m_i the pole of the chord of the "
+        "contact points; on the interior vertices). Residual: largest of |A(f, n)| and the "
+        "faces' parallelism defect, relative to the magnitudes (for the circumscribed image, "
+        "built from edge directions, times the edges' resolution; docs/checks.md). Constant a: "
+        "the least-squares value of p_i^y n_i^y, which (17) makes constant exactly when H = 0 "
+        "(h for d4b, 1 for d2b).",
+        _mean_curvature_zero,
     ),
     Property(
         "gaussian-curvature-constant",
         "K constant",
-        "Section 5, eq. (17), Theorem 7",
-        "The discrete Gaussian curvature K of (17) is the same for every face (for the "
-        "discretization's own pair of meridian and Gauss image).",
-        _not_yet("gaussian-curvature-constant"),
+        "Section 5, Theorem 7",
+        "The discrete pseudosphere has constant Gaussian curvature: the row's tractrix, rotated "
+        "about the x-axis, has the same K = A(n)/A(f) on every face (mixed areas of [3] on "
+        "three-dimensional faces) with respect to the Gauss image of Theorem 7 (the row's "
+        "tractrix_gauss_image: inscribed in the unit circle, edges parallel to the tractrix). "
+        "Constant K: the least-squares fit of A(n) = K A(f) (−1/h² for d4b). Residual: largest "
+        "of |A(n) − K A(f)| and the parallelism defect, relative to the magnitudes. Not "
+        "applicable to rows without a tractrix (catenoids) or without a Gauss image for it.",
+        _gaussian_curvature_constant,
     ),
 )
 

@@ -170,8 +170,9 @@ def relations_table(document: dict[str, Any]) -> Table:
         title="Section 4: which discrete hyperbolic cosine satisfies which property",
         subtitle=f"precision {precision['mode']} ({precision['digits']} digits); residuals are "
         "the largest relative misfit of the least-squares fit (docs/checks.md)",
-        footnote="GET /relations (JSON: format=json). H = 0 and K constant need the discrete "
-        "curvatures of Section 5: not evaluated yet.",
+        footnote="GET /relations (JSON: format=json). H = 0: the surface of revolution of p "
+        "with the row's Gauss image (own, else circumscribed); K constant: the pseudosphere of "
+        "the row's tractrix; mixed-area curvatures of [3]. Grey: not applicable (see the note).",
         columns=[(c["title"], f"{c['reference']}: {c['claim']}") for c in document["columns"]],
         corner="discretization",
     )
@@ -185,7 +186,7 @@ def relations_table(document: dict[str, Any]) -> Table:
                 lines.append(f"residual {cell['residual']:.2e}")
             lines.extend(f"{k} = {_short(v)}" for k, v in cell["constants"].items())
             if cell["holds"] is None and cell["residual"] is None:
-                lines.append("not evaluated yet")
+                lines.append("not applicable")
             cells.append(TableCell(state, tuple(lines), cell["note"] or ""))  # type: ignore[arg-type]
         table.rows.append((heading, cells))
     return table

@@ -6,10 +6,10 @@ from typing import Annotated, Any
 from fastapi import APIRouter, Depends, Query, Request, Response
 
 from app.errors import UnknownIdError
-from app.geometry import smooth_curves
 from app.geometry.curve import Curve
 from app.geometry.precision import Float64
 from app.limits import MP_OVERHEAD_DIGITS, LimitExceededError, enforce_digits, timed_arithmetic
+from app.registry import SMOOTH
 from app.responses import cached, canonical_key
 from app.routers.common import (
     CURVE_RESPONSES,
@@ -21,22 +21,13 @@ from app.routers.common import (
 )
 from app.schemas.common import NOT_FOUND_RESPONSE
 from app.schemas.curve import CurveResponse
-from app.schemas.smooth import CATENARY_DESCRIPTION, TRACTRIX_DESCRIPTION, SmoothQuery
+from app.schemas.smooth import SmoothQuery
 from app.settings import Settings
 
 router = APIRouter(prefix="/smooth", tags=["smooth"])
 
 CURVES: dict[str, tuple[Callable[..., Curve], str, str]] = {
-    "catenary": (
-        smooth_curves.compute_catenary,
-        smooth_curves.CATENARY.title,
-        CATENARY_DESCRIPTION,
-    ),
-    "tractrix": (
-        smooth_curves.compute_tractrix,
-        smooth_curves.TRACTRIX.title,
-        TRACTRIX_DESCRIPTION,
-    ),
+    key: (entry.compute, entry.info.title, entry.description) for key, entry in SMOOTH.items()
 }
 
 

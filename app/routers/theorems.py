@@ -8,8 +8,9 @@ from fastapi import APIRouter, Depends, Path, Query, Request, Response
 
 from app.errors import UnknownIdError
 from app.geometry.checks import Check
-from app.geometry.precision import Float64
-from app.registry import DISCRETIZATIONS, STATEMENTS, STUDIES, StatementEntry
+from app.geometry.errors import DomainError
+from app.geometry.precision import Float64, arithmetic
+from app.registry import DISCRETIZATIONS, SMOOTH, STATEMENTS, STUDIES, StatementEntry
 from app.responses import JSONBytesResponse, cached, canonical_key, check_document, encode_json
 from app.routers.common import (
     compute,
@@ -21,19 +22,89 @@ from app.routers.common import (
     study,
 )
 from app.routers.discretizations import parameter_infos
+from app.routers.smooth import enforce_samples
 from app.schemas.catalog import ParameterInfo, StatementInfo, TheoremResponse
 from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES, StrictModel
 
 router = APIRouter(prefix="/theorems", tags=["theorems"])
 
 
-def _source_model(entry: StatementEntry) -> tuple[dict[str, str], type[StrictModel]]:
-    """The fixed query (``discretization=...``) and request model of a statement's default
-    source: its first discretization, else its first study."""
+def default_source(identifier: str, entry: StatementEntry) -> tuple[str, str]:
+    """(kind, id) of the source a statement is checked on by default; kind is
+    ``discretization``, ``study`` or ``smooth``.
+
+    A statement named like a study (theorem-11, theorem-14, theorem-15) is a limit claim: its
+    study checks it. Otherwise its first discretization, else its first study, else its smooth
+    reference.
+    """
+    if identifier in entry.studies:
+        return "study", identifier
     if entry.discretizations:
-        owner = entry.discretizations[0]
-        return {"discretization": owner}, DISCRETIZATIONS[owner].query
-    return {}, STUDIES[entry.studies[0]].query
+        return "discretization", entry.discretizations[0]
+    if entry.studies:
+        return "study", entry.studies[0]
+    return "smooth", entry.smooth[0]
+
+
+def _source_model(
+    identifier: str, entry: StatementEntry
+) -> tuple[dict[str, str], type[StrictModel], tuple[tuple[str, str], ...]]:
+    """The fixed query, request model and statement defaults of a statement's default source.
+
+    The fixed query names the source (``discretization=...`` or, for a statement that curves
+    check too, ``study=...``); the statement's defaults apply to curves only.
+    """
+    kind, owner = default_source(identifier, entry)
+    if kind == "discretization":
+        return {"discretization": owner}, DISCRETIZATIONS[owner].query, entry.statement.defaults
+    if kind == "smooth":
+        return {}, SMOOTH[owner].query, ()
+    fixed = {"study": owner} if entry.discretizations else {}
+    return fixed, STUDIES[owner].query, ()
+
+
+def _resolve_source(
+    identifier: str, entry: StatementEntry, discretization_id: str | None, study_id: str | None
+) -> tuple[str, str]:
+    """(kind, id) of the source asked for (or the default), validated against the statement."""
+    if discretization_id is not None and study_id is not None:
+        raise DomainError(
+            "study",
+            "at most one of discretization and study",
+            study_id,
+            f"discretization = {discretization_id}",
+        )
+    kind, owner = default_source(identifier, entry)
+    elsewhere = (
+        f"discretization={entry.discretizations[0]}"
+        if entry.discretizations
+        else f"GET /convergence/{entry.studies[0]}"
+        if entry.studies
+        else f"GET /smooth/{entry.smooth[0]}"
+    )
+    if study_id is not None:
+        if not entry.studies:
+            raise DomainError(
+                "study", f"a study that checks this statement: none ({elsewhere})", study_id
+            )
+        if study_id not in entry.studies:
+            raise UnknownIdError("study for this statement", study_id, list(entry.studies))
+        return "study", study_id
+    if discretization_id is not None:
+        if not entry.discretizations:
+            raise DomainError(
+                "discretization",
+                f"a discretization that checks this statement: none ({elsewhere})",
+                discretization_id,
+            )
+        if discretization_id not in entry.discretizations:
+            raise UnknownIdError(
+                "discretization for this statement",
+                discretization_id,
+                list(entry.discretizations),
+            )
+        return "discretization", discretization_id
+    return kind, owner
 
 
 def example_url(
@@ -85,7 +156,7 @@ def list_statements() -> list[StatementInfo]:
     errata = default_errata()
     out = []
     for identifier, entry in STATEMENTS.items():
-        fixed, model = _source_model(entry)
+        fixed, model, defaults = _source_model(identifier, entry)
         parameters = parameter_infos(model)
         out.append(
             StatementInfo(
@@ -94,8 +165,9 @@ def list_statements() -> list[StatementInfo]:
                 claim=entry.statement.claim,
                 discretizations=list(entry.discretizations),
                 studies=list(entry.studies),
+                smooth=list(entry.smooth),
                 url=f"/theorems/{identifier}",
-                example_url=example_url(identifier, fixed, parameters, entry.statement.defaults),
+                example_url=example_url(identifier, fixed, parameters, defaults),
                 parameters=parameters,
                 conditions=list(entry.statement.conditions),
                 errata=list(errata.get(identifier, ())),
@@ -111,10 +183,14 @@ def list_statements() -> list[StatementInfo]:
     "tolerance, verdict and, where the printed formula is wrong, the erratum. A statement about "
     "a discretization is checked on the polygon of `discretization` (default: the first that "
     "checks it), and every parameter of that discretization is accepted (GET "
-    "/discretizations). A statement of Section 6 (limits, the proofs of Theorems 14 and 15) is "
-    "checked on its refinement study, and accepts the study's parameters (GET /convergence; "
-    "`detail` does not apply there). Unknown parameters are rejected; GET /theorems lists each "
-    "statement's parameters and an example.",
+    "/discretizations). A statement of Section 6 (limits, the proofs of Theorems 11, 14 and "
+    "15) is checked on its refinement study, and accepts the study's parameters (GET "
+    "/convergence; `detail` does not apply there). Statements that both check (theorem-11, "
+    "lemma-10, example-12, remark-13) take `study=theorem-11` or `discretization=d2b`; "
+    "theorem-11 defaults to its study, the others to the curve. Unknown parameters are "
+    "rejected; GET /theorems lists each statement's parameters and an example. The (S4) "
+    "statements of Section 2 are checked on the smooth tractrix (GET /smooth/tractrix) and "
+    "accept its parameters.",
     response_model=TheoremResponse,
     responses={**PROBLEM_RESPONSES, **NOT_FOUND_RESPONSE, 304: {"description": "Not modified."}},
     dependencies=[Depends(reject_repeated_parameters)],
@@ -126,6 +202,10 @@ def check_statement(
         str | None,
         Query(alias="discretization", description="Discretization to check it on."),
     ] = None,
+    study_id: Annotated[
+        str | None,
+        Query(alias="study", description="Refinement study to check it on (GET /convergence)."),
+    ] = None,
     precision: Annotated[Literal["float64", "mp"], Query(description="Arithmetic.")] = "float64",
     digits: Annotated[int, Query(ge=1, le=100_000, description="Digits for mp.")] = 30,
     detail: Annotated[bool, Query(description="Residual per index (curves only).")] = False,
@@ -133,58 +213,60 @@ def check_statement(
     entry = STATEMENTS.get(statement_id)
     if entry is None:
         raise UnknownIdError("statement", statement_id, sorted(STATEMENTS))
-    values: dict[str, Any] = {**dict(entry.statement.defaults), **request.query_params}
+    kind, owner = _resolve_source(statement_id, entry, discretization_id, study_id)
+    values: dict[str, Any] = dict(request.query_params)
+    values.pop("discretization", None)
+    values.pop("study", None)
     settings = settings_of(request)
-    conditions = list(entry.statement.conditions)
-    if not entry.discretizations:
-        source = study(entry.studies[0])
+
+    def respond(checks: list[Check], parameters: dict[str, Any], ar: Any) -> Response:
+        check = next(c for c in checks if c.id == statement_id)
+        document = {
+            "id": statement_id,
+            "reference": check.reference,
+            "claim": check.claim,
+            "discretization": owner if kind == "discretization" else None,
+            "study": owner if kind == "study" else None,
+            "smooth": owner if kind == "smooth" else None,
+            "parameters": parameters,
+            "precision": ar.describe(),
+            "conditions": list(entry.statement.conditions),
+            "check": check_document(check),
+        }
+        return JSONBytesResponse(encode_json(document))
+
+    if kind == "study":
+        source = study(owner)
         values.pop("detail", None)
         study_query = parse_query(source.query, values)
         run = prepare_study(source, study_query, settings)
 
         def build_study() -> Response:
             result = run()
-            check = next(c for c in result.checks if c.id == statement_id)
-            document = {
-                "id": statement_id,
-                "reference": check.reference,
-                "claim": check.claim,
-                "discretization": None,
-                "study": source.info.id,
-                "parameters": result.parameters,
-                "precision": result.arithmetic.describe(),
-                "conditions": conditions,
-                "check": check_document(check),
-            }
-            return JSONBytesResponse(encode_json(document))
+            return respond(result.checks, result.parameters, result.arithmetic)
 
-        key = canonical_key(request.url.path, {"study": source.info.id, **study_query.model_dump()})
+        key = canonical_key(request.url.path, {"study": owner, **study_query.model_dump()})
         return cached(request, key, settings, build_study)
 
-    owner = discretization_id or entry.discretizations[0]
-    if owner not in entry.discretizations:
-        raise UnknownIdError(
-            "discretization for this statement", owner, list(entry.discretizations)
-        )
+    if kind == "smooth":
+        reference = SMOOTH[owner]
+        smooth_query = parse_query(reference.query, values)
+
+        def build_smooth() -> Response:
+            enforce_samples(settings, smooth_query)
+            ar = arithmetic(smooth_query.precision, smooth_query.digits)
+            curve = reference.compute(ar, **smooth_query.core_arguments())
+            return respond(curve.checks, curve.parameters, curve.arithmetic)
+
+        key = canonical_key(request.url.path, {"smooth": owner, **smooth_query.model_dump()})
+        return cached(request, key, settings, build_smooth)
+
     target = discretization(owner)
-    values.pop("discretization", None)
-    query = parse_query(target.query, values)
+    query = parse_query(target.query, {**dict(entry.statement.defaults), **values})
 
     def build() -> Response:
         curve = compute(target, query, settings)
-        check = next(c for c in curve.checks if c.id == statement_id)
-        document = {
-            "id": statement_id,
-            "reference": check.reference,
-            "claim": check.claim,
-            "discretization": owner,
-            "study": None,
-            "parameters": curve.parameters,
-            "precision": curve.arithmetic.describe(),
-            "conditions": conditions,
-            "check": check_document(check),
-        }
-        return JSONBytesResponse(encode_json(document))
+        return respond(curve.checks, curve.parameters, curve.arithmetic)
 
     key = canonical_key(request.url.path, {"discretization": owner, **query.model_dump()})
     return cached(request, key, settings, build)

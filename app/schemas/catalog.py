@@ -50,6 +50,10 @@ class StatementInfo(BaseModel):
         default_factory=list,
         description="Refinement studies whose responses check it (GET /convergence/{id}).",
     )
+    smooth: list[str] = Field(
+        default_factory=list,
+        description="Smooth references of Section 2 whose responses check it (GET /smooth/{id}).",
+    )
     url: str = Field(description="Path that checks it with default parameters.")
     example_url: str = Field(
         description="A ready-to-use request with every parameter of the paper at its default "
@@ -82,6 +86,9 @@ class TheoremResponse(BaseModel):
     )
     study: str | None = Field(
         None, description="The refinement study it was checked on (GET /convergence/{id})."
+    )
+    smooth: str | None = Field(
+        None, description="The smooth reference it was checked on (GET /smooth/{id})."
     )
     parameters: dict[str, Any] = Field(description="Effective parameters of that computation.")
     precision: PrecisionInfo

@@ -79,6 +79,40 @@ class TractrixStudyQuery(StudyQuery):
     )
 
 
+class CatenoidStudyQuery(StudyQuery):
+    """Theorem 11: refinement of (D2b) for the sequences of Example 12 and Remark 13."""
+
+    j0: int = Field(
+        4,
+        ge=1,
+        le=1_000_000,
+        description="Coarsest j: level k uses j = j0·2^k (s_i^j of Example 12 and Remark 13).",
+        json_schema_extra={"domain": "j0 >= 1"},
+    )
+    levels: int = Field(
+        7,
+        ge=2,
+        le=64,
+        description="Number of refinement levels (at most DCOSH_MAX_CONVERGENCE_LEVELS).",
+        json_schema_extra={"domain": "2 <= levels"},
+    )
+    i_min: int = Field(
+        -1,
+        ge=-1_000_000,
+        le=1_000_000,
+        description="Start of the compact set in indices of level 0: t = i/j from i_min/j0 "
+        "(level k uses 2^k i_min). Example 12 uses its part i >= 0.",
+        json_schema_extra={"domain": "−j0/2 < i_min < i_max (Remark 13: i > −j/2)"},
+    )
+    i_max: int = Field(
+        8,
+        ge=-1_000_000,
+        le=1_000_000,
+        description="End of the compact set in indices of level 0: t = i/j up to i_max/j0.",
+        json_schema_extra={"domain": "i_max >= 1"},
+    )
+
+
 class MeasureModel(BaseModel):
     id: str = Field(description="Measure id, a key of each level's `errors`.")
     description: str = Field(description="What is compared with what, on which points.")
@@ -178,3 +212,27 @@ foot (2di, 0) of stick i: c(x) ≈ T(x + d) lies O(d²) from the curve but d·|t
 """
     + _STUDY_CONVENTIONS
 )
+
+THEOREM_11_DESCRIPTION = """\
+Theorem 11 with the sequences of Example 12 (s_i = 4i²/(j² + 4i²), i >= 0) and Remark 13
+(s_i = i/(i + j), i > −j/2): the meridians p^j of discrete catenoids with vanishing mean curvature
+and inscribed Gauss images n_i = (s_i, √(1 − s_i²)), built from the definition of (D2b) (GET
+/discretizations/d2b), converge to the catenary C = {(x, cosh x)}. Level k uses j = j0·2^k and the
+indices 2^k i_min .. 2^k i_max: the same parameter interval t = i/j ∈ [i_min/j0, i_max/j0] at every
+level (Example 12: its part t >= 0). The step of the fit is 1/j.
+
+Measures (absolute sup errors over the vertices): `example-12`, `remark-13`: |p_i^j − c(i/j)| with
+c(t) = (−artanh g(t), cosh artanh g(t)), the point of C that Lemma 10 pairs with p_i (the error is
+horizontal: p_i^y = c^y(i/j) exactly); `example-12-distance`, `remark-13-distance`: the distance of
+p_i^j to C. All four have order 2: with u = artanh s, p_i^x = −Σ sinh Δu_k while c^x = −Σ Δu_k,
+so the error is about (1/(6j²))∫ u'³. `remark-13-domain`: Remark 13 on its whole domain (every
+vertex −j/2 < i); it tends to about 0.0095, not 0: the convergence is not uniform there (E66).
+`riemann-sum`, `difference-sum`: the two sums of the proof of Lemma 10 for Example 12, with g at the
+parameters t_k = k/j (E65), against c^x (order 1).
+
+Checks: `theorem-11` (the four compact-set measures), `lemma-10` (the closed form at every vertex
+of every level), `example-12` and `remark-13` (the sequences' hypotheses at every level),
+`remark-13-uniform` (E66) and `lemma-10-proof` (E65). Limit claims hold when every doubling of j
+shrinks the sup error by at least 2^(−1/2). In precision=mp the study costs about
+(digits + 200) × (constructed vertices + 30 × measured vertices): use levels <= 3 there.
+"""

@@ -76,22 +76,33 @@ def test_catalog_lists_the_stick_and_chain_family_with_domains(client: TestClien
 
 
 def test_every_statement_lists_parameters_an_example_and_its_source(client: TestClient) -> None:
-    from app.registry import STATEMENTS, STUDIES
+    from app.registry import SMOOTH, STATEMENTS, STUDIES
 
     statements = client.get("/theorems").json()
     assert [s["id"] for s in statements] == list(STATEMENTS)
     for entry in statements:
         StatementInfo.model_validate(entry)
-        assert bool(entry["discretizations"]) or bool(entry["studies"]), entry["id"]
+        sources = entry["discretizations"] + entry["studies"] + entry["smooth"]
+        assert sources, entry["id"]
         names = {p["name"]: p for p in entry["parameters"]}
-        if entry["discretizations"]:
+        if not entry["discretizations"] and not entry["studies"]:
+            assert set(names) == set(SMOOTH[entry["smooth"][0]].query.model_fields)
+            assert entry["example_url"].startswith(f"/theorems/{entry['id']}?h=1.0&")
+            continue
+        on_study = entry["id"] in entry["studies"] or not entry["discretizations"]
+        if not on_study:
             assert entry["example_url"].startswith(
                 f"/theorems/{entry['id']}?discretization={entry['discretizations'][0]}&"
             )
         else:
-            study = STUDIES[entry["studies"][0]]
+            study = STUDIES[entry["id"] if entry["id"] in STUDIES else entry["studies"][0]]
             assert set(names) == set(study.query.model_fields)
-            assert names["d0"]["default"] == 0.2
+            default = names["j0"]["default"] if "j0" in names else names["d0"]["default"]
+            assert default == (4 if "j0" in names else 0.2)
+            if entry["discretizations"]:  # both check it: the example names the study
+                assert entry["example_url"].startswith(
+                    f"/theorems/{entry['id']}?study={study.info.id}&"
+                )
         assert "precision" in names and names["precision"]["kind"] == "common"
 
 
@@ -124,6 +135,15 @@ def test_implicit_conditions_are_listed(client: TestClient) -> None:
     assert any("pointwise" in c for c in statements["inequality-22"]["conditions"])
     assert statements["theorem-15-proof-y"]["errata"] == ["E80"]
     assert statements["theorem-15-proof-x"]["errata"] == ["E81"]
+    assert any("0 < c < 1" in c for c in statements["d1"]["conditions"])
+    assert any("cusp stick" in c for c in statements["d4a-sticks"]["conditions"])
+    assert any("H = −A(f,n)/A(f)" in c for c in statements["equation-17"]["conditions"])
+    assert any("i >= 0" in c for c in statements["example-12"]["conditions"])
+    assert any("bounded g' does not" in c for c in statements["theorem-11"]["conditions"])
+    assert any("E45" in c for c in statements["equation-2"]["conditions"])
+    assert statements["theorem-2"]["errata"] == ["E45"]
+    # every statement says what the text leaves implicit about it
+    assert [s for s, entry in statements.items() if not entry["conditions"]] == []
 
 
 def test_convergence_statements_are_checked_on_their_study(client: TestClient) -> None:
@@ -155,3 +175,53 @@ def test_convergence_statements_reject_foreign_or_invalid_parameters(
     response = client.get("/theorems/theorem-14", params=params)
     assert response.status_code == 422
     assert response.json()["errors"][0]["parameter"] == parameter
+
+
+def test_statements_of_theorem_11_are_checked_on_the_study_or_the_curve(
+    client: TestClient,
+) -> None:
+    small = {"levels": 3}
+    body = client.get("/theorems/theorem-11", params=small).json()
+    assert body["study"] == "theorem-11" and body["discretization"] is None
+    assert body["check"]["holds"] is True and body["check"]["tolerance"] == pytest.approx(2**-0.5)
+    curve = client.get("/theorems/theorem-11", params={"discretization": "d2b", "j": 4}).json()
+    assert curve["discretization"] == "d2b" and curve["check"]["tolerance"] == 1.0
+    lemma = client.get("/theorems/lemma-10", params={"study": "theorem-11", **small}).json()
+    assert lemma["study"] == "theorem-11" and lemma["check"]["erratum"]["id"] == "E64"
+    remark = client.get("/theorems/remark-13", params={"study": "theorem-11", **small}).json()
+    assert remark["check"]["holds"] is True and "every vertex" in remark["check"]["note"]
+    on_curve = client.get("/theorems/remark-13").json()  # the statement's default sequence
+    assert on_curve["parameters"]["sequence"] == "remark-13"
+    uniform = client.get("/theorems/remark-13-uniform", params=small).json()
+    assert uniform["check"]["erratum"]["id"] == "E66"
+    assert uniform["check"]["erratum"]["printed_residual"] > uniform["check"]["tolerance"]
+
+
+@pytest.mark.parametrize(
+    ("statement", "params", "status", "parameter"),
+    [
+        ("theorem-11", {"study": "theorem-11", "discretization": "d2b"}, 422, "study"),
+        ("theorem-5", {"study": "theorem-11"}, 422, "study"),
+        ("lemma-10", {"study": "theorem-14"}, 404, "id"),
+        ("lemma-10", {"study": "theorem-11", "j": 5}, 422, "j"),
+    ],
+)
+def test_the_source_of_a_statement_is_validated(
+    client: TestClient, statement: str, params: dict, status: int, parameter: str
+) -> None:
+    response = client.get(f"/theorems/{statement}", params=params)
+    assert response.status_code == status
+    assert response.json()["errors"][0]["parameter"] == parameter
+
+
+def test_statements_of_section_2_are_checked_on_the_smooth_tractrix(client: TestClient) -> None:
+    statements = {s["id"]: s for s in client.get("/theorems").json()}
+    for key in ("tractrix-s4", "evolute-s4", "nikolaides-s4"):
+        assert statements[key]["smooth"] == ["tractrix"], key
+    body = client.get("/theorems/nikolaides-s4", params={"h": 2.0, "count": 11}).json()
+    TheoremResponse.model_validate(body)
+    assert body["smooth"] == "tractrix" and body["discretization"] is None
+    assert body["parameters"]["h"] == 2.0 and body["check"]["holds"] is True
+    assert client.get("/theorems/evolute-s4", params={"count": 1}).status_code == 422
+    wrong = client.get("/theorems/evolute-s4", params={"discretization": "d4b"})
+    assert wrong.status_code == 422 and "GET /smooth/tractrix" in wrong.text

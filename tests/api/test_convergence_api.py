@@ -19,14 +19,65 @@ SMALL = {"levels": 4, "samples": 21, "x_max": 1.0}
 
 def test_catalog_lists_every_study_with_parameters_and_measures(client: TestClient) -> None:
     body = client.get("/convergence").json()
-    assert [s["id"] for s in body] == list(STUDIES) == ["theorem-14", "theorem-15"]
+    assert [s["id"] for s in body] == list(STUDIES) == ["theorem-11", "theorem-14", "theorem-15"]
     for entry in body:
         StudyEntry.model_validate(entry)
         parameters = {p["name"]: p for p in entry["parameters"]}
+        assert entry["statements"][0] == entry["id"]
+        if entry["id"] == "theorem-11":
+            assert parameters["j0"]["domain"] == "j0 >= 1" and parameters["j0"]["default"] == 4
+            assert parameters["levels"]["default"] == 7
+            assert {m["id"] for m in entry["measures"]} >= {"example-12", "remark-13"}
+            continue
         assert parameters["d0"]["domain"] == "0 < d0 < h" and parameters["d0"]["default"] == 0.2
         assert parameters["levels"]["default"] == 8
         assert {m["id"] for m in entry["measures"]} >= {"parametric", "distance", "vertices"}
-        assert entry["statements"][0] == entry["id"]
+
+
+def test_theorem_11_study_response(client: TestClient) -> None:
+    params = {"j0": 4, "levels": 4, "i_min": -1, "i_max": 8}
+    response = client.get("/convergence/theorem-11", params=params)
+    assert response.status_code == 200
+    body = ConvergenceResponse.model_validate(response.json())
+    assert body.parameters == params
+    assert body.step_name == "1/j"
+    assert [level.step for level in body.levels] == [1 / 4, 1 / 8, 1 / 16, 1 / 32]
+    assert all(check.holds is True for check in body.checks)
+    orders = {m.id: m for m in body.measures}
+    for key in ("example-12", "example-12-distance", "remark-13", "remark-13-distance"):
+        assert orders[key].observed_order == pytest.approx(2, abs=0.15), key
+    assert orders["remark-13-domain"].observed_order == pytest.approx(0, abs=0.15)
+    checks = {c.id: c for c in body.checks}
+    assert checks["remark-13-uniform"].erratum is not None
+    assert checks["remark-13-uniform"].erratum.link == "docs/errata.md#e66"
+    svg = client.get("/convergence/theorem-11", params={**params, "format": "svg"})
+    assert svg.status_code == 200 and "log10 1/j" in svg.text
+    csv = client.get("/convergence/theorem-11", params={**params, "format": "csv"})
+    assert csv.text.startswith("level,1/j,measure,error,resolved\n")
+    mp = client.get("/convergence/theorem-11", params={"levels": 2, "precision": "mp"})
+    assert mp.status_code == 200 and all(c["holds"] for c in mp.json()["checks"])
+
+
+@pytest.mark.parametrize(
+    ("params", "parameter", "constraint"),
+    [
+        ({"j0": 0}, "j0", "j0 >= 1"),
+        ({"i_min": -2}, "i_min", "i_min > −j0/2"),
+        ({"i_max": 0}, "i_max", "i_max >= 1"),
+        ({"levels": 17}, "levels", "levels <= 16"),
+        ({"levels": 16}, "levels", "construction steps over all levels <= 500000"),
+        ({"precision": "mp"}, "digits", "(digits + 200) × work <= 1000000"),
+        ({"d0": 0.1}, "d0", "not a parameter of this endpoint"),
+    ],
+)
+def test_theorem_11_study_refuses_bad_parameters(
+    client: TestClient, params: dict, parameter: str, constraint: str
+) -> None:
+    response = client.get("/convergence/theorem-11", params=params)
+    assert response.status_code == 422
+    (error,) = response.json()["errors"]
+    assert error["parameter"] == parameter
+    assert constraint in error["constraint"]
 
 
 @pytest.mark.parametrize("identifier", ["theorem-14", "theorem-15"])
@@ -137,7 +188,7 @@ def test_limits_come_from_the_settings() -> None:
 def test_unknown_study_is_404_with_the_valid_ids(client: TestClient) -> None:
     response = client.get("/convergence/theorem-99")
     assert response.status_code == 404
-    assert response.json()["valid"] == ["theorem-14", "theorem-15"]
+    assert response.json()["valid"] == ["theorem-11", "theorem-14", "theorem-15"]
 
 
 def test_studies_are_cached_with_an_etag(client: TestClient) -> None:

@@ -90,7 +90,7 @@ def test_too_long_custom_sequence_is_refused(client: TestClient) -> None:
 
 
 def test_theorem_endpoint_checks_d2b_statements(client: TestClient) -> None:
-    body = client.get("/theorems/theorem-11?sequence=remark-13&j=12").json()
+    body = client.get("/theorems/theorem-11?discretization=d2b&sequence=remark-13&j=12").json()
     assert body["discretization"] == "d2b" and body["check"]["holds"] is True
     body = client.get("/theorems/equation-17?discretization=d2b").json()
     assert body["check"]["holds"] is True

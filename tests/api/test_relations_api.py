@@ -59,10 +59,86 @@ def reference_polygon(row: dict[str, Any], given: dict[str, Any]) -> dict:
     raise AssertionError(f"no reference for {row['id']}: add one in tests/reference")
 
 
+def reference_surfaces(row: dict[str, Any], given: dict[str, Any]) -> dict[str, Any]:
+    """The reference's expected curvature cells of a row: {"H": (a, residual), "K": ...}.
+
+    The Gauss images come from tests/reference as well: d2a's φ, d2b's n, d4b's circumscribed m
+    (tangents at the contact points, ``lu_solve``) and inscribed n (second intersections with
+    the circle); rows without a Gauss image get the circumscribed one built from p.
+    """
+    q = row["parameters"]
+    ctx = reference_curvature.context()
+    if row["id"] == "d4b":
+        beta0 = None if q["beta0"] == 1.5707963267948966 else repr(q["beta0"])
+        i_min, i_max = q["i_min"], q["i_max"]
+        lo, hi = min(0, i_min - 1), max(0, i_max + 1)
+        p, tractrix, axis = reference_d4b.construct(repr(q["h"]), repr(q["d"]), beta0, lo, hi)
+        stick = (tractrix[0][0] - axis[0][0], tractrix[0][1] - axis[0][1])
+        length = ctx.sqrt(stick[0] ** 2 + stick[1] ** 2)
+        n = reference_curvature.inscribed(ctx, tractrix, 0, (stick[1] / length, -stick[0] / length))
+        m = reference_curvature.circumscribed(ctx, reference_curvature.contact_points(ctx, p))
+        keep = range(i_min, i_max + 1)
+        return {
+            "H": reference.mean_curvature_cell({i: p[i] for i in keep}, {i: m[i] for i in keep}),
+            "K": reference.gaussian_curvature_cell(
+                {i: tractrix[i] for i in keep}, {i: n[i] for i in keep}
+            ),
+        }
+    polygon = reference_polygon(row, given)
+    gauss = None
+    if row["id"] in ("d2a-quad", "d2a-hex"):
+        r = repr(float(given[f"{row['id']}.r"])) if f"{row['id']}.r" in given else None
+        if row["id"] == "d2a-quad":
+            _, gauss, _ = reference_d2a.quad(
+                repr(q["f0"]), repr(q["f1"]), r, q["i_min"], q["i_max"]
+            )
+        else:
+            _, gauss, _ = reference_d2a.hexagonal(
+                repr(q["a"]), repr(q["b"]), repr(q["lambda"]), r, q["i_min"], q["i_max"]
+            )
+    elif row["id"] == "d2b":
+        j = ctx.mpf(q["j"])
+        s = {i: 4 * ctx.mpf(i) ** 2 / (j * j + 4 * ctx.mpf(i) ** 2) for i in range(q["i_max"] + 1)}
+        gauss = reference_curvature.d2b(ctx, s)[1]
+    return {"H": reference.mean_curvature_cell(polygon, gauss), "K": None}
+
+
+def assert_curvature_cells_agree(
+    row: dict[str, Any], expected: dict[str, Any], constant_tol: float, residual_tol: float
+) -> None:
+    cells = {c["property"]: c for c in row["cells"]}
+    for key, name, column in (
+        ("H", "a", "mean-curvature-zero"),
+        ("K", "K", "gaussian-curvature-constant"),
+    ):
+        cell = cells[column]
+        if expected[key] is None:
+            assert cell["holds"] is None and cell["residual"] is None, (row["id"], column)
+            assert cell["note"].startswith("not applicable"), (row["id"], column)
+            continue
+        constant, residual = expected[key]
+        if constant is None:
+            assert name not in cell["constants"], (row["id"], column)
+        else:
+            got = float(cell["constants"][name])
+            assert got == pytest.approx(float(constant), rel=constant_tol), (row["id"], column)
+        ref = float(residual)
+        assert abs(cell["residual"] - ref) <= cell["tolerance"] + residual_tol * ref, (
+            row["id"],
+            column,
+            cell["residual"],
+            ref,
+        )
+        assert cell["holds"] is (ref <= cell["tolerance"]), (row["id"], column)
+
+
 def assert_cells_agree(
     body: dict[str, Any], constant_tol: float, residual_tol: float, given: dict | None = None
 ) -> None:
     for row in body["rows"]:
+        assert_curvature_cells_agree(
+            row, reference_surfaces(row, given or {}), constant_tol, residual_tol
+        )
         expected = reference.conditions(reference_polygon(row, given or {}))
         cells = {c["property"]: c for c in row["cells"]}
         for key in CONDITIONS:
@@ -106,11 +182,25 @@ def test_verdicts_of_section_4(client: TestClient) -> None:
         "d3": True,
         "equation-2": True,
         "equation-7": True,
-        "mean-curvature-zero": None,
-        "gaussian-curvature-constant": None,
+        "mean-curvature-zero": True,
+        "gaussian-curvature-constant": True,
     }
     assert [table["d2a-quad"][k] for k in CONDITIONS] == [False, False, True, True]
     assert [table["d2a-hex"][k] for k in CONDITIONS] == [False, False, False, True]
+    # Section 5: which rows generate discrete minimal surfaces (H = 0), and which a surface of
+    # constant K (only (D4b)'s pseudosphere has one with a Gauss image)
+    minimal = {k: v["mean-curvature-zero"] for k, v in table.items()}
+    assert minimal == {
+        "d1": True,  # the default (D1) polygon has offset C = 0 (y0 = δ/(2c))
+        "d2a-quad": True,  # the Christoffel dual at r*
+        "d2a-hex": False,  # the hexagonal meridian as a quad surface of revolution
+        "d2b": True,
+        "d3": True,
+        "d4a": True,
+        "d4b": True,
+    }
+    constant = {k: v["gaussian-curvature-constant"] for k, v in table.items()}
+    assert constant == {k: (True if k == "d4b" else None) for k in table}
 
 
 def test_rows_take_their_own_parameters(client: TestClient) -> None:
@@ -123,6 +213,11 @@ def test_rows_take_their_own_parameters(client: TestClient) -> None:
         "d2a-hex.lambda": 0.3,
         "d2a-hex.b": 2.1,
         "d2a-hex.a": 1.3,
+        "d1.c": 0.2,  # offset C = −0.225: (D1) only
+        "d1.delta": 0.5,
+        "d1.y1": 1.1,
+        "d4a.s": 0.3,
+        "d4a.beta0": 2.0,
     }
     body = client.get("/relations", params=params).json()
     rows = {r["id"]: r for r in body["rows"]}
@@ -130,6 +225,13 @@ def test_rows_take_their_own_parameters(client: TestClient) -> None:
     assert rows["d2a-hex"]["parameters"]["lambda"] == 0.3
     quad = {c["property"]: c["holds"] for c in rows["d2a-quad"]["cells"]}
     assert quad["equation-2"] is False
+    assert quad["mean-curvature-zero"] is False  # the Christoffel dual needs r = r*
+    d1 = {c["property"]: c["holds"] for c in rows["d1"]["cells"]}
+    assert d1["d1"] is True and d1["d3"] is False and d1["mean-curvature-zero"] is False
+    d4a = {c["property"]: c for c in rows["d4a"]["cells"]}["mean-curvature-zero"]
+    assert d4a["holds"] is True and float(d4a["constants"]["a"]) == pytest.approx(0.85)  # h − s/2
+    K = {c["property"]: c for c in rows["d4b"]["cells"]}["gaussian-curvature-constant"]
+    assert K["holds"] is True and float(K["constants"]["K"]) == pytest.approx(-0.25)  # −1/h²
     assert_cells_agree(body, 1e-12, 1e-9, params)
     # the row's url serves the same polygon
     curve = client.get(rows["d4b"]["url"]).json()

@@ -71,11 +71,17 @@ def test_errata_carry_printed_residuals(float64: Float64) -> None:
     curve = d2a_hex.compute(float64, 1.0, 2.5, 0.5, None, -10, 10)
     errata = {c.id: c.erratum for c in curve.checks if c.erratum is not None}
     assert {k: e.id for k, e in errata.items()} == {
+        "theorem-2": "E45",
         "theorem-3-even": "E43",
         "theorem-2-start-height": "E44",
     }
     for check_id, erratum in errata.items():
-        assert erratum.printed_residual is not None and erratum.printed_residual > 1e-2, check_id
+        assert erratum.printed_residual is not None and erratum.printed_residual > 1e-3, check_id
+    # E45: Section 4.1 attributes (2) to the hexagonal polygon; its residual is that of (2)
+    theorem_2 = next(c for c in curve.checks if c.id == "theorem-2")
+    one_constant = next(c for c in curve.checks if c.id == "equation-2")
+    assert theorem_2.holds is True and one_constant.holds is False
+    assert errata["theorem-2"].printed_residual == one_constant.residual
 
 
 def test_checks_fail_on_a_perturbed_polygon(float64: Float64) -> None:

@@ -22,6 +22,17 @@ from app.geometry.surfaces import ring_faces
 #: The faces used for the ring checks span the angle π/RING_M.
 RING_M = 16
 
+SIGN_CONVENTION = (
+    "The curvatures of [3] with K = A(n)/A(f) and H = −A(f,n)/A(f), all areas signed along "
+    "the normal of the face of f (the unit sphere with n = f has K = 1, H = −1): the paper does "
+    "not state the convention; with H = +A(f,n)/A(f) the H of (17) changes sign."
+)
+ZERO_OVER_ZERO = (
+    "(17) is 0/0 on faces whose meridian edge is parallel to the axis (p_{i+1}^y = p_i^y; the "
+    "Gauss image edge is then parallel too); the mixed-area definition still gives K = λ(n_i^y + "
+    "n_{i+1}^y)/(p_i^y + p_{i+1}^y) and H = −(λ + (n_i^y + n_{i+1}^y)/(p_i^y + p_{i+1}^y))/2 "
+    "there (λ the ratio of the parallel edges); the check skips such faces and counts them."
+)
 EQUATION_17 = Statement(
     "equation-17",
     "Section 5, eq. (17)",
@@ -30,6 +41,7 @@ EQUATION_17 = Statement(
     "K = A(n)/A(f), H = −A(f,n)/A(f) of the mixed-area definition [3] on three-dimensional "
     "faces (angle π/16). Residual: largest cross-multiplied difference relative to the size of "
     "the terms; faces where (17) is 0/0 (p_{i+1}^y = p_i^y) are skipped and counted in the note.",
+    conditions=(SIGN_CONVENTION, ZERO_OVER_ZERO),
 )
 
 

@@ -27,6 +27,10 @@ Method = Literal["construction", "closed-form"]
 #: Float64 results keep every coordinate below this size (checks multiply two coordinates).
 FLOAT64_COORDINATE_LIMIT = 1e150
 
+CLOSED_FORM_RANGE = (
+    "Derived here (not in the paper) for 0 < c < 1 and a constant spacing δ; it is evaluated as "
+    "y_0 + 2a sinh(iE/2) sinh(u_0 + (i − 1)E/2), which does not cancel for small c (a >> |y|)."
+)
 CLOSED_FORM = Statement(
     "d1-closed-form",
     "Section 3, (D1) with constant spacing: closed form (derived here, not in the paper)",
@@ -35,6 +39,7 @@ CLOSED_FORM = Statement(
     "per edge, tanh((u_{i+1} − u_i)/2) = c. Evaluated as y_0 + 2a sinh(iE/2) sinh(u_0 + "
     "(i − 1)E/2) (no cancellation). Residual: largest |p_i − closed form| divided by "
     "|iδ| + |y_0| + |2a sinh(…) sinh(…)|, the size of the closed form's terms.",
+    conditions=(CLOSED_FORM_RANGE,),
 )
 
 STATEMENTS: tuple[Statement, ...] = (*properties.PROPERTIES, CLOSED_FORM)

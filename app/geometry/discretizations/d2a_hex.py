@@ -42,6 +42,14 @@ ONLY_AT_R_STAR = (
     "corrected, E44), the default of r; and unlike (2), c_1 and c_2 need not be positive "
     "(docs/errata.md, Section 4.1)."
 )
+R_ANY = (
+    "Holds for every start height r: (10) and the constants of (11) do not depend on r (the "
+    "proof says so), while (7) itself needs r = r* (E44)."
+)
+HEX_RANGE = (
+    "0 < a < b and 0 < λ < 1 (at a = b, λ = 0 or 1 two consecutive f_i coincide and the dual "
+    "edge is infinite); every r (p_0 = (0, r))."
+)
 THEOREM_2 = S(
     "theorem-2",
     "Theorem 2, eq. (7)",
@@ -49,7 +57,8 @@ THEOREM_2 = S(
     "c_1, c_2 (constants.c1, c2: least squares) equal to those of (11) (constants.c1_eq11, "
     "c2_eq11). True exactly for r = r* (constants.r_theorem_2); for any other r (7) fails. "
     "Residual: the larger of the residuals of (7) with the fitted constants and with those of "
-    "(11), each relative to the magnitude of the coordinates it is computed from.",
+    "(11), each relative to the magnitude of the coordinates it is computed from. The "
+    "erratum's printed residual is that of (2), which Section 4.1 attributes to Theorem 2.",
     conditions=(ONLY_AT_R_STAR,),
 )
 START_HEIGHT = S(
@@ -59,6 +68,7 @@ START_HEIGHT = S(
     "which (7) holds (printed with the denominator [2λ(λ−1)a − b]², E44): the polygon moved "
     "vertically by r* − r satisfies (7) with c_1, c_2 of (11). Holds for every r. Residual: as "
     "for (7), on the moved polygon.",
+    conditions=(R_ANY,),
 )
 EQUATION_10 = S(
     "equation-10",
@@ -66,6 +76,7 @@ EQUATION_10 = S(
     "Δ³p_i^y = c (A_{i+2} − A_i) with c = c_1 for even i and c = c_2 for odd i, c_1, c_2 from "
     "(11); for every r. Residual: largest |Δ³p_i^y − c(A_{i+2} − A_i)| relative to the magnitude "
     "of the heights and areas it is computed from.",
+    conditions=(R_ANY,),
 )
 THEOREM_3_EVEN = S(
     "theorem-3-even",
@@ -74,12 +85,14 @@ THEOREM_3_EVEN = S(
     "(a^{i/2}b(λ−3) + ab^{i/2}(3a(λ−1) − 2bλ)(a(λ−1) − bλ))/(2λ(a−b)²(λ−1))) (the printed "
     "p_i^y has the factor b^{−i/2} − a^{−i/2}, E43). Residual: largest |p_i − closed form| / "
     "|closed form|.",
+    conditions=(HEX_RANGE,),
 )
 THEOREM_3_ODD = S(
     "theorem-3-odd",
     "Theorem 3, eq. (9)",
     "For odd i, p_i is given by (9) as printed. Residual: largest |p_i − closed form| / "
     "|closed form|.",
+    conditions=(HEX_RANGE,),
 )
 
 STATEMENTS: tuple[Statement, ...] = (
@@ -122,6 +135,16 @@ INFO = DiscretizationInfo(
     statements=STATEMENTS,
 )
 
+ERRATUM_EQUATION_2 = (
+    "E45",
+    "Section 4.1: '(2) is fulfilled by polygons constructed in (D2a) with the Christoffel "
+    "duality. This is the content of Theorems 1 and 2'; Figure 6: 'Theorem 2 states that this "
+    "type of discretization also fulfills a modified version of (D3)'; before the proof of "
+    "Theorem 2: 'we can show the analog of (D3)'",
+    "(2) holds for the quad polygons (Theorem 1, at r = r*); the hexagonal polygons satisfy "
+    "the modified (2), eq. (7), with two constants c_1 ≠ c_2 (Theorem 2), and neither (2) nor "
+    "(D3), not even with alternating constants",
+)
 ERRATUM_EVEN = (
     "E43",
     "p_i^y = (b^{−i/2} − a^{−i/2})(a^{i/2}b(λ−3) + ab^{i/2}(3a(λ−1) − 2bλ)(a(λ−1) − bλ)) / "
@@ -304,7 +327,9 @@ def _theorem_2(
     if fit.constants is None:
         return not_applicable(THEOREM_2, ctx.summed, "needs five vertices (two equations)")
     with_11 = equation_7_residuals(ctx.ar, data.p, data.i_min, *c11)
-    return ctx.check(THEOREM_2, 0, np.maximum(fit.residuals, with_11), note=note)
+    one_constant = conditions.equation_2(ctx.ar, data.p).residuals  # what Section 4.1 says
+    erratum = ctx.erratum(ERRATUM_EQUATION_2, one_constant)
+    return ctx.check(THEOREM_2, 0, np.maximum(fit.residuals, with_11), erratum, note=note)
 
 
 def _start_height(

@@ -43,6 +43,16 @@ ONLY_AT_R_STAR = (
     "calls 'that special r' without writing it out; r* is the default of r (docs/errata.md, "
     "Section 4.1)."
 )
+CONVENTIONS = (
+    "Conventions the proof relies on without stating them: φ_i = Φ(f_i) with Φ(f) = "
+    "(f² − 1, 2f)/(f² + 1) (projection from (1, 0, 0) restricted to the y-axis); the first "
+    "coordinate is the axis x, the second the distance y; Δφ_i = φ_{i+1} − φ_i; p_0 = (0, r). "
+    "With them (4) has constant x-steps and the polygon lies below the axis, as (5) says."
+)
+SPECIAL_R = (
+    "r* = −f_1(1 + f_0²)/(2(f_1 − f_0)²) is (5) at i = 1, the proof's 'special r' (never "
+    "written out); other r move the polygon vertically, and Theorem 1 then fails."
+)
 THEOREM_1 = S(
     "theorem-1",
     "Theorem 1, eq. (2)",
@@ -60,6 +70,7 @@ START_HEIGHT = S(
     "r* = −f_1(1 + f_0²)/(2(f_1 − f_0)²) is the start height p_0^y for which (2) holds: the "
     "polygon moved vertically by r* − r satisfies (2) with c = 4(f_1 − f_0)³/(f_0 + f_1)³. "
     "Holds for every r. Residual: as for theorem-1's fit, on the moved polygon.",
+    conditions=(SPECIAL_R,),
 )
 GAUSS_EDGE = S(
     "theorem-1-gauss-edge",
@@ -67,18 +78,21 @@ GAUSS_EDGE = S(
     "φ_i − φ_{i−1} = −2(f_{i−1} − f_i)/((f_{i−1}² + 1)(f_i² + 1)) · (f_{i−1} + f_i, "
     "1 − f_{i−1}f_i), with φ_i = Φ(f_i) (x: symmetry axis, y: distance from it). Residual: "
     "largest |Δφ − formula| / |formula|.",
+    conditions=(CONVENTIONS,),
 )
 GAUSS_NORM = S(
     "theorem-1-gauss-edge-norm",
     "Proof of Theorem 1, ‖Δφ_{i−1}‖²",
     "‖φ_i − φ_{i−1}‖² = 4(f_{i−1} − f_i)²/((f_{i−1}² + 1)(f_i² + 1)). Residual: largest "
     "relative difference.",
+    conditions=(CONVENTIONS,),
 )
 DUAL_EDGE = S(
     "theorem-1-dual-edge",
     "Proof of Theorem 1, Δp_{i−1}",
     "p_i − p_{i−1} = −(f_{i−1} + f_i, 1 − f_{i−1}f_i)/(2(f_{i−1} − f_i)). Residual: largest "
     "|Δp − formula| relative to the magnitude of p_{i−1}, p_i (docs/checks.md).",
+    conditions=(CONVENTIONS,),
 )
 X_STEP = S(
     "theorem-1-x-step",
@@ -86,12 +100,14 @@ X_STEP = S(
     "p_i^x − p_{i−1}^x = d = (f_{i−1} + f_i)/(2(f_i − f_{i−1})) = (f_0 + f_1)/(2(f_1 − f_0)) for "
     "every i (constants.x_step). Residual: largest |Δp^x − d| relative to the magnitude of "
     "p_{i−1}, p_i.",
+    conditions=(CONVENTIONS,),
 )
 SECOND_DIFFERENCE = S(
     "theorem-1-second-difference",
     "Proof of Theorem 1, Δ²p_{i−1}",
     "p_{i+1} − 2p_i + p_{i−1} = (0, −(f_i² + 1)/(2f_i)) (printed without the minus sign, E41). "
     "Residual: largest |Δ²p − formula| relative to |p_{i−1}| + 2|p_i| + |p_{i+1}| (coordinates).",
+    conditions=(CONVENTIONS,),
 )
 EQUATION_5 = S(
     "equation-5",

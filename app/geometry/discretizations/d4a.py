@@ -43,6 +43,27 @@ FLOAT64_COORDINATE_LIMIT = 1e150
 FLOAT64_MIN_STEP_RATIO = 1e-3
 
 S = Statement
+CUSP = (
+    "'d_i on the previous stick for all i ∈ Z' is impossible (E20): sin β_i = (1 − s/h)^i "
+    "sin β_0 would exceed 1. The pursuit runs away from a cusp stick c on both sides: d_i lies "
+    "on stick i − 1 for i > c and on stick i + 1 for i < c, and the tractrix folds back there "
+    "(d_{c−1} = d_{c+1}); for a vertical stick 0, c = 0."
+)
+DARBOUX_SIDES = (
+    "e_i reflects x_i in the midpoint of the tractrix edge that lies on stick i: d_i d_{i+1} "
+    "after the cusp, d_{i−1} d_i before it (E21); the constant |x_i − e_i| = 2h − s is not "
+    "printed."
+)
+INDEXING = (
+    "Index convention: p_i is the centre of the rotation from stick i to stick i + 1 (the "
+    "symmetry lines of the tractrix edges on sticks i and i + 1 meet there); it lies over the "
+    "midpoint of x_i x_{i+1}, so the x-spacing of p is not constant, unlike (D4b)'s."
+)
+RESOLUTION = (
+    "Consecutive symmetry lines meet at an angle of about (s/h) sin β, so p is resolved to "
+    "about ⌈h/s⌉ + (sticks walked) units of rounding: float64 requests need s/h >= 10⁻³ (use "
+    "precision=mp below)."
+)
 STICKS = S(
     "d4a-sticks",
     "Section 3, (D4a) and Figure 3",
@@ -51,12 +72,14 @@ STICKS = S(
     "d_{i−1} on stick i for i < c (c the cusp stick; see the d4a description). Residual: "
     "largest of | |d_i − x_i| − h |, |x_i^y| and the distance of the far end from "
     "x_i + (h − s)(d_i − x_i)/|d_i − x_i|, relative to the magnitude of the points.",
+    conditions=(CUSP,),
 )
 ARC_LENGTH = S(
     "d4a-arc-length",
     "Section 3, (D4a) and Figure 3: discrete arc length",
     "|d_{i+1} − d_i| = s for every i: the tractrix is parametrized by arc length. Residual: "
     "largest | |d_{i+1} − d_i| − s |, relative to the magnitude of the two points.",
+    conditions=(CUSP,),
 )
 DARBOUX = S(
     "darboux-d4a",
@@ -64,12 +87,14 @@ DARBOUX = S(
     "e_i, the reflection of x_i in the midpoint of the tractrix edge on stick i, has "
     "|e_{i+1} − e_i| = |x_{i+1} − x_i|. Residual: largest difference of the edge lengths, "
     "relative to the magnitude of the four points.",
+    conditions=(DARBOUX_SIDES,),
 )
 DARBOUX_DISTANCE = S(
     "darboux-d4a-distance",
     "Section 3, (D4a): Darboux transform",
     "|x_i − e_i| is the same for every i, namely 2h − s. Residual: largest | |x_i − e_i| − "
     "(2h − s) |, relative to the magnitude of x_i and e_i.",
+    conditions=(DARBOUX_SIDES,),
 )
 ROTATION = S(
     "rotation-centre-d4a",
@@ -78,12 +103,14 @@ ROTATION = S(
     "|p_i − x_{i+1}|, |p_i − d_i| = |p_i − d_{i+1}|, and the angle from x_i to x_{i+1} about p_i "
     "equals the angle from d_i to d_{i+1}. Residual: largest of the distance differences "
     "(relative to the magnitude of the points) and the angle difference (radians).",
+    conditions=(INDEXING, RESOLUTION),
 )
 NIKOLAIDES = S(
     "nikolaides-d4a",
     "Section 3, (D4a) and (S4): construction of Nikolaides",
     "The symmetry axis of x_i and x_{i+1} passes through p_i: p_i^x = (x_i^x + x_{i+1}^x)/2. "
     "Residual: largest |p_i^x − (x_i^x + x_{i+1}^x)/2|, relative to the magnitude of the points.",
+    conditions=(INDEXING, RESOLUTION),
 )
 CLOSED_FORM = S(
     "d4a-closed-form",
@@ -94,6 +121,7 @@ CLOSED_FORM = S(
     "x_{i+1})/2, (h − s/2 − (x_{i+1} − x_i) cos β_i / 2)/sin β_i). Residual: largest "
     "|computed − explicit| over p_i (relative to |p_i|) and d_i (relative to the magnitude of "
     "d_i and x_i).",
+    conditions=(RESOLUTION,),
 )
 
 STATEMENTS: tuple[Statement, ...] = (

@@ -60,6 +60,26 @@ VERTICAL_START = (
     "construction is the vertical one shifted by the index τ = ln(tan(β0/2))/L, and the service "
     "checks the formula at i + τ (an extension; docs/errata.md, Section 3)."
 )
+LOCAL_NUMBERING = (
+    "The proof numbers the axis points locally, shifted by one against Section 3 and Theorem 5: "
+    "with Theorem 5's indexing (p_i^x = (2i − 1)d) α_i is the angle at p_i between the lines to "
+    "x_{i−1} and x_i (E1)."
+)
+RECURSION_DENOMINATOR = (
+    "For (D4b) polygons the denominator p_{i−1}^y p_i^y − d² is always >= h² − d² > 0; for "
+    "sequences that merely satisfy (13) it must not vanish (Theorem 4's hypothesis)."
+)
+CENTRE_INDEX = (
+    "Index convention (Theorem 5): p_i is the centre of the rotation from stick i − 1 to stick "
+    "i, over the midpoint of x_{i−1} and x_i, so the reflection axis of x_{i−1} and x_i passes "
+    "through p_i."
+)
+POINT_REFLECTION = (
+    "Here x_i is reflected in the tractrix point d_i itself (e_i = 2d_i − x_i, so |x_i − e_i| = "
+    "2h), not in an edge midpoint as in (D4a); the edges of e and x are equal because the "
+    "polygon is symmetric about the reflection axis of each tractrix edge, for every first "
+    "stick."
+)
 HYPOTHESIS = S(
     "theorem-4-hypothesis",
     "Theorem 4, hypothesis",
@@ -96,18 +116,21 @@ ROTATION_ANGLE = S(
     "Proof of Theorem 4",
     "The rotation about p_i, which takes x_{i−1} to x_i, turns by α_i = 2 arctan(d/p_i^y). "
     "Residual: largest |angle(x_{i−1} − p_i, x_i − p_i) − 2 arctan(d/p_i^y)|.",
+    conditions=(LOCAL_NUMBERING,),
 )
 RECURSION_13 = S(
     "recursion-13",
     "Proof of Theorem 4, eq. (13)",
     "p_{i+1}^y = (p_i^y³ + 2d²p_i^y + d²p_{i−1}^y) / (p_i^y p_{i−1}^y − d²). "
     "Residual: largest relative difference from the polygon's p_{i+1}^y.",
+    conditions=(RECURSION_DENOMINATOR,),
 )
 TWO_STEP = S(
     "recursion-13-two-step",
     "Proof of Theorem 4 (i), formula for p_{i+2}^y",
     "p_{i+2}^y = (p_i⁵ + d²(p_{i−1}³ + 2p_{i−1}²p_i + 3p_{i−1}p_i² + 4p_i³) + d⁴(2p_{i−1} + 3p_i))"
     " / (d² − p_{i−1}p_i)² (all heights p^y). Residual: largest relative difference.",
+    conditions=(RECURSION_DENOMINATOR,),
 )
 THEOREM_5 = S(
     "theorem-5",
@@ -130,12 +153,14 @@ DARBOUX = S(
     "e_i, the reflection of x_i in d_i, has |e_{i+1} − e_i| = |x_{i+1} − x_i| = 2d. "
     "Residual: largest difference of the edge lengths, relative to the magnitude of the four "
     "points (docs/checks.md).",
+    conditions=(POINT_REFLECTION,),
 )
 DARBOUX_DISTANCE = S(
     "darboux-d4b-distance",
     "Section 3, (D4b): Darboux transform",
     "|x_i − e_i| is the same for every i, namely 2h. Residual: largest | |x_i − e_i| − 2h |, "
     "relative to the magnitude of x_i and e_i (docs/checks.md).",
+    conditions=(POINT_REFLECTION,),
 )
 NIKOLAIDES = S(
     "nikolaides-d4b",
@@ -143,6 +168,7 @@ NIKOLAIDES = S(
     "The triangles x_i d_i p_i and x_i d_i p_{i+1} have a right angle at d_i: the edge p_i p_{i+1}"
     " is the tractrix normal at d_i. Residual: largest |cos| of the angles at d_i, with the "
     "vectors measured against the magnitude of their end points (docs/checks.md).",
+    conditions=(CENTRE_INDEX,),
 )
 
 STATEMENTS: tuple[Statement, ...] = (
@@ -310,11 +336,8 @@ def evaluate(
         "eq2": conditions.equation_2(ar, p[:n]),
     }
     constants = {k: f.constant for k, f in fits.items() if f.constant is not None}
-    rounding = 4 * math.ceil(data.exponent)  # steps' worth of the closed forms' own rounding
-    kappa = conditioning(h, d)
-    local = kappa * ar.tolerance(LOCAL_STEPS + (0 if data.constructed else rounding))
+    local, construction, steps = tolerances(ar, h, d, data)
     ctx = _Context(ar, hh, dd, indices, n, local, detail)
-    steps = max(abs(data.i_min - 1), abs(data.i_min + n)) + 1 + rounding
     checks = [
         _hypothesis(ctx, p),
         _fitted(ctx, THEOREM_4_I, fits["d1"], _ratio_erratum(ctx, p)),
@@ -340,10 +363,25 @@ def evaluate(
         indices,
         n,
         ctx.tolerance,
-        ar.tolerance(max(steps, LOCAL_STEPS)),
+        construction,
         detail,
     )
     return constants, checks
+
+
+def tolerances(ar: Arithmetic, h: float, d: float, data: D4bPolygons) -> tuple[float, float, int]:
+    """(local tolerance, construction tolerance, construction steps) of one computation.
+
+    Local: a check on a few neighbouring vertices, times the conditioning κ (and the closed
+    forms' own rounding when the polygons are the closed forms). Construction: comparisons
+    along the whole recursion from stick 0.
+    """
+    n = len(data.p) - 1
+    rounding = 4 * math.ceil(data.exponent)  # steps' worth of the closed forms' own rounding
+    kappa = conditioning(h, d)
+    local = kappa * ar.tolerance(LOCAL_STEPS + (0 if data.constructed else rounding))
+    steps = max(abs(data.i_min - 1), abs(data.i_min + n)) + 1 + rounding
+    return local, ar.tolerance(max(steps, LOCAL_STEPS)), steps
 
 
 def compute(
@@ -365,6 +403,7 @@ def compute(
         _require_float64_representable(h, d, beta0, i_min, i_max)
     data = polygons(ar, h, d, beta0, i_min, i_max, method)
     constants, checks = evaluate(ar, h, d, data, detail, beta0)
+    local, construction, _ = tolerances(ar, h, d, data)
     indices = np.arange(i_min, i_max + 1, dtype=np.int64)
     n = len(indices)
     parameters: dict[str, Any] = {
@@ -396,6 +435,8 @@ def compute(
         },
         constants=constants,
         checks=checks,
+        local_tolerance=local,
+        companion_tolerances=d4b_curvature.companion_tolerances(ar, data.gauss, construction),
     )
 
 
