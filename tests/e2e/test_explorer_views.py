@@ -152,7 +152,8 @@ def test_every_surface_renders_coloured_by_curvature(
             assert low == pytest.approx(values.min(), rel=1e-3, abs=1e-6)
             assert high == pytest.approx(values.max(), rel=1e-3, abs=1e-6)
         SCREENSHOTS.mkdir(parents=True, exist_ok=True)
-        page.locator("#surfaces").screenshot(path=str(SCREENSHOTS / f"surface-{surface}-{name}.png"))
+        target = SCREENSHOTS / f"surface-{surface}-{name}.png"
+        page.locator("#surfaces").screenshot(path=str(target))
 
 
 def test_a_refused_surface_is_said_and_the_old_picture_goes(page: Page, server: Server) -> None:
