@@ -326,8 +326,12 @@ def test_figure_7_draws_the_d4b_gauss_images(client: TestClient, params: dict[st
     np.testing.assert_allclose(
         inverse(circle_pixels(series(right, "contact_points"))), contact, atol=tol
     )
-    # the drawn m_i edges are tangent to the unit circle: their lines are 1 from the centre
+    # the caption: m_i is the midpoint of the drawn chord ñ_{i−1} ñ_i reflected in the circle
     m = drawn(right, "gauss_image", inverse)
+    chords = inverse(segment_pixels(series(right, "chords")).reshape(-1, 2)).reshape(-1, 2, 2)
+    middle = chords.mean(axis=1)
+    np.testing.assert_allclose(middle / np.sum(middle**2, axis=1)[:, None], m[1:], atol=4 * tol)
+    # the drawn m_i edges are tangent to the unit circle: their lines are 1 from the centre
     edge = m[1:] - m[:-1]
     distance = np.abs(m[:-1, 0] * edge[:, 1] - m[:-1, 1] * edge[:, 0]) / np.hypot(*edge.T)
     np.testing.assert_allclose(distance, 1, atol=4 * tol)
