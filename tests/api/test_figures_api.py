@@ -4,6 +4,7 @@ curve endpoints (the drawn pixels mapped back through each panel's tick labels).
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -59,6 +60,14 @@ def test_every_figure_renders_with_its_defaults(client: TestClient, identifier: 
     assert response.headers["content-type"] == "image/svg+xml"
     root = parse(response.content)
     assert root.get("viewBox") and len(series_names(root)) >= 2
+    # self-contained: no link leaves the document, every id is unique and every url(#…) is one
+    text = response.text
+    ids = re.findall(r'\bid="([^"]+)"', text)
+    assert len(ids) == len(set(ids))
+    assert set(re.findall(r"url\(#([^)]+)\)", text)) <= set(ids)
+    assert "href" not in text and "<script" not in text and "@import" not in text
+    for name in panel_names(root):  # each panel has axes of its own to read it by
+        assert inverse_transform(panel(root, name)).resolution > 0
 
 
 @pytest.mark.parametrize(

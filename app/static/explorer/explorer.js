@@ -526,6 +526,7 @@ function figureItem(figure, url) {
   img.addEventListener('error', async () => {
     let detail = 'the figure could not be drawn';
     try { detail = (await (await fetch(url)).json()).detail || detail; } catch { /* not JSON */ }
+    img.hidden = true; // no broken-image icon: the message says it
     problem.textContent = `Not drawn with these parameters: ${detail}`;
     problem.hidden = false;
     li.dataset.state = 'error';
