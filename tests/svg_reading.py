@@ -99,3 +99,22 @@ def segment_pixels(group: Element) -> np.ndarray:
     assert tokens[0::3] == ["M", "L"] * (len(tokens) // 6)
     numbers = np.array([t for k, t in enumerate(tokens) if k % 3], dtype=np.float64)
     return numbers.reshape(-1, 2, 2)
+
+
+def panel(root: Element, name: str) -> Element:
+    """One panel of a multi-panel figure (``<g class="panel" data-panel=name>``)."""
+    found = [g for g in root.iter(G) if g.get("class") == "panel" and g.get("data-panel") == name]
+    assert len(found) == 1, f"panel {name!r} drawn {len(found)} times"
+    return found[0]
+
+
+def panel_names(root: Element) -> list[str]:
+    return [g.get("data-panel") or "" for g in root.iter(G) if g.get("class") == "panel"]
+
+
+def polygon_pixels(group: Element) -> np.ndarray:
+    """The outline of an ``area`` series."""
+    shape = group.find("svg:polygon", NS)
+    assert shape is not None
+    pairs = [p.split(",") for p in (shape.get("points") or "").split()]
+    return np.array(pairs, dtype=np.float64).reshape(-1, 2)

@@ -182,3 +182,150 @@ def hexagonal(
     k = np.arange(lo, hi, dtype=np.int64)
     weights = ar.array(np.where(k % 2 == 0, 3, 2))
     return _assemble(ar, f, weights, r, lo, i_min, i_max)
+
+
+# --- the planar conformal meshes themselves (Figures 5 and 6, left) ------------------------------
+
+
+@dataclass(frozen=True)
+class PlanarMesh:
+    """A mesh of the yz-plane (read as ℂ, y real): vertices, edges and faces by vertex number.
+
+    Vertex ``k`` sits on ray (or column) ``rays[k]`` at local index ``rows[k]``; the vertices of
+    ray 0 are the parameter line f_i of the meridian (``rows`` = i there).
+    """
+
+    vertices: Array
+    """``(n, 2)``: (y, z)."""
+    rows: np.ndarray[Any, np.dtype[np.int64]]
+    rays: np.ndarray[Any, np.dtype[np.int64]]
+    edges: np.ndarray[Any, np.dtype[np.int64]]
+    """``(m, 2)`` vertex numbers."""
+    faces: np.ndarray[Any, np.dtype[np.int64]]
+    """``(k, 4)`` (quads) or ``(k, 6)`` (hexagons), vertex numbers in cyclic order."""
+    angle: Scalar
+    """Angle between neighbouring rays (columns)."""
+
+
+#: f_1/f_0 below this bound admit a conformal quad mesh (sin(v/2) < 1): (1 + √2)² = 3 + 2√2.
+QUAD_MESH_RATIO_BOUND = 3 + 2 * math.sqrt(2)
+
+
+def conformal_quad_angle(ar: Arithmetic, f0: float, f1: float) -> Scalar:
+    """The column angle v of the conformal quad mesh through f_i: sin(v/2) = (f1 − f0)/(2√(f0 f1)).
+
+    Definition (Section 1): a quad with edges a, b, a', b' (in this order around it) is
+    conformal when a a'/(b b') = −1. For the quad f_i e^{ijv}, f_{i+1} e^{ijv}, f_{i+1}
+    e^{i(j+1)v}, f_i e^{i(j+1)v} with f_{i+1}/f_i = q that ratio is −(q − 1)²/(4q sin²(v/2)),
+    so the quads are conformal exactly when sin(v/2) = (q − 1)/(2√q).
+    """
+    validate_quad(f0, f1)
+    if f1 / f0 >= QUAD_MESH_RATIO_BOUND:
+        raise DomainError(
+            "f1",
+            "f1/f0 < 3 + 2√2 for a planar conformal quad mesh (Figure 5)",
+            f1,
+            "then (f1 − f0)/(2√(f0·f1)) = sin(v/2) < 1; at the bound the columns are π apart",
+        )
+    a, b = ar.scalar(f0), ar.scalar(f1)
+    sine = (b - a) / (2 * ar.sqrt(a * b))
+    return 2 * ar.atan2(sine, ar.sqrt((1 - sine) * (1 + sine)))
+
+
+def conformal_quad_mesh(
+    ar: Arithmetic, f0: float, f1: float, i_min: int, i_max: int, columns: int
+) -> PlanarMesh:
+    """Figure 5 (left): the rotationally symmetric conformal quad mesh through f_i of eq. (3).
+
+    Vertex (i, j) = f_i e^{ijv} for i_min <= i <= i_max, 0 <= j <= ``columns``, v from
+    ``conformal_quad_angle``: column 0 is the parameter line f_i on the y-axis, and every quad
+    is the similar image of one quad (z ↦ (f_1/f_0) z and the rotation by v). Vectorized.
+    """
+    if i_max < i_min:
+        raise DomainError("i_max", "i_min <= i_max", i_max, f"i_min = {i_min}")
+    if columns < 1:
+        raise DomainError("columns", "columns >= 1", columns)
+    v = conformal_quad_angle(ar, f0, f1)
+    if columns * ar.to_float(v) > 2 * math.pi * (1 + 1e-12):
+        turn = math.floor(2 * math.pi / ar.to_float(v) + 1e-9)
+        raise DomainError(
+            "columns",
+            f"columns·v <= 2π: at most {turn} quads around for this f1/f0",
+            columns,
+            f"the columns are v = {ar.to_float(v):.6g} rad apart",
+        )
+    f = quad_sequence(ar, ar.scalar(f0), ar.scalar(f1), ar.indices(i_min, i_max))
+    n_rows, n_cols = i_max - i_min + 1, columns + 1
+    rows = np.repeat(np.arange(i_min, i_max + 1, dtype=np.int64), n_cols)
+    rays = np.tile(np.arange(n_cols, dtype=np.int64), n_rows)
+    angles = ar.array(rays) * v
+    radii = np.repeat(f, n_cols)
+    vertices = stack_points(radii * ar.cos(angles), radii * ar.sin(angles))
+    number = np.arange(n_rows * n_cols, dtype=np.int64).reshape(n_rows, n_cols)
+    radial = np.stack([number[:-1, :].ravel(), number[1:, :].ravel()], axis=1)
+    around = np.stack([number[:, :-1].ravel(), number[:, 1:].ravel()], axis=1)
+    faces = np.stack(
+        [
+            number[:-1, :-1].ravel(),
+            number[1:, :-1].ravel(),
+            number[1:, 1:].ravel(),
+            number[:-1, 1:].ravel(),
+        ],
+        axis=1,
+    )
+    edges = np.concatenate([radial, around]).astype(np.int64)
+    return PlanarMesh(vertices, rows, rays, edges, faces, v)
+
+
+def conformal_hexagonal_mesh(
+    ar: Arithmetic, a: float, b: float, lam: float, i_min: int, i_max: int, m: int
+) -> PlanarMesh:
+    """Figure 6 (left): a rotationally symmetric conformal hexagonal mesh through f_i.
+
+    The 2m rays are θ = π/m apart. Ray 0 carries the parameter line of Section 4.1: even f_i by
+    the similarity f_i = f_{i−2} b/a, odd f_i = λ f_{i+1} + (1 − λ) f_{i−1}; every even ray
+    is ray 0 turned, every odd ray is ray 0 turned and scaled by √(a/b) with its indices shifted
+    by one (vertex (j, k) = √(a/b) f_{j+1} e^{ikθ} for odd k). Edges: along a ray between
+    vertices j, j+1 with j + k odd (on ray 0: f_i f_{i+1} for odd i, so the meridian runs
+    alternately along an edge and across a hexagon, the diagonal f_i f_{i+1} for even i), and
+    between (j, k) and (j, k+1) on neighbouring rays. Every vertex has three neighbours and every
+    hexagon (j, k), (j, k+1), (j+1, k+1), (j+1, k), (j+1, k−1), (j, k−1) (j + k even) has
+    multi-ratio −1, the conformality of [10], for every θ: the picture's one free choice is m.
+    Vectorized.
+    """
+    validate_hex(a, b, lam)
+    if i_max < i_min:
+        raise DomainError("i_max", "i_min <= i_max", i_max, f"i_min = {i_min}")
+    if m < 2:
+        raise DomainError("m", "m >= 2 (2m rays)", m)
+    f = hex_sequence(ar, ar.scalar(a), ar.scalar(b), ar.scalar(lam), i_min, i_max + 1)
+    shrink = ar.sqrt(ar.scalar(a) / ar.scalar(b))
+    n_rows, n_rays = i_max - i_min + 1, 2 * m
+    theta = ar.pi / m
+    rows = np.tile(np.arange(i_min, i_max + 1, dtype=np.int64), n_rays)
+    rays = np.repeat(np.arange(n_rays, dtype=np.int64), n_rows)
+    radii = np.where(rays % 2 == 0, np.tile(f[:-1], n_rays), shrink * np.tile(f[1:], n_rays))
+    angles = ar.array(rays) * theta
+    vertices = stack_points(radii * ar.cos(angles), radii * ar.sin(angles))
+    number = np.arange(n_rays * n_rows, dtype=np.int64).reshape(n_rays, n_rows)
+    k = np.arange(n_rays, dtype=np.int64)[:, None]
+    j = np.arange(i_min, i_max, dtype=np.int64)[None, :]
+    along = ((j + k) % 2 == 1).ravel()
+    ray_edges = np.stack([number[:, :-1].ravel(), number[:, 1:].ravel()], axis=1)[along]
+    following = np.roll(number, -1, axis=0)  # ray k + 1, ray 2m being ray 0 again
+    cross = np.stack([number.ravel(), following.ravel()], axis=1)
+    centre = ~along  # hexagons across the diagonals (j, k)-(j+1, k), j + k even
+    previous = np.roll(number, 1, axis=0)
+    faces = np.stack(
+        [
+            number[:, :-1].ravel()[centre],
+            following[:, :-1].ravel()[centre],
+            following[:, 1:].ravel()[centre],
+            number[:, 1:].ravel()[centre],
+            previous[:, 1:].ravel()[centre],
+            previous[:, :-1].ravel()[centre],
+        ],
+        axis=1,
+    )
+    edges = np.concatenate([ray_edges, cross]).astype(np.int64)
+    return PlanarMesh(vertices, rows, rays, edges, faces, theta)

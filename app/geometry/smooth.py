@@ -63,6 +63,20 @@ def catenary(ar: Arithmetic, h: Scalar, x: Array) -> Array:
     return stack_points(x, amplitude_cosh(ar, h, x / h))
 
 
+def catenary_offsets(ar: Arithmetic, h: Scalar, x: Array, distance: Scalar) -> tuple[Array, Array]:
+    """The parallel curves of the catenary at normal distance ``distance`` (above, below).
+
+    The unit normal of (x, h cosh(x/h)) is (−tanh(x/h), 1/cosh(x/h)). For distance < h (the
+    least radius of curvature, at the vertex) the two curves bound the ε-neighbourhood of the
+    catenary drawn in Figure 8 (right); ``(n,) -> (n, 2), (n, 2)``.
+    """
+    if not distance < h:
+        raise DomainError("eps", "0 < eps < h (the least radius of curvature)", distance)
+    points = catenary(ar, h, x)
+    normal = stack_points(-ar.tanh(x / h), amplitude_sech(ar, h, x / h) / h)
+    return points + distance * normal, points - distance * normal
+
+
 def tractrix(ar: Arithmetic, h: Scalar, x: Array) -> Array:
     """(S4): d(x) = (x − h tanh(x/h), h / cosh(x/h)); ``(n,) -> (n, 2)``."""
     return stack_points(x - h * ar.tanh(x / h), amplitude_sech(ar, h, x / h))

@@ -47,12 +47,13 @@ MAX_MARKERS = 400
 #: Pixel coordinates are written with this many decimals (1/1000 px).
 DECIMALS = 3
 
-SeriesKind = Literal["line", "points", "segments"]
+SeriesKind = Literal["line", "points", "segments", "area"]
 
 
 @dataclass(frozen=True)
 class Series:
-    """One thing to draw: ``(n, 2)`` finite float points (for ``segments``: ``(2m, 2)``, pairs)."""
+    """One thing to draw: ``(n, 2)`` finite float points (for ``segments``: ``(2m, 2)``, pairs;
+    for ``area``: a closed outline, filled translucently)."""
 
     name: str
     label: str
@@ -103,6 +104,70 @@ class Plot:
     def render(self) -> str:
         """The SVG document."""
         return _Renderer(self).render()
+
+
+@dataclass
+class Panels:
+    """Several plots side by side under one title: a figure with left, centre and right parts.
+
+    Each panel keeps its own axes, scales and legend inside ``<g class="panel"
+    data-panel="name" transform="translate(…)">``, so a reader recovers each panel's transform
+    from that panel's ticks.
+    """
+
+    title: str
+    panels: list[tuple[str, Plot]] = field(default_factory=list)
+    subtitle: str = ""
+    footnote: str = ""
+
+    HEADER = 52
+    """Height of the figure's title and subtitle above the panels."""
+
+    def add(self, name: str, plot: Plot) -> None:
+        """Add one panel (``name`` is its ``data-panel``, e.g. ``left``)."""
+        self.panels.append((name, plot))
+
+    def render(self) -> str:
+        """The SVG document."""
+        renderers = [(name, _Renderer(plot, prefix=f"{name}-")) for name, plot in self.panels]
+        width = sum(r.plot.width for _, r in renderers) or 400
+        tallest = max((r.total_height for _, r in renderers), default=0)
+        footnote = 20 if self.footnote else 0
+        height = self.HEADER + tallest + footnote
+        words = " ".join(f"{name}: {r.description()}" for name, r in renderers)
+        parts = [
+            '<svg xmlns="http://www.w3.org/2000/svg" class="dcosh-plot dcosh-figure" '
+            f'viewBox="0 0 {width} {height}" width="{width}" height="{height}" role="img" '
+            'aria-labelledby="plot-title plot-desc" '
+            'font-family="DejaVu Sans, Helvetica, Arial, sans-serif" font-size="12">',
+            f'<title id="plot-title">{escape(self.title)}</title>',
+            f'<desc id="plot-desc">{escape(words)}</desc>',
+            f'<rect class="background" x="0" y="0" width="{width}" height="{height}" '
+            'fill="#ffffff"/>',
+            f'<text class="title" x="{width / 2:g}" y="22" text-anchor="middle" font-size="16" '
+            f'font-weight="bold">{escape(self.title)}</text>',
+        ]
+        if self.subtitle:
+            parts.append(
+                f'<text class="subtitle" x="{width / 2:g}" y="42" text-anchor="middle" '
+                f'fill="#444444">{escape(self.subtitle)}</text>'
+            )
+        x = 0
+        for name, renderer in renderers:
+            parts.append(
+                f'<g class="panel" data-panel={quoteattr(name)} '
+                f'transform="translate({x} {self.HEADER})">'
+            )
+            parts.append(renderer.body())
+            parts.append("</g>")
+            x += renderer.plot.width
+        if self.footnote:
+            parts.append(
+                f'<text class="footnote" x="16" y="{height - 8}" font-size="10" '
+                f'fill="#555555">{escape(self.footnote)}</text>'
+            )
+        parts.append("</svg>")
+        return "\n".join(parts) + "\n"
 
 
 @dataclass(frozen=True)
@@ -178,8 +243,10 @@ class _Renderer:
     MARGIN_TOP = 48
     MARGIN_BOTTOM = 48
 
-    def __init__(self, plot: Plot) -> None:
+    def __init__(self, plot: Plot, prefix: str = "") -> None:
         self.plot = plot
+        self.prefix = prefix
+        """Prefix of the element ids (several plots in one document need distinct ids)."""
         legend_rows = len(plot.series)
         self.legend_height = 18 * legend_rows + 12 if legend_rows else 0
         self.footnote_height = 18 if plot.footnote else 0
@@ -222,12 +289,23 @@ class _Renderer:
             'aria-labelledby="plot-title plot-desc" '
             'font-family="DejaVu Sans, Helvetica, Arial, sans-serif" font-size="12">',
             f'<title id="plot-title">{escape(plot.title)}</title>',
-            f'<desc id="plot-desc">{escape(self._description())}</desc>',
+            f'<desc id="plot-desc">{escape(self.description())}</desc>',
+            f'<rect class="background" x="0" y="0" width="{w}" height="{h}" fill="#ffffff"/>',
+            self.body(),
+            "</svg>",
+        ]
+        return "\n".join(parts) + "\n"
+
+    def body(self) -> str:
+        """Everything inside the document: title, axes, data, legend, footnote."""
+        plot = self.plot
+        w, h = plot.width, self.total_height
+        area = f"{self.prefix}plot-area"
+        parts = [
             "<defs>",
-            f'<clipPath id="plot-area"><rect x="{self.left}" y="{self.top}" '
+            f'<clipPath id="{area}"><rect x="{self.left}" y="{self.top}" '
             f'width="{self.right - self.left}" height="{self.bottom - self.top}"/></clipPath>',
             "</defs>",
-            f'<rect class="background" x="0" y="0" width="{w}" height="{h}" fill="#ffffff"/>',
             f'<text class="title" x="{w / 2:g}" y="22" text-anchor="middle" font-size="15" '
             f'font-weight="bold">{escape(plot.title)}</text>',
         ]
@@ -237,7 +315,7 @@ class _Renderer:
                 f'fill="#444444">{escape(plot.subtitle)}</text>'
             )
         parts.append(self._axes())
-        parts.append('<g class="data" clip-path="url(#plot-area)">')
+        parts.append(f'<g class="data" clip-path="url(#{area})">')
         parts.extend(self._series(s) for s in plot.series)
         parts.append("</g>")
         parts.append(self._legend())
@@ -246,10 +324,10 @@ class _Renderer:
                 f'<text class="footnote" x="{self.left}" y="{h - 8}" font-size="10" '
                 f'fill="#555555">{escape(plot.footnote)}</text>'
             )
-        parts.append("</svg>")
-        return "\n".join(parts) + "\n"
+        return "\n".join(parts)
 
-    def _description(self) -> str:
+    def description(self) -> str:
+        """The plot in words (the document's ``desc``)."""
         names = ", ".join(s.label for s in self.plot.series)
         return f"{self.plot.title}. Axes {self.plot.x_label} and {self.plot.y_label}. {names}."
 
@@ -316,7 +394,13 @@ class _Renderer:
         if s.description:
             head += f"<title>{escape(s.label)}: {escape(s.description)}</title>"
         body: list[str] = [head]
-        if s.kind == "line" and len(pixels) >= 2:
+        if s.kind == "area" and len(pixels) >= 3:
+            body.append(
+                f'<polygon points="{_points_attribute(pixels)}" fill="{s.color}" '
+                f'fill-opacity="0.18" stroke="{s.color}" stroke-opacity="0.5" '
+                f'stroke-width="{s.width:g}"{dash}/>'
+            )
+        elif s.kind == "line" and len(pixels) >= 2:
             body.append(
                 f'<polyline points="{_points_attribute(pixels)}" fill="none" stroke="{s.color}" '
                 f'stroke-width="{s.width:g}" stroke-linejoin="round"{dash}/>'
@@ -357,6 +441,11 @@ class _Renderer:
             dash = ' stroke-dasharray="6 4"' if s.dashed else ""
             if s.kind == "points":
                 swatch = f'<circle cx="{x + 12}" cy="{row - 4}" r="3" fill="{s.color}"/>'
+            elif s.kind == "area":
+                swatch = (
+                    f'<rect x="{x}" y="{row - 10}" width="24" height="12" fill="{s.color}" '
+                    'fill-opacity="0.18"/>'
+                )
             else:
                 swatch = (
                     f'<line x1="{x}" y1="{row - 4}" x2="{x + 24}" y2="{row - 4}" '

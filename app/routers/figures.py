@@ -44,6 +44,7 @@ def list_figures() -> list[FigureEntry]:
             description=figure.description,
             url=f"/figures/{figure.id}.svg",
             parameters=parameter_infos(figure.query),
+            discretizations=list(figure.discretizations),
         )
         for figure in FIGURES.values()
     ]

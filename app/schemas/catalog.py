@@ -39,6 +39,11 @@ class FigureEntry(BaseModel):
     description: str = Field(description="What is drawn, and where its data come from.")
     url: str = Field(description="Path of the picture (default parameters).")
     parameters: list[ParameterInfo] = Field(description="Adjustable parameters (query).")
+    discretizations: list[str] = Field(
+        default_factory=list,
+        description="Ids of the discretizations whose data it draws (the explorer shows it with "
+        "them, passing on the parameters they share).",
+    )
 
 
 class StatementInfo(BaseModel):

@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+from typing import Annotated
+
 from pydantic import Field
 
 from app.schemas.common import CurveQuery
+from app.schemas.d4b import Index
 
 _CONVENTIONS = """\
 Conventions: the conformal points f_i lie on the y-axis of the yz-plane; the stereographic
@@ -50,35 +53,82 @@ sign error, docs/errata.md E43). Eq. (2) with one constant, (D1) and (D3) fail (
 )
 
 
-class D2aQuadQuery(CurveQuery):
-    """(D2a) quad parameters; the paper's symbols f0, f1 (= f_0, f_1) and r."""
-
-    f0: float = Field(
-        1.0,
+ConformalStart = Annotated[
+    float,
+    Field(
         gt=0,
         le=1e50,
         description="f_0, the conformal point of index 0 on the y-axis; 0 < f0 < f1.",
         json_schema_extra={"domain": "0 < f0 < f1"},
-    )
-    f1: float = Field(
-        1.5,
+    ),
+]
+ConformalNext = Annotated[
+    float,
+    Field(
         gt=0,
         le=1e50,
         description="f_1, the next conformal point; f_i = f_0 (f_1/f_0)^i. 0 < f0 < f1.",
         json_schema_extra={"domain": "0 < f0 < f1"},
-    )
-    r: float | None = Field(
-        None,
+    ),
+]
+QuadStartHeight = Annotated[
+    float | None,
+    Field(
         ge=-1e100,
         le=1e100,
         description="Start height: p_0 = (0, r). Default (absent): r* = −f_1(1 + f_0²)/(2(f_1 − "
         "f_0)²), the only value for which Theorem 1 holds.",
         json_schema_extra={"domain": "any real; Theorem 1 holds only at r*"},
-    )
-    i_min: int = Field(-10, ge=-10_000_000, le=10_000_000, description="First index i (inclusive).")
-    i_max: int = Field(
-        10, ge=-10_000_000, le=10_000_000, description="Last index i (inclusive), >= i_min."
-    )
+    ),
+]
+HexStart = Annotated[
+    float,
+    Field(
+        gt=0,
+        le=1e50,
+        description="a = f_0, the even conformal point of index 0; 0 < a < b.",
+        json_schema_extra={"domain": "0 < a < b"},
+    ),
+]
+HexNext = Annotated[
+    float,
+    Field(
+        gt=0,
+        le=1e50,
+        description="b = f_2; the even points are f_{2k} = a (b/a)^k. 0 < a < b.",
+        json_schema_extra={"domain": "0 < a < b"},
+    ),
+]
+HexWeight = Annotated[
+    float,
+    Field(
+        alias="lambda",
+        gt=0,
+        lt=1,
+        description="λ of the odd points f_i = λ f_{i+1} + (1 − λ) f_{i−1}; 0 < lambda < 1.",
+        json_schema_extra={"domain": "0 < lambda < 1"},
+    ),
+]
+HexStartHeight = Annotated[
+    float | None,
+    Field(
+        ge=-1e100,
+        le=1e100,
+        description="Start height: p_0 = (0, r). Default (absent): r* of the proof of Theorem 2, "
+        "the only value for which Theorem 2 holds.",
+        json_schema_extra={"domain": "any real; Theorem 2 holds only at r*"},
+    ),
+]
+
+
+class D2aQuadQuery(CurveQuery):
+    """(D2a) quad parameters; the paper's symbols f0, f1 (= f_0, f_1) and r."""
+
+    f0: ConformalStart = 1.0
+    f1: ConformalNext = 1.5
+    r: QuadStartHeight = None
+    i_min: Index = Field(-10, description="First index i (inclusive).")
+    i_max: Index = Field(10, description="Last index i (inclusive), >= i_min.")
 
 
 class D2aHexQuery(CurveQuery):
@@ -89,37 +139,9 @@ class D2aHexQuery(CurveQuery):
     core the keyword ``lam``.
     """
 
-    a: float = Field(
-        1.0,
-        gt=0,
-        le=1e50,
-        description="a = f_0, the even conformal point of index 0; 0 < a < b.",
-        json_schema_extra={"domain": "0 < a < b"},
-    )
-    b: float = Field(
-        2.5,
-        gt=0,
-        le=1e50,
-        description="b = f_2; the even points are f_{2k} = a (b/a)^k. 0 < a < b.",
-        json_schema_extra={"domain": "0 < a < b"},
-    )
-    lam: float = Field(
-        0.5,
-        alias="lambda",
-        gt=0,
-        lt=1,
-        description="λ of the odd points f_i = λ f_{i+1} + (1 − λ) f_{i−1}; 0 < lambda < 1.",
-        json_schema_extra={"domain": "0 < lambda < 1"},
-    )
-    r: float | None = Field(
-        None,
-        ge=-1e100,
-        le=1e100,
-        description="Start height: p_0 = (0, r). Default (absent): r* of the proof of Theorem 2, "
-        "the only value for which Theorem 2 holds.",
-        json_schema_extra={"domain": "any real; Theorem 2 holds only at r*"},
-    )
-    i_min: int = Field(-10, ge=-10_000_000, le=10_000_000, description="First index i (inclusive).")
-    i_max: int = Field(
-        10, ge=-10_000_000, le=10_000_000, description="Last index i (inclusive), >= i_min."
-    )
+    a: HexStart = 1.0
+    b: HexNext = 2.5
+    lam: HexWeight = 0.5
+    r: HexStartHeight = None
+    i_min: Index = Field(-10, description="First index i (inclusive).")
+    i_max: Index = Field(10, description="Last index i (inclusive), >= i_min.")

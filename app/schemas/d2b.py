@@ -41,19 +41,24 @@ def _numbers(value: Any) -> Any:
     return value
 
 
-class D2bQuery(CurveQuery):
-    """(D2b) parameters: the sequence, its refinement j or the numbers s, and the range."""
-
-    sequence: Literal["example-12", "remark-13", "custom"] = Field(
-        "example-12",
+SequenceName = Annotated[
+    Literal["example-12", "remark-13", "custom"],
+    Field(
         description="`example-12`, `remark-13` (named sequences with refinement `j`) or `custom` "
         "(the numbers `s`).",
         json_schema_extra={"domain": "example-12 | remark-13 | custom"},
-    )
-    j: int | None = Field(
+    ),
+]
+Refinement = Annotated[int, Field(ge=1, le=100_000)]
+"""A refinement j of a named sequence (Example 12, Remark 13)."""
+
+
+class D2bQuery(CurveQuery):
+    """(D2b) parameters: the sequence, its refinement j or the numbers s, and the range."""
+
+    sequence: SequenceName = "example-12"
+    j: Refinement | None = Field(
         None,
-        ge=1,
-        le=100_000,
         description=f"Refinement j of a named sequence (default {DEFAULT_J}); not with custom.",
         json_schema_extra={"domain": "j >= 1"},
     )

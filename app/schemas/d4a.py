@@ -3,11 +3,12 @@
 from __future__ import annotations
 
 import math
-from typing import Any, Literal
+from typing import Annotated, Any, Literal
 
 from pydantic import Field
 
 from app.schemas.common import CurveQuery
+from app.schemas.d4b import Index, StickAngle
 
 D4A_DESCRIPTION = """\
 Sauer's discrete tractrix (D4a): a stick of length `h` has one end x_i on the x-axis and its
@@ -34,35 +35,34 @@ lines meet) and p_i^y stays below 1e150; beyond, use precision=mp.
 """
 
 
-class D4aQuery(CurveQuery):
-    """(D4a) parameters: h, s, beta0 (= β0)."""
-
-    h: float = Field(
-        1.0,
+SauerStickLength = Annotated[
+    float,
+    Field(
         gt=0,
         le=1e100,
         description="Stick length h (> 0).",
         json_schema_extra={"domain": "h > 0"},
-    )
-    s: float = Field(
-        0.1,
+    ),
+]
+SauerStep = Annotated[
+    float,
+    Field(
         gt=0,
         le=1e100,
         description="Distance of consecutive tractrix points, |d_{i+1} − d_i| = s; 0 < s < h.",
         json_schema_extra={"domain": "0 < s < h"},
-    )
-    beta0: float = Field(
-        math.pi / 2,
-        gt=0,
-        lt=math.pi,
-        description="Angle of stick 0 with the positive x-axis, radians, 0 < beta0 < π. The "
-        "default (the double nearest π/2) means exactly vertical, also in precision=mp.",
-        json_schema_extra={"domain": "0 < beta0 < π"},
-    )
-    i_min: int = Field(-10, ge=-10_000_000, le=10_000_000, description="First index i (inclusive).")
-    i_max: int = Field(
-        10, ge=-10_000_000, le=10_000_000, description="Last index i (inclusive), >= i_min."
-    )
+    ),
+]
+
+
+class D4aQuery(CurveQuery):
+    """(D4a) parameters: h, s, beta0 (= β0)."""
+
+    h: SauerStickLength = 1.0
+    s: SauerStep = 0.1
+    beta0: StickAngle = math.pi / 2
+    i_min: Index = Field(-10, description="First index i (inclusive).")
+    i_max: Index = Field(10, description="Last index i (inclusive), >= i_min.")
     method: Literal["construction", "closed-form"] = Field(
         "construction",
         description="`construction`: stick by stick (compared with the explicit form). "

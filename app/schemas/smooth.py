@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Annotated
+
 from pydantic import Field
 
 from app.schemas.common import CurveQuery
@@ -25,23 +27,36 @@ Checks: `tractrix-s4` (|d − (x, 0)| = h and the tangent points at the leader),
 """
 
 
-class SmoothQuery(CurveQuery):
-    """Parameters of a smooth reference: h and the sampling."""
-
-    h: float = Field(
-        1.0,
+Scale = Annotated[
+    float,
+    Field(
         gt=0,
         le=1e100,
         description="Scale h: the catenary h·cosh(x/h), the tractrix with stick length h.",
         json_schema_extra={"domain": "h > 0"},
-    )
-    x_min: float = Field(
-        -3.0, ge=-1e100, le=1e100, description="First sample abscissa (the leader's position)."
-    )
-    x_max: float = Field(3.0, ge=-1e100, le=1e100, description="Last sample abscissa, > x_min.")
-    count: int = Field(
-        121,
+    ),
+]
+SampleStart = Annotated[
+    float,
+    Field(ge=-1e100, le=1e100, description="First sample abscissa (the leader's position)."),
+]
+SampleEnd = Annotated[
+    float, Field(ge=-1e100, le=1e100, description="Last sample abscissa, > x_min.")
+]
+SampleCount = Annotated[
+    int,
+    Field(
         ge=2,
         le=10_000_000,
         description="Number of samples, >= 2 (at most DCOSH_MAX_VERTICES).",
-    )
+    ),
+]
+
+
+class SmoothQuery(CurveQuery):
+    """Parameters of a smooth reference: h and the sampling."""
+
+    h: Scale = 1.0
+    x_min: SampleStart = -3.0
+    x_max: SampleEnd = 3.0
+    count: SampleCount = 121

@@ -90,13 +90,13 @@ def test_the_page_loads_and_draws_the_default_curve_with_its_checks(
     expect(page.locator("#checks-summary")).to_contain_text(f"{len(body['checks'])} hold, 0 fail")
     erratum = page.locator("#checks-table tr[data-check='recursion-13-two-step'] td").nth(4)
     expect(erratum).to_contain_text("E3")
-    expect(page.locator("#figure-list img")).to_have_count(1)
-    page.locator("#figure-list img").scroll_into_view_if_needed()
-    page.wait_for_function(
-        "() => document.querySelector('#figure-list img').complete && "
-        "document.querySelector('#figure-list img').naturalWidth > 0",
-        timeout=TIMEOUT,
-    )
+    # the figures of (D4b): 4 and 7, drawn
+    expect(page.locator("#figure-list li")).to_have_count(2)
+    page.locator("#figures").scroll_into_view_if_needed()
+    for figure in ("figure-4", "figure-7"):
+        expect(page.locator(f"#figure-list li[data-figure='{figure}']")).to_have_attribute(
+            "data-state", "ready", timeout=TIMEOUT
+        )
     screenshot(page, "explorer-default")
 
 

@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 
+import mpmath
 import numpy as np
 import pytest
 
@@ -104,3 +105,25 @@ def test_float64_range_limit(float64: Float64) -> None:
 def test_mp_refuses_arguments_it_cannot_resolve() -> None:
     with pytest.raises(NotRepresentableError, match=r"x_min must satisfy \|x_min\|/h <= 1e\+10"):
         smooth_curves.compute_tractrix(MultiPrecision(5), 0.1, -1e100, -1.0, 2)
+
+
+@pytest.mark.parametrize(("digits", "bound"), [(None, 1e-14), (40, 1e-35)])
+def test_catenary_offsets_are_at_normal_distance_eps(digits: int | None, bound: float) -> None:
+    ar = Float64() if digits is None else MultiPrecision(digits)
+    mpmath.mp.dps = 50
+    h, eps = ar.scalar(1.5), ar.scalar(0.4)
+    x = ar.array(["-2.5", "-1", "0", "0.3", "2"])
+    above, below = smooth.catenary_offsets(ar, h, x, eps)
+    for points, sign in ((above, 1), (below, -1)):
+        for (qx, qy), t in zip(points.tolist(), x.tolist(), strict=True):
+            t, hh = mpmath.mpf(t), mpmath.mpf(1.5)
+            cx, cy = t, hh * mpmath.cosh(t / hh)
+            dx, dy = mpmath.mpf(qx) - cx, mpmath.mpf(qy) - cy
+            assert abs(mpmath.sqrt(dx**2 + dy**2) - mpmath.mpf("0.4")) < bound
+            assert abs(dx + dy * mpmath.sinh(t / hh)) < bound * 10  # along the normal
+            assert sign * dy > 0  # above or below
+
+
+def test_catenary_offsets_refuse_eps_beyond_the_radius_of_curvature(float64: Float64) -> None:
+    with pytest.raises(DomainError, match="eps"):
+        smooth.catenary_offsets(float64, 1.0, np.array([0.0]), 1.0)

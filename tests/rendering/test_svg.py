@@ -9,6 +9,7 @@ import pytest
 
 from app.rendering.svg import (
     MAX_MARKERS,
+    Panels,
     Plot,
     Series,
     nice_step,
@@ -20,7 +21,10 @@ from app.rendering.svg import (
 from tests.svg_reading import (
     circle_pixels,
     inverse_transform,
+    panel,
+    panel_names,
     parse,
+    polygon_pixels,
     polyline_pixels,
     segment_pixels,
     series,
@@ -125,3 +129,32 @@ def test_a_single_point_still_gets_axes() -> None:
     np.testing.assert_allclose(
         inverse(circle_pixels(series(root, "one"))), [[2.0, 2.0]], atol=inverse.resolution
     )
+
+
+def test_panels_keep_their_own_axes_and_distinct_ids() -> None:
+    small, large = circle(30), 100 * circle(30) + 7
+    figure = Panels(title="two <parts>", subtitle="s & t", footnote="data")
+    for name, data in (("left", small), ("right", large)):
+        plot = Plot(title=name, width=400, height=300)
+        plot.add(Series("c", "circle", data))
+        plot.add(Series("band", "band", data[:-1], kind="area"))
+        figure.add(name, plot)
+    text = figure.render()
+    root = parse(text)
+    assert panel_names(root) == ["left", "right"]
+    assert root.get("viewBox") == f"0 0 800 {root.get('height')}"
+    assert sorted(re.findall(r'id="([^"]+)"', text)) == sorted(
+        ["plot-title", "plot-desc", "left-plot-area", "right-plot-area"]
+    )
+    for name, data in (("left", small), ("right", large)):
+        part = panel(root, name)
+        inverse = inverse_transform(part)
+        np.testing.assert_allclose(
+            inverse(polyline_pixels(series(part, "c"))), data, atol=inverse.resolution
+        )
+        np.testing.assert_allclose(
+            inverse(polygon_pixels(series(part, "band"))), data[:-1], atol=inverse.resolution
+        )
+    # the panels have different scales: reading one with the other's ticks is wrong
+    wrong = inverse_transform(panel(root, "left"))
+    assert not np.allclose(wrong(polyline_pixels(series(panel(root, "right"), "c"))), large, atol=1)

@@ -14,6 +14,7 @@ const state = {
   hidden: new Set(),
   smooth: {},
   surfaces: [],
+  figures: [],
 };
 
 function html(tag, attributes = {}, text = null) {
@@ -83,6 +84,8 @@ function buildField(parameter, initial) {
     input = html('input', {
       id, name, type: 'text', autocomplete: 'off', spellcheck: 'false',
       inputmode: kind === 'integer' ? 'numeric' : kind === 'number' ? 'decimal' : 'text',
+      // an absent value has a meaning of its own (r = r*, j = 5, the default range): say so
+      placeholder: parameter.default === null || parameter.default === undefined ? 'default (see below)' : null,
     });
     input.value = initial ?? defaultText(parameter);
   }
@@ -153,7 +156,9 @@ function showProblem(problem) {
   let placed = 0;
   const unplaced = [];
   for (const error of problem.errors || []) {
-    const name = String(error.parameter || '').split('.').pop();
+    // "d", "s.3" (an entry of a list), "d4b.h" (a prefixed name): the first part that is a field
+    const parts = String(error.parameter || '').split('.');
+    const name = parts.find((part) => $(`param-${part}`)) || parts[0];
     const box = $(`error-${name}`);
     const input = $(`param-${name}`);
     const received = error.value === null || error.value === undefined ? '' : ` (received ${JSON.stringify(error.value)})`;
@@ -259,18 +264,24 @@ function drawChecks(curve) {
   }
 }
 
-function updateDownloads(request) {
+// The current values as a GET query: lists (a custom sequence s) comma-separated, as every GET
+// endpoint accepts them.
+function getQuery() {
+  return new URLSearchParams(changedValues().map(([name, value, kind]) => [
+    name, kind === 'array' ? value.split(/[\s,;]+/).filter(Boolean).join(',') : value]));
+}
+
+function updateDownloads() {
   const list = $('downloads');
   list.replaceChildren();
   const id = state.entry.id;
   for (const format of ['json', 'csv', 'svg']) {
-    const query = new URLSearchParams(request.query);
+    const query = getQuery();
     query.set('format', format);
     const a = html('a', { href: `/discretizations/${id}?${query}`, download: `${id}.${format}`, 'data-format': format }, `${format.toUpperCase()} of this curve`);
     list.append(html('li', {}, null));
     list.lastChild.append(a);
   }
-  if (request.method === 'POST') list.append(html('li', { class: 'hint' }, 'These links use GET: list parameters are sent only by POST.'));
 }
 
 function shareURL() {
@@ -319,7 +330,8 @@ async function compute() {
   await loadSmooth(curve);
   drawPlot();
   drawChecks(curve);
-  updateDownloads(request);
+  updateDownloads();
+  updateFigures();
   $('status').textContent = `${curve.title}: ${curve.vertices.length} vertices, indices ${curve.indices[0]} … ${curve.indices[curve.indices.length - 1]}.`;
   document.body.dataset.state = 'ready';
   document.body.dataset.computed = String(Number(document.body.dataset.computed || 0) + 1);
@@ -344,17 +356,24 @@ function smoothPoints(body) {
   return null;
 }
 
+// A polygon below the x-axis (D2a: p_i^y < 0) is compared with the mirrored catenary −h·cosh(x/h).
+function mirrored(curve) {
+  return curve.vertices.every(([, y]) => Number(y) < 0);
+}
+
 function overlayH(curve) {
   const typed = Number($('overlay-h').value);
   if ($('overlay-h').value.trim() !== '' && Number.isFinite(typed) && typed > 0) return typed;
   if (typeof curve.parameters.h === 'number') return curve.parameters.h;
-  if (curve.constants.d3 !== undefined) return Number(curve.constants.d3); // c of (D3) is h for h·cosh(x/h)
-  return Math.min(...curve.vertices.map(([, y]) => Number(y)));
+  if (curve.constants.d3 !== undefined) return Number(Number(curve.constants.d3).toPrecision(12)); // c of (D3) is h for h·cosh(x/h)
+  const lowest = Math.min(...curve.vertices.map(([, y]) => Math.abs(Number(y))));
+  return Number(lowest.toPrecision(6)); // the height at the vertex of h·cosh(x/h)
 }
 
 async function loadSmooth(curve) {
   state.smooth = {};
-  const wanted = [['catenary', 'smooth catenary h·cosh(x/h)', true]];
+  const flip = mirrored(curve);
+  const wanted = [['catenary', flip ? 'mirrored smooth catenary −h·cosh(x/h)' : 'smooth catenary h·cosh(x/h)', true]];
   if (curve.companions?.tractrix) wanted.push(['tractrix', 'smooth tractrix', false]);
   const available = wanted.filter(([name]) => queryParameters(`/smooth/${name}`));
   $('overlay').hidden = available.length === 0;
@@ -376,14 +395,16 @@ async function loadSmooth(curve) {
     if (count) query.set(count, '200');
     try {
       const body = await getJSON(`/smooth/${name}?${query}`);
-      const points = smoothPoints(body);
+      let points = smoothPoints(body);
+      if (points && flip) points = points.map(([x, y]) => [x, -y]);
       if (points) state.smooth[`smooth-${name}`] = { label: `${label}, h = ${h}`, points };
       else notes.push(`${name}: unexpected response shape`);
     } catch (error) {
       notes.push(`${name}: ${error.message}`);
     }
   }
-  $('overlay-status').textContent = notes.length ? `Overlay not drawn — ${notes.join('; ')}` : `Drawn with h = ${h} (from GET /smooth/…).`;
+  const how = flip ? ' and mirrored in the x-axis, as this polygon lies below it' : '';
+  $('overlay-status').textContent = notes.length ? `Overlay not drawn — ${notes.join('; ')}` : `Drawn with h = ${h} (from GET /smooth/…)${how}.`;
 }
 
 // ---- surfaces (GET /surfaces/{id}?format=glb), when the service has them ------------------------
@@ -408,7 +429,7 @@ function discoverSurfaces() {
 
 function surfaceURL(surface, format) {
   const query = new URLSearchParams();
-  const values = new Map(changedValues().map(([n, v]) => [n, v]));
+  const values = new Map([...getQuery()]);
   for (const name of surface.query) {
     if (name === 'format') continue;
     if (['discretization', 'meridian'].includes(name)) { query.set(name, state.entry.id); continue; }
@@ -462,7 +483,13 @@ async function show3D() {
   if (!response.ok) {
     let problem = {};
     try { problem = await response.json(); } catch { /* not JSON */ }
-    status.textContent = `The service refused the surface: ${problem.detail || response.status}`;
+    // no stale picture under a refusal: the old surface and its legend go
+    $('view3d').hidden = true;
+    $('view3d-keys').hidden = true;
+    $('colour-legend').textContent = '';
+    const named = (problem.errors || []).map((e) => `${e.parameter}: ${e.constraint}`).join('; ');
+    status.textContent = `No ${surface.id} for ${state.entry.id}: ${named || problem.detail || `HTTP ${response.status}`}.`;
+    document.body.dataset.surface = 'error';
     return;
   }
   const container = $('view3d');
@@ -472,6 +499,7 @@ async function show3D() {
     const info = await view.showSurface(container, await response.arrayBuffer(), $('colour-by').value);
     $('colour-legend').textContent = info.legend;
     status.textContent = `${surface.id}: ${info.triangles} triangles. Drag or use the arrow keys to rotate.`;
+    document.body.dataset.surface = 'ready';
     updateSurfaceDownloads();
   } catch (error) {
     status.textContent = `The surface could not be drawn: ${error.message}`;
@@ -480,18 +508,65 @@ async function show3D() {
 
 // ---- figures --------------------------------------------------------------------------------
 
-async function setupFigures() {
-  let figures = [];
-  try { figures = await getJSON('/figures'); } catch { return; }
+// A figure follows the form: the values that differ from their defaults and that the figure
+// also takes (same names, same domains) go into its URL.
+function figureURL(figure) {
+  const names = new Set(figure.parameters.map((p) => p.name));
+  const query = new URLSearchParams([...getQuery()].filter(([name]) => names.has(name)));
+  const text = query.toString();
+  return text ? `${figure.url}?${text}` : figure.url;
+}
+
+function figureItem(figure, url) {
+  const li = html('li', { 'data-figure': figure.id });
+  const link = html('a', { href: url, class: 'figure-frame' });
+  const img = html('img', { src: url, alt: figure.title, loading: 'lazy', width: 800, height: 640 });
+  const caption = html('p', {}, `${figure.title} (${figure.reference})`);
+  const problem = html('p', { class: 'field-error', hidden: true, role: 'alert' });
+  img.addEventListener('error', async () => {
+    let detail = 'the figure could not be drawn';
+    try { detail = (await (await fetch(url)).json()).detail || detail; } catch { /* not JSON */ }
+    img.hidden = true; // no broken-image icon: the message says it
+    problem.textContent = `Not drawn with these parameters: ${detail}`;
+    problem.hidden = false;
+    li.dataset.state = 'error';
+  });
+  img.addEventListener('load', () => {
+    // a figure in several panels keeps a readable size on a phone: it scrolls sideways instead
+    if (img.naturalWidth > 2 * img.naturalHeight) img.classList.add('wide');
+    li.dataset.state = 'ready';
+  });
+  link.append(img);
+  li.append(link, caption, problem);
+  return li;
+}
+
+function updateFigures() {
+  if (!state.entry) return;
+  const own = state.figures.filter((f) => (f.discretizations || []).includes(state.entry.id));
   const list = $('figure-list');
-  list.replaceChildren();
-  for (const figure of figures) {
-    const li = html('li');
-    const link = html('a', { href: figure.url });
-    link.append(html('img', { src: figure.url, alt: figure.title, loading: 'lazy', width: 800, height: 640 }));
-    li.append(link, html('p', {}, `${figure.title} (${figure.reference})`));
-    list.append(li);
+  const wanted = own.map((f) => [f, figureURL(f)]);
+  const shown = [...list.querySelectorAll('li')].map((li) => li.querySelector('a')?.getAttribute('href'));
+  if (JSON.stringify(shown) !== JSON.stringify(wanted.map(([, url]) => url))) {
+    list.replaceChildren(...wanted.map(([f, url]) => figureItem(f, url)));
   }
+  $('figures-note').textContent = own.length
+    ? `The paper's figure${own.length === 1 ? '' : 's'} of ${state.entry.id}, drawn with the parameters above that ${own.length === 1 ? 'it takes' : 'they take'} (${own.length === 1 ? 'its' : 'their'} own defaults for the rest).`
+    : `The paper has no figure of ${state.entry.id}; the others are below.`;
+  const others = $('all-figures');
+  if (!others.children.length) {
+    for (const figure of state.figures) {
+      const li = html('li', { 'data-figure': figure.id });
+      const a = html('a', { href: figure.url }, figure.title);
+      li.append(a, html('span', { class: 'hint' }, ` — ${figure.reference}`));
+      others.append(li);
+    }
+  }
+}
+
+async function setupFigures() {
+  try { state.figures = await getJSON('/figures'); } catch { state.figures = []; }
+  updateFigures();
 }
 
 // ---- start ----------------------------------------------------------------------------------
@@ -538,7 +613,7 @@ async function start() {
   $('show-3d').addEventListener('click', show3D);
   $('colour-by').addEventListener('change', () => { if (!$('view3d').hidden) show3D(); });
   setupSurfaces();
-  setupFigures();
+  await setupFigures();
   await compute();
 }
 

@@ -29,7 +29,19 @@ function attribute(geometry, name) {
   return geometry.getAttribute(name) || geometry.getAttribute(name.toUpperCase());
 }
 
-function paint(meshes, quantity) {
+// What the values say, before colouring them: GLB stores float32 (7 digits), so values within
+// a millionth of each other are one value, and values far below the surface's own scale of the
+// quantity (1/size for H, 1/size² for K) are zero up to rounding — colouring that noise would
+// paint stripes where the service computed 0.
+function classify(low, high, quantity, size) {
+  const top = Math.max(Math.abs(low), Math.abs(high));
+  const unit = quantity === '_k' ? 1 / (size * size) : 1 / size;
+  if (top <= 1e-9 * unit) return 'zero';
+  if (high - low <= 1e-6 * top) return 'constant';
+  return 'varies';
+}
+
+function paint(meshes, quantity, size) {
   let low = Infinity, high = -Infinity, found = false;
   for (const mesh of meshes) {
     const values = attribute(mesh.geometry, quantity);
@@ -37,13 +49,15 @@ function paint(meshes, quantity) {
     found = true;
     for (let k = 0; k < values.count; k++) { const v = values.getX(k); low = Math.min(low, v); high = Math.max(high, v); }
   }
+  const kind = found ? classify(low, high, quantity, size) : 'none';
   for (const mesh of meshes) {
     const geometry = mesh.geometry;
     const values = attribute(geometry, quantity);
     const count = geometry.getAttribute('position').count;
     const colours = new Float32Array(count * 3);
     for (let k = 0; k < count; k++) {
-      const c = values ? colour(values.getX(k), low, high) : new THREE.Color(0.55, 0.65, 0.8);
+      const c = values && kind === 'varies' ? colour(values.getX(k), low, high)
+        : values ? colour(0, 0, 0) : new THREE.Color(0.55, 0.65, 0.8);
       colours.set([c.r, c.g, c.b], 3 * k);
     }
     geometry.setAttribute('color', new THREE.BufferAttribute(colours, 3));
@@ -52,7 +66,9 @@ function paint(meshes, quantity) {
   if (quantity === 'none') return 'Plain colour.';
   if (!found) return `This file carries no ${quantity.toUpperCase().slice(1)} attribute.`;
   const name = quantity === '_k' ? 'K' : 'H';
-  if (!(high > low)) return `${name} = ${low.toPrecision(6)} on every face.`;
+  const top = Math.max(Math.abs(low), Math.abs(high));
+  if (kind === 'zero') return `${name} = 0 on every face, up to rounding (|${name}| ≤ ${top.toExponential(1)}).`;
+  if (kind === 'constant') return `${name} = ${((low + high) / 2).toPrecision(6)} on every face.`;
   return `${name} from ${low.toPrecision(4)} (blue) to ${high.toPrecision(4)} (${low < 0 && high > 0 ? 'red; white is 0' : 'red'}).`;
 }
 
@@ -64,12 +80,12 @@ export async function showSurface(container, buffer, quantity) {
   const meshes = [];
   gltf.scene.traverse((node) => { if (node.isMesh) meshes.push(node); });
   if (!meshes.length) throw new Error('the file holds no mesh');
-  const legend = paint(meshes, quantity);
   const group = new THREE.Group();
   group.add(gltf.scene);
   const box = new THREE.Box3().setFromObject(gltf.scene);
   const centre = box.getCenter(new THREE.Vector3());
   const size = box.getSize(new THREE.Vector3()).length() || 1;
+  const legend = paint(meshes, quantity, size);
   gltf.scene.position.sub(centre);
   scene.add(group);
   scene.add(new THREE.HemisphereLight(0xffffff, 0x667788, 2.2));
@@ -129,5 +145,6 @@ export async function showSurface(container, buffer, quantity) {
       renderer.dispose();
     },
   };
+  container.dataset.legend = legend;
   return { triangles: renderer.info.render.triangles, legend };
 }
