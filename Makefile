@@ -49,7 +49,7 @@ browser:
 
 # glibc malloc: few arenas and a fixed mmap threshold, so that the large numpy buffers of big
 # responses go back to the system after each request (bench/load.py measures it).
-SERVER_ENV := MALLOC_ARENA_MAX=2 MALLOC_MMAP_THRESHOLD_=131072
+SERVER_ENV := MALLOC_ARENA_MAX=2 MALLOC_MMAP_THRESHOLD_=131072 MALLOC_TRIM_THRESHOLD_=8388608
 
 run: $(BIN)/.runtime-installed $(VENDOR)/.built
 	$(SERVER_ENV) $(BIN)/python -m uvicorn app.main:app --host $(HOST) --port $(PORT) --workers $(WORKERS)
