@@ -48,7 +48,9 @@ browser:
 	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq chromium; }
 
 # glibc malloc: few arenas and a fixed mmap threshold, so that the large numpy buffers of big
-# responses go back to the system after each request (bench/load.py measures it).
+# responses go back to the system after each request (bench/load.py measures it); a trim
+# threshold of 8 MiB keeps the 64 KiB block temporaries of the numpy kernels on the heap instead
+# of returning and faulting them back block by block (docs/performance.md).
 SERVER_ENV := MALLOC_ARENA_MAX=2 MALLOC_MMAP_THRESHOLD_=131072 MALLOC_TRIM_THRESHOLD_=8388608
 
 run: $(BIN)/.runtime-installed $(VENDOR)/.built

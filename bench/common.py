@@ -6,7 +6,8 @@ ratio of every subject sample to the reference sample just before it, and report
 those ratios. A slow drift of the machine (another process starting) then moves both sides of
 each ratio alike. Compute is timed in CPU time of this process (``time.process_time``: numpy
 runs on one thread here), so that time slices taken by other processes on the shared machine do
-not count; on an idle machine it equals the wall time. HTTP figures are wall times (bench/http.py).
+not count; on an idle machine it equals the wall time. HTTP figures are wall times
+(bench/serving.py).
 """
 
 from __future__ import annotations

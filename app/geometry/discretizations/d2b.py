@@ -271,8 +271,8 @@ def evaluate(ar: Arithmetic, data: D2bPolygons, detail: bool = False) -> list[Ch
     checks = [
         check(MEAN_CURVATURE, 0, minimal_residuals(ring) if ring else ar.zeros(0)),
         check(PARALLEL, 0, edge_parallel_residuals(p, n)),
-        equation_17_check(ar, indices, [(p, n)], tolerance, detail)
-        if data.count > 1
+        equation_17_check(ar, indices, [(p, n)], tolerance, detail, [ring])
+        if ring is not None
         else not_applicable(EQUATION_17, tolerance, "a face needs two vertices"),
         check(RADII, 0, relative_difference(ar, p[:, 1], radii)),
         check(RECURSION, 1, recursion),
