@@ -75,8 +75,13 @@ fuzz: $(BIN)/.dev-installed
 load: $(BIN)/.dev-installed
 	$(BIN)/python bench/load.py
 
+# Ratios measured side by side (docs/performance.md): kernels, constructions, D4b as served, mp,
+# and HTTP on 127.0.0.1 with wrk (Debian's package, installed here when missing), in the
+# server's malloc settings. Under five minutes.
 bench: $(BIN)/.dev-installed
-	$(BIN)/python bench/run.py
+	command -v wrk >/dev/null 2>&1 || { $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq wrk; }
+	$(SERVER_ENV) $(BIN)/python bench/run.py
 
 clean:
 	rm -rf $(VENV) .pytest_cache .mypy_cache .ruff_cache node_modules $(VENDOR) test-output

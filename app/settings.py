@@ -27,7 +27,8 @@ class Settings(BaseSettings):
         1_000_000,
         ge=1,
         description="Most (digits + 200) × steps in precision=mp (the cost of mp grows with "
-        "both; about 1.5 s at the limit on a 2-core machine).",
+        "both; for D4b with every check about 5–8 s at the limit on a 2-core machine, see "
+        "docs/performance.md).",
     )
     max_svg_vertices: int = Field(
         20_001,

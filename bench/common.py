@@ -56,9 +56,11 @@ def compare(
     repeat: int = 7,
     min_time: float = 0.0,
     reference_min_time: float = 0.02,
+    warm: bool = True,
 ) -> Paired:
     """Median ratio subject / reference, the two sampled alternately (see the module doc)."""
-    subject()  # warm up: imports, caches, first-touch allocations
+    if warm:
+        subject()  # warm up: imports, caches, first-touch allocations
     pairs = []
     for _ in range(repeat):
         ref = sample(reference, reference_min_time)

@@ -6,8 +6,9 @@ curve: the memory-bandwidth floor) and the printed ratio is the median of the pa
 same way against the copy): numpy has no fused kernels, so a formula with one exp and k other
 elementwise operations costs at least about one exp pass plus k cheaper passes.
 
-"arrays" is how many (n, 2) arrays the kernel returns (D4a returns four polygons, D2a the
-sequence f, the Gauss image, its edges and p): its own floor is that many copies.
+"arrays" is how many (n, 2) arrays the kernel writes (D4a returns four polygons, D2a the
+sequence f, the Gauss image, its edges and p; Theorem 3 one coordinate): its own floor is that
+many copies.
 
 Run: .venv/bin/python bench/kernels.py [vertices]   (default 10^6; about 40 s)
 """
@@ -39,6 +40,7 @@ def kernels(ar: Float64, n: int) -> list[tuple[str, int, Callable[[], object]]]:
     """(label, (n, 2) arrays returned, function) for every kernel at n vertices."""
     lo, hi = -(n // 2), n - n // 2 - 1
     i = ar.indices(lo, hi)
+    even, odd = i[i % 2 == 0], i[i % 2 == 1]  # (8) holds for even indices, (9) for odd ones
     x = np.linspace(-3.0, 3.0, n)
     half = n // 2
     a, b, lam = 1.0, 1.0 + 2.0 / n, 0.5
@@ -56,10 +58,10 @@ def kernels(ar: Float64, n: int) -> list[tuple[str, int, Callable[[], object]]]:
         ),
         (
             "D2a-hex Theorem 3 (8), (9) p^y",
-            1,
+            0.5,
             lambda: (
-                d2a_closed.theorem_3_y_even(ar, a, b, lam, 0.0, i),
-                d2a_closed.theorem_3_y_odd(ar, a, b, lam, 0.0, i),
+                d2a_closed.theorem_3_y_even(ar, a, b, lam, 0.0, even),
+                d2a_closed.theorem_3_y_odd(ar, a, b, lam, 0.0, odd),
             ),
         ),
         ("S1 catenary samples", 1, lambda: smooth.catenary(ar, 1.0, x)),
@@ -102,7 +104,7 @@ def main(n: int = 10**6) -> None:
         f"{exp.ratio:.2f}× copy)"
     )
     for label, arrays, function in kernels(ar, n):
-        paired = compare(copy, function, repeat=5)
+        paired = compare(copy, function, repeat=3 if "3D" in label else 5)
         target = TARGET if "construction (3D" not in label else None
         line = ratio_row(label, paired, "copy", target)
         print(f"{line}   {paired.ratio / exp.ratio:6.1f}× exp   ({arrays:g} arrays)")

@@ -9,6 +9,7 @@ off) on a free port of 127.0.0.1 and measures, with wall-clock time:
    - *cached*: the same URL again and again (the response cache's fast path);
    - *computed*: a different d on every request (no cache can help: the full computation with
      every check, what a slider in a front end asks for);
+   and the computed one with 2 workers against 1;
 2. a 10^6-vertex response (the catenary sampled 10^6 times: its JSON is the vertex array plus
    the indices) fetched whole over a socket, first request (a new x_max each time, so computed)
    and cached, as JSON and as format=npy, against ``orjson.dumps`` of the same (n, 2) array in
@@ -134,7 +135,7 @@ def fetch(port: int, path: str, headers: str = "") -> tuple[float, bytes]:
     return elapsed, body
 
 
-def start_server(port: int) -> subprocess.Popen[bytes]:
+def start_server(port: int, workers: int = 1) -> subprocess.Popen[bytes]:
     command = [
         sys.executable,
         "-m",
@@ -145,7 +146,7 @@ def start_server(port: int) -> subprocess.Popen[bytes]:
         "--port",
         str(port),
         "--workers",
-        "1",
+        str(workers),
         "--loop",
         "uvloop",
         "--http",
@@ -301,6 +302,28 @@ def gzip_levels(count: int) -> None:
         )
 
 
+def two_workers(base: str, script: str) -> None:
+    """The computed small GET at concurrency 32: 2 workers against 1 (wrk shares the cores)."""
+    port = free_port()
+    server = start_server(port, workers=2)
+    try:
+        fetch(port, SMALL)
+        pairs = []
+        for _ in range(ROUNDS):
+            one = wrk(base, SMALL, 32, script)
+            two = wrk(f"http://127.0.0.1:{port}", SMALL, 32, script)
+            pairs.append((two, one))
+    finally:
+        server.terminate()
+        server.wait(timeout=20)
+    ratio = statistics.median(t.rps / o.rps for t, o in pairs)
+    rps = statistics.median(t.rps for t, _ in pairs)
+    print(
+        f" workers: D4b computed, c=32, 2 workers {rps:7.0f} req/s   {ratio:5.2f}× 1 worker "
+        f"(p99 {_ms(statistics.median(t.p99 for t, _ in pairs))})"
+    )
+
+
 def main() -> None:
     port = free_port()
     base = f"http://127.0.0.1:{port}"
@@ -313,6 +336,7 @@ def main() -> None:
         print(f"HTTP on 127.0.0.1: uvicorn (uvloop, httptools), 1 worker; {cores} cores, with wrk")
         fetch(port, SMALL)
         small_gets(base, script)
+        two_workers(base, script)
         big_response(port, BIG_COUNT, gzip_too=False)
         big_response(port, BIG_COUNT // 10, gzip_too=True)
         gzip_levels(BIG_COUNT // 10)

@@ -52,8 +52,8 @@ def validate(h: float, x_min: float, x_max: float, count: int) -> None:
 def sample(ar: Arithmetic, x_min: float, x_max: float, count: int) -> Array:
     """x_k = x_min + (x_max − x_min)·k/(count − 1), k = 0 .. count − 1 (both ends exact)."""
     lo, hi = ar.scalar(x_min), ar.scalar(x_max)
-    k = ar.indices(0, count - 1)
-    x = lo + (hi - lo) * k / (count - 1)
+    width, last = hi - lo, count - 1
+    x = ar.values(lambda k: lo + width * k / last, ar.indices(0, last))
     x[-1] = hi
     return x
 

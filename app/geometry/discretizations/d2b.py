@@ -343,7 +343,7 @@ def _example(
     if data.sequence_name != name or data.j is None:
         return not_applicable(statement, tolerance, f"applies to sequence={name} only")
     x = n[:, 0]
-    t = ar.array(indices.tolist()) / ar.scalar(data.j)
+    t = ar.array(indices) / ar.scalar(data.j)
     g = (
         catenoid_convergence.example_12_g(t)
         if name == "example-12"
