@@ -198,6 +198,12 @@ def test_npy_round_trip_equals_the_json(client: TestClient) -> None:
     array = np.load(io.BytesIO(response.content), allow_pickle=False)
     assert array.dtype == np.dtype("<f8") and array.shape == (20, 2)
     np.testing.assert_array_equal(array, np.array(body["vertices"]))  # bit for bit
+    # as documented for clients without numpy: version 1.0, header length in bytes 8–9
+    content = response.content
+    assert content[:8] == b"\x93NUMPY\x01\x00"
+    start = 10 + int.from_bytes(content[8:10], "little")
+    raw = np.frombuffer(content[start:], dtype="<f8").reshape(-1, 2)
+    np.testing.assert_array_equal(raw, array)
     assert body["indices"] == list(range(-7, 13))
     posted = client.post("/discretizations/d4b", json={**params, "format": "npy"})
     assert posted.content == response.content
