@@ -48,8 +48,10 @@ browser:
 	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq chromium; }
 
 # glibc malloc: few arenas and a fixed mmap threshold, so that the large numpy buffers of big
-# responses go back to the system after each request (bench/load.py measures it).
-SERVER_ENV := MALLOC_ARENA_MAX=2 MALLOC_MMAP_THRESHOLD_=131072
+# responses go back to the system after each request (bench/load.py measures it); a trim
+# threshold of 8 MiB keeps the 64 KiB block temporaries of the numpy kernels on the heap instead
+# of returning and faulting them back block by block (docs/performance.md).
+SERVER_ENV := MALLOC_ARENA_MAX=2 MALLOC_MMAP_THRESHOLD_=131072 MALLOC_TRIM_THRESHOLD_=8388608
 
 run: $(BIN)/.runtime-installed $(VENDOR)/.built
 	$(SERVER_ENV) $(BIN)/python -m uvicorn app.main:app --host $(HOST) --port $(PORT) --workers $(WORKERS)
@@ -73,8 +75,13 @@ fuzz: $(BIN)/.dev-installed
 load: $(BIN)/.dev-installed
 	$(BIN)/python bench/load.py
 
+# Ratios measured side by side (docs/performance.md): kernels, constructions, D4b as served, mp,
+# and HTTP on 127.0.0.1 with wrk (Debian's package, installed here when missing), in the
+# server's malloc settings. Under five minutes.
 bench: $(BIN)/.dev-installed
-	$(BIN)/python bench/run.py
+	command -v wrk >/dev/null 2>&1 || { $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq wrk; }
+	$(SERVER_ENV) $(BIN)/python bench/run.py
 
 clean:
 	rm -rf $(VENV) .pytest_cache .mypy_cache .ruff_cache node_modules $(VENDOR) test-output

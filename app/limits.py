@@ -6,8 +6,10 @@ from app.geometry.precision import Arithmetic, arithmetic
 from app.settings import Settings
 
 #: The cost of an mp step grows like (digits + this): below ~200 digits the Python overhead of
-#: each mpmath operation dominates (measured: 1000 D4b vertices take 0.5 s at 50 digits and
-#: 1.4 s at 1000 digits with the gmpy2 backend).
+#: each mpmath operation dominates. Measured when this was set: 1000 D4b vertices took 0.5 s at
+#: 50 digits and 1.4 s at 1000 digits (gmpy2 backend); since the checks of Section 5 joined
+#: D4b they take about 1.7–2.1 s at 50 digits, 2.8 s at 500 and 5.7 s at 1000
+#: (bench/mp.py, docs/performance.md), so the fixed part now weighs like ~800 digits.
 MP_OVERHEAD_DIGITS = 200
 
 

@@ -4,6 +4,7 @@ from fastapi import FastAPI
 from fastapi.middleware.cors import CORSMiddleware
 
 from app import __version__, errors
+from app.response_cache import FastPath, ResponseCache
 from app.routers import (
     convergence,
     discretizations,
@@ -61,12 +62,17 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         redoc_url=None,
     )
     app.state.settings = settings or get_settings()
+    app.state.response_cache = ResponseCache(
+        app.state.settings.response_cache_bytes, app.state.settings.response_cache_entry_bytes
+    )
+    # innermost: cached answers still pass CORS and the security headers
+    app.add_middleware(FastPath, cache=app.state.response_cache, settings=app.state.settings)
     app.add_middleware(
         CORSMiddleware,
         allow_origins=app.state.settings.cors_origins,
         allow_methods=["GET", "POST"],
         allow_headers=["Content-Type", "If-None-Match"],
-        expose_headers=["ETag"],
+        expose_headers=["ETag", "X-First-Index"],
     )
     app.add_middleware(SecurityHeaders)
     errors.install(app)

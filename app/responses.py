@@ -6,7 +6,7 @@ validation on the way out (see the serving-path facts in design.md and bench/).
 
 from __future__ import annotations
 
-import hashlib
+import io
 from collections.abc import Callable
 from typing import Any
 
@@ -14,17 +14,25 @@ import numpy as np
 import orjson
 from fastapi import Request, Response
 
-from app import __version__
 from app.geometry.checks import Check
 from app.geometry.convergence import Study
 from app.geometry.curve import Curve, Polyline
 from app.geometry.errors import NotRepresentableError
 from app.geometry.precision import Arithmetic, Array, MultiPrecision
+from app.response_cache import (
+    ResponseCache,
+    caching_headers,
+    entry_of,
+    etag_for,
+    not_modified,
+    reply,
+)
 from app.settings import Settings
 
 JSON_OPTIONS = orjson.OPT_SERIALIZE_NUMPY
 JSON_MEDIA_TYPE = "application/json"
 CSV_MEDIA_TYPE = "text/csv; charset=utf-8"
+NPY_MEDIA_TYPE = "application/x-npy"
 
 
 class JSONBytesResponse(Response):
@@ -138,36 +146,52 @@ def curve_csv(curve: Curve) -> bytes:
     return ("\n".join(lines) + "\n").encode()
 
 
-def etag_for(key: str) -> str:
-    """A strong ETag for a canonical request key (version-scoped)."""
-    digest = hashlib.sha256(f"{__version__}\n{key}".encode()).hexdigest()[:32]
-    return f'"{digest}"'
+def curve_npy(curve: Curve) -> tuple[bytes, int]:
+    """The vertices of ``p`` as a NumPy .npy file ((n, 2) ``<f8``), and the first index.
 
-
-def _matches(header: str | None, etag: str) -> bool:
-    if not header:
-        return False
-    if header.strip() == "*":
-        return True
-    tags = [tag.strip().removeprefix("W/") for tag in header.split(",")]
-    return etag in tags
+    Rows are consecutive indices from the first one. float64 only (the request models refuse
+    format=npy with precision=mp).
+    """
+    ensure_finite(curve)
+    points = coordinates(curve.arithmetic, curve.polygon.vertices)
+    if not isinstance(points, np.ndarray):
+        raise NotRepresentableError("format", "format=npy needs precision=float64", "npy")
+    buffer = io.BytesIO()
+    np.lib.format.write_array(buffer, points.astype("<f8", copy=False), allow_pickle=False)
+    indices = curve.polygon.indices
+    return buffer.getvalue(), int(indices[0]) if len(indices) else 0
 
 
 def cached(
     request: Request, key: str, settings: Settings, build: Callable[[], Response]
 ) -> Response:
-    """Serve a deterministic GET: 304 on a matching If-None-Match, else ``build()``.
+    """Serve a deterministic request from the response cache, or ``build()`` it and keep it.
 
-    The ETag is derived from the canonical request, so a revalidation costs no computation.
+    GET: 304 on a matching If-None-Match before anything else (the ETag is derived from the
+    canonical request, so a revalidation costs no computation), and ETag, Cache-Control on the
+    answer; the raw request is remembered for ``FastPath``. GET and POST share the cache entry
+    of one canonical key, and both get the gzip variant when they accept it
+    (``app.response_cache``).
     """
-    etag = etag_for(key)
-    headers = {"ETag": etag, "Cache-Control": f"public, max-age={settings.cache_max_age}"}
-    if request.method == "GET" and _matches(request.headers.get("if-none-match"), etag):
-        return Response(status_code=304, headers=headers)
-    response = build()
-    if request.method == "GET":
-        response.headers.update(headers)
-    return response
+    is_get = request.method == "GET"
+    if is_get:
+        answer = not_modified(etag_for(key), request.headers.get("if-none-match"), settings)
+        if answer is not None:
+            return answer.response()
+    cache: ResponseCache = request.app.state.response_cache
+    entry = cache.get(key)
+    if entry is None:
+        response = build()
+        entry = entry_of(response)
+        if entry is None:  # not a plain 200 body: serve it as built
+            if is_get:
+                response.headers.update({"ETag": etag_for(key), **caching_headers(settings)})
+            return response
+        cache.put(key, entry)
+    if is_get and key in cache:
+        cache.alias((request.url.path, request.scope["query_string"]), key)
+    accept = request.headers.get("accept-encoding")
+    return reply(cache, key, entry, settings, is_get, accept).response()
 
 
 def canonical_key(path: str, query: Any) -> str:

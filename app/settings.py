@@ -27,7 +27,8 @@ class Settings(BaseSettings):
         1_000_000,
         ge=1,
         description="Most (digits + 200) × steps in precision=mp (the cost of mp grows with "
-        "both; about 1.5 s at the limit on a 2-core machine).",
+        "both; for D4b with every check about 5–8 s at the limit on a 2-core machine, see "
+        "docs/performance.md).",
     )
     max_svg_vertices: int = Field(
         20_001,
@@ -75,6 +76,29 @@ class Settings(BaseSettings):
     )
     cache_max_age: int = Field(
         86_400, ge=0, description="Cache-Control max-age of computational GETs, in seconds."
+    )
+    response_cache_bytes: int = Field(
+        256 * 2**20,
+        ge=0,
+        description="Bytes of encoded responses kept in each worker's in-process cache (least "
+        "recently used out first; 0 disables the cache).",
+    )
+    response_cache_entry_bytes: int = Field(
+        64 * 2**20,
+        ge=0,
+        description="Largest encoded response the cache keeps (bigger ones are served, not kept).",
+    )
+    gzip_level: int = Field(
+        1, ge=0, le=9, description="gzip level for clients that accept it (0: never compress)."
+    )
+    gzip_min_bytes: int = Field(
+        1024, ge=0, description="Smallest text body that is compressed (smaller ones gain little)."
+    )
+    gzip_max_bytes: int = Field(
+        8 * 2**20,
+        ge=0,
+        description="Largest text body that is compressed: level 1 runs at about 80 MB/s, so "
+        "bigger bodies would wait longer for gzip than for the network (use format=npy).",
     )
 
 

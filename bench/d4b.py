@@ -1,8 +1,12 @@
-"""D4b: construction, closed forms, full computation and JSON encoding for 10^3..10^6 vertices.
+"""D4b as served: the whole computation (polygons and every check) and the JSON of the response.
 
-Every figure is printed as a ratio to a reference measured in the same run:
-- compute against copying the (n, 2) float64 output array (the memory-bandwidth floor);
-- encoding the whole response against orjson serializing the bare vertex array.
+At 10^6 vertices, float64, h = 1, d = 10^-4:
+- the construction (a sequential scalar loop: each stick needs the previous one) and the whole
+  computation with every check, by both methods, against copying the (n, 2) output;
+- encoding the whole response (p, six companions, checks) against orjson of the same arrays
+  alone (the encoder's floor for this document).
+
+Ratios are medians of paired samples (bench/common.py). Run: .venv/bin/python bench/d4b.py
 """
 
 from __future__ import annotations
@@ -15,55 +19,56 @@ import orjson
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from app.geometry import kinematic_closed_forms as cf
 from app.geometry.discretizations import d4b
 from app.geometry.kinematic_tractrix import construct
-from app.geometry.precision import Float64, MultiPrecision
+from app.geometry.precision import Float64
 from app.responses import curve_document, encode_json
-from bench.common import median_time, row
+from bench.common import compare, ratio_row
 
 H, D = 1.0, 1e-4
 
 
-def main(sizes: tuple[int, ...] = (10**3, 10**4, 10**5, 10**6)) -> None:
+def one_size(ar: Float64, n: int) -> None:
+    """Every line for n vertices."""
+    lo, hi = -(n // 2), n - n // 2 - 1
+    out = np.ones((n, 2))
+
+    def copy() -> object:
+        return out.copy()
+
+    repeat = 3 if n >= 10**6 else 5
+    built = compare(copy, lambda: construct(ar, H, D, None, lo, hi), repeat)
+    closed = compare(copy, lambda: d4b.compute(ar, H, D, None, lo, hi, "closed-form"), repeat)
+    full = compare(copy, lambda: d4b.compute(ar, H, D, None, lo, hi), repeat)
+    curve = d4b.compute(ar, H, D, None, lo, hi, "closed-form")
+    arrays = [curve.polygon.vertices, curve.polygon.indices] + [
+        part
+        for polyline in curve.companions.values()
+        for part in (polyline.vertices, polyline.indices)
+    ]
+
+    def alone() -> object:
+        return [orjson.dumps(a, option=orjson.OPT_SERIALIZE_NUMPY) for a in arrays]
+
+    def whole() -> bytes:
+        return encode_json(curve_document(curve))
+
+    size = len(whole())
+    encode = compare(alone, whole, repeat, reference_min_time=0.0)
+    print(f" n = {n:>9,} vertices (copy of the output {built.reference * 1e3:.3f} ms)")
+    label = f"construction (sequential loop, {built.seconds / n * 1e9:.0f} ns/vertex)"
+    print(ratio_row(label, built, "copy"))
+    print(ratio_row("compute, method=closed-form, every check", closed, "copy"))
+    print(ratio_row("compute, method=construction, every check", full, "copy"))
+    print(ratio_row(f"encode the response ({size / 1e6:.1f} MB JSON)", encode, "orjson(arrays)"))
+
+
+def main(sizes: tuple[int, ...] = (10**6,)) -> None:
     ar = Float64()
-    print("D4b, h = 1, d = 0.0001, float64 (median of 5; ratios in the same run)")
+    print(f"D4b as served, h = {H:g}, d = {D:g}, float64 (median of paired ratios)")
     for n in sizes:
-        i_min, i_max = -(n // 2), n - n // 2 - 1
-        out = np.empty((n, 2))
-        copy = median_time(lambda out=out: out.copy())
-        dump = median_time(lambda out=out: orjson.dumps(out, option=orjson.OPT_SERIALIZE_NUMPY))
-        i = ar.indices(i_min, i_max)
-        repeat = 3 if n >= 10**6 else 5
-        closed = median_time(
-            lambda i=i: (cf.hyperbolic_cosine(ar, H, D, i, 0.0), cf.tractrix(ar, H, D, i, 0.0)),
-            repeat,
-        )
-        built = median_time(
-            lambda lo=i_min, hi=i_max: construct(ar, H, D, None, lo, hi), repeat, 0.0
-        )
-        full_cf = median_time(
-            lambda lo=i_min, hi=i_max: d4b.compute(ar, H, D, None, lo, hi, "closed-form"),
-            repeat,
-            0.0,
-        )
-        curve = d4b.compute(ar, H, D, None, i_min, i_max, "closed-form")
-        encode = median_time(lambda curve=curve: encode_json(curve_document(curve)), repeat)
-        print(
-            f" n = {n:>9,} vertices (copy {copy * 1e3:.3f} ms, orjson of the array "
-            f"{dump * 1e3:.3f} ms)"
-        )
-        print(row("closed forms (14) + (16)", closed, copy, "copy"))
-        print(row("construction (sequential loop)", built, copy, "copy"))
-        print(row("per vertex, construction", built / n, copy / n, "copy"))
-        print(row("compute, closed-form method, with checks", full_cf, copy, "copy"))
-        print(row("encode the whole JSON response", encode, dump, "orjson(array)"))
-    mp = MultiPrecision(50)
-    t = median_time(lambda: d4b.compute(mp, H, 0.1, None, -500, 499), 3, 0.0)
-    fl = median_time(lambda: d4b.compute(ar, H, 0.1, None, -500, 499), 3)
-    print(" mp, 50 digits, 1000 vertices, construction with checks")
-    print(row("precision=mp, digits=50", t, fl, "float64"))
+        one_size(ar, n)
 
 
 if __name__ == "__main__":
-    main()
+    main(tuple(int(a) for a in sys.argv[1:]) or (10**6,))

@@ -47,6 +47,7 @@ MIX: list[tuple[str, str, int]] = [  # (kind, path and query, weight)
 SERVER_ENV = {
     "MALLOC_ARENA_MAX": os.environ.get("MALLOC_ARENA_MAX", "2"),
     "MALLOC_MMAP_THRESHOLD_": os.environ.get("MALLOC_MMAP_THRESHOLD_", "131072"),
+    "MALLOC_TRIM_THRESHOLD_": os.environ.get("MALLOC_TRIM_THRESHOLD_", "8388608"),
 }
 
 

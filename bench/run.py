@@ -1,14 +1,23 @@
-"""`make bench`: every benchmark script, one after the other."""
+"""`make bench`: every benchmark, one after the other (about 4 minutes on 2 shared cores).
+
+Every printed figure is a ratio to a reference measured in the same run (medians of paired
+samples): the machine is shared and noisy, absolute times drift. Results and the exact commands
+are in docs/performance.md.
+"""
 
 from __future__ import annotations
 
 import sys
+import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from bench import d4b, stick_chain
+from bench import d4b, kernels, mp, serving, stick_chain
 
 if __name__ == "__main__":
-    d4b.main()
-    stick_chain.main()
+    start = time.perf_counter()
+    for part in (kernels.main, stick_chain.main, d4b.main, mp.main, serving.main):
+        part()
+        print(flush=True)
+    print(f"make bench: {time.perf_counter() - start:.0f} s")

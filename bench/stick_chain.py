@@ -1,8 +1,9 @@
 """D1, D3, D4a: the sequential constructions against their vectorized closed forms.
 
 Each construction is a scalar loop (each step needs the previous vertex: a quadratic root for
-D1 and D3, the previous stick for D4a); the closed forms are numpy expressions (and one cumsum
-for D4a). Every figure is a ratio to copying the (n, 2) float64 output, measured in the same run.
+D1 and D3, the previous stick for D4a), so it cannot be vectorized; the closed forms (theorems,
+checked against the constructions) are numpy kernels (bench/kernels.py). Every figure is a
+median of paired ratios to copying the (n, 2) float64 output, here at 10^5 vertices.
 """
 
 from __future__ import annotations
@@ -20,7 +21,7 @@ from app.geometry import area_length_closed_forms as d3_closed
 from app.geometry import hanging_chain_closed_forms as d1_closed
 from app.geometry import sauer_closed_forms as d4a_closed
 from app.geometry.precision import Float64
-from bench.common import median_time, row
+from bench.common import compare, ratio_row
 
 
 def cases(ar: Float64, lo: int, hi: int) -> list[tuple[str, Callable[[], object]]]:
@@ -39,19 +40,18 @@ def cases(ar: Float64, lo: int, hi: int) -> list[tuple[str, Callable[[], object]
     ]
 
 
-def main(sizes: tuple[int, ...] = (10**3, 10**4, 10**5)) -> None:
+def main(n: int = 10**5) -> None:
     ar = Float64()
-    print("D1 (c = 1e-4, delta = 0.2), D3 (c = 1, delta = 1e-4), D4a (h = 1, s = 1e-3), float64")
-    for n in sizes:
-        lo, hi = -(n // 2), n - n // 2 - 1
-        out = np.empty((n, 2))
-        copy = median_time(lambda out=out: out.copy())
-        repeat = 3 if n >= 10**5 else 5
-        print(f" n = {n:>9,} vertices (copy {copy * 1e3:.3f} ms)")
-        for label, function in cases(ar, lo, hi):
-            seconds = median_time(function, repeat, 0.0)
-            print(row(label, seconds, copy, "copy") + f"   {seconds / n * 1e6:.2f} µs/vertex")
+    lo, hi = -(n // 2), n - n // 2 - 1
+    out = np.ones((n, 2))
+    print(
+        f"D1 (c = 1e-4, delta = 0.2), D3 (c = 1, delta = 1e-4), D4a (h = 1, s = 1e-3), float64, "
+        f"{n:,} vertices (median of paired ratios)"
+    )
+    for label, function in cases(ar, lo, hi):
+        paired = compare(lambda: out.copy(), function, 5)
+        print(f"{ratio_row(label, paired, 'copy')}   {paired.seconds / n * 1e9:7.0f} ns/vertex")
 
 
 if __name__ == "__main__":
-    main()
+    main(int(sys.argv[1]) if len(sys.argv) > 1 else 10**5)

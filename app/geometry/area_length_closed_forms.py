@@ -21,7 +21,7 @@ Nothing here calls the construction (``area_length``): comparing the two tests t
 from __future__ import annotations
 
 from app.geometry.kinematic_closed_forms import amplitude_cosh
-from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
+from app.geometry.precision import Arithmetic, Array, Scalar
 
 
 def half_step(ar: Arithmetic, c: Scalar, delta: Scalar) -> Scalar:
@@ -38,9 +38,13 @@ def amplitude(ar: Arithmetic, c: Scalar, delta: Scalar) -> Scalar:
 def hyperbolic_cosine(
     ar: Arithmetic, c: Scalar, delta: Scalar, y0: Scalar, up: bool, i: Array
 ) -> Array:
-    """p_i = (iδ, a cosh(v_0 ± 2iD)), + for branch up; ``(n,) -> (n, 2)``."""
+    """p_i = (iδ, a cosh(v_0 ± 2iD)), + for branch up; ``(n,) -> (n, 2)``, elementwise in i."""
     a = amplitude(ar, c, delta)
     v0 = ar.acosh(y0 / a) if y0 > a else ar.scalar(0)
     step = 2 * half_step(ar, c, delta)
-    v = v0 + step * i if up else v0 - step * i
-    return stack_points(delta * i, amplitude_cosh(ar, a, v))
+
+    def kernel(i: Array) -> tuple[Array, Array]:
+        v = v0 + step * i if up else v0 - step * i
+        return delta * i, amplitude_cosh(ar, a, v)
+
+    return ar.points(kernel, i)

@@ -42,14 +42,26 @@ def lemma_10_terms(ar: Arithmetic, s: Array, one_minus_s2: Array) -> Array:
 
 
 def lemma_10(ar: Arithmetic, s: Array, one_minus_s2: Array, start: int) -> Array:
-    """Lemma 10, with Σ_{k=0}^{i−1} = −Σ_{k=i}^{−1} for i < 0; ``start`` is the local index of 0."""
-    t = lemma_10_terms(ar, s, one_minus_s2)
-    x = ar.zeros(len(s))
+    """Lemma 10, with Σ_{k=0}^{i−1} = −Σ_{k=i}^{−1} for i < 0; ``start`` is the local index of 0.
+
+    The heights and the terms t_k are elementwise (``Arithmetic``'s blocks); the partial sums
+    are written in place into the x column.
+    """
+    p = ar.points(lambda rest: (rest, 1 / ar.sqrt(rest)), one_minus_s2)
+    x = p[:, 0]
+    x[start] = ar.scalar(0)
+
+    def term(s0: Array, s1: Array, y0: Array, y1: Array) -> Array:
+        return (s0 - s1) * (y0 * y1)  # t_k, with 1/√(1 − s²) = p^y
+
+    y = p[:, 1]
+    t = ar.values(term, s[:-1], s[1:], y[:-1], y[1:])
     if start < len(s) - 1:
-        x[start + 1 :] = np.cumsum(t[start:])
+        np.cumsum(t[start:], out=x[start + 1 :])
     if start > 0:
-        x[:start] = -np.cumsum(t[:start][::-1])[::-1]
-    return stack_points(x, 1 / ar.sqrt(one_minus_s2))
+        np.cumsum(t[start - 1 :: -1], out=x[start - 1 :: -1])
+        np.negative(x[:start], out=x[:start])
+    return p
 
 
 def lemma_10_printed(

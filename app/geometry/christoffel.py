@@ -95,7 +95,8 @@ def _validate_r(r: float | None) -> None:
 
 def quad_sequence(ar: Arithmetic, f0: Scalar, f1: Scalar, i: Array) -> Array:
     """Eq. (3): f_i = f_{i−1} f_1/f_0, i.e. f_0 (f_1/f_0)^i (the similarity applied i times)."""
-    return f0 * ar.exp(i * ar.log(f1 / f0))
+    rate = ar.log(f1 / f0)
+    return ar.values(lambda i: f0 * ar.exp(i * rate), i)
 
 
 def hex_sequence(
@@ -106,33 +107,46 @@ def hex_sequence(
     odd = (i % 2) == 1
     k = ar.array((i - (i % 2)) // 2)  # even index 2k at or below i
     log_s = ar.log(b / a)
-    below = a * ar.exp(k * log_s)  # f_{i} (i even) or f_{i−1} (i odd)
-    above = a * ar.exp((k + 1) * log_s)  # f_{i+1} for odd i
-    return np.where(odd, lam * above + (1 - lam) * below, below)
+
+    def kernel(odd: Array, k: Array) -> Array:
+        below = a * ar.exp(k * log_s)  # f_{i} (i even) or f_{i−1} (i odd)
+        above = a * ar.exp((k + 1) * log_s)  # f_{i+1} for odd i
+        return np.where(odd, lam * above + (1 - lam) * below, below)
+
+    return ar.values(kernel, odd, k)
 
 
 def dual_edges(ar: Arithmetic, edges: Array, weights: Array | int) -> Array:
     """The Christoffel dual edges k Δφ/‖Δφ‖² of eqs. (4), (6); ``(m, 2) -> (m, 2)``."""
-    dx, dy = edges[:, 0], edges[:, 1]
-    scale = weights / (dx * dx + dy * dy)
-    return stack_points(dx * scale, dy * scale)
+
+    def kernel(dx: Array, dy: Array, k: Array | int) -> tuple[Array, Array]:
+        scale = k / (dx * dx + dy * dy)
+        return dx * scale, dy * scale
+
+    if isinstance(weights, int):
+        return ar.points(lambda dx, dy: kernel(dx, dy, weights), edges[:, 0], edges[:, 1])
+    return ar.points(kernel, edges[:, 0], edges[:, 1], weights)
 
 
 def accumulate(ar: Arithmetic, start: Array, edges: Array, lo: int) -> Array:
     """Vertices from p_0 = ``start`` and the edges e_k = p_{k+1} − p_k, k = lo .. hi − 1.
 
     ``lo <= 0``; returns p_lo .. p_hi, ``(hi − lo + 1, 2)``: forward partial sums for k >= 0,
-    backward (subtracting) partial sums for k < 0.
+    backward (subtracting) partial sums for k < 0, written in place into the result.
     """
-    back = edges[:-lo] if lo < 0 else edges[:0]
-    ahead = edges[-lo:] if lo < 0 else edges
-    columns = []
+    zero = -lo  # the row of p_0
+    out = np.empty((len(edges) + 1, 2), dtype=edges.dtype)
+    out[zero] = start
     for axis in (0, 1):
         origin = start[axis]
-        before = origin - np.cumsum(back[::-1, axis])[::-1] if len(back) else back[:, axis]
-        after = origin + np.cumsum(ahead[:, axis]) if len(ahead) else ahead[:, axis]
-        columns.append(np.concatenate([before, ar.array([origin]), after]))
-    return stack_points(columns[0], columns[1])
+        if zero > 0:  # p_k = p_0 − (e_k + … + e_{−1}), summed from e_{−1} backwards
+            np.cumsum(edges[zero - 1 :: -1, axis], out=out[zero - 1 :: -1, axis])
+            np.subtract(origin, out[:zero, axis], out=out[:zero, axis])
+        if zero < len(edges):  # p_k = p_0 + (e_0 + … + e_{k−1})
+            after = out[zero + 1 :, axis]
+            np.cumsum(edges[zero:, axis], out=after)
+            after += origin
+    return out
 
 
 def _assemble(
@@ -145,7 +159,7 @@ def _assemble(
     i_max: int,
 ) -> ChristoffelDual:
     images: CircleImages = project(ar, f)
-    gauss_edges = chords(images)
+    gauss_edges = chords(ar, images)
     start = ar.array([0, r])
     p = accumulate(ar, start, dual_edges(ar, gauss_edges, weights), lo)
     window = slice(i_min - lo, i_max - lo + 1)

@@ -147,10 +147,16 @@ def theorem_3_y_even(
     """
     w = (3 * a * (lam - 1) - 2 * b * lam) * (a * (lam - 1) - b * lam)
     log_s = ar.log(b / a)
-    half = i / 2
-    numerator = _hex_constant(a, b, lam) - ar.exp(-half * log_s) * b * (lam - 3)
-    numerator = numerator + ar.exp(half * log_s) * a * w
-    return r + numerator / _hex_denominator(a, b, lam)
+    constant, denominator = _hex_constant(a, b, lam), _hex_denominator(a, b, lam)
+    low, high = b * (lam - 3), a * w
+
+    def kernel(i: Array) -> Array:
+        half = i / 2
+        numerator = constant - ar.exp(-half * log_s) * low
+        numerator = numerator + ar.exp(half * log_s) * high
+        return r + numerator / denominator
+
+    return ar.values(kernel, i)
 
 
 def theorem_3_y_even_printed(a: Scalar, b: Scalar, lam: Scalar, r: Scalar, i: Array) -> Array:
@@ -167,13 +173,16 @@ def theorem_3_y_odd(
     """Theorem 3, (9) (verified): p_i^y = r + (C + s^{(1−i)/2}(2bλ − 3a(λ−1))
     + s^{(1+i)/2} a²(λ−3)(a(λ−1) − bλ))/D, the printed powers combined with s = b/a."""
     log_s = ar.log(b / a)
-    numerator = _hex_constant(a, b, lam) + ar.exp((1 - i) / 2 * log_s) * (
-        2 * b * lam - 3 * a * (lam - 1)
-    )
-    numerator = numerator + ar.exp((1 + i) / 2 * log_s) * a * a * (lam - 3) * (
-        a * (lam - 1) - b * lam
-    )
-    return r + numerator / _hex_denominator(a, b, lam)
+    constant, denominator = _hex_constant(a, b, lam), _hex_denominator(a, b, lam)
+    low = 2 * b * lam - 3 * a * (lam - 1)
+    high = a * a * (lam - 3) * (a * (lam - 1) - b * lam)
+
+    def kernel(i: Array) -> Array:
+        numerator = constant + ar.exp((1 - i) / 2 * log_s) * low
+        numerator = numerator + ar.exp((1 + i) / 2 * log_s) * high
+        return r + numerator / denominator
+
+    return ar.values(kernel, i)
 
 
 def theorem_3_y_odd_printed(

@@ -33,7 +33,7 @@ from typing import Any
 import numpy as np
 
 from app.geometry.kinematic_closed_forms import amplitude_cosh
-from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
+from app.geometry.precision import Arithmetic, Array, Scalar
 
 
 @dataclass(frozen=True)
@@ -65,30 +65,45 @@ def hyperbolic_cosine(
     """p_i = (iδ, y_0 + 2a sinh(iE/2) sinh(u_0 + (i − 1)E/2)) and the size of its terms.
 
     ``(n, 2)`` and ``(n,)``; the size |iδ| + |y_0| + |2a sinh(…) sinh(…)| adds up the numbers
-    the value is computed from.
+    the value is computed from. Elementwise in i (``Arithmetic.columns``).
     """
     k = parameters(ar, c, delta, y0, y1)
     half = k.step / 2
-    rise = sinh_product(ar, 2 * k.amplitude, half * i, k.angle + half * (i - 1))
-    x = delta * i
-    return stack_points(x, y0 + rise), abs(x) + abs(y0) + abs(rise)
+    factor = 2 * k.amplitude
+    start = k.angle - half
+
+    def kernel(i: Array) -> tuple[Array, Array, Array]:
+        rise = sinh_product(ar, factor, half * i, start + half * i)
+        x = delta * i
+        return x, y0 + rise, abs(x) + abs(y0) + abs(rise)
+
+    table = ar.columns(kernel, 3, i)
+    return table[:, :2], table[:, 2]
 
 
 def sinh_product(ar: Arithmetic, factor: Scalar, a: Array, b: Array) -> Array:
-    """factor · sinh(a) · sinh(b) for factor > 0, through log|sinh| (no intermediate overflow)."""
-    with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
-        logs = ar.log(factor) + _log_abs_sinh(ar, a) + _log_abs_sinh(ar, b)
-        sign = _sign(a) * _sign(b)
-        return np.where(sign == 0, 0 * a, sign * ar.exp(logs))
+    """factor · sinh(a) · sinh(b) for factor > 0, finite whenever the value is representable.
+
+    Directly where that is finite (always in mp); otherwise through log|sinh|:
+    log|sinh x| = |x| − ln 2 + ln(−expm1(−2|x|)), accurate for every x (expm1 keeps small |x|
+    exact to rounding, and −expm1 → 1 without overflow for large |x|; x = 0 gives −∞, so 0).
+    """
+    if not ar.may_overflow:
+        return factor * ar.sinh(a) * ar.sinh(b)
+    with np.errstate(over="ignore", invalid="ignore"):
+        direct = factor * ar.sinh(a) * ar.sinh(b)
+    if ar.all_finite(direct):
+        return direct
+    with np.errstate(divide="ignore"):
+        logs = _log_abs_sinh_plus_ln2(ar, a) + _log_abs_sinh_plus_ln2(ar, b)
+        logs += ar.log(factor / 4)
+        return _sign(a) * _sign(b) * ar.exp(logs)
 
 
-def _log_abs_sinh(ar: Arithmetic, x: Array) -> Array:
-    """log|sinh x|: directly for |x| <= 1, as |x| − log 2 + log(1 − e^{−2|x|}) beyond."""
+def _log_abs_sinh_plus_ln2(ar: Arithmetic, x: Array) -> Array:
+    """log|sinh x| + ln 2 = |x| + ln(−expm1(−2|x|)), one expm1 and one log per entry."""
     v = abs(x)
-    near = v <= 1
-    direct = ar.log(abs(ar.sinh(np.where(near, x, 1))))
-    far = v - ar.log(ar.scalar(2)) + ar.log(1 - ar.exp(-2 * np.where(near, 2, v)))
-    return np.where(near, direct, far)
+    return v + ar.log(-ar.expm1(-2 * v))
 
 
 def _sign(x: Array) -> np.ndarray[Any, np.dtype[np.int64]]:

@@ -7,9 +7,10 @@ Stable forms. With L = ln((h+d)/(h−d)) = 2 artanh(d/h), the printed power form
   (14)  p_i^y = (h−d)^i / (2(h+d)^{i−1}) + (h+d)^i / (2(h−d)^{i−1}) = √(h²−d²) cosh((i − ½)L),
   (16)  d_i   = (−h tanh(iL) + 2di,  h / cosh(iL)).
 The powers overflow or underflow in float64 long before the values do (e.g. (h+d)^i for h = 100
-overflows at i ≈ 154 while p_i^y ≈ 100·1.02^i), so the functions below evaluate
-a·cosh(u) as exp(ln(a/2) + |u|)·(1 + e^{−2|u|}) and a/cosh(u) as exp(ln(2a) − |u|)/(1 + e^{−2|u|}),
-which are accurate for every index whose value is representable.
+overflows at i ≈ 154 while p_i^y ≈ 100·1.02^i), so the functions below evaluate a·cosh(u) and
+a/cosh(u) with cosh of the exponent (finite for |u| < 710), falling back to
+exp(ln(a/2) + |u|)·(1 + e^{−2|u|}) and exp(ln(2a) − |u|)/(1 + e^{−2|u|}) beyond: accurate for
+every index whose value is representable.
 
 Tilted start (an extension, not in the paper): for a first stick at angle β0 the construction is
 the vertical one advanced by the non-integer index τ = ln(tan(β0/2))/L, so p_i and d_i are
@@ -17,6 +18,8 @@ the vertical one advanced by the non-integer index τ = ln(tan(β0/2))/L, so p_i
 """
 
 from __future__ import annotations
+
+import numpy as np
 
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 
@@ -46,47 +49,94 @@ def tilt_shift(ar: Arithmetic, h: Scalar, d: Scalar, beta0: float | None) -> Sca
 def amplitude_cosh(ar: Arithmetic, a: Scalar, u: Array) -> Array:
     """a·cosh(u) for a > 0 (scalar or array), finite whenever the value is representable.
 
-    With E = (a/2)·e^{|u|} = exp(ln(a/2) + |u|): a·cosh(u) = E + (a/2)·((a/2)/E), one exp and
-    five passes over the array (the hot loop of ``method=closed-form``, see bench/).
+    Directly (one cosh, one product) wherever cosh(u) is finite: always in mp, and for
+    |u| < 710 in float64, which covers every float64 range the service accepts (coordinates stay
+    below 1e150). Otherwise through E = (a/2)·e^{|u|} = exp(ln(a/2) + |u|):
+    a·cosh(u) = E + (a/2)·((a/2)/E), finite while the value is.
     """
+    if not ar.may_overflow:
+        return a * ar.cosh(u)
+    with np.errstate(over="ignore"):
+        c = ar.cosh(u)
+    if ar.all_finite(c):
+        return a * c
     half = a / 2
     e = ar.exp(abs(u) + ar.log(half))
     return e + half * (half / e)
 
 
 def amplitude_sech(ar: Arithmetic, a: Scalar, u: Array) -> Array:
-    """a / cosh(u) for a > 0, without overflow of cosh and with gradual underflow."""
+    """a / cosh(u) for a > 0, without overflow of cosh and with gradual underflow.
+
+    Directly where cosh(u) is finite; otherwise as exp(ln(2a) − |u|)/(1 + e^{−2|u|}).
+    """
+    if not ar.may_overflow:
+        return a / ar.cosh(u)
+    with np.errstate(over="ignore"):
+        c = ar.cosh(u)
+    if ar.all_finite(c):
+        return a / c
     v = abs(u)
     return ar.exp(ar.log(2 * a) - v) / (1 + ar.exp(-2 * v))
 
 
+def tanh_and_sech(ar: Arithmetic, t: Array) -> tuple[Array, Array]:
+    """(tanh t, 1/cosh t): sinh(t)·(1/cosh t) and 1/cosh t where cosh t is finite (one cosh,
+    one sinh, one division: cheaper than tanh), else tanh and ``amplitude_sech``.
+
+    Both forms are accurate to a few units of the precision for every t (sinh keeps small |t|
+    relative, and the quotient tends to ±1 for large |t|).
+    """
+    if ar.may_overflow:
+        with np.errstate(over="ignore"):
+            c = ar.cosh(t)
+        if not ar.all_finite(c):
+            return ar.tanh(t), amplitude_sech(ar, ar.scalar(1), t)
+    else:
+        c = ar.cosh(t)
+    sech = 1 / c
+    return ar.sinh(t) * sech, sech
+
+
 def hyperbolic_cosine(ar: Arithmetic, h: Scalar, d: Scalar, i: Array, shift: Scalar) -> Array:
-    """Theorem 5, eq. (14): p_i = ((2i−1)d, √(h²−d²) cosh((i − ½ + τ)L)); ``(n,) -> (n, 2)``."""
+    """Theorem 5, eq. (14): p_i = ((2i−1)d, √(h²−d²) cosh((i − ½ + τ)L)); ``(n,) -> (n, 2)``.
+
+    Elementwise in i (``Arithmetic.points``: float64 runs it in cache-sized blocks).
+    """
     L = log_ratio(ar, h, d)
     amplitude = ar.sqrt((h - d) * (h + d))
-    u = i * L
-    u += (shift - 0.5) * L
-    x = i * (2 * d)
-    x -= d
-    return stack_points(x, amplitude_cosh(ar, amplitude, u))
+    offset = (shift - 0.5) * L
+    step = 2 * d
+
+    def kernel(i: Array) -> tuple[Array, Array]:
+        u = i * L
+        u += offset
+        x = i * step
+        x -= d
+        return x, amplitude_cosh(ar, amplitude, u)
+
+    return ar.points(kernel, i)
 
 
 def tractrix(ar: Arithmetic, h: Scalar, d: Scalar, i: Array, shift: Scalar) -> Array:
     """Theorem 6, eq. (16): d_i = (−h tanh((i+τ)L) + 2di, h / cosh((i+τ)L)); ``(n, 2)``.
 
-    The height is 2h·q/(1 + q²) with q = e^{−|t|}, one exp without overflow (q is normal
-    wherever the served coordinates are: the float64 range check keeps |t| below 350); the
-    x-coordinate keeps tanh, which stays accurate for small |t| where 1 − q² would cancel.
+    tanh and 1/cosh from one cosh and one sinh (``tanh_and_sech``), accurate for small and large
+    |t| alike and without overflow. Elementwise in i (``Arithmetic.points``).
     """
     L = log_ratio(ar, h, d)
-    t = i * L
-    t += shift * L
-    q = ar.exp(-abs(t))
-    height = q * (2 * h)
-    height /= q * q + 1
-    x = i * (2 * d)
-    x -= h * ar.tanh(t)
-    return stack_points(x, height)
+    offset = shift * L
+    step = 2 * d
+
+    def kernel(i: Array) -> tuple[Array, Array]:
+        t = i * L
+        t += offset
+        tanh, sech = tanh_and_sech(ar, t)
+        x = i * step
+        x -= h * tanh
+        return x, h * sech
+
+    return ar.points(kernel, i)
 
 
 def hyperbolic_cosine_printed(ar: Arithmetic, h: Scalar, d: Scalar, i: Array) -> Array:

@@ -43,6 +43,16 @@ CLOCK_STEPS = 4096
 #: Extra decimal digits carried by the mp context beyond the requested ``digits``.
 GUARD_DIGITS = 10
 
+#: Float64 evaluates elementwise formulas over long arrays in blocks of this many entries
+#: (``Arithmetic.points`` and ``Arithmetic.values``): every temporary of a block (64 KiB) stays
+#: in the L2 cache and below glibc's mmap threshold (128 KiB in ``make run``), so a formula of k
+#: numpy passes costs k passes over the cache instead of k passes over memory, each into a fresh
+#: allocation (about 2× faster at 10^6 vertices; bench/kernels.py, docs/performance.md).
+BLOCK_SIZE = 8192
+
+Kernel = Callable[..., Any]
+"""An elementwise formula: arrays aligned entry by entry in, an array (or a pair) out."""
+
 
 class Arithmetic:
     """Elementwise arithmetic in one precision; see the module docstring."""
@@ -53,6 +63,10 @@ class Arithmetic:
     """Unit of the *requested* precision: 2**-52 in float64, 10**-digits in mp."""
     working_eps: float
     """Unit of the precision actually computed with (mp carries guard digits)."""
+    may_overflow: bool
+    """Whether a result can overflow to ±inf (float64's exponent range ends near 1.8e308;
+    mpmath's exponents are unbounded). Formulas with an overflow-free fallback test it to take
+    the direct, cheaper form where it cannot matter."""
 
     def scalar(self, value: float | int | str) -> Scalar:
         """One number in this precision; floats are read as their shortest decimal."""
@@ -74,8 +88,26 @@ class Arithmetic:
         """An ``(n,)`` array of zeros."""
         return self.array([0] * n)
 
+    def points(self, kernel: Kernel, *arrays: Array) -> Array:
+        """``(n, 2)`` points with ``(x, y) = kernel(a, b, …)`` of the aligned ``(n,)`` arrays.
+
+        The kernel must be elementwise (entry k of its results depends on entry k of its
+        arguments only): float64 evaluates it block by block, mp at once, with the same code.
+        """
+        return self.columns(kernel, 2, *arrays)
+
+    def columns(self, kernel: Kernel, width: int, *arrays: Array) -> Array:
+        """``(n, width)``: column j is the j-th result of the elementwise ``kernel``."""
+        return np.stack(kernel(*arrays), axis=1)
+
+    def values(self, kernel: Kernel, *arrays: Array) -> Array:
+        """``(n,)`` values ``kernel(a, b, …)`` of the aligned ``(n,)`` arrays (elementwise)."""
+        result: Array = kernel(*arrays)
+        return result
+
     # elementwise functions (scalars or arrays)
     exp: Callable[[Any], Any]
+    expm1: Callable[[Any], Any]
     log: Callable[[Any], Any]
     log1p: Callable[[Any], Any]
     sqrt: Callable[[Any], Any]
@@ -146,8 +178,10 @@ class Float64(Arithmetic):
     digits = 16
     eps = float(np.finfo(np.float64).eps)
     working_eps = eps
+    may_overflow = True
 
     exp = staticmethod(np.exp)
+    expm1 = staticmethod(np.expm1)
     log = staticmethod(np.log)
     log1p = staticmethod(np.log1p)
     sqrt = staticmethod(np.sqrt)
@@ -181,6 +215,27 @@ class Float64(Arithmetic):
     def zeros(self, n: int) -> Array:
         return np.zeros(n, dtype=np.float64)
 
+    def columns(self, kernel: Kernel, width: int, *arrays: Array) -> Array:
+        n = len(arrays[0]) if arrays else 0
+        if n <= BLOCK_SIZE:
+            return super().columns(kernel, width, *arrays)
+        out = np.empty((n, width), dtype=np.float64)
+        for start in range(0, n, BLOCK_SIZE):
+            block = slice(start, start + BLOCK_SIZE)
+            for column, value in enumerate(kernel(*(a[block] for a in arrays))):
+                out[block, column] = value
+        return out
+
+    def values(self, kernel: Kernel, *arrays: Array) -> Array:
+        n = len(arrays[0]) if arrays else 0
+        if n <= BLOCK_SIZE:
+            return super().values(kernel, *arrays)
+        out = np.empty(n, dtype=np.float64)
+        for start in range(0, n, BLOCK_SIZE):
+            block = slice(start, start + BLOCK_SIZE)
+            out[block] = kernel(*(a[block] for a in arrays))
+        return out
+
     @property
     def pi(self) -> float:
         return float(np.pi)
@@ -193,6 +248,7 @@ class MultiPrecision(Arithmetic):
     """mpmath numbers with ``digits`` significant decimal digits (plus guard digits)."""
 
     mode: PrecisionMode = "mp"
+    may_overflow = False
 
     def __init__(self, digits: int) -> None:
         if digits < 1:
@@ -206,6 +262,7 @@ class MultiPrecision(Arithmetic):
         ctx.npconvert = _array_aware_npconvert(ctx.npconvert)
         self._elementwise = partial(_elementwise, clock=self.check_time)
         self.exp = self._elementwise(ctx.exp)
+        self.expm1 = self._elementwise(ctx.expm1)
         self.log = self._elementwise(ctx.log)
         self.log1p = self._elementwise(ctx.log1p)
         self.sqrt = self._elementwise(ctx.sqrt)

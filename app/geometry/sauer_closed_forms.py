@@ -34,10 +34,11 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
-from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
+from app.geometry.precision import Arithmetic, Array, Scalar
 
 
 @dataclass(frozen=True)
@@ -90,36 +91,56 @@ def _advance(h: Scalar, k: Scalar, outer: Array, inner: Array) -> Array:
 def tractrix(
     ar: Arithmetic, h: Scalar, s: Scalar, beta0: float | None, i_lo: int, i_hi: int
 ) -> ExplicitTractrix:
-    """Explicit (D4a) on i_lo .. i_hi (i_lo <= 0 <= i_hi): x_i, d_i, e_i and p_i (to i_hi − 1)."""
+    """Explicit (D4a) on i_lo .. i_hi (i_lo <= 0 <= i_hi): x_i, d_i, e_i and p_i (to i_hi − 1).
+
+    Every step is elementwise in i (``Arithmetic.points``, ``values``: float64 runs them in
+    cache-sized blocks) except the partial sums x_i, one cumulative sum.
+    """
     c = cusp(ar, h, s, beta0)
     k = (h - s) / h
+    log_k = ar.log(k)
     n = i_hi - i_lo + 1
-    i = np.arange(i_lo, i_hi + 1)
-    distance = ar.array(np.abs(i - c.index).tolist())
-    sin_b = c.sin * ar.exp(distance * ar.log(k))
-    cos_abs = ar.sqrt((1 - sin_b) * (1 + sin_b))
-    cos_b = np.where(i > c.index, -cos_abs, cos_abs)
+
+    def direction(i: Array) -> tuple[Array, Array]:
+        """u_i = (γ_i, σ_i) from σ_i = σ_c k^{|i − c|}."""
+        sin_b = c.sin * ar.exp(abs(i - c.index) * log_k)
+        cos_abs = ar.sqrt((1 - sin_b) * (1 + sin_b))
+        return np.where(i > c.index, -cos_abs, cos_abs), sin_b
+
+    u = ar.points(direction, ar.indices(i_lo, i_hi))
     if c.index in range(i_lo, i_hi + 1):
-        sin_b[c.index - i_lo], cos_b[c.index - i_lo] = c.sin, c.cos
-    pursuit = i[:-1] >= c.index
-    outer = np.where(pursuit, abs(cos_b[1:]), cos_b[:-1])
-    inner = np.where(pursuit, cos_b[:-1], -cos_b[1:])
-    step = _advance(h, k, outer, inner)
-    partial = np.concatenate([ar.zeros(1), np.cumsum(step)])
-    x = partial - partial[-i_lo]
-    u = stack_points(cos_b, sin_b)
-    axis = stack_points(x, ar.zeros(n))
-    # p_i on the normal of stick i, or of stick i+1, whichever avoids cancellation
-    half = step / 2
+        u[c.index - i_lo] = c.cos, c.sin
+    cos_b, sin_b = u[:, 0], u[:, 1]
+
+    def advance(i: Array, before: Array, after: Array) -> Array:
+        """x_{i+1} − x_i from γ_i and γ_{i+1}, in the form without cancellation."""
+        pursuit = i >= c.index
+        outer = np.where(pursuit, abs(after), before)
+        inner = np.where(pursuit, before, -after)
+        return _advance(h, k, outer, inner)
+
+    step = ar.values(advance, ar.indices(i_lo, i_hi - 1), cos_b[:-1], cos_b[1:])
+    x = ar.empty(n)
+    x[0] = ar.scalar(0)
+    np.cumsum(step, out=x[1:])
+    x -= x[-i_lo]
     H = h - s / 2
-    from_i = (H - half * cos_b[:-1]) / sin_b[:-1]
-    from_next = (H + half * cos_b[1:]) / sin_b[1:]
-    p_y = np.where(-cos_b[:-1] >= cos_b[1:], from_i, from_next)
-    p = stack_points(x[:-1] + half, p_y)
+
+    def centre(x: Array, step: Array, cos: Array, sin: Array, cos1: Array, sin1: Array) -> Any:
+        """p_i on the normal of stick i, or of stick i+1, whichever avoids cancellation."""
+        half = step / 2
+        from_i = (H - half * cos) / sin
+        from_next = (H + half * cos1) / sin1
+        return x + half, np.where(-cos >= cos1, from_i, from_next)
+
+    p = ar.points(centre, x[:-1], step, cos_b[:-1], sin_b[:-1], cos_b[1:], sin_b[1:])
+    darboux_length = 2 * h - s
     return ExplicitTractrix(
-        axis_points=axis,
-        tractrix=axis + h * u,
-        darboux=axis + (2 * h - s) * u,
+        axis_points=ar.points(lambda x: (x, ar.zeros(len(x))), x),
+        tractrix=ar.points(lambda x, c, s: (x + h * c, h * s), x, cos_b, sin_b),
+        darboux=ar.points(
+            lambda x, c, s: (x + darboux_length * c, darboux_length * s), x, cos_b, sin_b
+        ),
         hyperbolic_cosine=p,
         cusp=c,
     )

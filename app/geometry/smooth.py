@@ -25,7 +25,7 @@ from typing import Any
 import numpy as np
 
 from app.geometry.errors import DomainError
-from app.geometry.kinematic_closed_forms import amplitude_cosh, amplitude_sech
+from app.geometry.kinematic_closed_forms import amplitude_cosh, amplitude_sech, tanh_and_sech
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 
 
@@ -52,15 +52,15 @@ def validate(h: float, x_min: float, x_max: float, count: int) -> None:
 def sample(ar: Arithmetic, x_min: float, x_max: float, count: int) -> Array:
     """x_k = x_min + (x_max − x_min)·k/(count − 1), k = 0 .. count − 1 (both ends exact)."""
     lo, hi = ar.scalar(x_min), ar.scalar(x_max)
-    k = ar.indices(0, count - 1)
-    x = lo + (hi - lo) * k / (count - 1)
+    width, last = hi - lo, count - 1
+    x = ar.values(lambda k: lo + width * k / last, ar.indices(0, last))
     x[-1] = hi
     return x
 
 
 def catenary(ar: Arithmetic, h: Scalar, x: Array) -> Array:
-    """(S1): (x, h cosh(x/h)); ``(n,) -> (n, 2)``."""
-    return stack_points(x, amplitude_cosh(ar, h, x / h))
+    """(S1): (x, h cosh(x/h)); ``(n,) -> (n, 2)``, elementwise in x."""
+    return ar.points(lambda x: (x, amplitude_cosh(ar, h, x / h)), x)
 
 
 def catenary_offsets(ar: Arithmetic, h: Scalar, x: Array, distance: Scalar) -> tuple[Array, Array]:
@@ -78,8 +78,13 @@ def catenary_offsets(ar: Arithmetic, h: Scalar, x: Array, distance: Scalar) -> t
 
 
 def tractrix(ar: Arithmetic, h: Scalar, x: Array) -> Array:
-    """(S4): d(x) = (x − h tanh(x/h), h / cosh(x/h)); ``(n,) -> (n, 2)``."""
-    return stack_points(x - h * ar.tanh(x / h), amplitude_sech(ar, h, x / h))
+    """(S4): d(x) = (x − h tanh(x/h), h / cosh(x/h)); ``(n,) -> (n, 2)``, elementwise in x."""
+
+    def kernel(x: Array) -> tuple[Array, Array]:
+        tanh, sech = tanh_and_sech(ar, x / h)
+        return x - h * tanh, h * sech
+
+    return ar.points(kernel, x)
 
 
 def tractrix_derivatives(ar: Arithmetic, h: Scalar, x: Array) -> tuple[Array, Array]:

@@ -156,13 +156,23 @@ def catenoid_meridian(ar: Arithmetic, n: Array, start: int) -> Array:
         raise DomainError("i_min", "the range contains i = 0 (p_0 = (0, 1))", start)
     zero, one = ar.scalar(0), ar.scalar(1)
     edges = n[1:] - n[:-1]
-    size = len(edges)
-    quarter = ring_faces(ar, n[:-1], n[1:], zero, one)
-    origin = stack_points(ar.zeros(size), ar.zeros(size))
-    unit = stack_points(ar.zeros(size), ar.zeros(size) + one)
-    a = _projected_mixed_areas(ar, ring_faces(ar, unit, unit, zero, one), quarter)
-    forward_area = _projected_mixed_areas(ar, ring_faces(ar, origin, edges, zero, one), quarter)
-    backward_area = _projected_mixed_areas(ar, ring_faces(ar, -edges, origin, zero, one), quarter)
+
+    def areas(x0: Array, y0: Array, x1: Array, y1: Array) -> tuple[Array, Array, Array]:
+        """A(U, n), A(G, n), A(G′, n) of the faces of the edges (x0, y0) → (x1, y1)."""
+        size = len(x0)
+        edges = stack_points(x1 - x0, y1 - y0)
+        quarter = ring_faces(ar, stack_points(x0, y0), stack_points(x1, y1), zero, one)
+        origin = stack_points(ar.zeros(size), ar.zeros(size))
+        unit = stack_points(ar.zeros(size), ar.zeros(size) + one)
+        return (
+            _projected_mixed_areas(ar, ring_faces(ar, unit, unit, zero, one), quarter),
+            _projected_mixed_areas(ar, ring_faces(ar, origin, edges, zero, one), quarter),
+            _projected_mixed_areas(ar, ring_faces(ar, -edges, origin, zero, one), quarter),
+        )
+
+    # elementwise per edge: float64 evaluates it in cache-sized blocks
+    table = ar.columns(areas, 3, n[:-1, 0], n[:-1, 1], n[1:, 0], n[1:, 1])
+    a, forward_area, backward_area = table[:, 0], table[:, 1], table[:, 2]
     if not (bool(np.all(forward_area != 0)) and bool(np.all(backward_area != 0))):
         raise DomainError("s", "the Gauss image faces admit a parallel face with H = 0", "")
     x = ar.zeros(count)

@@ -102,7 +102,13 @@ def _register(entry: Discretization) -> None:
 
     def post_curve(request: Request, query: body) -> Response:  # type: ignore[valid-type]
         parsed: CurveQuery = query
-        return curve_response(compute(entry, parsed, settings_of(request)), parsed.format)
+        settings = settings_of(request)
+        return cached(
+            request,
+            canonical_key(request.url.path, parsed.model_dump()),
+            settings,
+            lambda: curve_response(compute(entry, parsed, settings), parsed.format),
+        )
 
     common = {
         "response_model": CurveResponse,

@@ -1,11 +1,18 @@
-"""GET /health."""
+"""GET /health: the bare endpoint (no validation, no encoding: precomputed bytes).
 
-from fastapi import APIRouter
+It is also the reference of bench/http.py: requests per second of a computational GET are
+measured against this endpoint on the same server, through the same middleware.
+"""
+
+import orjson
+from fastapi import APIRouter, Response
 
 from app import __version__
 from app.schemas.catalog import Health
 
 router = APIRouter(tags=["service"])
+
+BODY = orjson.dumps(Health(status="ok", version=__version__).model_dump())
 
 
 @router.get(
@@ -14,5 +21,5 @@ router = APIRouter(tags=["service"])
     description='Answers `{"status": "ok"}` with the service version when the process serves.',
     response_model=Health,
 )
-def health() -> Health:
-    return Health(status="ok", version=__version__)
+async def health() -> Response:
+    return Response(BODY, media_type="application/json")

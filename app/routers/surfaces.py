@@ -153,6 +153,14 @@ def post_surface(
 ) -> Response:
     kind, (surface, curve_query) = _build(surface_id, body, request)
     settings = settings_of(request)
-    return surface_service.file_response(
-        surface_service.compute(kind, surface, curve_query, settings), surface.format
+    key = canonical_key(
+        request.url.path, {"surface": surface.model_dump(), "curve": curve_query.model_dump()}
+    )
+    return cached(
+        request,
+        key,
+        settings,
+        lambda: surface_service.file_response(
+            surface_service.compute(kind, surface, curve_query, settings), surface.format
+        ),
     )

@@ -26,7 +26,7 @@ def test_projection_of_hand_values(float64: Float64) -> None:
 
 def test_chords_keep_their_digits_near_the_poles(float64: Float64) -> None:
     f = np.array([1e6, 2e6])  # images agree with (1, 0) in 12 digits
-    edge = stereographic.chords(stereographic.project(float64, f))[0]
+    edge = stereographic.chords(float64, stereographic.project(float64, f))[0]
     mpmath.mp.dps = 50
     exact = [
         2 / (mpmath.mpf(10) ** 12 + 1) - 2 / (4 * mpmath.mpf(10) ** 12 + 1),

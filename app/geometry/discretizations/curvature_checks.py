@@ -79,12 +79,17 @@ def equation_17_check(
     pairs: list[tuple[Array, Array]],
     tolerance: float,
     detail: bool,
+    curvatures: list[FaceCurvatures] | None = None,
 ) -> Check:
-    """(17) against the mixed-area definition on each pair (meridian, Gauss image meridian)."""
+    """(17) against the mixed-area definition on each pair (meridian, Gauss image meridian).
+
+    ``curvatures``, if given, are the pairs' ``ring_curvatures`` already computed (by the
+    checks of Theorems 7, 8), so that they are not computed twice.
+    """
     worst: Array | None = None
     skipped = 0
-    for meridian, gauss in pairs:
-        curvature = ring_curvatures(ar, meridian, gauss)
+    for k, (meridian, gauss) in enumerate(pairs):
+        curvature = ring_curvatures(ar, meridian, gauss) if curvatures is None else curvatures[k]
         k_res, h_res, defined = equation_17_residuals(ar, meridian[:, 1], gauss[:, 1], curvature)
         both = np.maximum(ar.to_floats(k_res), ar.to_floats(h_res))
         both = np.where(defined, both, 0.0)

@@ -336,8 +336,8 @@ def evaluate(ar: Arithmetic, data: D2bPolygons, detail: bool = False) -> list[Ch
     checks = [
         check(MEAN_CURVATURE, 0, minimal_residuals(ring) if ring else ar.zeros(0)),
         check(PARALLEL, 0, edge_parallel_residuals(p, n)),
-        equation_17_check(ar, indices, [(p, n)], tolerance, detail)
-        if data.count > 1
+        equation_17_check(ar, indices, [(p, n)], tolerance, detail, [ring])
+        if ring is not None
         else not_applicable(EQUATION_17, tolerance, "a face needs two vertices"),
         check(RADII, 0, relative_difference(ar, p[:, 1], radii)),
         check(RECURSION, 1, recursion),
@@ -423,7 +423,7 @@ def hypothesis_residuals(
     |n_i^x − g(i/j)|, the drop n_i^x − n_{i+1}^x (strictly increasing), |n_i^x| − 1 (bound) and,
     at i = 0, |n_0 − (0, 1)|; 0 where the sequence is what the paper says."""
     x = n[:, 0]
-    t = ar.array(indices.tolist()) / ar.scalar(j)
+    t = ar.array(indices) / ar.scalar(j)
     g = (
         catenoid_convergence.example_12_g(t)
         if name == "example-12"

@@ -373,7 +373,14 @@ def evaluate(
     inverted = kinematic_closed_forms.pole_by_inversion(c[:-1], c[1:])  # i_min .. i_max + 1
     del from_slope
     return [
-        equation_17_check(ar, shown, [(tractrix, nt), (p, m)], construction_tolerance, detail),
+        equation_17_check(
+            ar,
+            shown,
+            [(tractrix, nt), (p, m)],
+            construction_tolerance,
+            detail,
+            [pseudo, catenoid],
+        ),
         closed(
             EQUATION_18,
             nt,

@@ -1,0 +1,312 @@
+"""A bounded in-process cache of encoded responses, and gzip content negotiation.
+
+Every computational GET (and the POST of the same resource) is a pure function of its validated
+parameters, so its encoded body can be kept under the canonical key of ``responses.canonical_key``
+(path plus the validated parameters with defaults, keys sorted: two spellings of one query share
+one entry, and GET and POST share it too). The cache is
+
+- bounded in bytes (``DCOSH_RESPONSE_CACHE_BYTES``, 0 disables it) with least-recently-used
+  eviction; bodies larger than ``DCOSH_RESPONSE_CACHE_ENTRY_BYTES`` are served but not kept;
+- per process (each uvicorn worker has its own) and thread-safe (sync endpoints run in a thread
+  pool): one lock guards the table, and no computation or compression runs under it.
+
+gzip: a client that accepts it (``Accept-Encoding``) gets text bodies (JSON, CSV, SVG, OBJ)
+between ``DCOSH_GZIP_MIN_BYTES`` and ``DCOSH_GZIP_MAX_BYTES`` compressed at
+``DCOSH_GZIP_LEVEL``; the compressed variant is kept next to the identity body, so it is
+compressed once. Level 1 is the default: it already shrinks JSON curves about 2.5–3.3×, and
+higher levels gain under 15 % for 2–5× the time (docs/performance.md). Bigger bodies go out
+uncompressed: compressing 45 MB of JSON takes about 0.5 s, far longer than sending it (the
+binary ``format=npy`` is the way to fetch big curves). The gzip variant has its own strong ETag
+(the identity tag with ``-gzip``), and every response says ``Vary: Accept-Encoding``.
+
+The fast path (``FastPath``, an ASGI middleware inside CORS and the security headers): a GET
+whose path and raw query string were answered before from a kept entry is answered again from
+that entry at once, without routing, validation or the thread pool. The raw query string
+determines the validated query and hence the canonical key, so this is the same answer; the
+alias table (raw request → canonical key) is bounded by ``ALIASES`` and only ever points at
+keys whose computation succeeded.
+"""
+
+from __future__ import annotations
+
+import gzip
+import hashlib
+import threading
+from collections import OrderedDict
+from dataclasses import dataclass, field
+
+from fastapi import Response
+from starlette.types import ASGIApp, Receive, Scope, Send
+
+from app import __version__
+from app.settings import Settings
+
+#: Media types worth compressing (everything else here is binary float data or a GLB).
+COMPRESSIBLE = ("application/json", "text/", "image/svg+xml", "model/obj")
+
+#: Bytes charged per entry beyond its bodies (key, headers, bookkeeping).
+ENTRY_OVERHEAD = 512
+
+#: Headers a cached response does not repeat (recomputed for each reply).
+_DROPPED = {"content-length", "content-encoding", "etag", "cache-control", "vary"}
+
+#: Most raw requests (path and query string) remembered by the fast path, and the longest raw
+#: query string it remembers.
+ALIASES = 4096
+ALIAS_QUERY_BYTES = 2048
+
+
+@dataclass
+class Entry:
+    """One encoded response: status, headers (content type included) and body."""
+
+    status: int
+    headers: tuple[tuple[str, str], ...]
+    body: bytes
+    media_type: str
+    gzipped: bytes | None = None
+    size: int = field(default=0)
+
+    def compressible(self, minimum: int, maximum: int) -> bool:
+        """Whether gzip may be offered for this body."""
+        return minimum <= len(self.body) <= maximum and self.media_type.startswith(COMPRESSIBLE)
+
+
+def entry_of(response: Response) -> Entry | None:
+    """The cacheable parts of a finished 200 response (None for other responses)."""
+    body = getattr(response, "body", None)
+    if response.status_code != 200 or not isinstance(body, bytes):
+        return None
+    headers = tuple((k, v) for k, v in response.headers.items() if k.lower() not in _DROPPED)
+    media_type = response.headers.get("content-type", "")
+    return Entry(200, headers, bytes(body), media_type)
+
+
+class ResponseCache:
+    """Least-recently-used table of ``Entry`` bounded in bytes; safe to share between threads."""
+
+    def __init__(self, max_bytes: int, max_entry_bytes: int) -> None:
+        self.max_bytes = max_bytes
+        self.max_entry_bytes = min(max_entry_bytes, max_bytes)
+        self._entries: OrderedDict[str, Entry] = OrderedDict()
+        self._aliases: OrderedDict[tuple[str, bytes], str] = OrderedDict()
+        self._lock = threading.Lock()
+        self.bytes = 0
+        self.hits = 0
+        """Entries found by ``get`` (after validation) or ``lookup`` (the fast path)."""
+        self.fast_hits = 0
+        """Of those, found by ``lookup``."""
+        self.misses = 0
+        self.evictions = 0
+
+    def __len__(self) -> int:
+        return len(self._entries)
+
+    def __contains__(self, key: str) -> bool:
+        return key in self._entries
+
+    def get(self, key: str) -> Entry | None:
+        """The entry for ``key`` (now the most recently used), or None."""
+        with self._lock:
+            entry = self._entries.get(key)
+            if entry is None:
+                self.misses += 1
+                return None
+            self._entries.move_to_end(key)
+            self.hits += 1
+            return entry
+
+    def put(self, key: str, entry: Entry) -> None:
+        """Keep ``entry`` under ``key`` if it fits, evicting the least recently used."""
+        entry.size = len(entry.body) + len(entry.gzipped or b"") + len(key) + ENTRY_OVERHEAD
+        if entry.size > self.max_entry_bytes:
+            return
+        with self._lock:
+            previous = self._entries.pop(key, None)
+            if previous is not None:
+                self.bytes -= previous.size
+            self._entries[key] = entry
+            self.bytes += entry.size
+            self._evict()
+
+    def add_gzip(self, key: str, entry: Entry, compressed: bytes) -> None:
+        """Attach the gzip variant to a kept entry (and charge its size)."""
+        with self._lock:
+            if entry.gzipped is not None:
+                return
+            entry.gzipped = compressed
+            if self._entries.get(key) is entry:
+                entry.size += len(compressed)
+                self.bytes += len(compressed)
+                if entry.size > self.max_entry_bytes:
+                    del self._entries[key]
+                    self.bytes -= entry.size
+                self._evict()
+
+    def alias(self, raw: tuple[str, bytes], key: str) -> None:
+        """Remember that the raw GET ``(path, query string)`` has the canonical ``key``."""
+        if len(raw[1]) > ALIAS_QUERY_BYTES:
+            return
+        with self._lock:
+            self._aliases[raw] = key
+            self._aliases.move_to_end(raw)
+            while len(self._aliases) > ALIASES:
+                self._aliases.popitem(last=False)
+
+    def lookup(self, raw: tuple[str, bytes]) -> tuple[str, Entry] | None:
+        """The canonical key and kept entry of a raw GET seen before, or None."""
+        with self._lock:
+            key = self._aliases.get(raw)
+            entry = None if key is None else self._entries.get(key)
+            if key is None or entry is None:
+                return None
+            self._entries.move_to_end(key)
+            self.hits += 1
+            self.fast_hits += 1
+            return key, entry
+
+    def clear(self) -> None:
+        with self._lock:
+            self._entries.clear()
+            self._aliases.clear()
+            self.bytes = 0
+
+    def _evict(self) -> None:
+        while self.bytes > self.max_bytes and self._entries:
+            _, old = self._entries.popitem(last=False)
+            self.bytes -= old.size
+            self.evictions += 1
+
+
+def accepts_gzip(header: str | None) -> bool:
+    """Whether an Accept-Encoding header allows gzip (``gzip`` or ``*`` with q > 0)."""
+    if not header:
+        return False
+    allowed: dict[str, bool] = {}
+    for item in header.split(","):
+        token, _, params = item.strip().partition(";")
+        quality = 1.0
+        for param in params.split(";"):
+            name, _, value = param.strip().partition("=")
+            if name.strip().lower() == "q":
+                try:
+                    quality = float(value)
+                except ValueError:
+                    quality = 0.0
+        allowed[token.strip().lower()] = quality > 0
+    if "gzip" in allowed:
+        return allowed["gzip"]
+    return allowed.get("*", False)
+
+
+def compress(body: bytes, level: int) -> bytes:
+    """gzip bytes of ``body`` (mtime 0: the same body always gives the same bytes)."""
+    return gzip.compress(body, compresslevel=level, mtime=0)
+
+
+def etag_for(key: str) -> str:
+    """A strong ETag for a canonical request key (version-scoped)."""
+    digest = hashlib.sha256(f"{__version__}\n{key}".encode()).hexdigest()[:32]
+    return f'"{digest}"'
+
+
+def gzip_etag(etag: str) -> str:
+    """The strong ETag of the gzip variant of the representation tagged ``etag``."""
+    return etag[:-1] + '-gzip"'
+
+
+def matches(header: str | None, etag: str) -> bool:
+    """Whether an If-None-Match header matches ``etag`` (weak comparison, or ``*``)."""
+    if not header:
+        return False
+    if header.strip() == "*":
+        return True
+    tags = [tag.strip().removeprefix("W/") for tag in header.split(",")]
+    return etag in tags
+
+
+@dataclass(frozen=True)
+class Reply:
+    """What to send: status, headers (without Content-Length) and body."""
+
+    status: int
+    headers: dict[str, str]
+    body: bytes
+
+    def response(self) -> Response:
+        return Response(self.body, status_code=self.status, headers=self.headers)
+
+
+def caching_headers(settings: Settings) -> dict[str, str]:
+    return {"Cache-Control": f"public, max-age={settings.cache_max_age}", "Vary": "Accept-Encoding"}
+
+
+def not_modified(etag: str, if_none_match: str | None, settings: Settings) -> Reply | None:
+    """304 when If-None-Match names the identity or the gzip tag of this representation."""
+    for tag in (etag, gzip_etag(etag)):
+        if matches(if_none_match, tag):
+            return Reply(304, {"ETag": tag, **caching_headers(settings)}, b"")
+    return None
+
+
+def reply(
+    cache: ResponseCache,
+    key: str,
+    entry: Entry,
+    settings: Settings,
+    is_get: bool,
+    accept_encoding: str | None,
+) -> Reply:
+    """The answer from a kept (or just built) entry: gzip if accepted, ETag on GET."""
+    body, headers = entry.body, dict(entry.headers)
+    etag = etag_for(key)
+    level = settings.gzip_level
+    if (
+        level
+        and accepts_gzip(accept_encoding)
+        and entry.compressible(settings.gzip_min_bytes, settings.gzip_max_bytes)
+    ):
+        body = entry.gzipped if entry.gzipped is not None else compress(entry.body, level)
+        cache.add_gzip(key, entry, body)
+        headers["Content-Encoding"] = "gzip"
+        etag = gzip_etag(etag)
+    if is_get:
+        headers.update({"ETag": etag, **caching_headers(settings)})
+    else:
+        headers["Vary"] = "Accept-Encoding"
+    return Reply(entry.status, headers, body)
+
+
+class FastPath:
+    """ASGI middleware: repeated GETs answered from the response cache (see the module doc)."""
+
+    def __init__(self, app: ASGIApp, cache: ResponseCache, settings: Settings) -> None:
+        self.app = app
+        self.cache = cache
+        self.settings = settings
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if scope["type"] != "http" or scope["method"] != "GET":
+            await self.app(scope, receive, send)
+            return
+        found = self.cache.lookup((scope["path"], scope["query_string"]))
+        if found is None:
+            await self.app(scope, receive, send)
+            return
+        key, entry = found
+        request_headers = {k.lower(): v for k, v in scope["headers"]}
+        inm = request_headers.get(b"if-none-match")
+        accept = request_headers.get(b"accept-encoding")
+        answer = not_modified(
+            etag_for(key), None if inm is None else inm.decode("latin-1"), self.settings
+        )
+        if answer is None:
+            answer = reply(
+                self.cache,
+                key,
+                entry,
+                self.settings,
+                True,
+                None if accept is None else accept.decode("latin-1"),
+            )
+        await answer.response()(scope, receive, send)

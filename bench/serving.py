@@ -1,0 +1,351 @@
+"""HTTP on 127.0.0.1: small GETs against the bare endpoint, and a 10^6-vertex response end to end.
+
+Starts uvicorn (uvloop, httptools, 1 worker, the malloc settings of ``make run``, access log
+off) on a free port of 127.0.0.1 and measures, with wall-clock time:
+
+1. requests/s and p50/p99 latency (wrk, bounded runs of ``WRK_SECONDS``) at concurrency 1 and
+   32 of a 100-vertex D4b GET, against GET /health on the same server in the same round
+   (alternating, median of ``ROUNDS`` paired ratios):
+   - *cached*: the same URL again and again (the response cache's fast path);
+   - *computed*: a different d on every request (no cache can help: the full computation with
+     every check, what a slider in a front end asks for);
+   and the computed one with 2 workers against 1;
+2. a 10^6-vertex response (the catenary sampled 10^6 times: its JSON is the vertex array plus
+   the indices) fetched whole over a socket, first request (a new x_max each time, so computed)
+   and cached, as JSON and as format=npy, against ``orjson.dumps`` of the same (n, 2) array in
+   this process (measured next to each fetch).
+
+Needs wrk (``make bench`` installs Debian's package when it is missing).
+Run: .venv/bin/python bench/serving.py   (about 100 s)
+"""
+
+from __future__ import annotations
+
+import gzip
+import os
+import re
+import socket
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+import zlib
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+
+import orjson
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+
+from app.geometry import smooth  # noqa: E402
+from app.geometry.precision import Float64  # noqa: E402
+from bench.common import sample  # noqa: E402
+from bench.load import SERVER_ENV, free_port  # noqa: E402
+
+clock = time.perf_counter
+
+ROUNDS = int(os.environ.get("BENCH_ROUNDS", "3"))
+WRK_SECONDS = int(os.environ.get("BENCH_WRK_SECONDS", "2"))
+SMALL = "/discretizations/d4b?i_min=-50&i_max=49"
+BIG_COUNT = 10**6
+#: Targets of the issue: small GET >= 80 % of the bare endpoint's requests/s; the 10^6-vertex
+#: JSON response <= 1.3× the encoder alone.
+RPS_TARGET = 0.8
+JSON_TARGET = 1.3
+
+#: wrk script: a new d on every request; the run's first d comes from its argument, so that no
+#: two runs (nor rounds, nor concurrencies) ask for the same curve.
+UNIQUE_SCRIPT = """
+local n = 0
+init = function(args)
+  n = tonumber(args[1])
+end
+request = function()
+  n = n + 1
+  return wrk.format(nil, string.format("%s&d=%%.12f", 0.1 + n * 1e-9))
+end
+"""
+
+
+@dataclass(frozen=True)
+class Load:
+    """One wrk run: requests/s and latency percentiles in seconds."""
+
+    rps: float
+    p50: float
+    p99: float
+
+
+_UNITS = {"us": 1e-6, "ms": 1e-3, "s": 1.0, "m": 60.0}
+
+
+def _seconds(text: str) -> float:
+    match = re.fullmatch(r"([\d.]+)(us|ms|s|m)", text)
+    if match is None:
+        raise ValueError(f"unexpected wrk latency {text!r}")
+    return float(match.group(1)) * _UNITS[match.group(2)]
+
+
+_runs = iter(range(1, 10**6))
+
+
+def wrk(base: str, path: str, connections: int, script: str | None = None) -> Load:
+    """A bounded wrk run (one thread) against ``base + path``."""
+    command = ["wrk", "-t1", f"-c{connections}", f"-d{WRK_SECONDS}s", "--latency"]
+    if script is not None:
+        command += ["-s", script]
+    command.append(base + path)
+    if script is not None:
+        command += ["--", str(next(_runs) * 10**7)]
+    out = subprocess.run(command, capture_output=True, text=True, check=True, timeout=60).stdout
+    rps = float(re.search(r"Requests/sec:\s+([\d.]+)", out).group(1))  # type: ignore[union-attr]
+    p50 = _seconds(re.search(r"^\s+50%\s+(\S+)", out, re.M).group(1))  # type: ignore[union-attr]
+    p99 = _seconds(re.search(r"^\s+99%\s+(\S+)", out, re.M).group(1))  # type: ignore[union-attr]
+    if "Non-2xx" in out or "Socket errors" in out:
+        raise RuntimeError(f"wrk saw errors:\n{out}")
+    return Load(rps, p50, p99)
+
+
+_buffer = bytearray(64 << 20)
+
+
+def fetch(port: int, path: str, headers: str = "") -> tuple[float, bytes]:
+    """Wall time to send one GET and read the whole response (into a reused buffer, no copies
+    while timed); and the response's body."""
+    global _buffer
+    total = 0
+    start = time.perf_counter()
+    with socket.create_connection(("127.0.0.1", port)) as sock:
+        request = f"GET {path} HTTP/1.1\r\nHost: bench\r\n{headers}Connection: close\r\n\r\n"
+        sock.sendall(request.encode())
+        while True:
+            if total == len(_buffer):
+                _buffer += bytearray(len(_buffer))
+            got = sock.recv_into(memoryview(_buffer)[total:])
+            if not got:
+                break
+            total += got
+    elapsed = time.perf_counter() - start
+    head, _, body = bytes(_buffer[:total]).partition(b"\r\n\r\n")
+    if not head.startswith(b"HTTP/1.1 200"):
+        raise RuntimeError(f"GET {path}: {head[:200]!r}")
+    return elapsed, body
+
+
+def start_server(port: int, workers: int = 1) -> subprocess.Popen[bytes]:
+    command = [
+        sys.executable,
+        "-m",
+        "uvicorn",
+        "app.main:app",
+        "--host",
+        "127.0.0.1",
+        "--port",
+        str(port),
+        "--workers",
+        str(workers),
+        "--loop",
+        "uvloop",
+        "--http",
+        "httptools",
+        "--log-level",
+        "warning",
+    ]
+    server = subprocess.Popen(command, cwd=ROOT, env={**os.environ, **SERVER_ENV})
+    for _ in range(200):
+        try:
+            fetch(port, "/health")
+            return server
+        except OSError:
+            time.sleep(0.1)
+    server.terminate()
+    raise RuntimeError("the server did not start")
+
+
+def _ms(seconds: float) -> str:
+    return f"{seconds * 1e3:8.2f} ms"
+
+
+def _verdict(ratio: float, target: float, at_least: bool) -> str:
+    met = ratio >= target if at_least else ratio <= target
+    return f"   target {'≥' if at_least else '≤'} {target:g}×: {'met' if met else 'NOT met'}"
+
+
+LABELS = {"bare": "GET /health (bare)", "cached": "D4b, cached", "computed": "D4b, computed"}
+
+
+def small_gets(base: str, script: str) -> None:
+    print(
+        f" 100-vertex D4b GET ({SMALL}) against GET /health, wrk {WRK_SECONDS} s per run, "
+        f"median of {ROUNDS} alternating rounds"
+    )
+    for connections in (1, 32):
+        runs: dict[str, list[Load]] = {"bare": [], "cached": [], "computed": []}
+        for _ in range(ROUNDS):
+            runs["bare"].append(wrk(base, "/health", connections))
+            runs["cached"].append(wrk(base, SMALL, connections))
+            runs["computed"].append(wrk(base, SMALL, connections, script))
+        for name, loads in runs.items():
+            ratio = statistics.median(
+                s.rps / b.rps for s, b in zip(loads, runs["bare"], strict=True)
+            )
+            verdict = _verdict(ratio, RPS_TARGET, at_least=True) if name == "cached" else ""
+            rps = statistics.median(s.rps for s in loads)
+            p50 = statistics.median(s.p50 for s in loads)
+            p99 = statistics.median(s.p99 for s in loads)
+            print(
+                f"  c={connections:<3}{LABELS[name]:<20}{rps:9.0f} req/s  p50 {_ms(p50)}  "
+                f"p99 {_ms(p99)}  {ratio:6.3f}× bare{verdict}"
+            )
+
+
+def _paired(
+    port: int,
+    reference: Callable[[], float],
+    path: Callable[[], str],
+    repeat: int,
+    headers: str = "",
+    client: Callable[[bytes], object] | None = None,
+) -> tuple[float, float, int, float]:
+    """Median fetch time, median ratio to the reference timed just before, bytes, reference."""
+    pairs = []
+    size = 0
+    for _ in range(repeat):
+        ref = reference()
+        seconds, body = fetch(port, path(), headers)
+        if client is not None:  # what the client does with the body (gunzip), timed too
+            start = time.perf_counter()
+            client(body)
+            seconds += time.perf_counter() - start
+        size = len(body)
+        pairs.append((seconds, ref))
+    return (
+        statistics.median(s for s, _ in pairs),
+        statistics.median(s / r for s, r in pairs),
+        size,
+        statistics.median(r for _, r in pairs),
+    )
+
+
+def big_response(port: int, count: int, gzip_too: bool) -> None:
+    ar = Float64()
+    vertices = smooth.catenary(ar, 1.0, smooth.sample(ar, -3.0, 3.0, count))
+
+    def encoder() -> float:
+        return statistics.median(
+            sample(lambda: orjson.dumps(vertices, option=orjson.OPT_SERIALIZE_NUMPY), 0.0, clock)
+            for _ in range(3)
+        )
+
+    encoded = len(orjson.dumps(vertices, option=orjson.OPT_SERIALIZE_NUMPY))
+    base = f"/smooth/catenary?count={count}"
+    counter = iter(range(1, 10**6))
+
+    def fresh(suffix: str) -> Callable[[], str]:
+        return lambda: f"{base}&x_max={3 + next(counter) * 1e-9!r}{suffix}"
+
+    def same(suffix: str) -> Callable[[], str]:
+        return lambda: base + suffix
+
+    gz = "Accept-Encoding: gzip\r\n"
+    cases: list[tuple[str, Callable[[], str], str, bool]] = [
+        ("JSON, first request (computed)", fresh(""), "", True),
+        ("JSON, cached", same(""), "", True),
+        ("npy, first request (computed)", fresh("&format=npy"), "", False),
+        ("npy, cached", same("&format=npy"), "", False),
+    ]
+    if gzip_too:
+        cases += [
+            ("JSON gzip + gunzip, first request", fresh(""), gz, False),
+            ("JSON gzip + gunzip, cached", same(""), gz, False),
+        ]
+    for label, path, headers, _ in cases:
+        if "first" not in label:
+            fetch(port, path(), headers)  # now kept in the cache
+    print(
+        f" {count:,}-vertex catenary over HTTP (whole response read from a socket) against "
+        f"orjson.dumps of its (n, 2) vertex array ({encoded / 1e6:.1f} MB), paired, median"
+    )
+    references = []
+    for label, path, headers, targeted in cases:
+        repeat = 3 if "first" in label else 5
+        inflate = (lambda body: zlib.decompress(body, wbits=31)) if headers else None
+        seconds, ratio, size, ref = _paired(port, encoder, path, repeat, headers, inflate)
+        references.append(ref)
+        targeted = targeted and count == BIG_COUNT  # the issue's target is for 10^6 vertices
+        verdict = _verdict(ratio, JSON_TARGET, at_least=False) if targeted else ""
+        print(f"  {label:<36}{_ms(seconds)}  {size / 1e6:7.2f} MB  {ratio:6.2f}× orjson{verdict}")
+    print(f"  (orjson of the array alone: {_ms(statistics.median(references))})")
+
+
+def gzip_levels(count: int) -> None:
+    """gzip's cost and gain per level on a curve's JSON, in this process."""
+    from app.geometry import smooth_curves
+    from app.responses import curve_document, encode_json
+
+    body = encode_json(curve_document(smooth_curves.compute_catenary(Float64(), count=count)))
+    print(f" gzip of a {count:,}-vertex catenary's JSON ({len(body) / 1e6:.1f} MB), in process")
+    for level in (1, 6, 9):
+        packed = gzip.compress(body, compresslevel=level, mtime=0)
+        seconds = statistics.median(
+            sample(lambda level=level: gzip.compress(body, compresslevel=level), 0.0)
+            for _ in range(3)
+        )
+        unpack = statistics.median(
+            sample(lambda p=packed: gzip.decompress(p), 0.0) for _ in range(3)
+        )
+        print(
+            f"  level {level}: {len(body) / len(packed):5.2f}× smaller, compress {_ms(seconds)} "
+            f"({len(body) / seconds / 1e6:4.0f} MB/s), decompress {_ms(unpack)}"
+        )
+
+
+def two_workers(base: str, script: str) -> None:
+    """The computed small GET at concurrency 32: 2 workers against 1 (wrk shares the cores)."""
+    port = free_port()
+    server = start_server(port, workers=2)
+    try:
+        fetch(port, SMALL)
+        pairs = []
+        for _ in range(ROUNDS):
+            one = wrk(base, SMALL, 32, script)
+            two = wrk(f"http://127.0.0.1:{port}", SMALL, 32, script)
+            pairs.append((two, one))
+    finally:
+        server.terminate()
+        server.wait(timeout=20)
+    ratio = statistics.median(t.rps / o.rps for t, o in pairs)
+    rps = statistics.median(t.rps for t, _ in pairs)
+    print(
+        f" workers: D4b computed, c=32, 2 workers {rps:7.0f} req/s   {ratio:5.2f}× 1 worker "
+        f"(p99 {_ms(statistics.median(t.p99 for t, _ in pairs))})"
+    )
+
+
+def main() -> None:
+    port = free_port()
+    base = f"http://127.0.0.1:{port}"
+    server = start_server(port)
+    descriptor, script = tempfile.mkstemp(suffix=".lua")
+    try:
+        with os.fdopen(descriptor, "w") as handle:
+            handle.write(UNIQUE_SCRIPT % SMALL)
+        cores = os.cpu_count()
+        print(f"HTTP on 127.0.0.1: uvicorn (uvloop, httptools), 1 worker; {cores} cores, with wrk")
+        fetch(port, SMALL)
+        small_gets(base, script)
+        two_workers(base, script)
+        big_response(port, BIG_COUNT, gzip_too=False)
+        big_response(port, BIG_COUNT // 10, gzip_too=True)
+        gzip_levels(BIG_COUNT // 10)
+    finally:
+        os.unlink(script)
+        server.terminate()
+        server.wait(timeout=20)
+
+
+if __name__ == "__main__":
+    main()
