@@ -8,6 +8,7 @@ from typing import Any
 import numpy as np
 
 from app.geometry.checks import Check, Statement
+from app.geometry.errors import DomainError
 from app.geometry.precision import Arithmetic, Array, Scalar
 
 
@@ -60,3 +61,38 @@ class DiscretizationInfo:
     constants: dict[str, str]
     """Constant name -> what it is."""
     statements: tuple[Statement, ...]
+
+    def curve(
+        self,
+        ar: Arithmetic,
+        parameters: dict[str, Any],
+        polygon: Array,
+        companions: dict[str, Array] | None = None,
+        **fields: Any,
+    ) -> Curve:
+        """This discretization's ``Curve`` on ``parameters["i_min"] .. parameters["i_max"]``.
+
+        ``polygon`` and each companion are ``(m, 2)`` arrays starting at i_min (m may exceed the
+        range: extra rows that fed the checks are cut); ``fields`` are further ``Curve`` fields.
+        """
+        indices = np.arange(parameters["i_min"], parameters["i_max"] + 1, dtype=np.int64)
+        n = len(indices)
+        return Curve(
+            id=self.id,
+            title=self.title,
+            reference=self.reference,
+            parameters=parameters,
+            arithmetic=ar,
+            polygon=Polyline(indices, polygon[:n]),
+            companions={
+                name: Polyline(indices, points[:n], self.companions[name])
+                for name, points in (companions or {}).items()
+            },
+            **fields,
+        )
+
+
+def require_range(i_min: int, i_max: int) -> None:
+    """Raise ``DomainError`` unless i_min <= i_max."""
+    if i_max < i_min:
+        raise DomainError("i_max", "i_min <= i_max", i_max, f"i_min = {i_min}")

@@ -16,9 +16,9 @@ import numpy as np
 
 from app.geometry import hanging_chain_closed_forms as closed_forms
 from app.geometry.checks import Check, Statement, check_residuals, not_applicable, point_distance
-from app.geometry.curve import Curve, DiscretizationInfo, Polyline
+from app.geometry.curve import Curve, DiscretizationInfo, require_range
 from app.geometry.discretizations import properties
-from app.geometry.errors import DomainError, NotRepresentableError
+from app.geometry.errors import NotRepresentableError
 from app.geometry.hanging_chain import construct, validate
 from app.geometry.precision import Arithmetic, Array, Scalar
 
@@ -145,13 +145,11 @@ def compute(
 ) -> Curve:
     """(D1) on i_min .. i_max with its constants and checks."""
     validate(c, delta, y0, y1)
-    if i_max < i_min:
-        raise DomainError("i_max", "i_min <= i_max", i_max, f"i_min = {i_min}")
+    require_range(i_min, i_max)
     if ar.mode == "float64":
         _require_float64_representable(c, delta, y0, y1, i_min, i_max)
     data = polygons(ar, c, delta, y0, y1, i_min, i_max, method)
     constants, checks = evaluate(ar, c, delta, y0, y1, data, detail)
-    indices = np.arange(i_min, i_max + 1, dtype=np.int64)
     parameters: dict[str, Any] = {
         "c": c,
         "delta": delta,
@@ -161,16 +159,7 @@ def compute(
         "i_max": i_max,
         "method": method,
     }
-    return Curve(
-        id=INFO.id,
-        title=INFO.title,
-        reference=INFO.reference,
-        parameters=parameters,
-        arithmetic=ar,
-        polygon=Polyline(indices, data.p),
-        constants=constants,
-        checks=checks,
-    )
+    return INFO.curve(ar, parameters, data.p, constants=constants, checks=checks)
 
 
 def _closed_form(ctx: properties.Context, data: D1Polygons, steps: int) -> Check:

@@ -17,7 +17,7 @@ import numpy as np
 from app.geometry import christoffel, conditions
 from app.geometry import christoffel_closed_forms as cf
 from app.geometry.checks import Check, Statement, not_applicable, relative_to
-from app.geometry.curve import Curve, DiscretizationInfo, Polyline
+from app.geometry.curve import Curve, DiscretizationInfo, require_range
 from app.geometry.discretizations.d2a_common import (
     FLOAT64_MIN_GAP,
     SHARED_D1,
@@ -32,7 +32,7 @@ from app.geometry.discretizations.d2a_common import (
     scaled_point_difference,
     shifted,
 )
-from app.geometry.errors import DomainError, NotRepresentableError
+from app.geometry.errors import NotRepresentableError
 from app.geometry.polygon import area_magnitude, second_difference, signed_areas
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 
@@ -264,8 +264,7 @@ def compute(
 ) -> Curve:
     """(D2a) hexagonal on i_min .. i_max with companions, constants and checks (r = None: r*)."""
     christoffel.validate_hex(a, b, lam, r)
-    if i_max < i_min:
-        raise DomainError("i_max", "i_min <= i_max", i_max, f"i_min = {i_min}")
+    require_range(i_min, i_max)
     if ar.mode == "float64":
         _require_float64_representable(a, b, lam, i_min, i_max)
     else:
@@ -275,7 +274,6 @@ def compute(
         )
     data = polygons(ar, a, b, lam, r, i_min, i_max)
     constants, checks = evaluate(ar, data, detail)
-    indices = np.arange(i_min, i_max + 1, dtype=np.int64)
     parameters: dict[str, Any] = {
         "a": a,
         "b": b,
@@ -284,20 +282,15 @@ def compute(
         "i_min": i_min,
         "i_max": i_max,
     }
-    zero = ar.zeros(len(indices))
-    return Curve(
-        id=INFO.id,
-        title=INFO.title,
-        reference=INFO.reference,
-        parameters=parameters,
-        arithmetic=ar,
-        polygon=Polyline(indices, data.p),
-        companions={
-            "conformal": Polyline(
-                indices, stack_points(data.f, zero), INFO.companions["conformal"]
-            ),
-            "gauss_image": Polyline(indices, data.gauss, INFO.companions["gauss_image"]),
-        },
+    companions = {
+        "conformal": stack_points(data.f, ar.zeros(len(data.f))),
+        "gauss_image": data.gauss,
+    }
+    return INFO.curve(
+        ar,
+        parameters,
+        data.p,
+        companions,
         constants=constants,
         checks=checks,
         local_tolerance=local_tolerance(ar, smallest_gap(data.a, data.b, data.lam)),

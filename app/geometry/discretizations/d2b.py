@@ -26,7 +26,7 @@ from app.geometry.checks import (
     relative_difference,
     relative_point_difference,
 )
-from app.geometry.curve import Curve, DiscretizationInfo, Polyline
+from app.geometry.curve import Curve, DiscretizationInfo
 from app.geometry.discretizations.curvature_checks import (
     EQUATION_17,
     edge_parallel_residuals,
@@ -471,23 +471,16 @@ def compute(
     data = polygons(ar, sequence, j, s, first, last)
     checks = evaluate(ar, data, detail)
     window = slice(data.first, data.first + data.count)
-    indices = np.arange(first, last + 1, dtype=np.int64)
     parameters: dict[str, Any] = {"sequence": sequence, "i_min": first, "i_max": last}
     if sequence == "custom":
         parameters["s"] = s
     else:
         parameters["j"] = j
-    return Curve(
-        id=INFO.id,
-        title=INFO.title,
-        reference=INFO.reference,
-        parameters=parameters,
-        arithmetic=ar,
-        polygon=Polyline(indices, data.p[window]),
-        companions={
-            "gauss_image": Polyline(indices, data.n[window], INFO.companions["gauss_image"])
-        },
-        constants={},
+    return INFO.curve(
+        ar,
+        parameters,
+        data.p[window],
+        {"gauss_image": data.n[window]},
         checks=checks,
         companion_tolerances={"gauss_image": construction_tolerance(ar, data)},
     )

@@ -24,9 +24,9 @@ from app.geometry.checks import (
     not_applicable,
     relative_point_difference,
 )
-from app.geometry.curve import Curve, DiscretizationInfo, Polyline
+from app.geometry.curve import Curve, DiscretizationInfo, require_range
 from app.geometry.discretizations import properties
-from app.geometry.errors import DomainError, NotRepresentableError
+from app.geometry.errors import NotRepresentableError
 from app.geometry.precision import Arithmetic, Array, Scalar
 
 Method = Literal["construction", "closed-form"]
@@ -153,13 +153,11 @@ def compute(
 ) -> Curve:
     """(D3) on i_min .. i_max with its constants and checks."""
     validate(c, delta, y0, branch)
-    if i_max < i_min:
-        raise DomainError("i_max", "i_min <= i_max", i_max, f"i_min = {i_min}")
+    require_range(i_min, i_max)
     if ar.mode == "float64":
         _require_float64_representable(c, delta, y0, i_min, i_max)
     data = polygons(ar, c, delta, y0, branch, i_min, i_max, method)
     constants, checks = evaluate(ar, c, delta, data, detail)
-    indices = np.arange(i_min, i_max + 1, dtype=np.int64)
     parameters: dict[str, Any] = {
         "c": c,
         "delta": delta,
@@ -169,16 +167,7 @@ def compute(
         "i_max": i_max,
         "method": method,
     }
-    return Curve(
-        id=INFO.id,
-        title=INFO.title,
-        reference=INFO.reference,
-        parameters=parameters,
-        arithmetic=ar,
-        polygon=Polyline(indices, data.p),
-        constants=constants,
-        checks=checks,
-    )
+    return INFO.curve(ar, parameters, data.p, constants=constants, checks=checks)
 
 
 def _closed_form(

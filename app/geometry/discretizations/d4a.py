@@ -27,9 +27,9 @@ from app.geometry.checks import (
     printed_residual,
     relative_point_difference,
 )
-from app.geometry.curve import Curve, DiscretizationInfo, Polyline
+from app.geometry.curve import Curve, DiscretizationInfo, require_range
 from app.geometry.discretizations import properties
-from app.geometry.errors import DomainError, NotRepresentableError
+from app.geometry.errors import NotRepresentableError
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array, Scalar
 
@@ -289,8 +289,7 @@ def compute(
 ) -> Curve:
     """(D4a) on i_min .. i_max with its companions, constants and checks."""
     sauer_tractrix.validate(h, s, beta0)
-    if i_max < i_min:
-        raise DomainError("i_max", "i_min <= i_max", i_max, f"i_min = {i_min}")
+    require_range(i_min, i_max)
     if ar.mode == "float64":
         _require_float64_representable(h, s, beta0, i_min, i_max)
     elif s / h < 10.0 ** (-ar.digits):
@@ -302,8 +301,6 @@ def compute(
         )
     data = polygons(ar, h, s, beta0, i_min, i_max, method)
     constants, checks = evaluate(ar, h, s, data, detail)
-    indices = np.arange(i_min, i_max + 1, dtype=np.int64)
-    n = len(indices)
     parameters: dict[str, Any] = {
         "h": h,
         "s": s,
@@ -313,24 +310,8 @@ def compute(
         "method": method,
     }
 
-    def shown(name: str, points: Array) -> Polyline:
-        return Polyline(indices, points[:n], INFO.companions[name])
-
-    return Curve(
-        id=INFO.id,
-        title=INFO.title,
-        reference=INFO.reference,
-        parameters=parameters,
-        arithmetic=ar,
-        polygon=Polyline(indices, data.p[:n]),
-        companions={
-            "tractrix": shown("tractrix", data.tractrix),
-            "axis_points": shown("axis_points", data.axis),
-            "darboux": shown("darboux", data.darboux),
-        },
-        constants=constants,
-        checks=checks,
-    )
+    companions = {"tractrix": data.tractrix, "axis_points": data.axis, "darboux": data.darboux}
+    return INFO.curve(ar, parameters, data.p, companions, constants=constants, checks=checks)
 
 
 def _sticks(ctx: properties.Context, h: Scalar, s: Scalar, data: D4aPolygons) -> Check:

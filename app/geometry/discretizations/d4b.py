@@ -25,9 +25,9 @@ from app.geometry.checks import (
     relative_difference,
     relative_point_difference,
 )
-from app.geometry.curve import Curve, DiscretizationInfo, Polyline
+from app.geometry.curve import Curve, DiscretizationInfo, require_range
 from app.geometry.discretizations import d4b_curvature
-from app.geometry.errors import DomainError, NotRepresentableError
+from app.geometry.errors import NotRepresentableError
 from app.geometry.kinematic_tractrix import construct, validate
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 
@@ -396,16 +396,13 @@ def compute(
 ) -> Curve:
     """(D4b) on i_min .. i_max with its companions, constants and checks."""
     validate(h, d, beta0)
-    if i_max < i_min:
-        raise DomainError("i_max", "i_min <= i_max", i_max, f"i_min = {i_min}")
+    require_range(i_min, i_max)
     _require_resolvable(ar, h, d)
     if ar.mode == "float64":
         _require_float64_representable(h, d, beta0, i_min, i_max)
     data = polygons(ar, h, d, beta0, i_min, i_max, method)
     constants, checks = evaluate(ar, h, d, data, detail, beta0)
     local, construction, _ = tolerances(ar, h, d, data)
-    indices = np.arange(i_min, i_max + 1, dtype=np.int64)
-    n = len(indices)
     parameters: dict[str, Any] = {
         "h": h,
         "d": d,
@@ -415,24 +412,19 @@ def compute(
         "method": method,
     }
 
-    def shown(name: str, points: Array) -> Polyline:
-        return Polyline(indices, points[:n], INFO.companions[name])
-
-    return Curve(
-        id=INFO.id,
-        title=INFO.title,
-        reference=INFO.reference,
-        parameters=parameters,
-        arithmetic=ar,
-        polygon=Polyline(indices, data.p[:n]),
-        companions={
-            "tractrix": shown("tractrix", data.tractrix),
-            "axis_points": shown("axis_points", data.axis),
-            "darboux": shown("darboux", data.darboux),
-            "tractrix_gauss_image": shown("tractrix_gauss_image", data.gauss.tractrix_gauss),
-            "contact_points": shown("contact_points", data.gauss.contact[1:]),
-            "gauss_image": shown("gauss_image", data.gauss.gauss),
-        },
+    companions = {
+        "tractrix": data.tractrix,
+        "axis_points": data.axis,
+        "darboux": data.darboux,
+        "tractrix_gauss_image": data.gauss.tractrix_gauss,
+        "contact_points": data.gauss.contact[1:],
+        "gauss_image": data.gauss.gauss,
+    }
+    return INFO.curve(
+        ar,
+        parameters,
+        data.p,
+        companions,
         constants=constants,
         checks=checks,
         local_tolerance=local,
