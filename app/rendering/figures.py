@@ -402,6 +402,42 @@ def gauss_and_dual_panels(curve: Curve, figures: Panels) -> None:
     figures.add("right", right)
 
 
+def christoffel_figure(
+    curve: Curve,
+    title: str,
+    mesh_note: str,
+    data_note: str,
+    mesh: tuple[str, str, Any],
+    conformal_description: str,
+) -> Panels:
+    """Figures 5 and 6: the planar conformal mesh with the f_i on it, the Gauss image and p.
+
+    ``mesh`` is (panel title, series label, mesh with ``vertices`` and ``edges``).
+    """
+    shown = shown_parameters(curve)
+    figures = Panels(
+        title=title,
+        subtitle=f"{describe_parameters(shown)}; {mesh_note}",
+        footnote=f"Data: GET {source_url(curve.id, shown)} (p, φ_i; {data_note})",
+    )
+    panel_title, label, grid = mesh
+    left = panel(panel_title, "y", "z")
+    left.add(mesh_series("mesh", label, grid.vertices, grid.edges))
+    left.add(
+        Series(
+            "conformal",
+            "f_i",
+            drawable(curve, "conformal", curve.companions["conformal"]),
+            kind="points",
+            color=P_COLOUR,
+            description=conformal_description,
+        )
+    )
+    figures.add("left", left)
+    gauss_and_dual_panels(curve, figures)
+    return figures
+
+
 def draw_figure_5(query: Figure5Query) -> Panels:
     """Figure 5: the planar conformal quad mesh, its Gauss image meridian and p (D2a, quad)."""
     curve = curve_of(
@@ -413,28 +449,14 @@ def draw_figure_5(query: Figure5Query) -> Panels:
     mesh = christoffel.conformal_quad_mesh(
         ar, query.f0, query.f1, query.i_min, query.i_max, columns
     )
-    shown = shown_parameters(curve)
-    figures = Panels(
-        title="Figure 5: Christoffel dual of a conformal quad mesh (D2a)",
-        subtitle=f"{describe_parameters(shown)}; {columns} quads around, "
-        f"v = {math.degrees(angle):.4g}°",
-        footnote=f"Data: GET {source_url('d2a-quad', shown)} (p, φ_i; f_i on column 0)",
+    return christoffel_figure(
+        curve,
+        "Figure 5: Christoffel dual of a conformal quad mesh (D2a)",
+        f"{columns} quads around, v = {math.degrees(angle):.4g}°",
+        "f_i on column 0",
+        ("Planar conformal quad mesh (yz-plane)", "quad mesh", mesh),
+        "f_i = f_0 (f_1/f_0)^i on the y-axis",
     )
-    left = panel("Planar conformal quad mesh (yz-plane)", "y", "z")
-    left.add(mesh_series("mesh", "quad mesh", mesh.vertices, mesh.edges))
-    left.add(
-        Series(
-            "conformal",
-            "f_i",
-            drawable(curve, "conformal", curve.companions["conformal"]),
-            kind="points",
-            color=P_COLOUR,
-            description="f_i = f_0 (f_1/f_0)^i on the y-axis",
-        )
-    )
-    figures.add("left", left)
-    gauss_and_dual_panels(curve, figures)
-    return figures
 
 
 def draw_figure_6(query: Figure6Query) -> Panels:
@@ -452,27 +474,14 @@ def draw_figure_6(query: Figure6Query) -> Panels:
     mesh = christoffel.conformal_hexagonal_mesh(
         Float64(), query.a, query.b, query.lam, query.i_min, query.i_max, m
     )
-    shown = shown_parameters(curve)
-    figures = Panels(
-        title="Figure 6: Christoffel dual of a conformal hexagonal mesh (D2a)",
-        subtitle=f"{describe_parameters(shown)}; mesh with 2m = {2 * m} rays",
-        footnote=f"Data: GET {source_url('d2a-hex', shown)} (p, φ_i; f_i on ray 0)",
+    return christoffel_figure(
+        curve,
+        "Figure 6: Christoffel dual of a conformal hexagonal mesh (D2a)",
+        f"mesh with 2m = {2 * m} rays",
+        "f_i on ray 0",
+        ("Conformal hexagonal mesh (yz-plane)", "hexagonal mesh", mesh),
+        "even: f_i = f_{i−2} b/a; odd: λ f_{i+1} + (1 − λ) f_{i−1}",
     )
-    left = panel("Conformal hexagonal mesh (yz-plane)", "y", "z")
-    left.add(mesh_series("mesh", "hexagonal mesh", mesh.vertices, mesh.edges))
-    left.add(
-        Series(
-            "conformal",
-            "f_i",
-            drawable(curve, "conformal", curve.companions["conformal"]),
-            kind="points",
-            color=P_COLOUR,
-            description="even: f_i = f_{i−2} b/a; odd: λ f_{i+1} + (1 − λ) f_{i−1}",
-        )
-    )
-    figures.add("left", left)
-    gauss_and_dual_panels(curve, figures)
-    return figures
 
 
 # --- Figure 7: Theorems 7 and 8, Gauss images of the (D4b) tractrix and catenoid ------------------
