@@ -69,7 +69,7 @@ openapi: $(BIN)/.runtime-installed
 
 # A long schema-fuzzing run: thousands of generated requests per operation.
 fuzz: $(BIN)/.dev-installed
-	FUZZ_EXAMPLES=$${FUZZ_EXAMPLES:-3000} $(BIN)/python -m pytest -q tests/api/test_fuzz.py
+	FUZZ_EXAMPLES=$${FUZZ_EXAMPLES:-1000} $(BIN)/python -m pytest -q -n auto tests/api/test_fuzz.py
 
 # A bounded load run on 127.0.0.1: errors, latency percentiles, server memory.
 load: $(BIN)/.dev-installed

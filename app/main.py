@@ -1,5 +1,9 @@
 """The FastAPI application: ``create_app()`` and the module-level ``app``."""
 
+from collections.abc import AsyncIterator
+from contextlib import asynccontextmanager
+
+import anyio.to_thread
 from fastapi import FastAPI
 from fastapi.middleware.cors import CORSMiddleware
 
@@ -51,9 +55,18 @@ TAGS = [
 ]
 
 
+@asynccontextmanager
+async def lifespan(app: FastAPI) -> AsyncIterator[None]:
+    """Bound the threads that run computations (FastAPI runs sync endpoints in a thread pool)."""
+    limiter = anyio.to_thread.current_default_thread_limiter()
+    limiter.total_tokens = app.state.settings.compute_threads
+    yield
+
+
 def create_app(settings: Settings | None = None) -> FastAPI:
     """Build the application with the given settings (default: from the environment)."""
     app = FastAPI(
+        lifespan=lifespan,
         title="Discrete hyperbolic cosine service",
         version=__version__,
         description=DESCRIPTION,

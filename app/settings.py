@@ -63,6 +63,13 @@ class Settings(BaseSettings):
         description="Most vertices of one row of GET /relations (every discretization is "
         "computed for the matrix).",
     )
+    compute_threads: int = Field(
+        4,
+        ge=1,
+        le=64,
+        description="Threads per worker that run requests (computations hold the GIL, so more "
+        "threads add memory, not throughput; requests beyond wait their turn).",
+    )
     time_limit: float = Field(
         20.0,
         gt=0,
