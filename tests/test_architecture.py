@@ -61,3 +61,21 @@ def test_core_does_no_io_and_evaluates_nothing() -> None:
             if isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
         }
         assert not calls & IO_CALLS, f"{path.name} calls {calls & IO_CALLS}"
+
+
+APP = CORE.parent
+NEVER = {"eval", "exec", "compile", "__import__"}
+
+
+def test_nothing_from_a_request_is_evaluated_or_written() -> None:
+    """No module of the service evaluates code or starts processes; only the OpenAPI export
+    (a command-line tool, not a route) writes a file."""
+    for path in APP.rglob("*.py"):
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        calls = [node.func for node in ast.walk(tree) if isinstance(node, ast.Call)]
+        builtins = {f.id for f in calls if isinstance(f, ast.Name)}  # eval(...), not re.compile
+        methods = {f.attr for f in calls if isinstance(f, ast.Attribute)}
+        assert not builtins & NEVER, f"{path.name} calls {builtins & NEVER}"
+        assert "subprocess" not in {m.split(".")[0] for m in imported_modules(path)}, path.name
+        writes = methods & {"write_text", "write_bytes"}
+        assert not writes or path.name == "openapi_export.py", f"{path.name} writes files"
