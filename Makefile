@@ -7,6 +7,8 @@ HOST ?= 127.0.0.1
 PORT ?= 8000
 WORKERS ?= 1
 PYTEST_ARGS ?=
+# the whole suite takes 2-3 minutes here; a run still going after this many seconds has hung
+TEST_TIME_LIMIT ?= 1500
 VENDOR := app/static/vendor
 CHROMIUM ?= /usr/bin/chromium
 # root installs system packages directly; anyone else through sudo
@@ -56,7 +58,7 @@ run: $(BIN)/.runtime-installed $(VENDOR)/.built
 	$(SERVER_ENV) $(BIN)/python -m uvicorn app.main:app --host $(HOST) --port $(PORT) --workers $(WORKERS)
 
 test: $(BIN)/.dev-installed $(VENDOR)/.built browser
-	DCOSH_CHROMIUM=$(CHROMIUM) $(BIN)/python -m pytest -n auto $(PYTEST_ARGS)
+	DCOSH_CHROMIUM=$(CHROMIUM) timeout -k 30 $(TEST_TIME_LIMIT) $(BIN)/python -m pytest -n auto $(PYTEST_ARGS)
 
 lint: $(BIN)/.dev-installed
 	$(BIN)/ruff check app tests bench

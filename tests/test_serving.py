@@ -7,15 +7,19 @@ and asks /health, so a broken entry point or CMD fails here, not in production.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import re
+import signal
 import socket
 import subprocess
 import sys
+import tempfile
 import time
 import urllib.request
 from pathlib import Path
+from typing import IO
 
 ROOT = Path(__file__).resolve().parents[1]
 DOCKERFILE = (ROOT / "Dockerfile").read_text(encoding="utf-8")
@@ -48,25 +52,49 @@ def test_the_image_command_serves_health() -> None:
         "WORKERS": "2",
         "PATH": f"{Path(sys.executable).parent}:{os.environ['PATH']}",
     }
-    # the CMD exactly as the image runs it: sh -c 'exec uvicorn ... "$PORT" ...'
-    process = subprocess.Popen(
-        cmd, cwd=ROOT, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE
-    )
-    try:
-        deadline = time.monotonic() + 30
-        while True:
-            try:
-                with urllib.request.urlopen(f"http://127.0.0.1:{port}/health", timeout=2) as r:
-                    assert json.load(r)["status"] == "ok"
-                    break
-            except OSError:
-                assert process.poll() is None, process.stderr.read().decode()  # type: ignore[union-attr]
-                assert time.monotonic() < deadline, "the server did not answer in 30 s"
-                time.sleep(0.2)
-        with urllib.request.urlopen(
-            f"http://127.0.0.1:{port}/discretizations/d4b?i_min=0&i_max=1", timeout=5
-        ) as r:
-            assert json.load(r)["vertices"] == [[-0.1, 1.0], [0.1, 1.0]]
-    finally:
-        process.terminate()
+    # the CMD exactly as the image runs it: sh -c 'exec uvicorn ... "$PORT" ...'; in a session of
+    # its own with no stdin (an xdist worker's stdin is its channel to the controller), so that
+    # the whole process group can be ended, whatever the server does
+    with tempfile.TemporaryFile() as log:
+        process = subprocess.Popen(
+            cmd,
+            cwd=ROOT,
+            env=env,
+            stdin=subprocess.DEVNULL,
+            stdout=subprocess.DEVNULL,
+            stderr=log,
+            start_new_session=True,
+        )
+        try:
+            deadline = time.monotonic() + 30
+            while True:
+                try:
+                    with urllib.request.urlopen(f"http://127.0.0.1:{port}/health", timeout=2) as r:
+                        assert json.load(r)["status"] == "ok"
+                        break
+                except OSError:
+                    assert process.poll() is None, server_log(log)
+                    assert time.monotonic() < deadline, "no answer in 30 s: " + server_log(log)
+                    time.sleep(0.2)
+            with urllib.request.urlopen(
+                f"http://127.0.0.1:{port}/discretizations/d4b?i_min=0&i_max=1", timeout=5
+            ) as r:
+                assert json.load(r)["vertices"] == [[-0.1, 1.0], [0.1, 1.0]]
+        finally:
+            end_process_group(process)
+
+
+def server_log(log: IO[bytes]) -> str:
+    log.seek(0)
+    return log.read().decode(errors="replace")
+
+
+def end_process_group(process: subprocess.Popen[bytes]) -> None:
+    """SIGTERM to the server and its workers; SIGKILL to whatever is left after 10 s."""
+    with contextlib.suppress(ProcessLookupError):
+        os.killpg(process.pid, signal.SIGTERM)
+    with contextlib.suppress(subprocess.TimeoutExpired):
         process.wait(timeout=10)
+    with contextlib.suppress(ProcessLookupError):
+        os.killpg(process.pid, signal.SIGKILL)
+    process.wait(timeout=10)

@@ -27,6 +27,7 @@ CHROMIUM_FLAGS = [
     "--headless",
     "--no-sandbox",
     "--disable-gpu",
+    "--disable-dev-shm-usage",  # a small /dev/shm (containers) must not crash the renderer
     "--disable-quic",
     "--no-first-run",
     "--disable-background-networking",
