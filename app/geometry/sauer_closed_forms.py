@@ -32,13 +32,16 @@ Nothing here calls the construction: comparing the two tests this form.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
+from app.geometry.errors import NotRepresentableError
 from app.geometry.precision import Arithmetic, Array, Scalar
+
+#: rounding moves the floor of log(sin β0)/log(k) by a step or two at most
+CUSP_SEARCH_STEPS = 8
 
 
 @dataclass(frozen=True)
@@ -70,11 +73,24 @@ def cusp(ar: Arithmetic, h: Scalar, s: Scalar, beta0: float | None) -> Cusp:
     if h * sin0 > h - s:
         return Cusp(0, cos0, sin0)
     k = (h - s) / h
-    j = max(1, math.floor(float(ar.log(sin0) / ar.log(k))))
-    while h * sin0 / k**j <= h - s:  # guard the floor against rounding
-        j += 1
-    while j > 1 and h * sin0 / k ** (j - 1) > h - s:
-        j -= 1
+    if not k < 1:
+        raise NotRepresentableError(
+            "s", "1 − s/h < 1 at this precision", float(s), "use more digits"
+        )
+    # the floor in the arithmetic's own precision: a float64 round trip would be off by
+    # j·1e-16 sticks, and the search below would walk them one by one
+    j = max(1, int(ar.log(sin0) / ar.log(k)))
+    for _ in range(CUSP_SEARCH_STEPS):  # at most a step or two of rounding either way
+        if h * sin0 / k**j <= h - s:
+            j += 1
+        elif j > 1 and h * sin0 / k ** (j - 1) > h - s:
+            j -= 1
+        else:
+            break
+    else:
+        raise NotRepresentableError(
+            "s", "s/h large enough for the cusp stick to be found", float(s), "use more digits"
+        )
     sin_c = sin0 / k**j
     cos_c = ar.sqrt((1 - sin_c) * (1 + sin_c))
     return Cusp(-j, -cos_c, sin_c) if cos0 < 0 else Cusp(j, cos_c, sin_c)

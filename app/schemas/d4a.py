@@ -30,8 +30,9 @@ by how much they miss).
 
 `method=construction` (default) builds the sticks one after the other and compares with the
 explicit form (sin β_i = sin β_c (1 − s/h)^{|i−c|}, x_i as partial sums); `method=closed-form`
-evaluates the explicit form (vectorized). In float64, s/h ≥ 0.001 (p is where nearly parallel
-lines meet) and p_i^y stays below 1e150; beyond, use precision=mp.
+evaluates the explicit form (vectorized). p is where nearly parallel lines meet and is resolved
+to about h/s units of rounding: float64 needs s/h ≥ 0.001 and p_i^y below 1e150 (beyond, use
+precision=mp); mp needs s/h ≥ 10^−⌊digits/2⌋, which keeps half of the digits.
 """
 
 

@@ -85,6 +85,7 @@ def test_theorem_rotation_centre_with_a_tilted_start(client: TestClient) -> None
         ("beta0=0", "beta0", "beta0 > 0"),
         ("beta0=3.2", "beta0", "beta0 < 3.14159"),
         ("s=0.0001", "s", "s/h >= 0.001 in float64"),
+        ("s=1e-28&precision=mp&digits=30", "s", "s/h >= 1e-15 with digits=30"),
         ("s=0.5&i_max=700", "i_max", "in float64"),
         ("d=0.1", "d", "not a parameter of this endpoint"),
         ("i_min=3&i_max=2", "i_max", "i_min <= i_max"),
@@ -97,3 +98,14 @@ def test_bad_query_is_a_422_naming_the_parameter(
     named = {e["parameter"]: e["constraint"] for e in body["errors"]}
     assert parameter in named, body
     assert constraint in named[parameter], body
+
+
+def test_a_step_at_the_mp_resolution_is_answered_at_once(client: TestClient) -> None:
+    # the cusp lies ~10^32 sticks from stick 0; finding it walked a float64 rounding error of
+    # ~10^16 sticks one by one, and the request never returned
+    response = client.get(
+        "/discretizations/d4a?s=1e-30&beta0=1e-50&precision=mp&digits=60&i_min=-2&i_max=2"
+    )
+    assert response.status_code == 200, response.text
+    checks = {c["id"]: c["holds"] for c in response.json()["checks"]}
+    assert checks["d4a-sticks"] is True and checks["d4a-closed-form"] is True

@@ -6,6 +6,7 @@ import functools
 import math
 from dataclasses import replace
 
+import mpmath
 import numpy as np
 import pytest
 
@@ -249,5 +250,25 @@ def test_a_step_close_to_the_stick_length_keeps_its_digits(float64: Float64) -> 
 
 
 def test_mp_refuses_steps_below_its_resolution() -> None:
-    with pytest.raises(NotRepresentableError, match=r"s must satisfy s/h >= 1e-20 with digits=20"):
-        d4a.compute(MultiPrecision(20), 1.0, 1e-25, None, -2, 2)
+    with pytest.raises(NotRepresentableError, match=r"s must satisfy s/h >= 1e-10 with digits=20"):
+        d4a.compute(MultiPrecision(20), 1.0, 1e-11, None, -2, 2)
+
+
+@pytest.mark.parametrize(("digits", "beta0"), [(30, 0.01), (60, 1e-50), (60, 3.1)])
+def test_the_cusp_of_the_smallest_step_is_found_at_once(digits: int, beta0: float) -> None:
+    # s/h at the resolution limit puts the cusp ~10^(digits/2) sticks away; the floor of
+    # log(sin β0)/log(k) was taken through a float64, and the search walked the error stick by stick
+    ar = MultiPrecision(digits)
+    h, s = ar.scalar(1), ar.scalar(10.0 ** -(digits // 2))
+    found = sauer_closed_forms.cusp(ar, h, s, beta0)
+    k, sin_c = (h - s) / h, found.sin
+    assert sin_c > h - s >= h * sin_c * k  # the stick past the cusp would reach the axis
+    sin0 = ar.sin(ar.scalar(beta0))
+    assert abs(sin_c - sin0 / k ** abs(found.index)) <= 10 ** (4 - digits) * sin_c
+    with mpmath.workdps(digits + 20):  # independent: the count at full precision
+        expected = int(mpmath.log(sin0) / mpmath.log(k))
+    assert abs(abs(found.index) - expected) <= 1
+    assert (found.index < 0) == (beta0 > math.pi / 2)
+    curve = d4a.compute(ar, 1.0, float(s), beta0, -2, 2)
+    results = verdicts(curve.checks)
+    assert results["d4a-sticks"] is True and results["d4a-closed-form"] is True

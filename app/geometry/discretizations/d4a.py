@@ -227,7 +227,8 @@ def polygons(
         p = window(sauer_tractrix.hyperbolic_cosine(ar, sticks), 1)
         e = window(sauer_tractrix.darboux(sticks), 1)
     else:
-        side = np.sign(np.arange(lo, hi + 1) - cusp).astype(np.int64)
+        # the cusp may lie ~10^(digits/2) sticks away: only its side of the range matters
+        side = np.sign(np.arange(lo, hi + 1) - min(max(cusp, lo - 1), hi + 1)).astype(np.int64)
         tractrix, axis = explicit.tractrix, explicit.axis_points
         p = window(explicit.hyperbolic_cosine, 0)
         e = window(explicit.darboux, 0)
@@ -292,10 +293,11 @@ def compute(
     require_range(i_min, i_max)
     if ar.mode == "float64":
         _require_float64_representable(h, s, beta0, i_min, i_max)
-    elif s / h < 10.0 ** (-ar.digits):
+    elif s / h < 10.0 ** -(ar.digits // 2):
+        # p is resolved to about h/s units of rounding: keep at least half of the digits
         raise NotRepresentableError(
             "s",
-            f"s/h >= 1e-{ar.digits} with digits={ar.digits}",
+            f"s/h >= 1e-{ar.digits // 2} with digits={ar.digits}",
             s,
             "p is resolved to about h/s units of rounding; use more digits",
         )
