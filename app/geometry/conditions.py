@@ -146,14 +146,17 @@ def equation_7(ar: Arithmetic, p: Array, i_min: int) -> TwoConstantFit:
     lhs_size = second_difference_magnitude(y)
     tiny = ar.scalar(np.finfo(np.float64).tiny)
     weight = np.where(lhs_size > tiny, lhs_size, tiny)
-    uw, vw, lw = u / weight, v / weight, lhs / weight
+    # each column scaled to at most 1 in magnitude, so that the sums of products cannot
+    # overflow (areas can be ~1e150 times the second differences); the constants scale back
+    mu, mv, ml = (_largest_magnitude(ar, column / weight) for column in (u, v, lhs))
+    uw, vw, lw = u / weight / mu, v / weight / mv, lhs / weight / ml
     zero = ar.scalar(0)
     suu, svv, suv = np.sum(uw * uw), np.sum(vw * vw), np.sum(uw * vw)
     slu, slv = np.sum(lw * uw), np.sum(lw * vw)
     det = suu * svv - suv * suv if len(lhs) else zero
     if len(lhs) >= 2 and abs(det) > ar.eps * ar.eps * abs(suu * svv):
-        c1 = (slu * svv - slv * suv) / det
-        c2 = (suu * slv - suv * slu) / det
+        c1 = (slu * svv - slv * suv) / det * (ml / mu)
+        c2 = (suu * slv - suv * slu) / det * (ml / mv)
         constants: tuple[Scalar, Scalar] | None = (c1, c2)
     else:
         c1 = c2 = zero
@@ -161,6 +164,12 @@ def equation_7(ar: Arithmetic, p: Array, i_min: int) -> TwoConstantFit:
     scale = lhs_size + abs(c1) * u_size + abs(c2) * v_size
     scale = np.where(scale > tiny, scale, tiny)
     return TwoConstantFit(constants, abs(lhs - c1 * u - c2 * v) / scale)
+
+
+def _largest_magnitude(ar: Arithmetic, values: Array) -> Scalar:
+    """max |value|, or 1 when every value is 0 (a column scale that never divides by zero)."""
+    largest = np.max(np.abs(values)) if len(values) else ar.scalar(0)
+    return largest if largest > 0 else ar.scalar(1)
 
 
 def equilibrium(ar: Arithmetic, p: Array) -> ConditionFit:

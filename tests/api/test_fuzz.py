@@ -41,7 +41,13 @@ FUZZ_SETTINGS = Settings(
     max_relation_vertices=501,
     time_limit=5.0,
 )
-schema = schemathesis.openapi.from_asgi("/openapi.json", create_app(FUZZ_SETTINGS))
+#: ``FUZZ_LIMITS=production`` fuzzes the service with its default limits instead (heavier requests,
+#: up to the 20 s time limit each: for `make fuzz`, not for `make test`).
+LIMITS = os.environ.get("FUZZ_LIMITS", "tight")
+assert LIMITS in {"tight", "production"}, f"FUZZ_LIMITS is tight or production, not {LIMITS!r}"
+schema = schemathesis.openapi.from_asgi(
+    "/openapi.json", create_app(Settings() if LIMITS == "production" else FUZZ_SETTINGS)
+)
 schema.config.generation.update(
     modes=[schemathesis.GenerationMode.POSITIVE, schemathesis.GenerationMode.NEGATIVE]
 )

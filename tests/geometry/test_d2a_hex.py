@@ -152,3 +152,21 @@ def test_relation_checks_hold_on_a_polygon_that_satisfies_them(float64: Float64)
     kinematic = d4b.polygons(float64, 1.0, 0.3, None, -10, 9).p
     results = verdicts(d2a_hex.evaluate(float64, replace(data, p=kinematic))[1])
     assert {k for k in FAIL_ALWAYS if results[k] is not True} == set()
+
+
+def test_equation_7_fit_does_not_overflow_when_areas_dwarf_second_differences(
+    float64: Float64,
+) -> None:
+    # x stretched by 1e150 and y squeezed by 1e-150 keep every area and divide Δ²y by 1e150, so
+    # (7) holds with both constants divided by 1e150; the weighted areas are ~1e150 and their
+    # products in the normal equations overflowed (the fit then said "not determined")
+    data = d2a_hex.polygons(float64, 1.3, 2.1, 0.3, None, -6, 6)
+    reference = conditions.equation_7(float64, data.p, data.i_min)
+    assert reference.constants is not None
+    scaled = data.p * np.array([1e150, 1e-150])
+    with np.errstate(all="raise"):
+        fit = conditions.equation_7(float64, scaled, data.i_min)
+    assert fit.constants is not None
+    for c, c_reference in zip(fit.constants, reference.constants, strict=True):
+        assert c == pytest.approx(c_reference * 1e-150, rel=1e-12)
+    assert np.max(fit.residuals) < 1e-13
