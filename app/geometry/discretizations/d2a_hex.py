@@ -373,9 +373,11 @@ def _theorem_3(ctx: Context, data: HexPolygons) -> list[Check]:
         residuals = scaled_point_difference(ar, p[mask], stack_points(x, y), zero)
         erratum = None
         if not is_odd:
-            with np.errstate(all="ignore"):  # the literal powers may overflow in float64
+            # the literal powers may overflow in float64: the printed residual is then not a
+            # number, and the erratum says so (printed_residual None)
+            with np.errstate(all="ignore"):
                 printed_y = cf.theorem_3_y_even_printed(a, b, lam, r, i)
-            printed = scaled_point_difference(ar, p[mask], stack_points(x, printed_y), zero)
+                printed = scaled_point_difference(ar, p[mask], stack_points(x, printed_y), zero)
             erratum = ctx.erratum(ERRATUM_EVEN, printed)
         checks.append(ctx.check(statement, 0, residuals, erratum, summed=True, at=at))
     return checks
