@@ -3,6 +3,7 @@ perturbations, the two-constant fit of (7)."""
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import replace
 
 import numpy as np
@@ -170,3 +171,16 @@ def test_equation_7_fit_does_not_overflow_when_areas_dwarf_second_differences(
     for c, c_reference in zip(fit.constants, reference.constants, strict=True):
         assert c == pytest.approx(c_reference * 1e-150, rel=1e-12)
     assert np.max(fit.residuals) < 1e-13
+
+
+def test_an_overflowing_printed_form_is_reported_as_not_a_number(float64: Float64) -> None:
+    # (8) as printed has literal powers of a and b: at a ≈ 7e15 they overflow while the
+    # construction and the corrected form stay finite
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        curve = d2a_hex.compute(
+            float64, 7438379186113947.0, 23 * 7438379186113947.0, 0.5, None, 0, 30
+        )
+    even = next(c for c in curve.checks if c.id == "theorem-3-even")
+    assert even.holds is True
+    assert even.erratum is not None and even.erratum.printed_residual is None
