@@ -47,12 +47,17 @@ def fit(
     """Least-squares c in lhs = c·rhs and the relative residuals; all arrays ``(m,)``."""
     tiny = ar.scalar(np.finfo(np.float64).tiny)
     weight = np.where(lhs_magnitude > tiny, lhs_magnitude, tiny)
-    u, v = lhs / weight, rhs / weight
-    largest = np.max(abs(v)) if len(v) else ar.scalar(0)
-    if largest > 0:  # scaled so that the squares cannot overflow
-        u, v = u / largest, v / largest
+    # each side scaled to at most 1 before and after the weighting, so that neither the
+    # quotients (weights can be as small as the smallest normal float) nor the squares can
+    # overflow; the constant scales back
+    lhs_scale, rhs_scale = _largest_magnitude(ar, lhs), _largest_magnitude(ar, rhs)
+    u, v = lhs / lhs_scale / weight, rhs / rhs_scale / weight
+    u_scale, v_scale = _largest_magnitude(ar, u), _largest_magnitude(ar, v)
+    u, v = u / u_scale, v / v_scale
     vv = np.sum(v * v) if len(v) else ar.scalar(0)
-    constant = np.sum(u * v) / vv if vv > 0 else None
+    constant = (
+        np.sum(u * v) / vv * (u_scale / v_scale) * (lhs_scale / rhs_scale) if vv > 0 else None
+    )
     c = constant if constant is not None else ar.scalar(0)
     return ConditionFit(constant, misfit(ar, lhs, rhs, lhs_magnitude, rhs_magnitude, c))
 

@@ -96,3 +96,20 @@ def test_fit_does_not_overflow_for_tiny_left_hand_sides(float64: Float64) -> Non
     with np.errstate(all="raise"):
         fit = conditions.d3(float64, p)
     assert fit.constant == pytest.approx(np.sum(signed_areas(p) * 2) / 8, rel=1e-6)
+
+
+def test_fit_does_not_overflow_when_a_row_has_no_magnitude(float64: Float64) -> None:
+    # found by fuzzing (D1 with δ ≈ 1.8e16 through p_0 = (0, 0)): an edge on the axis has area 0
+    # and area magnitude 0, so its weight is the smallest normal float and rhs/weight overflowed;
+    # that exact row demands c·l = 0, so the weighted fit is c = 0, with the other rows failing
+    lhs, lhs_magnitude = np.array([0.0, 2e36, 4e36]), np.array([0.0, 4e37, 8e37])
+    rhs = np.array([1.8e16, 1e20, 2e20])
+    with np.errstate(over="raise", invalid="raise", divide="raise"):
+        found = conditions.fit(float64, lhs, rhs, lhs_magnitude, rhs)
+    assert found.constant == 0.0
+    assert found.residuals[0] == 0.0 and np.all(found.residuals[1:] > 0.04)
+    # without that row the constant is 2e16, recovered through the scalings
+    with np.errstate(over="raise", invalid="raise", divide="raise"):
+        found = conditions.fit(float64, lhs[1:], rhs[1:], lhs_magnitude[1:], rhs[1:])
+    assert found.constant == pytest.approx(2e16, rel=1e-15)
+    assert np.max(found.residuals) < 1e-15
