@@ -68,9 +68,10 @@ lint: $(BIN)/.dev-installed
 openapi: $(BIN)/.runtime-installed
 	$(BIN)/python -m app.openapi_export openapi/openapi.json
 
-# A long schema-fuzzing run: thousands of generated requests per operation.
+# A long schema-fuzzing run: thousands of generated requests per operation, new ones each run.
 fuzz: $(BIN)/.dev-installed
-	FUZZ_EXAMPLES=$${FUZZ_EXAMPLES:-1000} $(BIN)/python -m pytest -q -n auto tests/api/test_fuzz.py
+	FUZZ_EXAMPLES=$${FUZZ_EXAMPLES:-1000} HYPOTHESIS_PROFILE=$${HYPOTHESIS_PROFILE:-random} \
+	  $(BIN)/python -m pytest -q -n auto tests/api/test_fuzz.py
 
 # A bounded load run on 127.0.0.1: errors, latency percentiles, server memory.
 load: $(BIN)/.dev-installed

@@ -68,9 +68,10 @@ def distance_to_catenary(ar: Arithmetic, h: Scalar, q: Array) -> Array:
     """Distance from each point of ``(n, 2)`` q to the catenary y = h cosh(x/h); ``(n,)``.
 
     The nearest point (s, h cosh(s/h)) has |s − q^x| ≤ v, v = |q^y − h cosh(q^x/h)| the vertical
-    distance, and is a root of F(s) = (s − q^x) + (h cosh(s/h) − q^y) sinh(s/h) (half the
-    derivative of the squared distance), which rises through it when q^y < 2h cosh(s/h) (any
-    point within h of the curve). The result is the smaller of the distances to that point and
+    distance, hence h cosh(s/h) ≤ |q^y| + v, and is a root of
+    F(s) = (s − q^x) + (h cosh(s/h) − q^y) sinh(s/h) (half the derivative of the squared
+    distance), which rises through it when q^y < 2h cosh(s/h) (any point within h of the
+    curve). The result is the smaller of the distances to that point and
     to (q^x, h cosh(q^x/h)).
     """
     qx, qy = q[:, 0], q[:, 1]
@@ -81,7 +82,12 @@ def distance_to_catenary(ar: Arithmetic, h: Scalar, q: Array) -> Array:
         gap = h * c - qy[where]
         return (s - qx[where]) + gap * sh, c * c + gap * c / h
 
-    s = bracketed_root(ar, f, qx - vertical, qx + vertical, True, ar.to_float(h))
+    # the nearest point is no farther than `vertical`, so no higher than |q^y| + vertical:
+    # |s| <= h acosh((|q^y| + vertical)/h) keeps cosh(s/h) finite wherever the answer is
+    bound = h * ar.acosh(np.maximum((abs(qy) + vertical) / h, 1))
+    lo = np.maximum(qx - vertical, -bound)
+    hi = np.maximum(np.minimum(qx + vertical, bound), lo)
+    s = bracketed_root(ar, f, lo, hi, True, ar.to_float(h))
     nearest = ar.hypot(s - qx, h * ar.cosh(s / h) - qy)
     return np.minimum(nearest, vertical)
 

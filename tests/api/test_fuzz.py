@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import os
 
+import pytest
 import schemathesis
 from hypothesis import HealthCheck, settings
 from schemathesis.config import PositiveDataAcceptanceConfig
@@ -57,6 +58,7 @@ schema.config.checks.positive_data_acceptance = PositiveDataAcceptanceConfig(
 
 
 @schema.parametrize()
+@pytest.mark.filterwarnings("error::RuntimeWarning")  # a numerical warning is a failed request
 @settings(max_examples=EXAMPLES, deadline=None, suppress_health_check=list(HealthCheck))
 def test_api(case: schemathesis.Case) -> None:
     response = case.call_and_validate()
