@@ -18,6 +18,9 @@ import numpy as np
 
 from app.geometry.precision import Arithmetic, Array, Scalar
 
+#: |x|/h beyond which h cosh(x/h) is not evaluated (float64's cosh overflows past ~710)
+FAR = 700.0
+
 RootFunction = Callable[[Array, np.ndarray[Any, np.dtype[np.intp]]], tuple[Array, Array]]
 """``f(s, where) -> (value, slope)`` at the points ``s`` for the entries ``where``."""
 
@@ -75,21 +78,33 @@ def distance_to_catenary(ar: Arithmetic, h: Scalar, q: Array) -> Array:
     to (q^x, h cosh(q^x/h)).
     """
     qx, qy = q[:, 0], q[:, 1]
-    vertical = abs(qy - h * ar.cosh(qx / h))
+    # the vertex (0, h) is a point of the curve too: its distance bounds the answer where
+    # h cosh(q^x/h) itself is beyond float64 (|q^x| ≥ 700 h)
+    lowest = ar.hypot(qx, qy - h)
+    near = np.asarray(abs(qx / h) < FAR, dtype=bool)
+    height = h * ar.cosh(np.where(near, qx / h, 0))
+    vertical = np.where(near, abs(qy - height), lowest)
+    reach = np.minimum(vertical, lowest)
 
     def f(s: Array, where: np.ndarray[Any, np.dtype[np.intp]]) -> tuple[Array, Array]:
         c, sh = ar.cosh(s / h), ar.sinh(s / h)
         gap = h * c - qy[where]
         return (s - qx[where]) + gap * sh, c * c + gap * c / h
 
-    # the nearest point is no farther than `vertical`, so no higher than |q^y| + vertical:
-    # |s| <= h acosh((|q^y| + vertical)/h) keeps cosh(s/h) finite wherever the answer is
-    bound = h * ar.acosh(np.maximum((abs(qy) + vertical) / h, 1))
-    lo = np.maximum(qx - vertical, -bound)
-    hi = np.maximum(np.minimum(qx + vertical, bound), lo)
+    # the nearest point is no farther than `reach`, so no higher than |q^y| + reach:
+    # |s| <= h acosh((|q^y| + reach)/h) keeps cosh(s/h) finite wherever the answer is
+    bound = h * ar.acosh(np.maximum((abs(qy) + reach) / h, 1))
+    lo = np.maximum(qx - reach, -bound)
+    hi = np.maximum(np.minimum(qx + reach, bound), lo)
     s = bracketed_root(ar, f, lo, hi, True, ar.to_float(h))
     nearest = ar.hypot(s - qx, h * ar.cosh(s / h) - qy)
-    return np.minimum(nearest, vertical)
+    return np.minimum(nearest, reach)
+
+
+def _sech(ar: Arithmetic, u: Array) -> Array:
+    """1/cosh(u) as 2e/(1 + e²), e = exp(−|u|): no overflow for any u."""
+    e = ar.exp(-abs(u))
+    return 2 * e / (1 + e * e)
 
 
 def distance_to_tractrix(ar: Arithmetic, h: Scalar, q: Array) -> Array:
@@ -99,7 +114,8 @@ def distance_to_tractrix(ar: Arithmetic, h: Scalar, q: Array) -> Array:
 
     d/ds |q − T(s)|² = −2 tanh(s/h) G(s)/cosh(s/h) with G(s) = (q^x − s) sinh(s/h) − q^y
     + h cosh(s/h), G'(s) = (q^x − s) cosh(s/h)/h. So the critical points are the cusp s = 0 and
-    the roots of G: G rises on (−∞, q^x) and falls on (q^x, ∞), G(q^x) = h cosh(q^x/h) − q^y ≥ 0
+    the roots of G (found as the roots of G/cosh(s/h), which cannot overflow): G rises on
+    (−∞, q^x) and falls on (q^x, ∞), G(q^x) = h cosh(q^x/h) − q^y ≥ 0
     for points below the catenary, and G < 0 at min(q^x, 0) − 2h and max(q^x, 0) + 2h for
     q^y ≥ 0; so there is one root in each of those brackets. The distance is the smallest of
     the three (exact for points of the upper half-plane below the catenary).
@@ -109,16 +125,17 @@ def distance_to_tractrix(ar: Arithmetic, h: Scalar, q: Array) -> Array:
     two_h = 2 * h
 
     def g(s: Array, where: np.ndarray[Any, np.dtype[np.intp]]) -> tuple[Array, Array]:
-        c, sh = ar.cosh(s / h), ar.sinh(s / h)
-        lever = qx[where] - s
-        return lever * sh - qy[where] + h * c, lever * c / h
+        """G(s)/cosh(s/h): the same sign and roots as G, and no overflow for any s."""
+        t, e = ar.tanh(s / h), _sech(ar, s / h)
+        lever, y = qx[where] - s, qy[where]
+        return lever * t + h - y * e, -t + lever * e * e / h + y * e * t / h
 
     unit = ar.to_float(h)
     right = bracketed_root(ar, g, qx.copy(), np.maximum(qx, zero) + two_h, False, unit)
     left = bracketed_root(ar, g, np.minimum(qx, zero) - two_h, qx.copy(), True, unit)
 
     def to(s: Array) -> Array:
-        return ar.hypot(s - h * ar.tanh(s / h) - qx, h / ar.cosh(s / h) - qy)
+        return ar.hypot(s - h * ar.tanh(s / h) - qx, h * _sech(ar, s / h) - qy)
 
     cusp = ar.hypot(qx, qy - h)
     return np.minimum(np.minimum(to(right), to(left)), cusp)

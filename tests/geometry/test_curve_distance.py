@@ -109,6 +109,29 @@ def test_catenary_distance_far_above_a_narrow_catenary(float64: Float64) -> None
     np.testing.assert_allclose(got, expected, rtol=1e-9)
 
 
+def test_points_hundreds_of_h_along_the_axis(float64: Float64, mp40: MultiPrecision) -> None:
+    # there h cosh(x/h) and cosh(s/h) are beyond float64: the catenary's bracket falls back on
+    # the distance to its vertex, the tractrix's root function is G/cosh(s/h)
+    h = 0.01
+    points = np.array([[10.0, 0.5], [-10.0, 2.0]])
+
+    def catenary(ctx, s):
+        return s, h * ctx.cosh(s / h)
+
+    with np.errstate(over="raise", invalid="raise", divide="raise"):
+        got = distance_to_catenary(float64, h, points)
+    expected = [_brute_force(catenary, p, -1, 1) for p in points]
+    np.testing.assert_allclose(got, expected, rtol=1e-9)
+    mp_points = stack_points(mp40.array(points[:, 0]), mp40.array(points[:, 1]))
+    exact = _floats(mp40, distance_to_catenary(mp40, mp40.scalar(h), mp_points))
+    np.testing.assert_allclose(exact, expected, rtol=1e-12)
+    # far out the tractrix is within h·2e^{−|x|/h} of the axis: the distance is the height
+    far = np.array([[10.0, 0.001], [-10.0, 0.5], [800 * h, 0.1]])
+    with np.errstate(over="raise", invalid="raise", divide="raise"):
+        got = distance_to_tractrix(float64, h, far)
+    np.testing.assert_allclose(got, far[:, 1], rtol=1e-12)
+
+
 def test_bracketed_root_falls_back_to_bisection(mp40: MultiPrecision) -> None:
     """f(s) = s³ − 2 (Newton from 0 has slope 0) and g(s) = atan(s) − 1 (Newton overshoots)."""
     ar = mp40
