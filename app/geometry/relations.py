@@ -207,11 +207,10 @@ def _scaled(ar: Arithmetic, pair: SurfacePair, *residuals: Array) -> Array:
     return worst
 
 
-def _mean_curvature_zero(curve: Curve) -> Cell:
-    """H = 0 on every face of the row's surface of revolution (mixed areas, [3])."""
-    key, ar = "mean-curvature-zero", curve.arithmetic
+def _surface_faces(curve: Curve, key: str, claim: str) -> tuple[SurfacePair, FaceCurvatures] | Cell:
+    """The row's surface for ``claim`` and its face curvatures, or the cell saying why not."""
     try:
-        pair = surface_pair(curve, "minimal")
+        pair = surface_pair(curve, claim)
     except DomainError as error:
         return Cell(key, None, tolerance_of(curve), None, note=f"not evaluable: {error}")
     if isinstance(pair, str):
@@ -219,9 +218,18 @@ def _mean_curvature_zero(curve: Curve) -> Cell:
     if len(pair.meridian) < 2:
         return Cell(key, None, pair.tolerance, None, note="needs a face (two vertices)")
     try:
-        faces = _curvatures(pair, ar)
+        return pair, _curvatures(pair, curve.arithmetic)
     except DomainError as error:
         return Cell(key, None, pair.tolerance, None, note=f"not evaluable: {error}")
+
+
+def _mean_curvature_zero(curve: Curve) -> Cell:
+    """H = 0 on every face of the row's surface of revolution (mixed areas, [3])."""
+    key, ar = "mean-curvature-zero", curve.arithmetic
+    found = _surface_faces(curve, key, "minimal")
+    if isinstance(found, Cell):
+        return found
+    pair, faces = found
     residual = _residual(ar, _scaled(ar, pair, minimal_residuals(faces), faces.parallel))
     product = pair.meridian[:, 1] * pair.gauss[:, 1]
     constants = {}
@@ -236,15 +244,10 @@ def _mean_curvature_zero(curve: Curve) -> Cell:
 def _gaussian_curvature_constant(curve: Curve) -> Cell:
     """K = A(n)/A(f) the same on every face of the row's pseudosphere (mixed areas, [3])."""
     key, ar = "gaussian-curvature-constant", curve.arithmetic
-    pair = surface_pair(curve, "constant-curvature")
-    if isinstance(pair, str):
-        return Cell(key, None, tolerance_of(curve), None, note=pair)
-    if len(pair.meridian) < 2:
-        return Cell(key, None, pair.tolerance, None, note="needs a face (two vertices)")
-    try:
-        faces = _curvatures(pair, ar)
-    except DomainError as error:
-        return Cell(key, None, pair.tolerance, None, note=f"not evaluable: {error}")
+    found = _surface_faces(curve, key, "constant-curvature")
+    if isinstance(found, Cell):
+        return found
+    pair, faces = found
     fit = conditions.fit(
         ar, faces.gauss_area, faces.area, faces.gauss_area_magnitude, faces.area_magnitude
     )

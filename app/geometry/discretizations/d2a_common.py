@@ -19,7 +19,7 @@ from app.geometry.checks import (
 )
 from app.geometry.errors import NotRepresentableError
 from app.geometry.polygon import magnitude
-from app.geometry.precision import Arithmetic, Array, Scalar
+from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 
 #: Local checks combine a handful of neighbouring values; their tolerance allows this many
 #: rounding steps. Checks that compare vertices with closed forms add the number of edges
@@ -124,6 +124,11 @@ class Context:
     def erratum(self, entry: tuple[str, str, str], residuals: Array) -> Erratum:
         """An ``Erratum`` whose printed residual is the largest of ``residuals``."""
         return Erratum(*entry, printed_residual=printed_residual(self.ar, residuals))
+
+
+def companions(ar: Arithmetic, f: Array, gauss: Array) -> dict[str, Array]:
+    """The conformal points f_i (on the x-axis) and their stereographic images φ_i, eq. (S2)."""
+    return {"conformal": stack_points(f, ar.zeros(len(f))), "gauss_image": gauss}
 
 
 def scaled_difference(ar: Arithmetic, computed: Array, expected: Array, size: Array) -> Array:

@@ -24,6 +24,7 @@ from app.geometry.discretizations.d2a_common import (
     SHARED_D3,
     SHARED_EQUATION_2,
     Context,
+    companions,
     fitted_condition,
     local_tolerance,
     not_enough,
@@ -282,15 +283,11 @@ def compute(
         "i_min": i_min,
         "i_max": i_max,
     }
-    companions = {
-        "conformal": stack_points(data.f, ar.zeros(len(data.f))),
-        "gauss_image": data.gauss,
-    }
     return INFO.curve(
         ar,
         parameters,
         data.p,
-        companions,
+        companions(ar, data.f, data.gauss),
         constants=constants,
         checks=checks,
         local_tolerance=local_tolerance(ar, smallest_gap(data.a, data.b, data.lam)),

@@ -23,6 +23,7 @@ from app.geometry.discretizations.d2a_common import (
     SHARED_D1,
     SHARED_D3,
     Context,
+    companions,
     fitted_condition,
     local_tolerance,
     not_enough,
@@ -35,7 +36,7 @@ from app.geometry.discretizations.d2a_common import (
 )
 from app.geometry.errors import NotRepresentableError
 from app.geometry.polygon import area_magnitude, second_difference, signed_areas
-from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
+from app.geometry.precision import Arithmetic, Array, Scalar
 
 S = Statement
 ONLY_AT_R_STAR = (
@@ -291,15 +292,11 @@ def compute(
         "i_min": i_min,
         "i_max": i_max,
     }
-    companions = {
-        "conformal": stack_points(data.f, ar.zeros(len(data.f))),
-        "gauss_image": data.gauss,
-    }
     return INFO.curve(
         ar,
         parameters,
         data.p,
-        companions,
+        companions(ar, data.f, data.gauss),
         constants=constants,
         checks=checks,
         local_tolerance=local_tolerance(ar, (data.f1 - data.f0) / data.f1),
