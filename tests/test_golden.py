@@ -1,0 +1,106 @@
+"""Every default answer is the one recorded before the restructure (tests/golden/capture.py).
+
+Coordinates, constants and every other computed number agree to 4 units in the last place;
+residuals at rounding level (below 1e-9) may differ in their rounding, larger ones (the printed
+forms of errata, convergence errors) to 1e-6 relative; every verdict (``holds``) is the same.
+New keys may appear; none may disappear. Text changes are listed in ``TEXT_CHANGES``.
+"""
+
+from __future__ import annotations
+
+import gzip
+import json
+import math
+from decimal import Decimal, InvalidOperation
+from typing import Any
+
+import pytest
+from fastapi.testclient import TestClient
+
+from tests.golden.capture import GOLDEN, PATHS, answer
+
+#: Keys whose values are residuals: their rounding may differ when the arithmetic is reordered.
+RESIDUAL_KEYS = frozenset({"residual", "residuals", "printed_residual"})
+
+#: (statement id, key) whose text was changed on purpose, with the reason (in the issue's note).
+TEXT_CHANGES: dict[tuple[str, str], str] = {}
+
+ULPS = 4
+
+
+@pytest.fixture(scope="module")
+def golden() -> dict[str, Any]:
+    answers: dict[str, Any] = json.loads(gzip.decompress(GOLDEN.read_bytes()))
+    return answers
+
+
+def _decimal(value: str) -> Decimal | None:
+    try:
+        number = Decimal(value)
+    except InvalidOperation:
+        return None
+    return number if number.is_finite() else None
+
+
+def _same_number(expected: float, actual: float, residual: bool) -> bool:
+    if residual:
+        if abs(expected) < 1e-9 and abs(actual) < 1e-9:
+            return True
+        return math.isclose(expected, actual, rel_tol=1e-6, abs_tol=0.0)
+    return abs(expected - actual) <= ULPS * math.ulp(max(abs(expected), abs(actual)))
+
+
+def differences(expected: Any, actual: Any, where: str, owner: str = "") -> list[str]:
+    """Human-readable differences between a golden answer and a new one."""
+    if isinstance(expected, dict):
+        if not isinstance(actual, dict):
+            return [f"{where}: {type(actual).__name__} instead of an object"]
+        owner = str(expected.get("id", owner))
+        found = []
+        for key, value in expected.items():
+            if key not in actual:
+                found.append(f"{where}.{key}: missing")
+            elif (owner, key) in TEXT_CHANGES:
+                continue
+            else:
+                found += differences(value, actual[key], f"{where}.{key}", owner)
+        return found
+    if isinstance(expected, list):
+        if not isinstance(actual, list) or len(actual) != len(expected):
+            return [f"{where}: a list of {len(expected)} became {str(actual)[:80]}"]
+        found = []
+        for k, (e, a) in enumerate(zip(expected, actual, strict=True)):
+            found += differences(e, a, f"{where}[{k}]", owner)
+        return found
+    residual = where.rsplit(".", 1)[-1].split("[")[0] in RESIDUAL_KEYS
+    if isinstance(expected, bool) or expected is None or isinstance(actual, bool):
+        return [] if expected == actual else [f"{where}: {expected!r} -> {actual!r}"]
+    if isinstance(expected, int | float) and isinstance(actual, int | float):
+        ok = _same_number(float(expected), float(actual), residual)
+        return [] if ok else [f"{where}: {expected!r} -> {actual!r}"]
+    if isinstance(expected, str) and isinstance(actual, str) and expected != actual:
+        a, b = _decimal(expected), _decimal(actual)
+        if a is not None and b is not None and a != 0:
+            digits = len(expected.lstrip("-").replace(".", "").split("e")[0].lstrip("0"))
+            if abs((a - b) / a) <= Decimal(10) ** (2 - digits):  # the last digit may differ
+                return []
+        return [f"{where}: {expected[:80]!r} -> {actual[:80]!r}"]
+    return [] if expected == actual else [f"{where}: {expected!r} -> {actual!r}"]
+
+
+@pytest.mark.parametrize("path", PATHS)
+def test_every_default_answer_is_unchanged(
+    client: TestClient, golden: dict[str, Any], path: str
+) -> None:
+    found = differences(golden[path], answer(client, path), path)
+    assert not found, "\n".join(found[:30])
+
+
+def test_the_comparison_notices_a_changed_vertex(golden: dict[str, Any]) -> None:
+    expected = golden["/discretizations/d4b"]
+    changed = json.loads(json.dumps(expected))
+    changed["vertices"][3][1] += 1e-12
+    changed["checks"][0]["holds"] = not changed["checks"][0]["holds"]
+    found = differences(expected, changed, "d4b")
+    assert len(found) == 2
+    assert any("vertices[3][1]" in f for f in found) and any(".holds" in f for f in found)
