@@ -47,7 +47,9 @@ _NUMBER = re.compile(r"-?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
 
 def svg_polylines(svg: str) -> list[list[float]]:
     """The coordinates of every polyline and path of an SVG, in document order."""
-    shapes = re.findall(r'<(?:polyline|polygon)[^>]*\bpoints="([^"]*)"|<path[^>]*\bd="([^"]*)"', svg)
+    shapes = re.findall(
+        r'<(?:polyline|polygon)[^>]*\bpoints="([^"]*)"|<path[^>]*\bd="([^"]*)"', svg
+    )
     return [[float(v) for v in _NUMBER.findall(a or b)] for a, b in shapes]
 
 
