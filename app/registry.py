@@ -11,11 +11,19 @@ from collections.abc import Callable
 from dataclasses import dataclass, replace
 from functools import cached_property
 
-from app.geometry import catenoid_refinement, convergence, smooth_curves
 from app.geometry.checks import Statement
-from app.geometry.convergence import Study, StudyInfo
 from app.geometry.curve import Curve, DiscretizationInfo
-from app.geometry.discretizations import d1, d2a_hex, d2a_quad, d2b, d3, d4a, d4b
+from app.geometry.d1 import discretization as d1
+from app.geometry.d2a import hex as d2a_hex
+from app.geometry.d2a import quad as d2a_quad
+from app.geometry.d2b import discretization as d2b
+from app.geometry.d3 import discretization as d3
+from app.geometry.d4a import discretization as d4a
+from app.geometry.d4b import discretization as d4b
+from app.geometry.smooth import references as smooth_curves
+from app.geometry.studies import theorem_11 as catenoid_refinement
+from app.geometry.studies import tractrix as convergence
+from app.geometry.studies.tractrix import Study, StudyInfo
 from app.schemas.common import CurveQuery, strict_body
 from app.schemas.convergence import (
     THEOREM_11_DESCRIPTION,

@@ -1,6 +1,6 @@
 """Surfaces as the API serves them: which meridian and Gauss image, limits, documents, files.
 
-The geometry is in ``app.geometry.rotational_surface``; this module picks the polygons from a
+The geometry is in ``app.geometry.surfaces.rotational``; this module picks the polygons from a
 discretization's curve (through the registry, so any discretization with the right companions
 works), enforces the mesh budget before any work, and encodes JSON, OBJ, PLY or GLB.
 """
@@ -14,9 +14,10 @@ import numpy as np
 from fastapi import Response
 
 from app.errors import UnknownIdError
-from app.geometry import gauss_image, rotational_surface
+from app.geometry import gauss_image
 from app.geometry.errors import DomainError, NotRepresentableError
 from app.geometry.precision import Arithmetic, MultiPrecision
+from app.geometry.surfaces import rotational as rotational_surface
 from app.limits import enforce_mesh, enforce_range, timed_arithmetic
 from app.mesh_formats import glb_bytes, obj_bytes, ply_bytes
 from app.registry import DISCRETIZATIONS

@@ -9,7 +9,7 @@ from __future__ import annotations
 import sys
 import time
 
-from app.geometry import christoffel
+from app.geometry.d2a import construction as christoffel
 from app.geometry.precision import Float64
 
 

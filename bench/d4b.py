@@ -19,8 +19,8 @@ import orjson
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from app.geometry.discretizations import d4b
-from app.geometry.kinematic_tractrix import construct
+from app.geometry.d4b import discretization as d4b
+from app.geometry.d4b.construction import construct
 from app.geometry.precision import Float64
 from app.responses import curve_document, encode_json
 from bench.common import compare, ratio_row

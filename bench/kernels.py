@@ -23,13 +23,16 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from app.geometry import area_length_closed_forms as d3_closed
-from app.geometry import catenoid_convergence, christoffel, smooth, vanishing_mean_curvature
-from app.geometry import christoffel_closed_forms as d2a_closed
-from app.geometry import hanging_chain_closed_forms as d1_closed
-from app.geometry import kinematic_closed_forms as d4b_closed
-from app.geometry import sauer_closed_forms as d4a_closed
+from app.geometry.d1 import closed_forms as d1_closed
+from app.geometry.d2a import closed_forms as d2a_closed
+from app.geometry.d2a import construction as christoffel
+from app.geometry.d2b import closed_forms as catenoid_convergence
+from app.geometry.d2b import construction as vanishing_mean_curvature
+from app.geometry.d3 import closed_forms as d3_closed
+from app.geometry.d4a import closed_forms as d4a_closed
+from app.geometry.d4b import closed_forms as d4b_closed
 from app.geometry.precision import Float64
+from app.geometry.smooth import curves as smooth
 from bench.common import compare, ratio_row
 
 #: The target of the issue for closed forms and vectorized constructions (× the copy).

@@ -13,7 +13,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from app.geometry.discretizations import d4b
+from app.geometry.d4b import discretization as d4b
 from app.geometry.precision import Float64, MultiPrecision
 from app.responses import curve_document, encode_json
 from bench.common import compare, ratio_row

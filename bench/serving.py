@@ -283,7 +283,7 @@ def big_response(port: int, count: int, gzip_too: bool) -> None:
 
 def gzip_levels(count: int) -> None:
     """gzip's cost and gain per level on a curve's JSON, in this process."""
-    from app.geometry import smooth_curves
+    from app.geometry.smooth import references as smooth_curves
     from app.responses import curve_document, encode_json
 
     body = encode_json(curve_document(smooth_curves.compute_catenary(Float64(), count=count)))

@@ -31,14 +31,14 @@ import numpy as np
 from app.geometry import conditions, gauss_image
 from app.geometry.curvature import FaceCurvatures
 from app.geometry.curve import Curve
-from app.geometry.discretizations.curvature_checks import (
+from app.geometry.errors import DomainError
+from app.geometry.polygon import magnitude
+from app.geometry.precision import Arithmetic, Array, Scalar
+from app.geometry.surfaces.ring_curvature import (
     constant_curvature_residuals,
     minimal_residuals,
     ring_curvatures,
 )
-from app.geometry.errors import DomainError
-from app.geometry.polygon import magnitude
-from app.geometry.precision import Arithmetic, Array, Scalar
 
 #: Local conditions combine a handful of neighbouring values (as in the discretizations' checks).
 LOCAL_STEPS = 16

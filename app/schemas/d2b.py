@@ -6,7 +6,7 @@ from typing import Annotated, Any, Literal
 
 from pydantic import BeforeValidator, Field
 
-from app.geometry.discretizations.d2b import DEFAULT_J, resolve_range
+from app.geometry.d2b.discretization import DEFAULT_J, resolve_range
 from app.schemas.common import CurveQuery
 
 #: Longest custom sequence accepted (the body stays a few MB).

@@ -6,7 +6,7 @@ import pytest
 from fastapi.testclient import TestClient
 
 from app import __version__
-from app.geometry.discretizations import d4b
+from app.geometry.d4b import discretization as d4b
 from app.schemas.catalog import StatementInfo, TheoremResponse
 
 

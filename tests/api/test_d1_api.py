@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 from fastapi.testclient import TestClient
 
-from app.geometry.discretizations import d1
+from app.geometry.d1 import discretization as d1
 from app.geometry.precision import Float64
 from app.schemas.curve import CurveResponse
 from tests.api.test_errors import problem

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from fastapi.testclient import TestClient
 
-from app.geometry.discretizations import d2b
+from app.geometry.d2b import discretization as d2b
 from app.geometry.precision import Float64
 from app.schemas.curve import CurveResponse
 

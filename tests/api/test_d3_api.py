@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from fastapi.testclient import TestClient
 
-from app.geometry.discretizations import d3
+from app.geometry.d3 import discretization as d3
 from app.schemas.curve import CurveResponse
 from tests.api.test_errors import problem
 

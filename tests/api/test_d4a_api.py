@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 from fastapi.testclient import TestClient
 
-from app.geometry.discretizations import d4a
+from app.geometry.d4a import discretization as d4a
 from app.geometry.precision import Float64
 from app.schemas.curve import CurveResponse
 from tests.api.test_errors import problem

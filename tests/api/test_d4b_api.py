@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 from fastapi.testclient import TestClient
 
-from app.geometry.discretizations import d4b
+from app.geometry.d4b import discretization as d4b
 from app.geometry.precision import Float64
 from app.schemas.curve import CurveResponse
 

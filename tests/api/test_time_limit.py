@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 from fastapi.testclient import TestClient
 
-from app.geometry.discretizations import d4b
+from app.geometry.d4b import discretization as d4b
 from app.geometry.errors import TimeLimitError
 from app.geometry.precision import Float64, MultiPrecision
 from app.main import create_app

@@ -17,7 +17,7 @@ from typing import Annotated, Literal
 import numpy as np
 from fastapi import APIRouter, FastAPI, Path, Query, Response
 
-from app.geometry.discretizations import d4b
+from app.geometry.d4b import discretization as d4b
 from app.geometry.precision import Float64
 
 SURFACES = ("catenoid", "pseudosphere")

@@ -5,7 +5,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from app.geometry import conditions, hanging_chain
+from app.geometry import conditions
+from app.geometry.d1 import construction as hanging_chain
 from app.geometry.polygon import edge_lengths, second_difference, signed_areas
 from app.geometry.precision import Float64
 

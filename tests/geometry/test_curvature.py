@@ -10,8 +10,8 @@ import pytest
 from app.geometry.curvature import face_curvatures, planarity
 from app.geometry.errors import DomainError
 from app.geometry.precision import Float64, MultiPrecision
-from app.geometry.revolution_formulas import equation_17, equation_17_residuals
-from app.geometry.surfaces import ring_faces
+from app.geometry.surfaces.mesh import ring_faces
+from app.geometry.surfaces.revolution_formulas import equation_17, equation_17_residuals
 from tests.reference import curvature as reference
 
 SQUARE = np.array([[[0.0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]]])

@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 
 from app.geometry import precision
-from app.geometry.hanging_chain_closed_forms import sinh_product
-from app.geometry.kinematic_closed_forms import amplitude_cosh, amplitude_sech, tanh_and_sech
+from app.geometry.d1.closed_forms import sinh_product
+from app.geometry.d4b.closed_forms import amplitude_cosh, amplitude_sech, tanh_and_sech
 from app.geometry.precision import BLOCK_SIZE, Float64, MultiPrecision
 
 float64 = Float64()

@@ -15,8 +15,8 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from app.geometry.area_length import lowest_height
-from app.geometry.discretizations import d4b
+from app.geometry.d3.construction import lowest_height
+from app.geometry.d4b import discretization as d4b
 from app.geometry.errors import NotRepresentableError
 from app.geometry.precision import Float64, MultiPrecision
 from app.registry import DISCRETIZATIONS

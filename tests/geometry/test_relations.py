@@ -9,7 +9,13 @@ import pytest
 
 from app.geometry import relations
 from app.geometry.curve import Curve, Polyline
-from app.geometry.discretizations import d1, d2a_hex, d2a_quad, d2b, d3, d4a, d4b
+from app.geometry.d1 import discretization as d1
+from app.geometry.d2a import hex as d2a_hex
+from app.geometry.d2a import quad as d2a_quad
+from app.geometry.d2b import discretization as d2b
+from app.geometry.d3 import discretization as d3
+from app.geometry.d4a import discretization as d4a
+from app.geometry.d4b import discretization as d4b
 from app.geometry.precision import Arithmetic, Float64, MultiPrecision
 
 EXPECTED = {  # Section 4: which discretization satisfies which property
@@ -189,7 +195,7 @@ def test_no_inscribed_gauss_image_gives_the_d4a_pseudosphere_constant_curvature(
     """Section 5 remark: the one-parameter family of inscribed parallel polygons (start n_1)
     contains none with constant K for Sauer's tractrix (after the cusp: i = 1 .. 12)."""
     from app.geometry import conditions, gauss_image
-    from app.geometry.discretizations.curvature_checks import ring_curvatures
+    from app.geometry.surfaces.ring_curvature import ring_curvatures
 
     tractrix = d4a.compute(float64, 1.0, 0.1, None, 1, 12).companions["tractrix"].vertices
     best = np.inf

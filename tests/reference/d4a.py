@@ -6,7 +6,7 @@ axis end at distance h − s from the carried point), and p_i and e_i come from 
 points alone: p_i solves the two perpendicular-bisector equations of the carried edges with
 ``lu_solve``, e_i reflects x_i in the carried edge's midpoint. No angles, no explicit form.
 Same definition: the cusp stick is the one whose end is higher than h − s; the pursuit runs away
-from it on both sides (see app/geometry/sauer_tractrix.py for the geometry).
+from it on both sides (see app/geometry/d4a/construction.py for the geometry).
 """
 
 from __future__ import annotations

@@ -1,0 +1,458 @@
+"""(D2a) on conformal quad meshes: the Christoffel dual of Theorem 1, with its proof checked.
+
+The polygon comes from the construction (``christoffel.quad``, eqs. (3), (4)); the checks
+compare it with the formulas of the proof of Theorem 1 (``christoffel_closed_forms``) and test
+eq. (2), (D1) and (D3) on it. Theorem 1 holds for exactly one start height r = p_0^y,
+r* = −f_1(1 + f_0²)/(2(f_1 − f_0)²) (eq. (5) at i = 1), which is the default.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from app.geometry import conditions
+from app.geometry.checks import Check, Statement, relative_to
+from app.geometry.curve import Curve, DiscretizationInfo, require_range
+from app.geometry.d2a import closed_forms as cf
+from app.geometry.d2a import construction as christoffel
+from app.geometry.d2a.common import (
+    FLOAT64_MIN_GAP,
+    SHARED_D1,
+    SHARED_D3,
+    Context,
+    companions,
+    fitted_condition,
+    local_tolerance,
+    not_enough,
+    require_f_range,
+    require_mp_gap,
+    scaled_difference,
+    scaled_point_difference,
+    shifted,
+    vertex_magnitude,
+)
+from app.geometry.errors import NotRepresentableError
+from app.geometry.polygon import area_magnitude, second_difference, signed_areas
+from app.geometry.precision import Arithmetic, Array, Scalar
+
+S = Statement
+ONLY_AT_R_STAR = (
+    "Holds only for the start height r = r* = −f_1(1 + f_0²)/(2(f_1 − f_0)²), which the proof "
+    "calls 'that special r' without writing it out; r* is the default of r (docs/errata.md, "
+    "Section 4.1)."
+)
+CONVENTIONS = (
+    "Conventions the proof relies on without stating them: φ_i = Φ(f_i) with Φ(f) = "
+    "(f² − 1, 2f)/(f² + 1) (projection from (1, 0, 0) restricted to the y-axis); the first "
+    "coordinate is the axis x, the second the distance y; Δφ_i = φ_{i+1} − φ_i; p_0 = (0, r). "
+    "With them (4) has constant x-steps and the polygon lies below the axis, as (5) says."
+)
+SPECIAL_R = (
+    "r* = −f_1(1 + f_0²)/(2(f_1 − f_0)²) is (5) at i = 1, the proof's 'special r' (never "
+    "written out); other r move the polygon vertically, and Theorem 1 then fails."
+)
+THEOREM_1 = S(
+    "theorem-1",
+    "Theorem 1, eq. (2)",
+    "Δ²p_i^y = c (A_i + A_{i+1}) with one constant c (constants.eq2, least squares) equal to "
+    "4(f_1 − f_0)³/(f_0 + f_1)³ > 0 (constants.c_theorem_1; the printed c has the wrong sign, "
+    "E42). True exactly for r = r* (constants.r_theorem_1): for any other r the polygon is the "
+    "same one moved vertically, and (2) fails. Residual: the larger of the residuals of (2) with "
+    "the fitted c and with c_theorem_1, each relative to the magnitude of the coordinates it is "
+    "computed from (docs/checks.md).",
+    conditions=(ONLY_AT_R_STAR,),
+)
+START_HEIGHT = S(
+    "theorem-1-start-height",
+    "Proof of Theorem 1, eq. (5) at i = 1",
+    "r* = −f_1(1 + f_0²)/(2(f_1 − f_0)²) is the start height p_0^y for which (2) holds: the "
+    "polygon moved vertically by r* − r satisfies (2) with c = 4(f_1 − f_0)³/(f_0 + f_1)³. "
+    "Holds for every r. Residual: as for theorem-1's fit, on the moved polygon.",
+    conditions=(SPECIAL_R,),
+)
+GAUSS_EDGE = S(
+    "theorem-1-gauss-edge",
+    "Proof of Theorem 1, Δφ_{i−1}",
+    "φ_i − φ_{i−1} = −2(f_{i−1} − f_i)/((f_{i−1}² + 1)(f_i² + 1)) · (f_{i−1} + f_i, "
+    "1 − f_{i−1}f_i), with φ_i = Φ(f_i) (x: symmetry axis, y: distance from it). Residual: "
+    "largest |Δφ − formula| / |formula|.",
+    conditions=(CONVENTIONS,),
+)
+GAUSS_NORM = S(
+    "theorem-1-gauss-edge-norm",
+    "Proof of Theorem 1, ‖Δφ_{i−1}‖²",
+    "‖φ_i − φ_{i−1}‖² = 4(f_{i−1} − f_i)²/((f_{i−1}² + 1)(f_i² + 1)). Residual: largest "
+    "relative difference.",
+    conditions=(CONVENTIONS,),
+)
+DUAL_EDGE = S(
+    "theorem-1-dual-edge",
+    "Proof of Theorem 1, Δp_{i−1}",
+    "p_i − p_{i−1} = −(f_{i−1} + f_i, 1 − f_{i−1}f_i)/(2(f_{i−1} − f_i)). Residual: largest "
+    "|Δp − formula| relative to the magnitude of p_{i−1}, p_i (docs/checks.md).",
+    conditions=(CONVENTIONS,),
+)
+X_STEP = S(
+    "theorem-1-x-step",
+    "Proof of Theorem 1, the x-step d",
+    "p_i^x − p_{i−1}^x = d = (f_{i−1} + f_i)/(2(f_i − f_{i−1})) = (f_0 + f_1)/(2(f_1 − f_0)) for "
+    "every i (constants.x_step). Residual: largest |Δp^x − d| relative to the magnitude of "
+    "p_{i−1}, p_i.",
+    conditions=(CONVENTIONS,),
+)
+SECOND_DIFFERENCE = S(
+    "theorem-1-second-difference",
+    "Proof of Theorem 1, Δ²p_{i−1}",
+    "p_{i+1} − 2p_i + p_{i−1} = (0, −(f_i² + 1)/(2f_i)) (printed without the minus sign, E41). "
+    "Residual: largest |Δ²p − formula| relative to |p_{i−1}| + 2|p_i| + |p_{i+1}| (coordinates).",
+    conditions=(CONVENTIONS,),
+)
+EQUATION_5 = S(
+    "equation-5",
+    "Proof of Theorem 1, eq. (5)",
+    "With r = r*, p_{i−1}^y = −(f_i + f_{i−1}²f_i)/(2(f_{i−1} − f_i)²) for every i. Residual: "
+    "largest relative difference. Holds only for r = r* (by its definition).",
+    conditions=(ONLY_AT_R_STAR,),
+)
+HEIGHTS = S(
+    "theorem-1-heights",
+    "Proof of Theorem 1, p_i^y and p_{i+1}^y",
+    "With r = r*, p_i^y = −(f_{i−1} + f_{i−1}f_i²)/(2(f_{i−1} − f_i)²) and p_{i+1}^y = "
+    "−(f_{i−1}² + f_i⁴)/(2f_i(f_{i−1} − f_i)²) for every i. Residual: largest relative "
+    "difference of the two. Holds only for r = r*.",
+    conditions=(ONLY_AT_R_STAR,),
+)
+AREA_SUM = S(
+    "theorem-1-area-sum",
+    "Proof of Theorem 1, A_{i−1} + A_i",
+    "With r = r*, A_{i−1} + A_i = (f_{i−1} + f_i)³(1 + f_i²)/(8f_i(f_{i−1} − f_i)³) (signed "
+    "areas; negative, the polygon lies below the x-axis). Residual: largest difference relative "
+    "to the magnitude of the areas. Holds only for r = r*.",
+    conditions=(ONLY_AT_R_STAR,),
+)
+
+STATEMENTS: tuple[Statement, ...] = (
+    THEOREM_1,
+    START_HEIGHT,
+    GAUSS_EDGE,
+    GAUSS_NORM,
+    DUAL_EDGE,
+    X_STEP,
+    SECOND_DIFFERENCE,
+    EQUATION_5,
+    HEIGHTS,
+    AREA_SUM,
+    SHARED_D1,
+    SHARED_D3,
+)
+
+INFO = DiscretizationInfo(
+    id="d2a-quad",
+    title="Christoffel dual of a conformal quad mesh (D2a)",
+    reference="Section 3 (D2a); Section 4.1, Theorem 1, eqs. (2)-(5)",
+    summary=(
+        "The points f_i = f_0 (f_1/f_0)^i of a conformal quad mesh's parameter line are projected "
+        "stereographically to the unit circle (the meridian of a discrete Gaussian image); the "
+        "Christoffel dual of that polygon, p_i = p_{i−1} + Δφ_{i−1}/‖Δφ_{i−1}‖² with "
+        "p_0 = (0, r), is the discrete hyperbolic cosine. Theorem 1 (eq. (2)) holds for one r."
+    ),
+    default_range=(-10, 10),
+    methods=("construction",),
+    companions={
+        "conformal": "the conformal points f_i on the y-axis of the yz-plane, as (y, z) = (f_i, 0)",
+        "gauss_image": "φ_i = Φ(f_i) = ((f_i² − 1)/(f_i² + 1), 2f_i/(f_i² + 1)) on the unit circle",
+    },
+    constants={
+        "eq2": "c of eq. (2), least-squares fit; equals c_theorem_1 when r = r_theorem_1",
+        "c_theorem_1": "4(f_1 − f_0)³/(f_0 + f_1)³ (> 0), the c of Theorem 1 (sign corrected)",
+        "r_theorem_1": "r* = −f_1(1 + f_0²)/(2(f_1 − f_0)²), the start height for Theorem 1",
+        "x_step": "d = (f_0 + f_1)/(2(f_1 − f_0)), the constant x-step of p",
+    },
+    statements=STATEMENTS,
+)
+
+ERRATUM_X_STEP = (
+    "E40",
+    "(Δp_{i−1+j})^x = (f_{i−1+j} + f_{i+j})/(2(f_{i−1+j} − f_{i+j}))",
+    "(Δp_{i−1+j})^x = (f_{i−1+j} + f_{i+j})/(2(f_{i+j} − f_{i−1+j})) = d > 0",
+)
+ERRATUM_SECOND_DIFFERENCE = (
+    "E41",
+    "Δ²p_{i−1} = (0, (f_i² + 1)/(2f_i))",
+    "Δ²p_{i−1} = (0, −(f_i² + 1)/(2f_i))",
+)
+ERRATUM_CONSTANT = (
+    "E42",
+    "c = 4(f_{i−1} − f_i)³/(f_{i−1} + f_i)³",
+    "c = 4(f_i − f_{i−1})³/(f_{i−1} + f_i)³ = 4(f_1 − f_0)³/(f_0 + f_1)³ > 0",
+)
+
+
+@dataclass(frozen=True)
+class QuadPolygons:
+    """One (D2a) quad computation on i_min .. i_max (``(n,)`` and ``(n, 2)`` arrays)."""
+
+    i_min: int
+    f0: Scalar
+    f1: Scalar
+    r: Scalar
+    f: Array
+    gauss: Array
+    gauss_edges: Array
+    p: Array
+
+
+def start_height(ar: Arithmetic, f0: float, f1: float) -> Scalar:
+    """r* of Theorem 1 in this precision (eq. (5) at i = 1)."""
+    return cf.theorem_1_radius(ar.scalar(f0), ar.scalar(f1))
+
+
+def polygons(
+    ar: Arithmetic, f0: float, f1: float, r: float | None, i_min: int, i_max: int
+) -> QuadPolygons:
+    """The construction (3), (4) on i_min .. i_max; r = None means r = r*."""
+    rr = start_height(ar, f0, f1) if r is None else ar.scalar(r)
+    built = christoffel.quad(ar, f0, f1, rr, i_min, i_max)
+    return QuadPolygons(
+        i_min, ar.scalar(f0), ar.scalar(f1), rr, built.f, built.gauss, built.gauss_edges, built.p
+    )
+
+
+def evaluate(
+    ar: Arithmetic, data: QuadPolygons, detail: bool = False
+) -> tuple[dict[str, Scalar], list[Check]]:
+    """Constants and every check of ``STATEMENTS`` on the given polygons."""
+    n = len(data.p)
+    indices = np.arange(data.i_min, data.i_min + n, dtype=np.int64)
+    steps = max(abs(data.i_min), abs(data.i_min + n - 1)) + 1
+    ctx = Context(ar, indices, steps, detail, (data.f1 - data.f0) / data.f1)
+    c_proof = cf.theorem_1_constant(data.f0, data.f1)
+    r_star = cf.theorem_1_radius(data.f0, data.f1)
+    fit = conditions.equation_2(ar, data.p)
+    constants: dict[str, Scalar] = {
+        "c_theorem_1": c_proof,
+        "r_theorem_1": r_star,
+        "x_step": cf.quad_x_step(data.f0, data.f1),
+    }
+    if fit.constant is not None:
+        constants = {"eq2": fit.constant, **constants}
+    special = _is_special(ar, data.r, r_star)
+    checks = [
+        _theorem_1(ctx, data, fit, c_proof, special),
+        _start_height(ctx, data, c_proof, r_star),
+        *_gauss_checks(ctx, data),
+        _dual_edge(ctx, data),
+        _x_step(ctx, data),
+        _second_difference(ctx, data),
+        *_heights(ctx, data, special),
+        _area_sum(ctx, data, special),
+        fitted_condition(
+            ctx,
+            SHARED_D1,
+            conditions.d1(ar, data.p),
+            "(D1) holds",
+            "(D1) fails: the (D2a) quad polygon is not a (D1) polygon",
+        ),
+        fitted_condition(
+            ctx,
+            SHARED_D3,
+            conditions.d3(ar, data.p),
+            "(D3) holds",
+            "(D3) fails: the (D2a) quad polygon is not a (D3) polygon",
+        ),
+    ]
+    return constants, checks
+
+
+def compute(
+    ar: Arithmetic,
+    f0: float = 1.0,
+    f1: float = 1.5,
+    r: float | None = None,
+    i_min: int = -10,
+    i_max: int = 10,
+    detail: bool = False,
+) -> Curve:
+    """(D2a) quad on i_min .. i_max with companions, constants and checks (r = None: r*)."""
+    christoffel.validate_quad(f0, f1, r)
+    require_range(i_min, i_max)
+    if ar.mode == "float64":
+        _require_float64_representable(f0, f1, i_min, i_max)
+    else:
+        require_mp_gap(ar, "f1", "(f1 − f0)/f1", f1, (f1 - f0) / f1)
+    data = polygons(ar, f0, f1, r, i_min, i_max)
+    constants, checks = evaluate(ar, data, detail)
+    parameters: dict[str, Any] = {
+        "f0": f0,
+        "f1": f1,
+        "r": ar.to_float(data.r),
+        "i_min": i_min,
+        "i_max": i_max,
+    }
+    return INFO.curve(
+        ar,
+        parameters,
+        data.p,
+        companions(ar, data.f, data.gauss),
+        constants=constants,
+        checks=checks,
+        local_tolerance=local_tolerance(ar, (data.f1 - data.f0) / data.f1),
+    )
+
+
+def _is_special(ar: Arithmetic, r: Scalar, r_star: Scalar) -> bool:
+    """Whether the start height is r* (to the precision's resolution)."""
+    return bool(abs(r - r_star) <= 4 * ar.eps * abs(r_star))
+
+
+def _special_note(ar: Arithmetic, data: QuadPolygons, special: bool) -> str | None:
+    if special:
+        return None
+    r_star = ar.to_float(cf.theorem_1_radius(data.f0, data.f1))
+    r = ar.to_float(data.r)
+    return f"holds only for r = r* = {r_star:.17g}; this polygon starts at r = {r:.17g}"
+
+
+def _theorem_1(
+    ctx: Context, data: QuadPolygons, fit: conditions.ConditionFit, c_proof: Scalar, special: bool
+) -> Check:
+    """(2) with a fitted c; it must also hold with the proof's c (so a short range cannot fit)."""
+    ar = ctx.ar
+    if len(data.p) < 3:
+        return not_enough(ctx, THEOREM_1, "three vertices")
+    residuals = np.maximum(fit.residuals, _equation_2_residuals(ar, data.p, c_proof))
+    printed_c = cf.theorem_1_constant_printed(data.f0, data.f1)
+    printed = np.maximum(fit.residuals, _equation_2_residuals(ar, data.p, printed_c))
+    erratum = ctx.erratum(ERRATUM_CONSTANT, printed)
+    return ctx.check(THEOREM_1, 0, residuals, erratum, note=_special_note(ar, data, special))
+
+
+def _start_height(ctx: Context, data: QuadPolygons, c_proof: Scalar, r_star: Scalar) -> Check:
+    if len(data.p) < 3:
+        return not_enough(ctx, START_HEIGHT, "three vertices")
+    moved = shifted(data.p, r_star - data.r)
+    residuals = _equation_2_residuals(ctx.ar, moved, c_proof)
+    return ctx.check(START_HEIGHT, 0, residuals)
+
+
+def _equation_2_residuals(ar: Arithmetic, p: Array, c: Scalar) -> Array:
+    """|Δ²p_i^y − c(A_i + A_{i+1})| relative to the magnitudes, for a given c."""
+    y = p[:, 1]
+    areas = signed_areas(p)
+    sizes = area_magnitude(p)
+    lhs = second_difference(y)
+    a = abs(y)
+    scale = a[2:] + 2 * a[1:-1] + a[:-2] + abs(c) * (sizes[:-1] + sizes[1:])
+    return relative_to(ar, lhs - c * (areas[:-1] + areas[1:]), scale)
+
+
+def _gauss_checks(ctx: Context, data: QuadPolygons) -> list[Check]:
+    if len(data.f) < 2:
+        return [
+            not_enough(ctx, GAUSS_EDGE, "two vertices"),
+            not_enough(ctx, GAUSS_NORM, "two vertices"),
+        ]
+    ar = ctx.ar
+    f_prev, f_cur = data.f[:-1], data.f[1:]
+    edges = data.gauss_edges
+    formula = cf.quad_gauss_edge(f_prev, f_cur)
+    zero = ar.zeros(len(f_cur))
+    edge = ctx.check(GAUSS_EDGE, 1, scaled_point_difference(ar, edges, formula, zero))
+    norm = edges[:, 0] * edges[:, 0] + edges[:, 1] * edges[:, 1]
+    expected = cf.quad_gauss_edge_norm_squared(f_prev, f_cur)
+    return [edge, ctx.check(GAUSS_NORM, 1, scaled_difference(ar, norm, expected, zero))]
+
+
+def _dual_edge(ctx: Context, data: QuadPolygons) -> Check:
+    if len(data.p) < 2:
+        return not_enough(ctx, DUAL_EDGE, "two vertices")
+    p = data.p
+    formula = cf.quad_dual_edge(data.f[:-1], data.f[1:])
+    residuals = scaled_point_difference(
+        ctx.ar, p[1:] - p[:-1], formula, vertex_magnitude(p[:-1], p[1:])
+    )
+    return ctx.check(DUAL_EDGE, 1, residuals)
+
+
+def _x_step(ctx: Context, data: QuadPolygons) -> Check:
+    if len(data.p) < 2:
+        return not_enough(ctx, X_STEP, "two vertices")
+    ar, p = ctx.ar, data.p
+    steps = p[1:, 0] - p[:-1, 0]
+    size = vertex_magnitude(p[:-1], p[1:])
+    f_prev, f_cur = data.f[:-1], data.f[1:]
+    d = cf.quad_x_step(data.f0, data.f1)  # the constant the proof names d
+    per_edge = cf.quad_x_step(f_prev, f_cur)
+    residuals = np.maximum(
+        scaled_difference(ar, steps, per_edge, size),
+        scaled_difference(ar, steps, np.full_like(steps, d), size),
+    )
+    printed = scaled_difference(ar, steps, cf.quad_x_step_printed(f_prev, f_cur), size)
+    return ctx.check(X_STEP, 1, residuals, ctx.erratum(ERRATUM_X_STEP, printed))
+
+
+def _second_difference(ctx: Context, data: QuadPolygons) -> Check:
+    if len(data.p) < 3:
+        return not_enough(ctx, SECOND_DIFFERENCE, "three vertices")
+    ar, p = ctx.ar, data.p
+    second = p[2:] - 2 * p[1:-1] + p[:-2]
+    size = vertex_magnitude(p[2:], p[1:-1], p[1:-1], p[:-2])
+    f_cur = data.f[1:-1]
+    residuals = scaled_point_difference(ar, second, cf.quad_second_difference(f_cur), size)
+    printed = scaled_point_difference(ar, second, cf.quad_second_difference_printed(f_cur), size)
+    erratum = ctx.erratum(ERRATUM_SECOND_DIFFERENCE, printed)
+    return ctx.check(SECOND_DIFFERENCE, 1, residuals, erratum)
+
+
+def _heights(ctx: Context, data: QuadPolygons, special: bool) -> list[Check]:
+    ar, y, f = ctx.ar, data.p[:, 1], data.f
+    note = _special_note(ar, data, special)
+    if len(f) < 2:
+        five = not_enough(ctx, EQUATION_5, "two vertices")
+    else:
+        # (5) names p_{i−1}^y; residual k belongs to the vertex i_min + k
+        expected = cf.quad_equation_5(f[:-1], f[1:])
+        five = ctx.check(
+            EQUATION_5,
+            0,
+            scaled_difference(ar, y[:-1], expected, 0 * expected),
+            summed=True,
+            note=note,
+        )
+    if len(f) < 3:
+        return [five, not_enough(ctx, HEIGHTS, "three vertices")]
+    f_prev, f_cur = f[:-2], f[1:-1]
+    current = scaled_difference(ar, y[1:-1], cf.quad_height_next(f_prev, f_cur), 0 * f_cur)
+    after = scaled_difference(ar, y[2:], cf.quad_height_after(f_prev, f_cur), 0 * f_cur)
+    heights = ctx.check(HEIGHTS, 1, np.maximum(current, after), summed=True, note=note)
+    return [five, heights]
+
+
+def _area_sum(ctx: Context, data: QuadPolygons, special: bool) -> Check:
+    if len(data.p) < 3:
+        return not_enough(ctx, AREA_SUM, "three vertices")
+    ar, p, f = ctx.ar, data.p, data.f
+    areas = signed_areas(p)
+    sizes = area_magnitude(p)
+    expected = cf.quad_area_sum(f[:-2], f[1:-1])
+    residuals = scaled_difference(ar, areas[:-1] + areas[1:], expected, sizes[:-1] + sizes[1:])
+    return ctx.check(AREA_SUM, 1, residuals, summed=True, note=_special_note(ar, data, special))
+
+
+def _require_float64_representable(f0: float, f1: float, i_min: int, i_max: int) -> None:
+    """Refuse, before computing, parameters that float64 cannot resolve or represent."""
+    if (f1 - f0) / f1 < FLOAT64_MIN_GAP:
+        raise NotRepresentableError(
+            "f1",
+            f"(f1 − f0)/f1 >= {FLOAT64_MIN_GAP:g} in float64",
+            f1,
+            "nearly equal f_i give Gauss image edges below float64 resolution; use precision=mp",
+        )
+    log_q = math.log(f1) - math.log(f0)
+    log_f0 = math.log(f0)
+    for name, value in (("i_max", i_max), ("i_min", i_min)):
+        require_f_range(name, [log_f0 + value * log_q, log_f0], value)

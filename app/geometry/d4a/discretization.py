@@ -1,0 +1,442 @@
+"""(D4a) Sauer's discrete tractrix and its discrete hyperbolic cosine, with Section 3's claims.
+
+The sticks, the tractrix and p come from the construction (``sauer_tractrix``) by default, or
+from the explicit form (``sauer_closed_forms``) with ``method="closed-form"``. The checks test
+what Section 3 says about (D4a) — the Darboux transform, p_i as the centre of the rotation from
+stick i to stick i+1, the construction of Nikolaides — and whether p satisfies (D1), (D3),
+eq. (2): it satisfies none of them (its x-spacing is not constant), and the checks say by how
+much it misses.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any, Literal
+
+import numpy as np
+
+from app.geometry import darboux, properties
+from app.geometry.checks import (
+    Check,
+    Erratum,
+    Statement,
+    check_residuals,
+    not_applicable,
+    point_distance,
+    printed_residual,
+    relative_point_difference,
+)
+from app.geometry.curve import Curve, DiscretizationInfo, require_range
+from app.geometry.d4a import closed_forms as sauer_closed_forms
+from app.geometry.d4a import construction as sauer_tractrix
+from app.geometry.errors import NotRepresentableError
+from app.geometry.polygon import magnitude
+from app.geometry.precision import Arithmetic, Array, Scalar
+
+Method = Literal["construction", "closed-form"]
+
+#: Float64 results keep every coordinate below this size (checks multiply two coordinates).
+FLOAT64_COORDINATE_LIMIT = 1e150
+
+#: Below this step ratio s/h the symmetry lines of consecutive tractrix edges meet at angles
+#: too small for float64 (p loses about log10(h/s) digits; see docs/errata.md, D4a numerics).
+FLOAT64_MIN_STEP_RATIO = 1e-3
+
+S = Statement
+CUSP = (
+    "'d_i on the previous stick for all i ∈ Z' is impossible (E20): sin β_i = (1 − s/h)^i "
+    "sin β_0 would exceed 1. The pursuit runs away from a cusp stick c on both sides: d_i lies "
+    "on stick i − 1 for i > c and on stick i + 1 for i < c, and the tractrix folds back there "
+    "(d_{c−1} = d_{c+1}); for a vertical stick 0, c = 0."
+)
+DARBOUX_SIDES = (
+    "e_i reflects x_i in the midpoint of the tractrix edge that lies on stick i: d_i d_{i+1} "
+    "after the cusp, d_{i−1} d_i before it (E21); the constant |x_i − e_i| = 2h − s is not "
+    "printed."
+)
+INDEXING = (
+    "Index convention: p_i is the centre of the rotation from stick i to stick i + 1 (the "
+    "symmetry lines of the tractrix edges on sticks i and i + 1 meet there); it lies over the "
+    "midpoint of x_i x_{i+1}, so the x-spacing of p is not constant, unlike (D4b)'s."
+)
+RESOLUTION = (
+    "Consecutive symmetry lines meet at an angle of about (s/h) sin β, so p is resolved to "
+    "about ⌈h/s⌉ + (sticks walked) units of rounding: float64 requests need s/h >= 10⁻³ (use "
+    "precision=mp below)."
+)
+STICKS = S(
+    "d4a-sticks",
+    "Section 3, (D4a) and Figure 3",
+    "Every stick has length h and its end x_i on the x-axis, and the tractrix edge it carries "
+    "lies on it with its far end at distance h − s from x_i: d_{i+1} on stick i for i ≥ c, "
+    "d_{i−1} on stick i for i < c (c the cusp stick; see the d4a description). Residual: "
+    "largest of | |d_i − x_i| − h |, |x_i^y| and the distance of the far end from "
+    "x_i + (h − s)(d_i − x_i)/|d_i − x_i|, relative to the magnitude of the points.",
+    conditions=(CUSP,),
+)
+ARC_LENGTH = S(
+    "d4a-arc-length",
+    "Section 3, (D4a) and Figure 3: discrete arc length",
+    "|d_{i+1} − d_i| = s for every i: the tractrix is parametrized by arc length. Residual: "
+    "largest | |d_{i+1} − d_i| − s |, relative to the magnitude of the two points.",
+    conditions=(CUSP,),
+)
+DARBOUX = S(
+    "darboux-d4a",
+    "Section 3, (D4a): Darboux transform",
+    "e_i, the reflection of x_i in the midpoint of the tractrix edge on stick i, has "
+    "|e_{i+1} − e_i| = |x_{i+1} − x_i|. Residual: largest difference of the edge lengths, "
+    "relative to the magnitude of the four points.",
+    conditions=(DARBOUX_SIDES,),
+)
+DARBOUX_DISTANCE = S(
+    "darboux-d4a-distance",
+    "Section 3, (D4a): Darboux transform",
+    "|x_i − e_i| is the same for every i, namely 2h − s. Residual: largest | |x_i − e_i| − "
+    "(2h − s) |, relative to the magnitude of x_i and e_i.",
+    conditions=(DARBOUX_SIDES,),
+)
+ROTATION = S(
+    "rotation-centre-d4a",
+    "Section 3, (D4a): p_i as a centre of rotation",
+    "p_i is the centre of the rotation taking stick i to stick i+1: |p_i − x_i| = "
+    "|p_i − x_{i+1}|, |p_i − d_i| = |p_i − d_{i+1}|, and the angle from x_i to x_{i+1} about p_i "
+    "equals the angle from d_i to d_{i+1}. Residual: largest of the distance differences "
+    "(relative to the magnitude of the points) and the angle difference (radians).",
+    conditions=(INDEXING, RESOLUTION),
+)
+NIKOLAIDES = S(
+    "nikolaides-d4a",
+    "Section 3, (D4a) and (S4): construction of Nikolaides",
+    "The symmetry axis of x_i and x_{i+1} passes through p_i: p_i^x = (x_i^x + x_{i+1}^x)/2. "
+    "Residual: largest |p_i^x − (x_i^x + x_{i+1}^x)/2|, relative to the magnitude of the points.",
+    conditions=(INDEXING, RESOLUTION),
+)
+CLOSED_FORM = S(
+    "d4a-closed-form",
+    "Section 3, (D4a): explicit form (derived here, not in the paper)",
+    "With k = 1 − s/h and the cusp stick c: sin β_i = sin β_c k^{|i − c|}, d_i = x_i + "
+    "h(cos β_i, sin β_i), x_{i+1} − x_i = h(k cos β_i − cos β_{i+1}) for i ≥ c and "
+    "h(cos β_i − k cos β_{i+1}) for i < c (partial sums from x_0 = 0), and p_i = ((x_i + "
+    "x_{i+1})/2, (h − s/2 − (x_{i+1} − x_i) cos β_i / 2)/sin β_i). Residual: largest "
+    "|computed − explicit| over p_i (relative to |p_i|) and d_i (relative to the magnitude of "
+    "d_i and x_i).",
+    conditions=(RESOLUTION,),
+)
+
+STATEMENTS: tuple[Statement, ...] = (
+    STICKS,
+    ARC_LENGTH,
+    DARBOUX,
+    DARBOUX_DISTANCE,
+    ROTATION,
+    NIKOLAIDES,
+    CLOSED_FORM,
+    *properties.PROPERTIES,
+)
+
+INFO = DiscretizationInfo(
+    id="d4a",
+    title="Sauer's discrete tractrix and its hyperbolic cosine (D4a)",
+    reference="Section 3 (D4a), Figure 3",
+    summary=(
+        "A stick of length h with one end x_i on the x-axis; its other end d_i lies on the "
+        "neighbouring stick, s away from that stick's end (a discrete tractrix parametrized by "
+        "arc length). The symmetry lines of consecutive tractrix edges meet in the discrete "
+        "hyperbolic cosine p_i, the centre of the rotation from stick i to stick i+1."
+    ),
+    default_range=(-10, 10),
+    methods=("construction", "closed-form"),
+    companions={
+        "tractrix": "d_i, the free end of stick i (the discrete tractrix), same indices as p",
+        "axis_points": "x_i, the end of stick i on the x-axis",
+        "darboux": "e_i, the reflection of x_i in the midpoint of the tractrix edge on stick i "
+        "(a Darboux transform of x)",
+    },
+    constants={
+        "d1": "best c of (D1), Δ²p_i^y = c(l_i + l_{i+1}) (does not hold for D4a)",
+        "d3": "best c of (D3), A_i = c l_i (does not hold for D4a)",
+        "eq2": "best c of eq. (2), Δ²p_i^y = c(A_i + A_{i+1}) (does not hold for D4a)",
+        "equilibrium": "best c of the hanging-sticks equilibrium (does not hold for D4a)",
+    },
+    statements=STATEMENTS,
+)
+
+ERRATUM_STICKS = (
+    "E20",
+    "for all i ∈ ℤ, d_i lies on the previous stick (i − 1), s away from d_{i−1}",
+    "d_i lies on stick i − 1 for i > c and on stick i + 1 for i < c, c the cusp stick (whose "
+    "end is higher than h − s): for all i the literal rule would need sin β_i = (1 − s/h)^i "
+    "sin β_0 <= 1",
+)
+ERRATUM_DARBOUX = (
+    "E21",
+    "e_i is the reflection of x_i in the midpoint of d_i and d_{i+1}",
+    "e_i is the reflection of x_i in the midpoint of the tractrix edge on stick i: d_i d_{i+1} "
+    "for i ≥ c, d_{i−1} d_i for i < c (before the cusp stick c the pursuit runs the other way)",
+)
+
+
+@dataclass(frozen=True)
+class D4aPolygons:
+    """The polygons of one (D4a) computation, ``(n + 1, 2)`` each, on i_min .. i_max + 1.
+
+    The extra last index only feeds checks (p_i needs stick i+1); responses show i_min .. i_max.
+    ``carried_far`` is the far end of the tractrix edge on each stick (d_{i+1} or d_{i−1}).
+    """
+
+    i_min: int
+    p: Array
+    tractrix: Array
+    axis: Array
+    darboux: Array
+    side: np.ndarray[Any, np.dtype[np.int64]]
+    carried_far: Array
+    printed_darboux: Array
+    """d_i + d_{i+1} − x_i, the reflection the paper prints, on i_min .. i_max + 1."""
+    explicit_p: Array
+    explicit_tractrix: Array
+    cusp: int
+    constructed: bool
+
+
+def polygons(
+    ar: Arithmetic,
+    h: float,
+    s: float,
+    beta0: float | None,
+    i_min: int,
+    i_max: int,
+    method: Method = "construction",
+) -> D4aPolygons:
+    """Construction (Section 3) and explicit form on i_min .. i_max + 1."""
+    sauer_tractrix.validate(h, s, beta0)
+    hh, ss = ar.scalar(h), ar.scalar(s)
+    lo, hi = min(0, i_min - 1), max(0, i_max + 3)
+
+    def window(points: Array, first: int) -> Array:
+        """i_min .. i_max + 1 of an array whose entry 0 belongs to stick lo + first."""
+        start = i_min - lo - first
+        return points[start : start + i_max - i_min + 2]
+
+    explicit = sauer_closed_forms.tractrix(ar, hh, ss, beta0, lo, hi)
+    cusp = explicit.cusp.index
+    if method == "construction":
+        sticks = sauer_tractrix.construct_sticks(ar, h, s, beta0, lo, hi)
+        side, tractrix, axis = sticks.side, sticks.tractrix, sticks.axis_points
+        p = window(sauer_tractrix.hyperbolic_cosine(ar, sticks), 1)
+        e = window(sauer_tractrix.darboux(sticks), 1)
+    else:
+        # the cusp may lie ~10^(digits/2) sticks away: only its side of the range matters
+        side = np.sign(np.arange(lo, hi + 1) - min(max(cusp, lo - 1), hi + 1)).astype(np.int64)
+        tractrix, axis = explicit.tractrix, explicit.axis_points
+        p = window(explicit.hyperbolic_cosine, 0)
+        e = window(explicit.darboux, 0)
+    before = (side < sauer_tractrix.CUSP)[1:-1, None]
+    far = np.where(before, tractrix[:-2], tractrix[2:])  # sticks lo + 1 .. hi − 1
+    printed = tractrix[:-1] + tractrix[1:] - axis[:-1]  # sticks lo .. hi − 1
+    return D4aPolygons(
+        i_min=i_min,
+        p=p,
+        tractrix=window(tractrix, 0),
+        axis=window(axis, 0),
+        darboux=e,
+        side=window(side, 0),
+        carried_far=window(far, 1),
+        printed_darboux=window(printed, 0),
+        explicit_p=window(explicit.hyperbolic_cosine, 0),
+        explicit_tractrix=window(explicit.tractrix, 0),
+        cusp=cusp,
+        constructed=method == "construction",
+    )
+
+
+def evaluate(
+    ar: Arithmetic, h: float, s: float, data: D4aPolygons, detail: bool = False
+) -> tuple[dict[str, Scalar], list[Check]]:
+    """Fitted constants and every check of ``STATEMENTS`` on the given polygons."""
+    hh, ss = ar.scalar(h), ar.scalar(s)
+    n = len(data.p) - 1
+    ctx = properties.Context(ar, np.arange(data.i_min, data.i_min + n + 1, dtype=np.int64), detail)
+    p, d, x = data.p, data.tractrix, data.axis
+    found = properties.fits(ar, p[:n])
+    steps = max(abs(data.i_min - 1), abs(data.i_min + n + 2)) + 1
+    # p_i is where nearly parallel lines meet: resolved to about h/s + (sticks walked) units of
+    # rounding (docs/checks.md); every check that reads p allows that
+    p_tolerance = ar.tolerance(properties.LOCAL_STEPS + steps + math.ceil(h / s))
+    property_checks = properties.checks(ctx, found, None, p_tolerance)
+    checks = [
+        _sticks(ctx, hh, ss, data),
+        ctx.check(ARC_LENGTH, 0, _arc_length_residuals(ar, ss, d)),
+        _darboux_edges(ctx, data),
+        _darboux_distance(ctx, data, 2 * hh - ss),
+        ctx.check(ROTATION, 0, _rotation_residuals(ar, p[:n], x, d), tolerance=p_tolerance),
+        ctx.check(NIKOLAIDES, 0, _nikolaides_residuals(p[:n], x), tolerance=p_tolerance),
+        _closed_form(ctx, data, p_tolerance),
+        *property_checks,
+    ]
+    return properties.constants(found), checks
+
+
+def compute(
+    ar: Arithmetic,
+    h: float = 1.0,
+    s: float = 0.1,
+    beta0: float | None = None,
+    i_min: int = -10,
+    i_max: int = 10,
+    method: Method = "construction",
+    detail: bool = False,
+) -> Curve:
+    """(D4a) on i_min .. i_max with its companions, constants and checks."""
+    sauer_tractrix.validate(h, s, beta0)
+    require_range(i_min, i_max)
+    if ar.mode == "float64":
+        _require_float64_representable(h, s, beta0, i_min, i_max)
+    elif s / h < 10.0 ** -(ar.digits // 2):
+        # p is resolved to about h/s units of rounding: keep at least half of the digits
+        raise NotRepresentableError(
+            "s",
+            f"s/h >= 1e-{ar.digits // 2} with digits={ar.digits}",
+            s,
+            "p is resolved to about h/s units of rounding; use more digits",
+        )
+    data = polygons(ar, h, s, beta0, i_min, i_max, method)
+    constants, checks = evaluate(ar, h, s, data, detail)
+    parameters: dict[str, Any] = {
+        "h": h,
+        "s": s,
+        "beta0": math.pi / 2 if beta0 is None else beta0,
+        "i_min": i_min,
+        "i_max": i_max,
+        "method": method,
+    }
+
+    companions = {"tractrix": data.tractrix, "axis_points": data.axis, "darboux": data.darboux}
+    return INFO.curve(ar, parameters, data.p, companions, constants=constants, checks=checks)
+
+
+def _sticks(ctx: properties.Context, h: Scalar, s: Scalar, data: D4aPolygons) -> Check:
+    """Stick lengths, axis ends, and the carried tractrix point at distance h − s."""
+    ar = ctx.ar
+    n = len(data.p) - 1
+    x, d, far = data.axis, data.tractrix, data.carried_far
+    length = point_distance(ar, d, x)
+    carried = x + (h - s) * (d - x) / length[:, None]  # the point s below d on the stick
+    residuals = np.maximum(
+        np.maximum(abs(length[:n] - h), abs(x[:n, 1])) / magnitude(x[:n], d[:n]),
+        point_distance(ar, far[:n], carried[:n]) / magnitude(x[:n], d[:n], far[:n]),
+    )
+    # printed: d_i on the previous stick, for every i
+    printed = point_distance(ar, d[1 : n + 1], carried[:n]) / magnitude(x[:n], d[:n], d[1 : n + 1])
+    erratum = Erratum(*ERRATUM_STICKS, printed_residual=printed_residual(ar, printed))
+    return ctx.check(STICKS, 0, residuals, erratum)
+
+
+def _arc_length_residuals(ar: Arithmetic, s: Scalar, d: Array) -> Array:
+    return abs(point_distance(ar, d[1:], d[:-1]) - s) / magnitude(d[1:], d[:-1])
+
+
+def _darboux_edges(ctx: properties.Context, data: D4aPolygons) -> Check:
+    ar = ctx.ar
+    residuals = darboux.edge_length_residuals(ar, data.axis, data.darboux)
+    printed = darboux.edge_length_residuals(ar, data.axis, data.printed_darboux)
+    erratum = Erratum(*ERRATUM_DARBOUX, printed_residual=printed_residual(ar, printed))
+    return ctx.check(DARBOUX, 0, residuals, erratum)
+
+
+def _darboux_distance(ctx: properties.Context, data: D4aPolygons, expected: Scalar) -> Check:
+    ar = ctx.ar
+    n = len(data.p) - 1
+    x = data.axis[:n]
+    residuals = darboux.distance_residuals(ar, x, data.darboux[:n], expected)
+    printed = darboux.distance_residuals(ar, x, data.printed_darboux[:n], expected)
+    erratum = Erratum(*ERRATUM_DARBOUX, printed_residual=printed_residual(ar, printed))
+    return ctx.check(DARBOUX_DISTANCE, 0, residuals, erratum)
+
+
+def _signed_angle(ar: Arithmetic, a: Array, b: Array) -> Array:
+    """The angle turning vector a_k into b_k, in (−π, π]; ``(n, 2) -> (n,)``."""
+    cross = a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]
+    return ar.atan2(cross, a[:, 0] * b[:, 0] + a[:, 1] * b[:, 1])
+
+
+def _rotation_residuals(ar: Arithmetic, p: Array, x: Array, d: Array) -> Array:
+    """p_i against sticks i, i+1: equal distances and equal turning angles; ``(n,)``."""
+    x0, x1, d0, d1 = x[:-1], x[1:], d[:-1], d[1:]
+    axis_gap = abs(point_distance(ar, p, x0) - point_distance(ar, p, x1)) / magnitude(p, x0, x1)
+    end_gap = abs(point_distance(ar, p, d0) - point_distance(ar, p, d1)) / magnitude(p, d0, d1)
+    turn = abs(_signed_angle(ar, x0 - p, x1 - p) - _signed_angle(ar, d0 - p, d1 - p))
+    return np.maximum(np.maximum(axis_gap, end_gap), turn)
+
+
+def _nikolaides_residuals(p: Array, x: Array) -> Array:
+    """|p_i^x − (x_i^x + x_{i+1}^x)/2| relative to the points' magnitude; ``(n,)``."""
+    x0, x1 = x[:-1], x[1:]
+    return abs(p[:, 0] - (x0[:, 0] + x1[:, 0]) / 2) / magnitude(p, x0, x1)
+
+
+def _closed_form(ctx: properties.Context, data: D4aPolygons, tolerance: float) -> Check:
+    """Construction against the explicit form, with the tolerance of p's resolution.
+
+    p_i is compared relative to its size, d_i relative to the magnitude of d_i and x_i (d_i^x
+    is a difference x_i + h cos β_i that may nearly cancel).
+    """
+    ar = ctx.ar
+    if not data.constructed:
+        return not_applicable(
+            CLOSED_FORM, tolerance, "method=closed-form: the construction was not run to compare"
+        )
+    n = len(data.p) - 1
+    ends = data.explicit_tractrix[:n]
+    residuals = np.maximum(
+        relative_point_difference(ar, data.p[:n], data.explicit_p[:n]),
+        point_distance(ar, data.tractrix[:n], ends) / magnitude(ends, data.axis[:n]),
+    )
+    return check_residuals(
+        CLOSED_FORM,
+        ar,
+        ctx.indices[:n],
+        residuals,
+        tolerance,
+        ctx.detail,
+        note=f"cusp stick c = {data.cusp}",
+    )
+
+
+def _require_float64_representable(
+    h: float, s: float, beta0: float | None, i_min: int, i_max: int
+) -> None:
+    """Refuse, before computing, what float64 cannot resolve or represent.
+
+    p_i^y is about h / sin β_i and sin β changes by the factor k = 1 − s/h per stick, so
+    sin β_i >= sin β_0 k^{|i|+3} over the constructed sticks.
+    """
+    if s / h < FLOAT64_MIN_STEP_RATIO:
+        raise NotRepresentableError(
+            "s",
+            f"s/h >= {FLOAT64_MIN_STEP_RATIO:g} in float64",
+            s,
+            "the symmetry lines of consecutive tractrix edges meet at angles float64 cannot "
+            "resolve; use precision=mp",
+        )
+    sin0 = 1.0 if beta0 is None else math.sin(beta0)
+    budget = math.log(FLOAT64_COORDINATE_LIMIT) - math.log(2 * h) + math.log(sin0)
+    per_stick = -math.log1p(-s / h)
+    largest = math.floor(budget / per_stick) - 4
+    if largest < 0:
+        raise NotRepresentableError(
+            "beta0",
+            "sin(beta0) large enough for p_0^y ≈ h / sin(beta0) to stay below 1e150 in float64",
+            beta0,
+            "use precision=mp",
+        )
+    for name, value in (("i_max", i_max), ("i_min", i_min)):
+        if abs(value) > largest:
+            raise NotRepresentableError(
+                name,
+                f"|{name}| <= {largest} in float64",
+                value,
+                f"beyond it p_i^y may exceed {FLOAT64_COORDINATE_LIMIT:g}; use precision=mp",
+            )

@@ -1,0 +1,447 @@
+"""Section 5 on (D4b): the Gauss images (18)–(20) and Theorems 7 and 8, built and checked.
+
+The Gauss images come from their geometric descriptions (``gauss_image``); the printed closed
+forms (``kinematic_closed_forms``) are compared with them, and the printed versions that are wrong
+carry an erratum (E60–E63 in docs/errata.md):
+
+- n_i, the pseudosphere's Gauss image: inscribed in the unit circle, edges parallel to the
+  tractrix edges d_i d_{i+1}, starting at the unit normal of stick 0 ((1, 0) for a vertical
+  stick, the choice n_0 = (±1, 0) of the paper with the + sign);
+- ñ_i, the contact points: unit normals of the edges p_i p_{i+1} on the side away from the axis;
+- m_i, the catenoid's Gauss image: the pole of the chord ñ_{i−1} ñ_i.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from app.geometry import gauss_image
+from app.geometry.checks import (
+    Check,
+    Erratum,
+    Statement,
+    check_residuals,
+    not_applicable,
+    point_distance,
+    printed_residual,
+    relative_point_difference,
+)
+from app.geometry.d4b import closed_forms as kinematic_closed_forms
+from app.geometry.polygon import magnitude
+from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
+from app.geometry.surfaces.ring_curvature import (
+    EQUATION_17,
+    SIGN_CONVENTION,
+    constant_curvature_residuals,
+    equation_17_check,
+    minimal_residuals,
+    ring_curvatures,
+)
+
+S = Statement
+FIRST_NORMAL = (
+    "The inscribed Gauss images parallel to the tractrix are a one-parameter family (the "
+    "choice of n_0); Theorem 7 needs n_0 = (±1, 0), the normal of the vertical stick 0 "
+    "(another n_0 zig-zags and K is not constant). For a tilted first stick (an extension) "
+    "the service starts at the unit normal of stick 0, and Theorem 7 holds for every β0."
+)
+VERTICAL_STICK = (
+    "The closed forms (18)–(20) assume a vertical first stick (d_0^y = p_1^y = h), as (14) and "
+    "(16) do; for a tilted one the service evaluates them at the shifted index i + τ."
+)
+SLOPE_SIGN = (
+    "k_{i+1} = (p_{i+1}^y − p_i^y)/2d is the slope of the edge p_i p_{i+1} (12); n_i has its "
+    "sign, which the printed square roots drop (E61)."
+)
+CONTACT_SIDE = (
+    "ñ_i is the unit normal of the edge p_i p_{i+1} on the side away from the axis; the "
+    "rotation by 90° relates the corrected (18) and (19) (E60, E62)."
+)
+POLE = (
+    "m_i needs the two edges at p_i (ñ_{i−1} and ñ_i): it is defined at interior vertices, so "
+    "the service builds p one index beyond each end of the range."
+)
+APPROXIMATES_SPHERE = (
+    "|m_i|² = 1 + (d²/(h² − d²)) sech²((i − ½)L) > 1: the Gauss image lies outside the sphere "
+    "and approaches it as d → 0, as the text says ('approximates a sphere')."
+)
+ZERO_OVER_ZERO = (
+    "(17) is 0/0 on the ring between p_0 = (−d, h) and p_1 = (d, h) (equal heights); the "
+    "mixed-area definition still gives H = 0 there, and the check evaluates every face."
+)
+EQUATION_18 = S(
+    "equation-18",
+    "Section 5, eq. (18)",
+    "The Gauss image of the pseudosphere, built as the polygon inscribed in the unit circle with "
+    "edges parallel to the tractrix and n_0 = (1, 0), is n_i = (2(h−d)^i(h+d)^i, "
+    "(h+d)^{2i} − (h−d)^{2i}) / ((h−d)^{2i} + (h+d)^{2i}) (corrected sign; see erratum). "
+    "Residual: largest |n_i − closed form|.",
+    conditions=(FIRST_NORMAL, VERTICAL_STICK),
+)
+EQUATION_18_SLOPE = S(
+    "equation-18-slope",
+    "Section 5, eq. (18), first form",
+    "n_i lies on the line through the centre with the slope k_{i+1} = (p_{i+1}^y − p_i^y)/2d "
+    "of the edge p_i p_{i+1}: n_i = (1, k_{i+1})/√(1 + k_{i+1}²). Residual: largest |n_i − that|.",
+    conditions=(SLOPE_SIGN,),
+)
+EQUATION_19 = S(
+    "equation-19",
+    "Section 5, eq. (19)",
+    "The contact points ñ_i (unit normals of the edges p_i p_{i+1}) are ñ_i = ((h−d)^{2i} − "
+    "(h+d)^{2i}, 2(h−d)^i(h+d)^i) / ((h−d)^{2i} + (h+d)^{2i}) (corrected sign; see erratum). "
+    "Residual: largest |ñ_i − closed form|.",
+    conditions=(CONTACT_SIDE, VERTICAL_STICK),
+)
+EQUATION_19_ROTATION = S(
+    "equation-19-rotation",
+    "Section 5, before eq. (19)",
+    "The contact points are the points of (18) rotated by 90 degrees: ñ_i = (−n_i^y, n_i^x). "
+    "Residual: largest |ñ_i − (−n_i^y, n_i^x)| (ñ from the catenoid, n from the tractrix).",
+    conditions=(CONTACT_SIDE,),
+)
+EQUATION_20_INVERSION = S(
+    "equation-20-inversion",
+    "Proof of Theorem 8, eq. (20), first form",
+    "m_i, the pole of the chord ñ_{i−1} ñ_i (intersection of the tangents), equals "
+    "2(ñ_{i−1} + ñ_i)/|ñ_{i−1} + ñ_i|², the midpoint of the chord inverted in the unit circle. "
+    "Residual: largest |m_i − that| / |that|.",
+    conditions=(POLE,),
+)
+EQUATION_20 = S(
+    "equation-20",
+    "Proof of Theorem 8, eq. (20)",
+    "With A = (h+d)^{2i} − (h−d)^{2i}, B = (h−d)^{2i} + (h+d)^{2i}: m_i = (dB − hA, "
+    "2h(h²−d²)^i) / (hB − dA) (corrected; see erratum), so m_i^y = h / p_i^y. "
+    "Residual: largest |m_i − closed form| / |closed form|.",
+    conditions=(POLE, APPROXIMATES_SPHERE, VERTICAL_STICK),
+)
+THEOREM_7 = S(
+    "theorem-7",
+    "Theorem 7",
+    "The pseudosphere generated by the tractrix has K = −1/h² on every face with respect to the "
+    "Gauss image generated by n (mixed-area definition, three-dimensional faces), and the faces "
+    "are parallel. Residual: the larger of |A(n) + A(f)/h²| and the parallelism defect, both "
+    "relative to the magnitudes of the areas.",
+    conditions=(SIGN_CONVENTION, FIRST_NORMAL),
+)
+THEOREM_8 = S(
+    "theorem-8",
+    "Theorem 8",
+    "The catenoid (15) generated by p has H = 0 on every face with respect to the Gauss image "
+    "generated by m (mixed-area definition, three-dimensional faces; includes the face where "
+    "(17) is 0/0), and the faces are parallel. Residual: the larger of |A(f, m)| and the "
+    "parallelism defect, relative to the magnitudes of the areas.",
+    conditions=(SIGN_CONVENTION, ZERO_OVER_ZERO),
+)
+
+STATEMENTS: tuple[Statement, ...] = (
+    EQUATION_17,
+    EQUATION_18,
+    EQUATION_18_SLOPE,
+    EQUATION_19,
+    EQUATION_19_ROTATION,
+    EQUATION_20_INVERSION,
+    EQUATION_20,
+    THEOREM_7,
+    THEOREM_8,
+)
+
+COMPANIONS = {
+    "tractrix_gauss_image": "n_i, the Gauss image meridian of the pseudosphere (Theorem 7, eq. "
+    "(18)): inscribed in the unit circle, edges parallel to the tractrix, n_0 = (1, 0)",
+    "contact_points": "ñ_i, where the edge m_i m_{i+1} touches the unit circle: the unit normal "
+    "of the edge p_i p_{i+1} (eq. (19))",
+    "gauss_image": "m_i, the Gauss image meridian of the catenoid (Theorem 8, eq. (20)): edges "
+    "parallel to p and tangent to the unit circle, m_i the pole of the chord ñ_{i−1} ñ_i",
+}
+
+ERRATUM_18 = (
+    "E60",
+    "n_i = (2(h−d)^i(h+d)^i, (h−d)^{2i} − (h+d)^{2i}) / ((h−d)^{2i} + (h+d)^{2i})",
+    "n_i = (2(h−d)^i(h+d)^i, (h+d)^{2i} − (h−d)^{2i}) / ((h−d)^{2i} + (h+d)^{2i}) = "
+    "(sech iL, tanh iL)",
+)
+ERRATUM_18_SLOPE = (
+    "E61",
+    "n_i = (√(1/(1 + k_{i+1}²)), √(k_{i+1}²/(1 + k_{i+1}²)))",
+    "n_i = (1, k_{i+1})/√(1 + k_{i+1}²): the second component has the sign of k_{i+1}",
+)
+ERRATUM_19 = (
+    "E62",
+    "ñ_i = ((h+d)^{2i} − (h−d)^{2i}, 2(h−d)^i(h+d)^i) / ((h−d)^{2i} + (h+d)^{2i})",
+    "ñ_i = ((h−d)^{2i} − (h+d)^{2i}, 2(h−d)^i(h+d)^i) / ((h−d)^{2i} + (h+d)^{2i}) = "
+    "(−tanh iL, sech iL)",
+)
+ERRATUM_20 = (
+    "E63",
+    "m_i = 1/(dA + hB) · ((hA − dB) / 2h(h²−d²)^i) (read as the vector (hA − dB, "
+    "2h(h²−d²)^i)/(dA + hB))",
+    "m_i = (dB − hA, 2h(h²−d²)^i)/(hB − dA) = (−tanh((i−½)L), h/p_i^y)",
+)
+
+
+@dataclass(frozen=True)
+class GaussImages:
+    """The three polygons of Section 5 for one (D4b) computation, with their closed forms.
+
+    ``tractrix_gauss`` and ``gauss`` are aligned with ``D4bPolygons.p`` (i_min .. i_max + 1);
+    ``contact`` starts one index earlier (i_min − 1 .. i_max + 1), since m_i needs ñ_{i−1}.
+    """
+
+    tractrix_gauss: Array
+    contact: Array
+    gauss: Array
+    closed_tractrix_gauss: Array
+    closed_contact: Array
+    closed_gauss: Array
+    constructed: bool
+    contact_edges_before: Array | None = None
+    """p_{i_min−1} and p_{i_min}: the edge before the range, which m_{i_min} also uses."""
+    conditioning: float = 1.0
+    """Σ over the tractrix edges used by n of (|d_k| + |d_{k+1}|)/|d_{k+1} − d_k| (coordinates
+    summed): the edge directions that the inscribed recursion accumulates are known only to
+    eps times this ratio each, so it serves as the step count of n's tolerance."""
+
+
+def build(
+    ar: Arithmetic,
+    h: Scalar,
+    d: Scalar,
+    shift: Scalar,
+    i_min: int,
+    i_max: int,
+    hull_start: int,
+    tractrix_hull: Array | None,
+    first_direction: tuple[Scalar, Scalar] | None,
+    p_extended: Array | None,
+) -> GaussImages:
+    """The Gauss images on i_min .. i_max + 1 (``contact`` from i_min − 1).
+
+    With a construction, ``tractrix_hull`` is the tractrix on hull_start .. (covering 0 and the
+    range), ``first_direction`` the unit vector of stick 0, ``p_extended`` the hyperbolic cosine on
+    i_min − 1 .. i_max + 2. Without (method=closed-form) the closed forms are used.
+    """
+    i = ar.indices(i_min, i_max + 1)
+    closed_n = kinematic_closed_forms.tractrix_gauss_image(ar, h, d, i, shift)
+    closed_m = kinematic_closed_forms.circumscribed_gauss_image(ar, h, d, i, shift)
+    closed_c = kinematic_closed_forms.contact_points(
+        ar, h, d, ar.indices(i_min - 1, i_max + 1), shift
+    )
+    if tractrix_hull is None or first_direction is None or p_extended is None:
+        before = kinematic_closed_forms.hyperbolic_cosine(
+            ar, h, d, ar.indices(i_min - 1, i_min), shift
+        )
+        return GaussImages(
+            closed_n, closed_c, closed_m, closed_n, closed_c, closed_m, False, before
+        )
+    ux, uy = first_direction
+    start = 0 - hull_start
+    n_hull = gauss_image.inscribed_parallel(
+        ar,
+        tractrix_hull,
+        start,
+        ar.array([uy, -ux]),  # the unit normal of stick 0
+    )
+    window = slice(i_min - hull_start, i_max + 1 - hull_start + 1)
+    edges = tractrix_hull[1:] - tractrix_hull[:-1]
+    sizes = magnitude(tractrix_hull[:-1], tractrix_hull[1:])
+    ratios = ar.to_floats(sizes / ar.hypot(edges[:, 0], edges[:, 1]))
+    return GaussImages(
+        tractrix_gauss=n_hull[window],
+        contact=gauss_image.contact_points(ar, p_extended),
+        gauss=gauss_image.circumscribed(ar, p_extended),
+        closed_tractrix_gauss=closed_n,
+        closed_contact=closed_c,
+        closed_gauss=closed_m,
+        constructed=True,
+        contact_edges_before=p_extended[:2],
+        conditioning=float(np.sum(ratios)),
+    )
+
+
+def companion_tolerances(
+    ar: Arithmetic, images: GaussImages, construction_tolerance: float
+) -> dict[str, float]:
+    """Tolerances of face-wise statements on the two Gauss images (Theorems 7 and 8).
+
+    n accumulates the rounding of every tractrix edge direction it was built from (see
+    ``GaussImages.conditioning``); m is built locally from p, whose vertices come from the whole
+    construction.
+    """
+    return {
+        "tractrix_gauss_image": max(
+            construction_tolerance, ar.tolerance(math.ceil(images.conditioning))
+        ),
+        "gauss_image": construction_tolerance,
+    }
+
+
+def printed_forms(
+    ar: Arithmetic, h: Scalar, d: Scalar, shift: Scalar, i_min: int, i_max: int
+) -> dict[str, Array]:
+    """The printed (18), (19), (20) on i_min .. i_max (for the errata's printed residuals)."""
+    i = ar.indices(i_min, i_max)
+    return {
+        "18": kinematic_closed_forms.tractrix_gauss_image_printed(ar, h, d, i, shift),
+        "19": kinematic_closed_forms.contact_points_printed(ar, h, d, i, shift),
+        "20": kinematic_closed_forms.circumscribed_gauss_image_printed(ar, h, d, i, shift),
+    }
+
+
+def evaluate(
+    ar: Arithmetic,
+    h: Scalar,
+    p: Array,
+    tractrix: Array,
+    images: GaussImages,
+    printed: dict[str, Array],
+    indices: np.ndarray[Any, np.dtype[np.int64]],
+    n: int,
+    local_tolerance: float,
+    construction_tolerance: float,
+    detail: bool,
+) -> list[Check]:
+    """Every check of ``STATEMENTS`` on the given polygons (aligned as in ``GaussImages``).
+
+    ``n`` is the number of indices shown (i_min .. i_max); the face-wise checks use the faces
+    i_min .. i_max (edges to i + 1).
+    """
+    nt, c, m = images.tractrix_gauss, images.contact, images.gauss
+    shown = indices[:n]
+    n_tolerance = companion_tolerances(ar, images, construction_tolerance)["tractrix_gauss_image"]
+
+    def check(
+        statement: Statement,
+        residuals: Array,
+        tolerance: float,
+        erratum: Erratum | None = None,
+    ) -> Check:
+        return check_residuals(
+            statement, ar, shown[: len(residuals)], residuals, tolerance, detail, erratum
+        )
+
+    def closed(
+        statement: Statement,
+        built: Array,
+        formula: Array,
+        erratum: Erratum,
+        tolerance: float = construction_tolerance,
+        scale: Any = None,
+    ) -> Check:
+        if not images.constructed:
+            return not_applicable(
+                statement,
+                tolerance,
+                "method=closed-form: the Gauss image was not constructed to compare",
+            )
+        residuals = relative_point_difference(ar, built[:n], formula[:n])
+        if scale is not None:
+            residuals = ar.to_floats(residuals) * ar.to_floats(scale[:n])
+        return check(statement, residuals, tolerance, erratum)
+
+    def printed_erratum(entry: tuple[str, str, str], built: Array, formula: Array) -> Erratum:
+        residuals = relative_point_difference(ar, built[:n], formula[:n])
+        return Erratum(*entry, printed_residual=printed_residual(ar, residuals))
+
+    pseudo = ring_curvatures(ar, tractrix, nt)
+    theorem_7 = np.maximum(
+        ar.to_floats(constant_curvature_residuals(pseudo, -1 / (h * h))),
+        ar.to_floats(pseudo.parallel),
+    )
+    catenoid = ring_curvatures(ar, p, m)
+    theorem_8 = np.maximum(
+        ar.to_floats(minimal_residuals(catenoid)), ar.to_floats(catenoid.parallel)
+    )
+    # ñ and m come from the edges of p, which the stored vertices resolve only to eps times
+    # |p_i| + |p_{i+1}| (coordinates summed): residuals of quantities built from edge directions
+    # are scaled by the resolution |e_i| / (|p_i| + |p_{i+1}|) <= 1 (docs/checks.md)
+    resolution = _edge_resolution(ar, p)  # edges i_min .. i_max (p_i p_{i+1})
+    assert images.contact_edges_before is not None
+    before = _edge_resolution(ar, images.contact_edges_before)
+    pole_resolution = np.minimum(
+        ar.to_floats(np.concatenate([before, resolution[:-1]])), ar.to_floats(resolution)
+    )
+    edges = p[1:] - p[:-1]
+    slope = edges[:, 1] / edges[:, 0]  # k_{i+1} of the edge p_i p_{i+1}, eq. (12)
+    from_slope = kinematic_closed_forms.normal_from_slope(ar, slope)
+    slope_printed = kinematic_closed_forms.normal_from_slope_printed(ar, slope)
+    rotated = stack_points(-nt[:, 1], nt[:, 0])
+    inverted = kinematic_closed_forms.pole_by_inversion(c[:-1], c[1:])  # i_min .. i_max + 1
+    del from_slope
+    return [
+        equation_17_check(
+            ar,
+            shown,
+            [(tractrix, nt), (p, m)],
+            construction_tolerance,
+            detail,
+            [pseudo, catenoid],
+        ),
+        closed(
+            EQUATION_18,
+            nt,
+            images.closed_tractrix_gauss,
+            printed_erratum(ERRATUM_18, nt, printed["18"]),
+            n_tolerance,
+        ),
+        check(
+            EQUATION_18_SLOPE,
+            _along(ar, nt[:n], p[: n + 1]),
+            n_tolerance,
+            Erratum(
+                *ERRATUM_18_SLOPE,
+                printed_residual=printed_residual(ar, _along(ar, slope_printed[:n], p[: n + 1])),
+            ),
+        ),
+        closed(
+            EQUATION_19,
+            c[1:],
+            images.closed_contact[1:],
+            printed_erratum(ERRATUM_19, c[1:], printed["19"]),
+            scale=resolution,
+        ),
+        check(
+            EQUATION_19_ROTATION,
+            ar.to_floats(point_distance(ar, c[1 : n + 1], rotated[:n]))
+            * ar.to_floats(resolution[:n]),
+            n_tolerance,
+        ),
+        check(
+            EQUATION_20_INVERSION,
+            ar.to_floats(relative_point_difference(ar, m[:n], inverted[:n])) * pole_resolution[:n],
+            local_tolerance,
+        ),
+        closed(
+            EQUATION_20,
+            m,
+            images.closed_gauss,
+            printed_erratum(ERRATUM_20, m, printed["20"]),
+            scale=pole_resolution,
+        ),
+        check(THEOREM_7, theorem_7[:n], n_tolerance),
+        check(THEOREM_8, theorem_8[:n], construction_tolerance),
+    ]
+
+
+def _edge_resolution(ar: Arithmetic, points: Array) -> Array:
+    """|p_{i+1} − p_i| / (|p_i| + |p_{i+1}|) per edge (coordinates summed): at most 1."""
+    edges = points[1:] - points[:-1]
+    return ar.hypot(edges[:, 0], edges[:, 1]) / magnitude(points[:-1], points[1:])
+
+
+def _along(ar: Arithmetic, vectors: Array, points: Array) -> Array:
+    """How far unit vectors v_i are from pointing along the edges p_i p_{i+1}.
+
+    |v_i × e_i| / (|p_i| + |p_{i+1}|), or 1 where v_i points against the edge: 0 when v_i is
+    the unit vector of the edge's direction (the line of slope k_{i+1} through the centre).
+    """
+    edges = points[1:] - points[:-1]
+    crossed = abs(vectors[:, 0] * edges[:, 1] - vectors[:, 1] * edges[:, 0])
+    residual = crossed / magnitude(points[:-1], points[1:])
+    backwards = vectors[:, 0] * edges[:, 0] + vectors[:, 1] * edges[:, 1] < 0
+    return np.where(backwards, ar.scalar(1), residual)

@@ -1,0 +1,109 @@
+"""Checks of Section 5 shared by (D4b) and (D2b): curvatures of one ring of rotational faces.
+
+Every ring of a discrete surface of revolution is congruent to the others, so the face-wise
+statements (17), Theorems 7, 8 and (D2b)'s H = 0 are evaluated on the faces between the angles 0
+and π/RING_M of the mixed-area definition (``curvature``), built in three dimensions from the
+meridians (``surfaces.ring_faces``). The ``/surfaces`` endpoint evaluates every face of a mesh.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from app.geometry.checks import Check, Statement, check_residuals, not_applicable
+from app.geometry.curvature import FaceCurvatures, face_curvatures
+from app.geometry.polygon import magnitude
+from app.geometry.precision import Arithmetic, Array
+from app.geometry.surfaces.mesh import ring_faces
+from app.geometry.surfaces.revolution_formulas import equation_17_residuals
+
+#: The faces used for the ring checks span the angle π/RING_M.
+RING_M = 16
+
+SIGN_CONVENTION = (
+    "The curvatures of [3] with K = A(n)/A(f) and H = −A(f,n)/A(f), all areas signed along "
+    "the normal of the face of f (the unit sphere with n = f has K = 1, H = −1): the paper does "
+    "not state the convention; with H = +A(f,n)/A(f) the H of (17) changes sign."
+)
+ZERO_OVER_ZERO = (
+    "(17) is 0/0 on faces whose meridian edge is parallel to the axis (p_{i+1}^y = p_i^y; the "
+    "Gauss image edge is then parallel too); the mixed-area definition still gives K = λ(n_i^y + "
+    "n_{i+1}^y)/(p_i^y + p_{i+1}^y) and H = −(λ + (n_i^y + n_{i+1}^y)/(p_i^y + p_{i+1}^y))/2 "
+    "there (λ the ratio of the parallel edges); the check skips such faces and counts them."
+)
+EQUATION_17 = Statement(
+    "equation-17",
+    "Section 5, eq. (17)",
+    "For surfaces of revolution, K = (n_{i+1}^y² − n_i^y²)/(p_{i+1}^y² − p_i^y²) and "
+    "H = (p_i^y n_i^y − p_{i+1}^y n_{i+1}^y)/(p_{i+1}^y² − p_i^y²) equal the curvatures "
+    "K = A(n)/A(f), H = −A(f,n)/A(f) of the mixed-area definition [3] on three-dimensional "
+    "faces (angle π/16). Residual: largest cross-multiplied difference relative to the size of "
+    "the terms; faces where (17) is 0/0 (p_{i+1}^y = p_i^y) are skipped and counted in the note.",
+    conditions=(SIGN_CONVENTION, ZERO_OVER_ZERO),
+)
+
+
+def ring_curvatures(ar: Arithmetic, meridian: Array, gauss: Array) -> FaceCurvatures:
+    """Mixed-area curvatures of the ring of faces of two meridians ``(n, 2)``; ``(n−1,)``."""
+    theta = ar.pi / RING_M
+    cos, sin = ar.cos(theta), ar.sin(theta)
+    f = ring_faces(ar, meridian[:-1], meridian[1:], cos, sin)
+    g = ring_faces(ar, gauss[:-1], gauss[1:], cos, sin)
+    return face_curvatures(ar, f, g)
+
+
+def edge_parallel_residuals(meridian: Array, gauss: Array) -> Array:
+    """|e(p) × e(n)| / (|p_i, p_{i+1}| · |n_i, n_{i+1}|) per edge: 0 when edges are parallel."""
+    a = meridian[1:] - meridian[:-1]
+    b = gauss[1:] - gauss[:-1]
+    crossed = abs(a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0])
+    return crossed / (magnitude(meridian[:-1], meridian[1:]) * magnitude(gauss[:-1], gauss[1:]))
+
+
+def constant_curvature_residuals(curvature: FaceCurvatures, K: Any) -> Array:
+    """|A(n) − K A(f)| relative to the magnitudes: 0 when the face has Gaussian curvature K."""
+    scale = curvature.gauss_area_magnitude + abs(K) * curvature.area_magnitude
+    return abs(curvature.gauss_area - K * curvature.area) / scale
+
+
+def minimal_residuals(curvature: FaceCurvatures) -> Array:
+    """|A(f, n)| relative to its magnitude: 0 when H = 0 on the face."""
+    return abs(curvature.mixed_area) / curvature.mixed_area_magnitude
+
+
+def equation_17_check(
+    ar: Arithmetic,
+    indices: np.ndarray[Any, np.dtype[np.int64]],
+    pairs: list[tuple[Array, Array]],
+    tolerance: float,
+    detail: bool,
+    curvatures: list[FaceCurvatures] | None = None,
+) -> Check:
+    """(17) against the mixed-area definition on each pair (meridian, Gauss image meridian).
+
+    ``curvatures``, if given, are the pairs' ``ring_curvatures`` already computed (by the
+    checks of Theorems 7, 8), so that they are not computed twice.
+    """
+    worst: Array | None = None
+    skipped = 0
+    for k, (meridian, gauss) in enumerate(pairs):
+        curvature = ring_curvatures(ar, meridian, gauss) if curvatures is None else curvatures[k]
+        k_res, h_res, defined = equation_17_residuals(ar, meridian[:, 1], gauss[:, 1], curvature)
+        both = np.maximum(ar.to_floats(k_res), ar.to_floats(h_res))
+        both = np.where(defined, both, 0.0)
+        skipped += int(np.count_nonzero(~defined))
+        worst = both if worst is None else np.maximum(worst, both)
+    assert worst is not None
+    if skipped == len(worst) * len(pairs):
+        return not_applicable(EQUATION_17, tolerance, "(17) is 0/0 on every face of the range")
+    note = (
+        f"(17) is 0/0 on {skipped} face(s) with p_(i+1)^y = p_i^y (skipped; the mixed-area "
+        "definition gives K and H there, see docs/errata.md)"
+        if skipped
+        else None
+    )
+    return check_residuals(
+        EQUATION_17, ar, indices[: len(worst)], worst, tolerance, detail, note=note
+    )

@@ -1,0 +1,182 @@
+"""(D4b) as served: every check holds on the true polygons and fails on perturbed ones."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from app.geometry.d4b import discretization as d4b
+from app.geometry.errors import DomainError, NotRepresentableError
+from app.geometry.precision import Arithmetic, Float64, MultiPrecision
+
+ALL = {s.id for s in d4b.STATEMENTS}
+
+
+def verdicts(checks: list) -> dict[str, bool | None]:
+    return {c.id: c.holds for c in checks}
+
+
+@pytest.mark.parametrize("beta0", [None, 0.5, 2.4])
+@pytest.mark.parametrize("method", ["construction", "closed-form"])
+def test_every_check_holds_in_float64(float64: Float64, beta0: float | None, method: str) -> None:
+    curve = d4b.compute(float64, 1.0, 0.3, beta0, -15, 15, method)  # type: ignore[arg-type]
+    results = verdicts(curve.checks)
+    assert set(results) == ALL
+    closed = {"theorem-5", "theorem-6", "equation-18", "equation-19", "equation-20"}
+    skipped = closed if method == "closed-form" else set()
+    assert {k for k, v in results.items() if v is not True} == skipped
+    assert all(results[k] is None for k in skipped)
+
+
+def test_every_check_holds_at_40_digits_with_residuals_near_1e_40(mp40: MultiPrecision) -> None:
+    curve = d4b.compute(mp40, 1.5, 0.4, 0.9, -10, 10)
+    for check in curve.checks:
+        assert check.holds is True, check.id
+        assert check.residual is not None and check.residual < 1e-38, check.id
+
+
+@pytest.mark.parametrize("ar", [Float64(), MultiPrecision(30)], ids=["float64", "mp30"])
+@pytest.mark.parametrize(("h", "d", "beta0"), [(1.0, 0.1, None), (2.0, 0.5, 0.7), (0.5, 0.45, 2.0)])
+def test_constants_are_d_over_h_h_and_d_over_h_squared(
+    ar: Arithmetic, h: float, d: float, beta0: float | None
+) -> None:
+    curve = d4b.compute(ar, h, d, beta0, -8, 8)
+    got = {k: float(v) for k, v in curve.constants.items()}
+    assert got == pytest.approx({"d1": d / h, "d3": h, "eq2": d / h**2}, rel=1e-12)
+
+
+def test_errata_carry_printed_residuals_far_above_tolerance(float64: Float64) -> None:
+    curve = d4b.compute(float64, 1.0, 0.3, None, -10, 10)
+    errata = {c.id: c.erratum for c in curve.checks if c.erratum is not None}
+    assert set(errata) == {
+        "theorem-4-i",
+        "theorem-4-rotation-angle",
+        "recursion-13-two-step",
+        "equation-18",
+        "equation-18-slope",
+        "equation-19",
+        "equation-20",
+    }
+    for check_id, erratum in errata.items():
+        assert erratum.printed_residual is not None and erratum.printed_residual > 1e-3, check_id
+    assert {e.id for e in errata.values()} == {"E1", "E2", "E3", "E60", "E61", "E62", "E63"}
+
+
+def _perturbed(data: d4b.D4bPolygons, field: str, index: int, factor: float) -> d4b.D4bPolygons:
+    points = getattr(data, field).copy()
+    points[index] = points[index] * factor
+    return replace(data, **{field: points})
+
+
+PERTURBED_P = {
+    "theorem-4-i",
+    "theorem-4-ii",
+    "theorem-4-iii",
+    "recursion-13",
+    "recursion-13-two-step",
+    "theorem-5",
+    "nikolaides-d4b",
+    # the Gauss images m, ñ were built from the unperturbed p
+    "theorem-8",
+    "equation-17",
+    "equation-18-slope",
+}
+PERTURBED_TRACTRIX = {
+    "theorem-6",
+    "nikolaides-d4b",
+    "darboux-d4b",
+    "darboux-d4b-distance",
+    # the Gauss image n was built from the unperturbed tractrix
+    "theorem-7",
+    "equation-17",
+}
+
+
+@pytest.mark.parametrize(
+    ("field", "failing"), [("p", PERTURBED_P), ("tractrix", PERTURBED_TRACTRIX)]
+)
+def test_checks_fail_on_a_perturbed_polygon(
+    float64: Float64, field: str, failing: set[str]
+) -> None:
+    data = d4b.polygons(float64, 1.0, 0.3, None, -10, 10)
+    assert all(verdicts(d4b.evaluate(float64, 1.0, 0.3, data)[1]).values())
+    bad = _perturbed(data, field, 12, 1 + 1e-7)
+    if field == "tractrix":  # the Darboux transform is derived from the tractrix
+        bad = replace(bad, darboux=2 * bad.tractrix - bad.axis)
+    results = verdicts(d4b.evaluate(float64, 1.0, 0.3, bad)[1])
+    assert {k for k, v in results.items() if v is False} == failing
+
+
+def test_rotation_angle_check_fails_when_a_centre_leaves_the_bisector(float64: Float64) -> None:
+    # the angle 2 arctan(d/p^y) is the same for every point of the bisector, so only a
+    # horizontal displacement (second order in its size) can break the formula
+    data = d4b.polygons(float64, 1.0, 0.3, None, -5, 5)
+    p = data.p.copy()
+    p[6, 0] += 1e-3
+    results = verdicts(d4b.evaluate(float64, 1.0, 0.3, replace(data, p=p))[1])
+    assert results["theorem-4-rotation-angle"] is False
+
+
+def test_hypothesis_check_fails_when_heights_drop_below_d(float64: Float64) -> None:
+    data = d4b.polygons(float64, 1.0, 0.3, None, -5, 5)
+    p = data.p.copy()
+    p[4:6, 1] = 0.2  # p_{i-1}^y p_i^y = 0.04 < d² = 0.09
+    check = next(
+        c
+        for c in d4b.evaluate(float64, 1.0, 0.3, replace(data, p=p))[1]
+        if c.id == "theorem-4-hypothesis"
+    )
+    assert check.holds is False
+    assert check.residual == pytest.approx((0.09 - 0.04) / 0.09)
+
+
+def test_hypothesis_margin_is_at_least_h_squared(float64: Float64) -> None:
+    for beta0 in (None, 0.2, 1.0, 2.9):
+        curve = d4b.compute(float64, 1.0, 0.95, beta0, -5, 5)
+        y = curve.polygon.vertices[:, 1]
+        assert np.min(y[:-1] * y[1:]) >= 1.0 - 1e-12
+
+
+def test_short_ranges_make_the_long_checks_not_applicable(float64: Float64) -> None:
+    curve = d4b.compute(float64, 1.0, 0.3, None, 0, 0)
+    results = verdicts(curve.checks)
+    assert results["theorem-4-i"] is None
+    assert results["theorem-5"] is True
+
+
+def test_range_order_and_float64_limits_are_domain_errors(float64: Float64) -> None:
+    with pytest.raises(DomainError, match="i_max must satisfy i_min <= i_max"):
+        d4b.compute(float64, 1.0, 0.1, None, 3, 2)
+    with pytest.raises(NotRepresentableError, match=r"\|i_max\| <= 312 in float64"):
+        d4b.compute(float64, 1.0, 0.5, None, 0, 313)
+    with pytest.raises(NotRepresentableError, match=r"d/h >= 1\.5e-06 in float64"):
+        d4b.compute(float64, 1.0, 1e-7, None, 0, 3)
+
+
+def test_mp_has_no_float64_range_limit() -> None:
+    curve = d4b.compute(MultiPrecision(20), 1.0, 0.5, None, 400, 402, "closed-form")
+    y = curve.polygon.vertices[0, 1]
+    assert y > 10**190
+    expected = math.exp(2 * math.atanh(0.5) * 399.5 + math.log(math.sqrt(0.75) / 2))
+    assert float(y / 10**190) == pytest.approx(expected / 1e190, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("h", "d", "beta0", "i_min", "i_max", "method"),
+    [
+        (3.0, 2.97, None, 0, 4, "closed-form"),  # d/h = 0.99: rounding grows like h²/(h² − d²)
+        (0.0337, 0.0329, 1.36, -30, 30, "construction"),
+        (848.0, 0.848, 0.25, 0, 4, "closed-form"),  # d/h = 1e-3 on five vertices
+    ],
+)
+def test_every_check_holds_near_the_ends_of_the_domain(
+    float64: Float64, h: float, d: float, beta0: float | None, i_min: int, i_max: int, method: str
+) -> None:
+    """Cases found by the property test: the tolerances follow the conditioning h²/(h² − d²), and
+    c = c_(D1)/c_(D3) is tested through the equation (2), not by comparing constants."""
+    curve = d4b.compute(float64, h, d, beta0, i_min, i_max, method)  # type: ignore[arg-type]
+    assert [c.id for c in curve.checks if c.holds is False] == []
+    assert d4b.conditioning(h, d) == pytest.approx(h * h / ((h - d) * (h + d)))
