@@ -16,6 +16,14 @@ from typing import Any
 import numpy as np
 
 from app.geometry import conditions
+from app.geometry.catalog.section3 import (
+    D1,
+    D3,
+    HANGING_STICKS,
+)
+from app.geometry.catalog.section4 import (
+    EQUATION_2,
+)
 from app.geometry.checks import Check, Erratum, Statement, check_residuals
 from app.geometry.precision import Arithmetic, Array, Scalar
 
@@ -23,76 +31,6 @@ from app.geometry.precision import Arithmetic, Array, Scalar
 #: rounding steps (as for D4b).
 LOCAL_STEPS = 16
 
-SPACING = (
-    "(D1) and (D3) say nothing about the x-coordinates ((D1) constrains heights only, (D3) "
-    "leaves one degree of freedom per vertex); the service's (D1) and (D3) polygons have a "
-    "constant spacing δ, p_i = (iδ, y_i). The constant is then not the smooth one: h cosh(x/h) "
-    "solves (S1) with c = 1/h, while a polygon sampling it has c_(D1) = δ/(2h)."
-)
-D1_RANGE = (
-    "(D1) needs 0 < c < 1: for c >= 1 no next vertex exists. For 0 < c < 1 every (D1) polygon "
-    "with spacing δ is y_i = C + a cosh(u_0 + (i − ½)E), E = 2 artanh c, a = δ√(1 − c²)/(2c), "
-    "with an offset C that (D1) cannot see; it satisfies (D3) and eq. (2) exactly when C = 0."
-)
-D3_RANGE = (
-    "(D3) with spacing δ needs 0 < δ < 2c and y0 >= √(c² − δ²/4): otherwise the step's "
-    "quadratic has no real root, or only one admissible root and the polygon zig-zags across "
-    "the axis."
-)
-D3_FOLDS = (
-    "Each step has two admissible roots, the two directions along one catenary a cosh(v ± 2D) "
-    "(tanh D = δ/(2c)); one of them is the previous vertex, and taking it folds the polygon "
-    "back: such zig-zags satisfy (D3) but not (D1). 'Not contained in a line' excludes the "
-    "horizontal line y = c, which has A_i = c l_i. A (D3) polygon that does not fold back "
-    "satisfies (D1) (c = δ/(2c)), eq. (2) and the hanging-sticks equilibrium."
-)
-EQUATION_2_SOURCE = (
-    "(D1) and (D3) imply (2) with c = c_(D1)/c_(D3) (proof of Theorem 4 (iii)); the converse "
-    "fails: the (D2a) quad polygon satisfies (2) but neither (D1) nor (D3). Section 4.1's "
-    "'(2) is fulfilled by polygons constructed in (D2a) … Theorems 1 and 2' holds for the quad "
-    "polygons only; the hexagonal ones satisfy the modified (7), not (2) (E45)."
-)
-EQUILIBRIUM_SPACING = (
-    "'(D1) implies a position of equilibrium' holds only for a constant horizontal spacing: "
-    "force and moment balance of homogeneous sticks on weightless hinges give "
-    "T(k_{i+1} − k_i) = (w/2)(l_i + l_{i+1}) for the slopes k_i, which is (D1) divided by δ "
-    "when the spacing is δ; sticks of unequal extents in equilibrium miss (D1)."
-)
-D1 = Statement(
-    "d1",
-    "Section 3, (D1)",
-    "Δ²p_i^y = c (l_i + l_{i+1}) with one constant c > 0 (constants.d1, least-squares fit). "
-    "Residual: largest |Δ²p_i^y − c(l_i + l_{i+1})|, relative to the magnitude of the "
-    "coordinates it is computed from (docs/checks.md). On a polygon that does not satisfy (D1) "
-    "the check fails and the residual says by how much.",
-    conditions=(SPACING, D1_RANGE),
-)
-D3 = Statement(
-    "d3",
-    "Section 3, (D3)",
-    "A_i = c l_i with one constant c > 0 (constants.d3, least-squares fit): the area under each "
-    "edge is c times its length. Residual: largest |A_i − c l_i|, relative to the magnitude of "
-    "the coordinates (docs/checks.md).",
-    conditions=(SPACING, D3_RANGE, D3_FOLDS),
-)
-EQUATION_2 = Statement(
-    "equation-2",
-    "Section 4.1, eq. (2)",
-    "Δ²p_i^y = c (A_i + A_{i+1}) with one constant c > 0 (constants.eq2, least-squares fit). "
-    "Residual: largest |Δ²p_i^y − c(A_i + A_{i+1})|, relative to the magnitude of the "
-    "coordinates (docs/checks.md).",
-    conditions=(EQUATION_2_SOURCE,),
-)
-HANGING_STICKS = Statement(
-    "hanging-sticks",
-    "Section 3, after (D1): sticks hanging from hinges",
-    "Homogeneous sticks on the edges, joined by weightless hinges, hang in equilibrium: with a "
-    "constant horizontal tension the edge slopes k_i satisfy k_{i+1} − k_i = c (l_i + l_{i+1}) "
-    "(constants.equilibrium = weight per length / (2 · horizontal tension)). With constant "
-    "x-spacing δ this is (D1) divided by δ; otherwise it is a different condition (see "
-    "docs/errata.md). Residual: as for (D1), with the magnitudes of the slopes.",
-    conditions=(EQUILIBRIUM_SPACING,),
-)
 
 PROPERTIES: tuple[Statement, ...] = (D1, D3, EQUATION_2, HANGING_STICKS)
 

@@ -15,6 +15,9 @@ from typing import Any, Literal
 import numpy as np
 
 from app.geometry import properties
+from app.geometry.catalog.section3 import (
+    D1_CLOSED_FORM as CLOSED_FORM,
+)
 from app.geometry.checks import Check, Statement, check_residuals, not_applicable, point_distance
 from app.geometry.curve import Curve, DiscretizationInfo, require_range
 from app.geometry.d1 import closed_forms
@@ -27,20 +30,6 @@ Method = Literal["construction", "closed-form"]
 #: Float64 results keep every coordinate below this size (checks multiply two coordinates).
 FLOAT64_COORDINATE_LIMIT = 1e150
 
-CLOSED_FORM_RANGE = (
-    "Derived here (not in the paper) for 0 < c < 1 and a constant spacing δ; it is evaluated as "
-    "y_0 + 2a sinh(iE/2) sinh(u_0 + (i − 1)E/2), which does not cancel for small c (a >> |y|)."
-)
-CLOSED_FORM = Statement(
-    "d1-closed-form",
-    "Section 3, (D1) with constant spacing: closed form (derived here, not in the paper)",
-    "p_i = (iδ, C + a cosh(u_0 + (i − ½)E)) with E = 2 artanh c, a = δ√(1 − c²)/(2c), "
-    "u_0 = arsinh((y_1 − y_0)/δ), C = y_0 − a cosh(u_0 − E/2): the slope angles advance by E "
-    "per edge, tanh((u_{i+1} − u_i)/2) = c. Evaluated as y_0 + 2a sinh(iE/2) sinh(u_0 + "
-    "(i − 1)E/2) (no cancellation). Residual: largest |p_i − closed form| divided by "
-    "|iδ| + |y_0| + |2a sinh(…) sinh(…)|, the size of the closed form's terms.",
-    conditions=(CLOSED_FORM_RANGE,),
-)
 
 STATEMENTS: tuple[Statement, ...] = (*properties.PROPERTIES, CLOSED_FORM)
 

@@ -9,6 +9,9 @@ from typing import Any
 import numpy as np
 
 from app.geometry import conditions
+from app.geometry.catalog.section3 import D1 as SHARED_D1
+from app.geometry.catalog.section3 import D3 as SHARED_D3
+from app.geometry.catalog.section4 import EQUATION_2 as SHARED_EQUATION_2
 from app.geometry.checks import (
     Check,
     Erratum,
@@ -45,35 +48,6 @@ def require_mp_gap(ar: Arithmetic, parameter: str, what: str, value: float, gap:
             value,
             "nearly equal f_i give Gauss image edges below the working precision; use more digits",
         )
-
-
-NOT_FOR_D2A = (
-    "A property of other discretizations, tested here to show Section 4's 'not equivalent': "
-    "the (D2a) polygons do not satisfy it (quad: (D1), (D3); hexagonal: (D1), (D3), (2)), so the "
-    "check reports holds: false on them (GET /relations; docs/errata.md, Section 4.1)."
-)
-SHARED_D1 = Statement(
-    "d1",
-    "(D1), Section 3",
-    "Δ²p_i^y = c (l_i + l_{i+1}) with one constant c (least-squares fit, in the note). Residual: "
-    "largest |Δ²p_i^y − c(l_i + l_{i+1})|, relative to the magnitude of the coordinates it is "
-    "computed from (docs/checks.md).",
-    conditions=(NOT_FOR_D2A,),
-)
-SHARED_D3 = Statement(
-    "d3",
-    "(D3), Section 3",
-    "A_i = c l_i with one constant c (least-squares fit, in the note). Residual: largest "
-    "|A_i − c l_i|, relative to the magnitude of the coordinates (docs/checks.md).",
-    conditions=(NOT_FOR_D2A,),
-)
-SHARED_EQUATION_2 = Statement(
-    "equation-2",
-    "Section 4.1, eq. (2)",
-    "Δ²p_i^y = c (A_i + A_{i+1}) with one constant c (least-squares fit, in the note). Residual: "
-    "largest |Δ²p_i^y − c(A_i + A_{i+1})|, relative to the magnitude of the coordinates.",
-    conditions=(NOT_FOR_D2A,),
-)
 
 
 def local_tolerance(ar: Arithmetic, gap: Scalar) -> float:
@@ -190,3 +164,6 @@ def require_f_range(name: str, log_f: list[float], value: int) -> None:
             value,
             "the conformal points leave the float64 range of the checks; use precision=mp",
         )
+
+
+__all__ = ["SHARED_D1", "SHARED_D3", "SHARED_EQUATION_2"]

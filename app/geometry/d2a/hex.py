@@ -15,6 +15,21 @@ from typing import Any, cast
 import numpy as np
 
 from app.geometry import conditions
+from app.geometry.catalog.section4 import (
+    HEX_EQUATION_10 as EQUATION_10,
+)
+from app.geometry.catalog.section4 import (
+    HEX_START_HEIGHT as START_HEIGHT,
+)
+from app.geometry.catalog.section4 import (
+    HEX_THEOREM_2 as THEOREM_2,
+)
+from app.geometry.catalog.section4 import (
+    HEX_THEOREM_3_EVEN as THEOREM_3_EVEN,
+)
+from app.geometry.catalog.section4 import (
+    HEX_THEOREM_3_ODD as THEOREM_3_ODD,
+)
 from app.geometry.checks import Check, Statement, not_applicable, relative_to
 from app.geometry.curve import Curve, DiscretizationInfo, require_range
 from app.geometry.d2a import closed_forms as cf
@@ -39,63 +54,6 @@ from app.geometry.polygon import area_magnitude, second_difference, signed_areas
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 
 S = Statement
-ONLY_AT_R_STAR = (
-    "Holds only for the start height r* of the proof of Theorem 2 (with the denominator "
-    "corrected, E44), the default of r; and unlike (2), c_1 and c_2 need not be positive "
-    "(docs/errata.md, Section 4.1)."
-)
-R_ANY = (
-    "Holds for every start height r: (10) and the constants of (11) do not depend on r (the "
-    "proof says so), while (7) itself needs r = r* (E44)."
-)
-HEX_RANGE = (
-    "0 < a < b and 0 < λ < 1 (at a = b, λ = 0 or 1 two consecutive f_i coincide and the dual "
-    "edge is infinite); every r (p_0 = (0, r))."
-)
-THEOREM_2 = S(
-    "theorem-2",
-    "Theorem 2, eq. (7)",
-    "Δ²p_i^y = c_1 A_i + c_2 A_{i+1} (i even), c_2 A_i + c_1 A_{i+1} (i odd) with constants "
-    "c_1, c_2 (constants.c1, c2: least squares) equal to those of (11) (constants.c1_eq11, "
-    "c2_eq11). True exactly for r = r* (constants.r_theorem_2); for any other r (7) fails. "
-    "Residual: the larger of the residuals of (7) with the fitted constants and with those of "
-    "(11), each relative to the magnitude of the coordinates it is computed from. The "
-    "erratum's printed residual is that of (2), which Section 4.1 attributes to Theorem 2.",
-    conditions=(ONLY_AT_R_STAR,),
-)
-START_HEIGHT = S(
-    "theorem-2-start-height",
-    "Proof of Theorem 2, the choice of r",
-    "r* = [3a³(λ−1)² − 5a²b(λ−1)λ + 2ab²λ² − b(λ−3)] / [2λ(λ−1)(a−b)²] is the start height for "
-    "which (7) holds (printed with the denominator [2λ(λ−1)a − b]², E44): the polygon moved "
-    "vertically by r* − r satisfies (7) with c_1, c_2 of (11). Holds for every r. Residual: as "
-    "for (7), on the moved polygon.",
-    conditions=(R_ANY,),
-)
-EQUATION_10 = S(
-    "equation-10",
-    "Proof of Theorem 2, eqs. (10) and (11)",
-    "Δ³p_i^y = c (A_{i+2} − A_i) with c = c_1 for even i and c = c_2 for odd i, c_1, c_2 from "
-    "(11); for every r. Residual: largest |Δ³p_i^y − c(A_{i+2} − A_i)| relative to the magnitude "
-    "of the heights and areas it is computed from.",
-    conditions=(R_ANY,),
-)
-THEOREM_3_EVEN = S(
-    "theorem-3-even",
-    "Theorem 3, eq. (8)",
-    "For even i, p_i = (i(a(λ−6)(λ−1) − b(λ−5)λ)/(4λ(a−b)(λ−1)), r + (a^{−i/2} − b^{−i/2})"
-    "(a^{i/2}b(λ−3) + ab^{i/2}(3a(λ−1) − 2bλ)(a(λ−1) − bλ))/(2λ(a−b)²(λ−1))) (the printed "
-    "p_i^y has the factor b^{−i/2} − a^{−i/2}, E43). Residual: largest |p_i − closed form| / "
-    "|closed form|.",
-    conditions=(HEX_RANGE,),
-)
-THEOREM_3_ODD = S(
-    "theorem-3-odd",
-    "Theorem 3, eq. (9)",
-    "For odd i, p_i is given by (9) as printed. Residual: largest |p_i − closed form| / "
-    "|closed form|.",
-    conditions=(HEX_RANGE,),
-)
 
 STATEMENTS: tuple[Statement, ...] = (
     THEOREM_2,

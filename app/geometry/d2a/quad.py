@@ -15,6 +15,36 @@ from typing import Any
 import numpy as np
 
 from app.geometry import conditions
+from app.geometry.catalog.section4 import (
+    QUAD_AREA_SUM as AREA_SUM,
+)
+from app.geometry.catalog.section4 import (
+    QUAD_DUAL_EDGE as DUAL_EDGE,
+)
+from app.geometry.catalog.section4 import (
+    QUAD_EQUATION_5 as EQUATION_5,
+)
+from app.geometry.catalog.section4 import (
+    QUAD_GAUSS_EDGE as GAUSS_EDGE,
+)
+from app.geometry.catalog.section4 import (
+    QUAD_GAUSS_NORM as GAUSS_NORM,
+)
+from app.geometry.catalog.section4 import (
+    QUAD_HEIGHTS as HEIGHTS,
+)
+from app.geometry.catalog.section4 import (
+    QUAD_SECOND_DIFFERENCE as SECOND_DIFFERENCE,
+)
+from app.geometry.catalog.section4 import (
+    QUAD_START_HEIGHT as START_HEIGHT,
+)
+from app.geometry.catalog.section4 import (
+    QUAD_THEOREM_1 as THEOREM_1,
+)
+from app.geometry.catalog.section4 import (
+    QUAD_X_STEP as X_STEP,
+)
 from app.geometry.checks import Check, Statement, relative_to
 from app.geometry.curve import Curve, DiscretizationInfo, require_range
 from app.geometry.d2a import closed_forms as cf
@@ -40,100 +70,6 @@ from app.geometry.polygon import area_magnitude, second_difference, signed_areas
 from app.geometry.precision import Arithmetic, Array, Scalar
 
 S = Statement
-ONLY_AT_R_STAR = (
-    "Holds only for the start height r = r* = −f_1(1 + f_0²)/(2(f_1 − f_0)²), which the proof "
-    "calls 'that special r' without writing it out; r* is the default of r (docs/errata.md, "
-    "Section 4.1)."
-)
-CONVENTIONS = (
-    "Conventions the proof relies on without stating them: φ_i = Φ(f_i) with Φ(f) = "
-    "(f² − 1, 2f)/(f² + 1) (projection from (1, 0, 0) restricted to the y-axis); the first "
-    "coordinate is the axis x, the second the distance y; Δφ_i = φ_{i+1} − φ_i; p_0 = (0, r). "
-    "With them (4) has constant x-steps and the polygon lies below the axis, as (5) says."
-)
-SPECIAL_R = (
-    "r* = −f_1(1 + f_0²)/(2(f_1 − f_0)²) is (5) at i = 1, the proof's 'special r' (never "
-    "written out); other r move the polygon vertically, and Theorem 1 then fails."
-)
-THEOREM_1 = S(
-    "theorem-1",
-    "Theorem 1, eq. (2)",
-    "Δ²p_i^y = c (A_i + A_{i+1}) with one constant c (constants.eq2, least squares) equal to "
-    "4(f_1 − f_0)³/(f_0 + f_1)³ > 0 (constants.c_theorem_1; the printed c has the wrong sign, "
-    "E42). True exactly for r = r* (constants.r_theorem_1): for any other r the polygon is the "
-    "same one moved vertically, and (2) fails. Residual: the larger of the residuals of (2) with "
-    "the fitted c and with c_theorem_1, each relative to the magnitude of the coordinates it is "
-    "computed from (docs/checks.md).",
-    conditions=(ONLY_AT_R_STAR,),
-)
-START_HEIGHT = S(
-    "theorem-1-start-height",
-    "Proof of Theorem 1, eq. (5) at i = 1",
-    "r* = −f_1(1 + f_0²)/(2(f_1 − f_0)²) is the start height p_0^y for which (2) holds: the "
-    "polygon moved vertically by r* − r satisfies (2) with c = 4(f_1 − f_0)³/(f_0 + f_1)³. "
-    "Holds for every r. Residual: as for theorem-1's fit, on the moved polygon.",
-    conditions=(SPECIAL_R,),
-)
-GAUSS_EDGE = S(
-    "theorem-1-gauss-edge",
-    "Proof of Theorem 1, Δφ_{i−1}",
-    "φ_i − φ_{i−1} = −2(f_{i−1} − f_i)/((f_{i−1}² + 1)(f_i² + 1)) · (f_{i−1} + f_i, "
-    "1 − f_{i−1}f_i), with φ_i = Φ(f_i) (x: symmetry axis, y: distance from it). Residual: "
-    "largest |Δφ − formula| / |formula|.",
-    conditions=(CONVENTIONS,),
-)
-GAUSS_NORM = S(
-    "theorem-1-gauss-edge-norm",
-    "Proof of Theorem 1, ‖Δφ_{i−1}‖²",
-    "‖φ_i − φ_{i−1}‖² = 4(f_{i−1} − f_i)²/((f_{i−1}² + 1)(f_i² + 1)). Residual: largest "
-    "relative difference.",
-    conditions=(CONVENTIONS,),
-)
-DUAL_EDGE = S(
-    "theorem-1-dual-edge",
-    "Proof of Theorem 1, Δp_{i−1}",
-    "p_i − p_{i−1} = −(f_{i−1} + f_i, 1 − f_{i−1}f_i)/(2(f_{i−1} − f_i)). Residual: largest "
-    "|Δp − formula| relative to the magnitude of p_{i−1}, p_i (docs/checks.md).",
-    conditions=(CONVENTIONS,),
-)
-X_STEP = S(
-    "theorem-1-x-step",
-    "Proof of Theorem 1, the x-step d",
-    "p_i^x − p_{i−1}^x = d = (f_{i−1} + f_i)/(2(f_i − f_{i−1})) = (f_0 + f_1)/(2(f_1 − f_0)) for "
-    "every i (constants.x_step). Residual: largest |Δp^x − d| relative to the magnitude of "
-    "p_{i−1}, p_i.",
-    conditions=(CONVENTIONS,),
-)
-SECOND_DIFFERENCE = S(
-    "theorem-1-second-difference",
-    "Proof of Theorem 1, Δ²p_{i−1}",
-    "p_{i+1} − 2p_i + p_{i−1} = (0, −(f_i² + 1)/(2f_i)) (printed without the minus sign, E41). "
-    "Residual: largest |Δ²p − formula| relative to |p_{i−1}| + 2|p_i| + |p_{i+1}| (coordinates).",
-    conditions=(CONVENTIONS,),
-)
-EQUATION_5 = S(
-    "equation-5",
-    "Proof of Theorem 1, eq. (5)",
-    "With r = r*, p_{i−1}^y = −(f_i + f_{i−1}²f_i)/(2(f_{i−1} − f_i)²) for every i. Residual: "
-    "largest relative difference. Holds only for r = r* (by its definition).",
-    conditions=(ONLY_AT_R_STAR,),
-)
-HEIGHTS = S(
-    "theorem-1-heights",
-    "Proof of Theorem 1, p_i^y and p_{i+1}^y",
-    "With r = r*, p_i^y = −(f_{i−1} + f_{i−1}f_i²)/(2(f_{i−1} − f_i)²) and p_{i+1}^y = "
-    "−(f_{i−1}² + f_i⁴)/(2f_i(f_{i−1} − f_i)²) for every i. Residual: largest relative "
-    "difference of the two. Holds only for r = r*.",
-    conditions=(ONLY_AT_R_STAR,),
-)
-AREA_SUM = S(
-    "theorem-1-area-sum",
-    "Proof of Theorem 1, A_{i−1} + A_i",
-    "With r = r*, A_{i−1} + A_i = (f_{i−1} + f_i)³(1 + f_i²)/(8f_i(f_{i−1} − f_i)³) (signed "
-    "areas; negative, the polygon lies below the x-axis). Residual: largest difference relative "
-    "to the magnitude of the areas. Holds only for r = r*.",
-    conditions=(ONLY_AT_R_STAR,),
-)
 
 STATEMENTS: tuple[Statement, ...] = (
     THEOREM_1,

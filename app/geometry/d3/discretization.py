@@ -16,6 +16,9 @@ from typing import Any, Literal
 import numpy as np
 
 from app.geometry import properties
+from app.geometry.catalog.section3 import (
+    D3_CLOSED_FORM as CLOSED_FORM,
+)
 from app.geometry.checks import (
     Check,
     Statement,
@@ -34,20 +37,6 @@ Method = Literal["construction", "closed-form"]
 #: Float64 results keep every coordinate below this size (checks multiply two coordinates).
 FLOAT64_COORDINATE_LIMIT = 1e150
 
-CLOSED_FORM_RANGE = (
-    "Derived here (not in the paper) for a polygon that does not fold back, with spacing "
-    "0 < δ < 2c and y0 >= a = √(c² − δ²/4). Next to the lowest point (v near 0) the step is "
-    "ill-conditioned by nature (dw/dy = sinh(v ± 2D)/sinh v): the tolerance allows 1/v_min."
-)
-CLOSED_FORM = Statement(
-    "d3-closed-form",
-    "Section 3, (D3) with constant spacing: closed form (derived here, not in the paper)",
-    "p_i = (iδ, a cosh(v_0 ± 2iD)) with tanh D = δ/(2c), a = √(c² − δ²/4), cosh v_0 = y_0/a "
-    "(v_0 ≥ 0), + for branch=up and − for branch=down: the catenary of amplitude a sampled every "
-    "2D of its argument. Residual: largest |p_i − closed form| / |closed form|; near the "
-    "lowest point (argument v_min) rounding grows like 1/v_min and the tolerance allows it.",
-    conditions=(CLOSED_FORM_RANGE,),
-)
 
 STATEMENTS: tuple[Statement, ...] = (
     properties.D3,

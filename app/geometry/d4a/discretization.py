@@ -17,6 +17,27 @@ from typing import Any, Literal
 import numpy as np
 
 from app.geometry import darboux, properties
+from app.geometry.catalog.section3 import (
+    D4A_ARC_LENGTH as ARC_LENGTH,
+)
+from app.geometry.catalog.section3 import (
+    D4A_CLOSED_FORM as CLOSED_FORM,
+)
+from app.geometry.catalog.section3 import (
+    D4A_DARBOUX as DARBOUX,
+)
+from app.geometry.catalog.section3 import (
+    D4A_DARBOUX_DISTANCE as DARBOUX_DISTANCE,
+)
+from app.geometry.catalog.section3 import (
+    D4A_NIKOLAIDES as NIKOLAIDES,
+)
+from app.geometry.catalog.section3 import (
+    D4A_ROTATION as ROTATION,
+)
+from app.geometry.catalog.section3 import (
+    D4A_STICKS as STICKS,
+)
 from app.geometry.checks import (
     Check,
     Erratum,
@@ -44,86 +65,6 @@ FLOAT64_COORDINATE_LIMIT = 1e150
 FLOAT64_MIN_STEP_RATIO = 1e-3
 
 S = Statement
-CUSP = (
-    "'d_i on the previous stick for all i ∈ Z' is impossible (E20): sin β_i = (1 − s/h)^i "
-    "sin β_0 would exceed 1. The pursuit runs away from a cusp stick c on both sides: d_i lies "
-    "on stick i − 1 for i > c and on stick i + 1 for i < c, and the tractrix folds back there "
-    "(d_{c−1} = d_{c+1}); for a vertical stick 0, c = 0."
-)
-DARBOUX_SIDES = (
-    "e_i reflects x_i in the midpoint of the tractrix edge that lies on stick i: d_i d_{i+1} "
-    "after the cusp, d_{i−1} d_i before it (E21); the constant |x_i − e_i| = 2h − s is not "
-    "printed."
-)
-INDEXING = (
-    "Index convention: p_i is the centre of the rotation from stick i to stick i + 1 (the "
-    "symmetry lines of the tractrix edges on sticks i and i + 1 meet there); it lies over the "
-    "midpoint of x_i x_{i+1}, so the x-spacing of p is not constant, unlike (D4b)'s."
-)
-RESOLUTION = (
-    "Consecutive symmetry lines meet at an angle of about (s/h) sin β, so p is resolved to "
-    "about ⌈h/s⌉ + (sticks walked) units of rounding: float64 requests need s/h >= 10⁻³ (use "
-    "precision=mp below)."
-)
-STICKS = S(
-    "d4a-sticks",
-    "Section 3, (D4a) and Figure 3",
-    "Every stick has length h and its end x_i on the x-axis, and the tractrix edge it carries "
-    "lies on it with its far end at distance h − s from x_i: d_{i+1} on stick i for i ≥ c, "
-    "d_{i−1} on stick i for i < c (c the cusp stick; see the d4a description). Residual: "
-    "largest of | |d_i − x_i| − h |, |x_i^y| and the distance of the far end from "
-    "x_i + (h − s)(d_i − x_i)/|d_i − x_i|, relative to the magnitude of the points.",
-    conditions=(CUSP,),
-)
-ARC_LENGTH = S(
-    "d4a-arc-length",
-    "Section 3, (D4a) and Figure 3: discrete arc length",
-    "|d_{i+1} − d_i| = s for every i: the tractrix is parametrized by arc length. Residual: "
-    "largest | |d_{i+1} − d_i| − s |, relative to the magnitude of the two points.",
-    conditions=(CUSP,),
-)
-DARBOUX = S(
-    "darboux-d4a",
-    "Section 3, (D4a): Darboux transform",
-    "e_i, the reflection of x_i in the midpoint of the tractrix edge on stick i, has "
-    "|e_{i+1} − e_i| = |x_{i+1} − x_i|. Residual: largest difference of the edge lengths, "
-    "relative to the magnitude of the four points.",
-    conditions=(DARBOUX_SIDES,),
-)
-DARBOUX_DISTANCE = S(
-    "darboux-d4a-distance",
-    "Section 3, (D4a): Darboux transform",
-    "|x_i − e_i| is the same for every i, namely 2h − s. Residual: largest | |x_i − e_i| − "
-    "(2h − s) |, relative to the magnitude of x_i and e_i.",
-    conditions=(DARBOUX_SIDES,),
-)
-ROTATION = S(
-    "rotation-centre-d4a",
-    "Section 3, (D4a): p_i as a centre of rotation",
-    "p_i is the centre of the rotation taking stick i to stick i+1: |p_i − x_i| = "
-    "|p_i − x_{i+1}|, |p_i − d_i| = |p_i − d_{i+1}|, and the angle from x_i to x_{i+1} about p_i "
-    "equals the angle from d_i to d_{i+1}. Residual: largest of the distance differences "
-    "(relative to the magnitude of the points) and the angle difference (radians).",
-    conditions=(INDEXING, RESOLUTION),
-)
-NIKOLAIDES = S(
-    "nikolaides-d4a",
-    "Section 3, (D4a) and (S4): construction of Nikolaides",
-    "The symmetry axis of x_i and x_{i+1} passes through p_i: p_i^x = (x_i^x + x_{i+1}^x)/2. "
-    "Residual: largest |p_i^x − (x_i^x + x_{i+1}^x)/2|, relative to the magnitude of the points.",
-    conditions=(INDEXING, RESOLUTION),
-)
-CLOSED_FORM = S(
-    "d4a-closed-form",
-    "Section 3, (D4a): explicit form (derived here, not in the paper)",
-    "With k = 1 − s/h and the cusp stick c: sin β_i = sin β_c k^{|i − c|}, d_i = x_i + "
-    "h(cos β_i, sin β_i), x_{i+1} − x_i = h(k cos β_i − cos β_{i+1}) for i ≥ c and "
-    "h(cos β_i − k cos β_{i+1}) for i < c (partial sums from x_0 = 0), and p_i = ((x_i + "
-    "x_{i+1})/2, (h − s/2 − (x_{i+1} − x_i) cos β_i / 2)/sin β_i). Residual: largest "
-    "|computed − explicit| over p_i (relative to |p_i|) and d_i (relative to the magnitude of "
-    "d_i and x_i).",
-    conditions=(RESOLUTION,),
-)
 
 STATEMENTS: tuple[Statement, ...] = (
     STICKS,

@@ -20,6 +20,30 @@ from typing import Any
 import numpy as np
 
 from app.geometry import gauss_image
+from app.geometry.catalog.section5 import (
+    D4B_EQUATION_18 as EQUATION_18,
+)
+from app.geometry.catalog.section5 import (
+    D4B_EQUATION_18_SLOPE as EQUATION_18_SLOPE,
+)
+from app.geometry.catalog.section5 import (
+    D4B_EQUATION_19 as EQUATION_19,
+)
+from app.geometry.catalog.section5 import (
+    D4B_EQUATION_19_ROTATION as EQUATION_19_ROTATION,
+)
+from app.geometry.catalog.section5 import (
+    D4B_EQUATION_20 as EQUATION_20,
+)
+from app.geometry.catalog.section5 import (
+    D4B_EQUATION_20_INVERSION as EQUATION_20_INVERSION,
+)
+from app.geometry.catalog.section5 import (
+    D4B_THEOREM_7 as THEOREM_7,
+)
+from app.geometry.catalog.section5 import (
+    D4B_THEOREM_8 as THEOREM_8,
+)
 from app.geometry.checks import (
     Check,
     Erratum,
@@ -35,7 +59,6 @@ from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 from app.geometry.surfaces.ring_curvature import (
     EQUATION_17,
-    SIGN_CONVENTION,
     constant_curvature_residuals,
     equation_17_check,
     minimal_residuals,
@@ -43,101 +66,6 @@ from app.geometry.surfaces.ring_curvature import (
 )
 
 S = Statement
-FIRST_NORMAL = (
-    "The inscribed Gauss images parallel to the tractrix are a one-parameter family (the "
-    "choice of n_0); Theorem 7 needs n_0 = (±1, 0), the normal of the vertical stick 0 "
-    "(another n_0 zig-zags and K is not constant). For a tilted first stick (an extension) "
-    "the service starts at the unit normal of stick 0, and Theorem 7 holds for every β0."
-)
-VERTICAL_STICK = (
-    "The closed forms (18)–(20) assume a vertical first stick (d_0^y = p_1^y = h), as (14) and "
-    "(16) do; for a tilted one the service evaluates them at the shifted index i + τ."
-)
-SLOPE_SIGN = (
-    "k_{i+1} = (p_{i+1}^y − p_i^y)/2d is the slope of the edge p_i p_{i+1} (12); n_i has its "
-    "sign, which the printed square roots drop (E61)."
-)
-CONTACT_SIDE = (
-    "ñ_i is the unit normal of the edge p_i p_{i+1} on the side away from the axis; the "
-    "rotation by 90° relates the corrected (18) and (19) (E60, E62)."
-)
-POLE = (
-    "m_i needs the two edges at p_i (ñ_{i−1} and ñ_i): it is defined at interior vertices, so "
-    "the service builds p one index beyond each end of the range."
-)
-APPROXIMATES_SPHERE = (
-    "|m_i|² = 1 + (d²/(h² − d²)) sech²((i − ½)L) > 1: the Gauss image lies outside the sphere "
-    "and approaches it as d → 0, as the text says ('approximates a sphere')."
-)
-ZERO_OVER_ZERO = (
-    "(17) is 0/0 on the ring between p_0 = (−d, h) and p_1 = (d, h) (equal heights); the "
-    "mixed-area definition still gives H = 0 there, and the check evaluates every face."
-)
-EQUATION_18 = S(
-    "equation-18",
-    "Section 5, eq. (18)",
-    "The Gauss image of the pseudosphere, built as the polygon inscribed in the unit circle with "
-    "edges parallel to the tractrix and n_0 = (1, 0), is n_i = (2(h−d)^i(h+d)^i, "
-    "(h+d)^{2i} − (h−d)^{2i}) / ((h−d)^{2i} + (h+d)^{2i}) (corrected sign; see erratum). "
-    "Residual: largest |n_i − closed form|.",
-    conditions=(FIRST_NORMAL, VERTICAL_STICK),
-)
-EQUATION_18_SLOPE = S(
-    "equation-18-slope",
-    "Section 5, eq. (18), first form",
-    "n_i lies on the line through the centre with the slope k_{i+1} = (p_{i+1}^y − p_i^y)/2d "
-    "of the edge p_i p_{i+1}: n_i = (1, k_{i+1})/√(1 + k_{i+1}²). Residual: largest |n_i − that|.",
-    conditions=(SLOPE_SIGN,),
-)
-EQUATION_19 = S(
-    "equation-19",
-    "Section 5, eq. (19)",
-    "The contact points ñ_i (unit normals of the edges p_i p_{i+1}) are ñ_i = ((h−d)^{2i} − "
-    "(h+d)^{2i}, 2(h−d)^i(h+d)^i) / ((h−d)^{2i} + (h+d)^{2i}) (corrected sign; see erratum). "
-    "Residual: largest |ñ_i − closed form|.",
-    conditions=(CONTACT_SIDE, VERTICAL_STICK),
-)
-EQUATION_19_ROTATION = S(
-    "equation-19-rotation",
-    "Section 5, before eq. (19)",
-    "The contact points are the points of (18) rotated by 90 degrees: ñ_i = (−n_i^y, n_i^x). "
-    "Residual: largest |ñ_i − (−n_i^y, n_i^x)| (ñ from the catenoid, n from the tractrix).",
-    conditions=(CONTACT_SIDE,),
-)
-EQUATION_20_INVERSION = S(
-    "equation-20-inversion",
-    "Proof of Theorem 8, eq. (20), first form",
-    "m_i, the pole of the chord ñ_{i−1} ñ_i (intersection of the tangents), equals "
-    "2(ñ_{i−1} + ñ_i)/|ñ_{i−1} + ñ_i|², the midpoint of the chord inverted in the unit circle. "
-    "Residual: largest |m_i − that| / |that|.",
-    conditions=(POLE,),
-)
-EQUATION_20 = S(
-    "equation-20",
-    "Proof of Theorem 8, eq. (20)",
-    "With A = (h+d)^{2i} − (h−d)^{2i}, B = (h−d)^{2i} + (h+d)^{2i}: m_i = (dB − hA, "
-    "2h(h²−d²)^i) / (hB − dA) (corrected; see erratum), so m_i^y = h / p_i^y. "
-    "Residual: largest |m_i − closed form| / |closed form|.",
-    conditions=(POLE, APPROXIMATES_SPHERE, VERTICAL_STICK),
-)
-THEOREM_7 = S(
-    "theorem-7",
-    "Theorem 7",
-    "The pseudosphere generated by the tractrix has K = −1/h² on every face with respect to the "
-    "Gauss image generated by n (mixed-area definition, three-dimensional faces), and the faces "
-    "are parallel. Residual: the larger of |A(n) + A(f)/h²| and the parallelism defect, both "
-    "relative to the magnitudes of the areas.",
-    conditions=(SIGN_CONVENTION, FIRST_NORMAL),
-)
-THEOREM_8 = S(
-    "theorem-8",
-    "Theorem 8",
-    "The catenoid (15) generated by p has H = 0 on every face with respect to the Gauss image "
-    "generated by m (mixed-area definition, three-dimensional faces; includes the face where "
-    "(17) is 0/0), and the faces are parallel. Residual: the larger of |A(f, m)| and the "
-    "parallelism defect, relative to the magnitudes of the areas.",
-    conditions=(SIGN_CONVENTION, ZERO_OVER_ZERO),
-)
 
 STATEMENTS: tuple[Statement, ...] = (
     EQUATION_17,

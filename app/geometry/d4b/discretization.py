@@ -15,6 +15,42 @@ from typing import Any, Literal
 import numpy as np
 
 from app.geometry import conditions, darboux, nikolaides
+from app.geometry.catalog.section3 import (
+    D4B_DARBOUX as DARBOUX,
+)
+from app.geometry.catalog.section3 import (
+    D4B_DARBOUX_DISTANCE as DARBOUX_DISTANCE,
+)
+from app.geometry.catalog.section3 import (
+    D4B_NIKOLAIDES as NIKOLAIDES,
+)
+from app.geometry.catalog.section4 import (
+    D4B_HYPOTHESIS as HYPOTHESIS,
+)
+from app.geometry.catalog.section4 import (
+    D4B_RECURSION_13 as RECURSION_13,
+)
+from app.geometry.catalog.section4 import (
+    D4B_ROTATION_ANGLE as ROTATION_ANGLE,
+)
+from app.geometry.catalog.section4 import (
+    D4B_THEOREM_4_I as THEOREM_4_I,
+)
+from app.geometry.catalog.section4 import (
+    D4B_THEOREM_4_II as THEOREM_4_II,
+)
+from app.geometry.catalog.section4 import (
+    D4B_THEOREM_4_III as THEOREM_4_III,
+)
+from app.geometry.catalog.section4 import (
+    D4B_THEOREM_5 as THEOREM_5,
+)
+from app.geometry.catalog.section4 import (
+    D4B_THEOREM_6 as THEOREM_6,
+)
+from app.geometry.catalog.section4 import (
+    D4B_TWO_STEP as TWO_STEP,
+)
 from app.geometry.checks import (
     Check,
     Erratum,
@@ -47,130 +83,6 @@ FLOAT64_COORDINATE_LIMIT = 1e150
 RESOLUTION_MARGIN = 100
 
 S = Statement
-HYPOTHESIS_NEEDLESS = (
-    "Stated needlessly for (D4b): every (D4b) polygon has p_{i−1}^y p_i^y >= h² > d², for every "
-    "0 < d < h and every first stick; the condition matters only for sequences that merely "
-    "satisfy (13) (docs/errata.md, Section 3, implicit conditions)."
-)
-HYPOTHESIS_ALWAYS = (
-    "Theorem 4's hypothesis d² < p_{i−1}^y p_i^y always holds for (D4b) (theorem-4-hypothesis), "
-    "so the statement holds for every 0 < d < h."
-)
-VERTICAL_START = (
-    "Assumes a vertical first stick (d_0^y = p_1^y = h). For a first stick at angle beta0 the "
-    "construction is the vertical one shifted by the index τ = ln(tan(β0/2))/L, and the service "
-    "checks the formula at i + τ (an extension; docs/errata.md, Section 3)."
-)
-LOCAL_NUMBERING = (
-    "The proof numbers the axis points locally, shifted by one against Section 3 and Theorem 5: "
-    "with Theorem 5's indexing (p_i^x = (2i − 1)d) α_i is the angle at p_i between the lines to "
-    "x_{i−1} and x_i (E1)."
-)
-RECURSION_DENOMINATOR = (
-    "For (D4b) polygons the denominator p_{i−1}^y p_i^y − d² is always >= h² − d² > 0; for "
-    "sequences that merely satisfy (13) it must not vanish (Theorem 4's hypothesis)."
-)
-CENTRE_INDEX = (
-    "Index convention (Theorem 5): p_i is the centre of the rotation from stick i − 1 to stick "
-    "i, over the midpoint of x_{i−1} and x_i, so the reflection axis of x_{i−1} and x_i passes "
-    "through p_i."
-)
-POINT_REFLECTION = (
-    "Here x_i is reflected in the tractrix point d_i itself (e_i = 2d_i − x_i, so |x_i − e_i| = "
-    "2h), not in an edge midpoint as in (D4a); the edges of e and x are equal because the "
-    "polygon is symmetric about the reflection axis of each tractrix edge, for every first "
-    "stick."
-)
-HYPOTHESIS = S(
-    "theorem-4-hypothesis",
-    "Theorem 4, hypothesis",
-    "d² < p_{i−1}^y p_i^y for every i. Residual: largest max(0, d² − p_{i−1}^y p_i^y)/d². "
-    "Every (D4b) polygon satisfies it, since p_{i−1}^y p_i^y ≥ h² > d² (see docs/errata.md).",
-    conditions=(HYPOTHESIS_NEEDLESS,),
-)
-THEOREM_4_I = S(
-    "theorem-4-i",
-    "Theorem 4 (i), (D1)",
-    "Δ²p_i^y = c (l_i + l_{i+1}) with one constant c > 0 (constants.d1, least-squares fit). "
-    "Residual: largest |Δ²p_i^y − c(l_i + l_{i+1})|, relative to the magnitude of the "
-    "coordinates it is computed from (docs/checks.md).",
-    conditions=(HYPOTHESIS_ALWAYS,),
-)
-THEOREM_4_II = S(
-    "theorem-4-ii",
-    "Theorem 4 (ii), (D3)",
-    "A_i = c l_i with one constant c > 0 (constants.d3, least-squares fit). Residual: largest "
-    "|A_i − c l_i|, relative to the magnitude of the coordinates (docs/checks.md).",
-    conditions=(HYPOTHESIS_ALWAYS,),
-)
-THEOREM_4_III = S(
-    "theorem-4-iii",
-    "Theorem 4 (iii), eq. (2)",
-    "Δ²p_i^y = c (A_i + A_{i+1}) with one constant c > 0 (constants.eq2) and c = c_(D1)/c_(D3). "
-    "Residual: the larger of the residuals of (2) with the fitted c and with c = c_(D1)/c_(D3), "
-    "each as in theorem-4-i (a difference of the constants themselves would exceed what the "
-    "data resolve for small d/h).",
-    conditions=(HYPOTHESIS_ALWAYS,),
-)
-ROTATION_ANGLE = S(
-    "theorem-4-rotation-angle",
-    "Proof of Theorem 4",
-    "The rotation about p_i, which takes x_{i−1} to x_i, turns by α_i = 2 arctan(d/p_i^y). "
-    "Residual: largest |angle(x_{i−1} − p_i, x_i − p_i) − 2 arctan(d/p_i^y)|.",
-    conditions=(LOCAL_NUMBERING,),
-)
-RECURSION_13 = S(
-    "recursion-13",
-    "Proof of Theorem 4, eq. (13)",
-    "p_{i+1}^y = (p_i^y³ + 2d²p_i^y + d²p_{i−1}^y) / (p_i^y p_{i−1}^y − d²). "
-    "Residual: largest relative difference from the polygon's p_{i+1}^y.",
-    conditions=(RECURSION_DENOMINATOR,),
-)
-TWO_STEP = S(
-    "recursion-13-two-step",
-    "Proof of Theorem 4 (i), formula for p_{i+2}^y",
-    "p_{i+2}^y = (p_i⁵ + d²(p_{i−1}³ + 2p_{i−1}²p_i + 3p_{i−1}p_i² + 4p_i³) + d⁴(2p_{i−1} + 3p_i))"
-    " / (d² − p_{i−1}p_i)² (all heights p^y). Residual: largest relative difference.",
-    conditions=(RECURSION_DENOMINATOR,),
-)
-THEOREM_5 = S(
-    "theorem-5",
-    "Theorem 5, eq. (14)",
-    "The closed form p_i = ((2i−1)d, (h−d)^i/(2(h+d)^{i−1}) + (h+d)^i/(2(h−d)^{i−1})) equals the "
-    "constructed centres (for a tilted first stick: at the shifted index i + τ, see the "
-    "kinematic_closed_forms module). Residual: largest |p_i − closed form| / |closed form|.",
-    conditions=(VERTICAL_START,),
-)
-THEOREM_6 = S(
-    "theorem-6",
-    "Theorem 6, eq. (16)",
-    "The closed form (16) of the tractrix equals the constructed stick ends d_i. "
-    "Residual: largest |d_i − closed form| / |closed form|.",
-    conditions=(VERTICAL_START,),
-)
-DARBOUX = S(
-    "darboux-d4b",
-    "Section 3, (D4b): Darboux transform",
-    "e_i, the reflection of x_i in d_i, has |e_{i+1} − e_i| = |x_{i+1} − x_i| = 2d. "
-    "Residual: largest difference of the edge lengths, relative to the magnitude of the four "
-    "points (docs/checks.md).",
-    conditions=(POINT_REFLECTION,),
-)
-DARBOUX_DISTANCE = S(
-    "darboux-d4b-distance",
-    "Section 3, (D4b): Darboux transform",
-    "|x_i − e_i| is the same for every i, namely 2h. Residual: largest | |x_i − e_i| − 2h |, "
-    "relative to the magnitude of x_i and e_i (docs/checks.md).",
-    conditions=(POINT_REFLECTION,),
-)
-NIKOLAIDES = S(
-    "nikolaides-d4b",
-    "Section 3, (D4b) and (S4): construction of Nikolaides",
-    "The triangles x_i d_i p_i and x_i d_i p_{i+1} have a right angle at d_i: the edge p_i p_{i+1}"
-    " is the tractrix normal at d_i. Residual: largest |cos| of the angles at d_i, with the "
-    "vectors measured against the magnitude of their end points (docs/checks.md).",
-    conditions=(CENTRE_INDEX,),
-)
 
 STATEMENTS: tuple[Statement, ...] = (
     HYPOTHESIS,

@@ -15,6 +15,15 @@ from typing import Any
 import numpy as np
 
 from app.geometry import nikolaides
+from app.geometry.catalog.section2 import (
+    S4_EVOLUTE as EVOLUTE,
+)
+from app.geometry.catalog.section2 import (
+    S4_NIKOLAIDES as NIKOLAIDES,
+)
+from app.geometry.catalog.section2 import (
+    S4_PURSUIT as PURSUIT,
+)
 from app.geometry.checks import Check, Statement, check_residuals, point_distance
 from app.geometry.curve import Curve, Polyline
 from app.geometry.errors import NotRepresentableError
@@ -31,38 +40,6 @@ MP_ARGUMENT_LIMIT = 10.0**GUARD_DIGITS
 
 LOCAL_STEPS = 16
 
-LEADER = (
-    "The tractrix is parametrized by the leader's position x on the axis: d(x) = (x − h "
-    "tanh(x/h), h/cosh(x/h)), two branches meeting at the cusp d(0) = (0, h)."
-)
-CUSP = (
-    "At the cusp x = 0 the tangent vanishes (d'(0) = 0) and the centre of curvature is a "
-    "limit, (0, h): the check skips that point."
-)
-PURSUIT = Statement(
-    "tractrix-s4",
-    "Section 2, (S4): the tractrix as a pursuit curve",
-    "|d(x) − (x, 0)| = h and the tangent d'(x) points along the stick towards (x, 0). Residual: "
-    "largest of | |d − (x, 0)| − h | and |d' × ((x, 0) − d)|, relative to the magnitude of the "
-    "numbers involved.",
-    conditions=(LEADER,),
-)
-EVOLUTE = Statement(
-    "evolute-s4",
-    "Section 2, (S4): the evolute of the tractrix is the hyperbolic cosine",
-    "The centre of curvature q(x) = d + (|d'|²/(d' × d'')) J d', computed from the tractrix's "
-    "derivatives, equals (x, h cosh(x/h)). Residual: largest |q(x) − (x, h cosh(x/h))| relative "
-    "to the magnitude of the two points; the cusp x = 0 (where d' = 0) is skipped.",
-    conditions=(CUSP,),
-)
-NIKOLAIDES = Statement(
-    "nikolaides-s4",
-    "Section 2, (S4): construction of Nikolaides",
-    "The triangle (x, 0), q(x), d(x) has a right angle at d(x). Residual: largest |cos| of that "
-    "angle, with the vectors measured against the magnitude of their end points; the cusp is "
-    "skipped.",
-    conditions=(CUSP,),
-)
 
 STATEMENTS: tuple[Statement, ...] = (PURSUIT, EVOLUTE, NIKOLAIDES)
 

@@ -29,6 +29,12 @@ from dataclasses import replace
 
 import numpy as np
 
+from app.geometry.catalog.section6 import (
+    T11_LEMMA_10_PROOF as LEMMA_10_PROOF,
+)
+from app.geometry.catalog.section6 import (
+    T11_REMARK_13_UNIFORM as REMARK_13_UNIFORM,
+)
 from app.geometry.checks import (
     Check,
     Erratum,
@@ -61,38 +67,6 @@ Meridian = Callable[[Arithmetic, Array, int], Array]
 """The (D2b) construction the study measures (tests pass a perturbed one)."""
 
 S = Statement
-_REFINEMENT = (
-    "Checked by refinement (j_k = j0·2^k over the same parameter interval): residual = the "
-    "largest ratio e(2j)/e(j) of the sup errors of consecutive levels; holds when every "
-    "doubling of j shrinks the error by at least 2^(−1/2). Observed orders in the note."
-)
-REMARK_13_UNIFORM = S(
-    "remark-13-uniform",
-    "Remark 13 (with Theorem 11)",
-    "Remark 13 says that a bounded g' makes the convergence uniform, not only on compact sets. "
-    "Corrected (E66): what decides is ∫|u'|³ with u = artanh g, u' = g'/(1 − g²); for "
-    "s_i = i/(i + j) the convergence is uniform on every t >= t_0 > −½, in particular on i >= 0, "
-    "but not on the whole domain i > −j/2. Measures: `remark-13` and `remark-13-distance` on "
-    "the compact set (the corrected claim); the erratum's printed residual is the same ratio "
-    "for `remark-13-domain` (all vertices i > −j/2 up to 2^k i_max), about 1. " + _REFINEMENT,
-    conditions=(
-        "A bounded g' is not enough in general: g = tanh (g' <= 1, g(0) = 0, g' > 0) gives "
-        "u' = 1 and an error (i/j)/(6j²) that grows without bound in i for fixed j.",
-    ),
-)
-PROOF_PARAMETERS = (
-    "The sums need g and g' at the parameters t_k = k/j, not at the values s_k = g(t_k) (E65); "
-    "the proof's 'w.l.o.g. i > 0' covers i < 0 through the sum convention of Lemma 10 (E64)."
-)
-LEMMA_10_PROOF = S(
-    "lemma-10-proof",
-    "Proof of Lemma 10, the Riemann sums",
-    "For Example 12, the sums of the proof tend to the first component of c(t) = "
-    "(−artanh g(t), …) = ∫_0^t g'/(g² − 1): Σ_{k<i} g'(t_k)/(1 − g(t_k)²)(t_k − t_{k+1}) and "
-    "Σ_{k<i} (s_k − s_{k+1})/(1 − s_k²), with t_k = k/j (printed with g and g' evaluated at "
-    "s_k, E65). Measures `riemann-sum`, `difference-sum` (order 1). " + _REFINEMENT,
-    conditions=(PROOF_PARAMETERS,),
-)
 
 ERRATUM_REMARK_13 = (
     "E66",

@@ -37,6 +37,18 @@ from typing import Any
 
 import numpy as np
 
+from app.geometry.catalog.section6 import (
+    EQUATION_21,
+    INEQUALITY_22,
+    INTERPOLATION_14,
+    INTERPOLATION_15,
+    PROOF_15_X,
+    PROOF_15_Y,
+    REARRANGEMENT_14,
+    SUBSTITUTION_21,
+    THEOREM_14,
+    THEOREM_15,
+)
 from app.geometry.checks import (
     Check,
     Erratum,
@@ -264,129 +276,6 @@ def mp_work(h: float, d0: float, levels: int, x_max: float, samples: int) -> int
 
 # --- statements --------------------------------------------------------------------------------
 
-_VERTICAL = (
-    "Inherited from Theorems 5 and 6: the curve interpolates (14) and (16), which assume a "
-    "vertical first stick (d_0^y = p_1^y = h); the studies construct that polygon."
-)
-_REFINEMENT = (
-    "Checked by refinement (d_k = d0/2^k) on the compact set |x| <= x_max: residual = the "
-    "largest ratio e(d/2)/e(d) of the sup errors of consecutive levels; holds when every halving "
-    "of d shrinks the error by at least 2^(−1/2) (local order >= 1/2). Observed orders in the "
-    "note."
-)
-ORDER_21 = (
-    "(21) converges with order 1: (1 − d/h)^{(x+d)/(2d)} = e^{−x/(2h)}(1 − d/(2h) − xd/(4h²) "
-    "+ O(d²)); the first-order terms cancel between the two products of c(x), which converges "
-    "with order 2."
-)
-PROOF_SUBSTITUTION = (
-    "The substituted f(d), g(d) must carry the exponents (x + d)/(2d) resp. (x + d)/d (E80, "
-    "E81); then f(d), g(d) > 0 with positive limits e^{∓x/h}, as (22) requires."
-)
-THEOREM_14 = S(
-    "theorem-14",
-    "Theorem 14",
-    "The smooth curve c(x) through the vertices of (14) tends to the catenary x ↦ "
-    "(x, h cosh(x/h)) as d → 0, uniformly on compact sets. Measure: sup |c(x) − (x, h "
-    "cosh(x/h))| (`parametric`; observed order 2). " + _REFINEMENT,
-    conditions=(
-        "The proof shows convergence for each x (via (21)); uniformity on compact sets follows "
-        "from c(x) = (x, √(h² − d²) cosh(a x)) with a = artanh(d/h)/d = 1/h + O(d²), and on all "
-        "of R it fails: for fixed d the error grows without bound as |x| → ∞, so 'on compact "
-        "sets' is needed (docs/errata.md, Section 6).",
-        _VERTICAL,
-    ),
-)
-INTERPOLATION_14 = S(
-    "theorem-14-interpolation",
-    "Theorem 14",
-    "Theorem 14's c(x), as printed and in the form (x, √(h² − d²) cosh(a x)), passes through "
-    "the constructed (D4b) centres: c((2i − 1)d) = p_i at every level. Residual: largest "
-    "|c((2i − 1)d) − p_i| / |p_i|.",
-    conditions=(_VERTICAL,),
-)
-REARRANGEMENT_14 = S(
-    "theorem-14-rearrangement",
-    "Proof of Theorem 14",
-    "The rearranged c^y(x) = h(1 − d/h)^{(x+d)/(2d)}/(2(1 + d/h)^{(x−d)/(2d)}) + "
-    "h(1 + d/h)^{(x+d)/(2d)}/(2(1 − d/h)^{(x−d)/(2d)}) equals the printed c^y(x). Residual: "
-    "largest relative difference at the sample points of every level.",
-    conditions=(_VERTICAL,),
-)
-SUBSTITUTION_21 = S(
-    "equation-21-substitution",
-    "Proof of Theorem 14, eq. (21)",
-    "With d = x/D (x ≠ 0): (1 − d/h)^{(x+d)/(2d)} = (1 − x/(hD))^{D/2} (1 − x/(hD))^{1/2}. "
-    "Residual: largest relative difference at the sample points x ≠ 0 of every level.",
-    conditions=(
-        "The substitution needs x ≠ 0, and D = x/d → −∞ for x < 0; the limit is the same "
-        "(e^{−x/(2h)} at x = 0 too).",
-    ),
-)
-EQUATION_21 = S(
-    "equation-21",
-    "Proof of Theorem 14, eq. (21)",
-    "(1 − d/h)^{(x+d)/(2d)} → e^{−x/(2h)} as d → 0. Measure: its sup error on the compact set "
-    "(`equation-21`; observed order 1, while the symmetric combination in c(x) converges with "
-    "order 2). " + _REFINEMENT,
-    conditions=(ORDER_21,),
-)
-THEOREM_15 = S(
-    "theorem-15",
-    "Theorem 15",
-    "The smooth curve c(x) through the vertices of (16) tends to the tractrix x ↦ "
-    "(x − h tanh(x/h), h / cosh(x/h)) as d → 0, uniformly on all of R. Measure: sup |c(x) − "
-    "T(x)| at the same x (`parametric`, order 1; the distance from c(x) to the tractrix has "
-    "order 2, see the study). " + _REFINEMENT,
-    conditions=(
-        "The proof, via (22), shows convergence for each x; uniformity needs a bound "
-        "independent of x, which holds: c(x) − T(x) = (d − h(tanh(a(x+d)) − tanh(x/h)), "
-        "h/cosh(a(x+d)) − h/cosh(x/h)) with a = 1/h + O(d²) tends to (d, 0) as |x| → ∞, so "
-        "the global sup error is about d (order 1) (docs/errata.md, Section 6).",
-        "c passes through d_i at x = (2i − 1)d, while the stick of d_i meets the x-axis at "
-        "2di: c(x) ≈ T(x + d). So the same-parameter error has order 1 and the distance to the "
-        "curve order 2 (GET /convergence/theorem-15).",
-        _VERTICAL,
-    ),
-)
-INTERPOLATION_15 = S(
-    "theorem-15-interpolation",
-    "Theorem 15",
-    "Theorem 15's c(x), as printed and in the form (x + d − h tanh(a(x+d)), h / cosh(a(x+d))), "
-    "passes through the constructed (D4b) tractrix: c((2i − 1)d) = d_i at every level. "
-    "Residual: largest |c((2i − 1)d) − d_i| / |d_i|.",
-    conditions=(_VERTICAL,),
-)
-PROOF_15_Y = S(
-    "theorem-15-proof-y",
-    "Proof of Theorem 15, the y-component",
-    "2h/(f(d) + g(d)) = 2h(h² − d²)^{(x+d)/(2d)}/((h−d)^{(x+d)/d} + (h+d)^{(x+d)/d}) = c^y(x) "
-    "with f(d) = ((1 − d/h)/(1 + d/h))^{(x+d)/(2d)} and g(d) = 1/f(d) (printed without the "
-    "exponent, E80); then f(d) → e^{−x/h}, g(d) → e^{x/h} by (21) and (22) applies. Residual: "
-    "largest relative difference at the sample points of every level.",
-    conditions=(PROOF_SUBSTITUTION,),
-)
-PROOF_15_X = S(
-    "theorem-15-proof-x",
-    "Proof of Theorem 15, the x-component",
-    "(g(d) − f(d))/(g(d) + f(d)) = (x + d − c^x(x))/h with f(d) = (1 − d/h)^{(x+d)/d} and "
-    "g(d) = (1 + d/h)^{(x+d)/d} (printed without the exponent, E81); then f(d) → e^{−x/h}, "
-    "g(d) → e^{x/h} and (22) gives c^x(x) → x − h tanh(x/h). Residual: largest absolute "
-    "difference (both sides lie in [−1, 1]) at the sample points of every level.",
-    conditions=(PROOF_SUBSTITUTION,),
-)
-INEQUALITY_22 = S(
-    "inequality-22",
-    "Proof of Theorem 15, (22)",
-    "For f(d), g(d) > 0 with limits f, g > 0: 1/(f(d) + g(d)) → 1/(f + g) and (f(d) − g(d))/"
-    "(f(d) + g(d)) → (f − g)/(f + g), applied to the proof's f(d), g(d) (corrected, E80, E81) "
-    "with f = e^{−x/h}, g = e^{x/h}. Measures: the sup of both differences on the compact set "
-    "(`inequality-22-y`, `inequality-22-x`; order 1). " + _REFINEMENT,
-    conditions=(
-        "(22) holds for each x 'for sufficiently small d'; the smallness depends on x, so (22) "
-        "alone gives pointwise convergence, not the uniform convergence Theorem 15 states.",
-    ),
-)
 
 ERRATUM_PROOF_Y = (
     "E80",

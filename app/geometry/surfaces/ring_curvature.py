@@ -12,7 +12,10 @@ from typing import Any
 
 import numpy as np
 
-from app.geometry.checks import Check, Statement, check_residuals, not_applicable
+from app.geometry.catalog.section5 import (
+    RING_EQUATION_17 as EQUATION_17,
+)
+from app.geometry.checks import Check, check_residuals, not_applicable
 from app.geometry.curvature import FaceCurvatures, face_curvatures
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array
@@ -21,28 +24,6 @@ from app.geometry.surfaces.revolution_formulas import equation_17_residuals
 
 #: The faces used for the ring checks span the angle π/RING_M.
 RING_M = 16
-
-SIGN_CONVENTION = (
-    "The curvatures of [3] with K = A(n)/A(f) and H = −A(f,n)/A(f), all areas signed along "
-    "the normal of the face of f (the unit sphere with n = f has K = 1, H = −1): the paper does "
-    "not state the convention; with H = +A(f,n)/A(f) the H of (17) changes sign."
-)
-ZERO_OVER_ZERO = (
-    "(17) is 0/0 on faces whose meridian edge is parallel to the axis (p_{i+1}^y = p_i^y; the "
-    "Gauss image edge is then parallel too); the mixed-area definition still gives K = λ(n_i^y + "
-    "n_{i+1}^y)/(p_i^y + p_{i+1}^y) and H = −(λ + (n_i^y + n_{i+1}^y)/(p_i^y + p_{i+1}^y))/2 "
-    "there (λ the ratio of the parallel edges); the check skips such faces and counts them."
-)
-EQUATION_17 = Statement(
-    "equation-17",
-    "Section 5, eq. (17)",
-    "For surfaces of revolution, K = (n_{i+1}^y² − n_i^y²)/(p_{i+1}^y² − p_i^y²) and "
-    "H = (p_i^y n_i^y − p_{i+1}^y n_{i+1}^y)/(p_{i+1}^y² − p_i^y²) equal the curvatures "
-    "K = A(n)/A(f), H = −A(f,n)/A(f) of the mixed-area definition [3] on three-dimensional "
-    "faces (angle π/16). Residual: largest cross-multiplied difference relative to the size of "
-    "the terms; faces where (17) is 0/0 (p_{i+1}^y = p_i^y) are skipped and counted in the note.",
-    conditions=(SIGN_CONVENTION, ZERO_OVER_ZERO),
-)
 
 
 def ring_curvatures(ar: Arithmetic, meridian: Array, gauss: Array) -> FaceCurvatures:
