@@ -14,7 +14,7 @@ CHROMIUM ?= /usr/bin/chromium
 # root installs system packages directly; anyone else through sudo
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: run test lint openapi bench fuzz load install install-dev assets browser clean
+.PHONY: run test lint openapi paper-map bench fuzz load install install-dev assets browser clean
 
 # The runtime install: a virtual environment with every package pinned in requirements/runtime.txt.
 $(BIN)/.runtime-installed: requirements/runtime.txt pyproject.toml
@@ -67,6 +67,10 @@ lint: $(BIN)/.dev-installed
 
 openapi: $(BIN)/.runtime-installed
 	$(BIN)/python -m app.openapi_export openapi/openapi.json
+
+# docs/paper-map.md from the statement catalog and the source (a test fails on drift).
+paper-map: $(BIN)/.runtime-installed
+	$(BIN)/python scripts/paper_map.py docs/paper-map.md
 
 # A long schema-fuzzing run: thousands of generated requests per operation, new ones each run.
 fuzz: $(BIN)/.dev-installed

@@ -8,22 +8,22 @@ everything else from here.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from functools import cached_property
 
+from app.geometry.catalog import CATALOG, SECTION_OF
 from app.geometry.checks import Statement
-from app.geometry.curve import Curve, DiscretizationInfo
+from app.geometry.curve import ComputeCurve, Curve, DiscretizationInfo, DiscretizationModule
 from app.geometry.d1 import discretization as d1
-from app.geometry.d2a import hex as d2a_hex
-from app.geometry.d2a import quad as d2a_quad
+from app.geometry.d2a import hex as d2a_hex, quad as d2a_quad
 from app.geometry.d2b import discretization as d2b
 from app.geometry.d3 import discretization as d3
 from app.geometry.d4a import discretization as d4a
 from app.geometry.d4b import discretization as d4b
 from app.geometry.smooth import references as smooth_curves
-from app.geometry.studies import theorem_11 as catenoid_refinement
-from app.geometry.studies import tractrix as convergence
+from app.geometry.studies import theorem_11 as catenoid_refinement, tractrix as convergence
 from app.geometry.studies.tractrix import Study, StudyInfo
+from app.geometry.surfaces import rotational
 from app.schemas.common import CurveQuery, strict_body
 from app.schemas.convergence import (
     THEOREM_11_DESCRIPTION,
@@ -44,12 +44,19 @@ from app.schemas.smooth import CATENARY_DESCRIPTION, TRACTRIX_DESCRIPTION, Smoot
 
 @dataclass(frozen=True, eq=False)
 class Discretization:
-    """One discretization as the API serves it."""
+    """One discretization as the API serves it: its core module, request model, description."""
 
-    info: DiscretizationInfo
+    module: DiscretizationModule
     query: type[CurveQuery]
-    compute: Callable[..., Curve]
     description: str
+
+    @property
+    def info(self) -> DiscretizationInfo:
+        return self.module.INFO
+
+    @property
+    def compute(self) -> ComputeCurve:
+        return self.module.compute
 
     @cached_property
     def body(self) -> type[CurveQuery]:
@@ -58,13 +65,13 @@ class Discretization:
 
 
 _ENTRIES = (  # in the paper's order
-    Discretization(d1.INFO, D1Query, d1.compute, D1_DESCRIPTION),
-    Discretization(d2a_quad.INFO, D2aQuadQuery, d2a_quad.compute, D2A_QUAD_DESCRIPTION),
-    Discretization(d2a_hex.INFO, D2aHexQuery, d2a_hex.compute, D2A_HEX_DESCRIPTION),
-    Discretization(d2b.INFO, D2bQuery, d2b.compute, D2B_DESCRIPTION),
-    Discretization(d3.INFO, D3Query, d3.compute, D3_DESCRIPTION),
-    Discretization(d4a.INFO, D4aQuery, d4a.compute, D4A_DESCRIPTION),
-    Discretization(d4b.INFO, D4bQuery, d4b.compute, D4B_DESCRIPTION),
+    Discretization(d1, D1Query, D1_DESCRIPTION),
+    Discretization(d2a_quad, D2aQuadQuery, D2A_QUAD_DESCRIPTION),
+    Discretization(d2a_hex, D2aHexQuery, D2A_HEX_DESCRIPTION),
+    Discretization(d2b, D2bQuery, D2B_DESCRIPTION),
+    Discretization(d3, D3Query, D3_DESCRIPTION),
+    Discretization(d4a, D4aQuery, D4A_DESCRIPTION),
+    Discretization(d4b, D4bQuery, D4B_DESCRIPTION),
 )
 
 DISCRETIZATIONS: dict[str, Discretization] = {entry.info.id: entry for entry in _ENTRIES}
@@ -139,37 +146,57 @@ SMOOTH: dict[str, SmoothReference] = {entry.info.id: entry for entry in _SMOOTH}
 
 @dataclass(frozen=True)
 class StatementEntry:
-    """A statement and the discretizations (curve responses), studies or smooth references that
-    check it."""
+    """A statement of the catalog and what checks it: discretizations (curve responses), refinement
+    studies, smooth references and surfaces (mesh responses)."""
 
     statement: Statement
-    discretizations: tuple[str, ...]
+    section: str
+    discretizations: tuple[str, ...] = ()
     studies: tuple[str, ...] = ()
     smooth: tuple[str, ...] = ()
+    surfaces: tuple[str, ...] = ()
+
+
+#: The surfaces (GET /surfaces/{id}) and the statements their meshes are checked for.
+SURFACE_STATEMENTS: dict[str, tuple[Statement, ...]] = {
+    "catenoid": rotational.STATEMENTS["minimal"],
+    "catenoid-gauss-image": rotational.STATEMENTS["minimal"],
+    "pseudosphere": rotational.STATEMENTS["constant-curvature"],
+    "pseudosphere-gauss-image": rotational.STATEMENTS["constant-curvature"],
+}
 
 
 def _statements() -> dict[str, StatementEntry]:
-    found: dict[str, StatementEntry] = {}
-    sources = [(e.info.id, e.info.statements, "discretizations") for e in _ENTRIES]
-    sources += [(s.info.id, s.info.statements, "studies") for s in _STUDIES]
-    sources += [(s.info.id, s.info.statements, "smooth") for s in _SMOOTH]
-    for owner, statements, kind in sources:
-        for statement in statements:
-            known = found.get(statement.id) or StatementEntry(statement, ())
-            if kind == "discretizations":
-                known = replace(known, discretizations=(*known.discretizations, owner))
-            elif kind == "studies":
-                known = replace(known, studies=(*known.studies, owner))
-            else:
-                known = replace(known, smooth=(*known.smooth, owner))
-            found[statement.id] = known
-    # a property named after a discretization (d1, d3, ...) is checked on it by default
-    return {
-        key: replace(
-            entry, discretizations=tuple(sorted(entry.discretizations, key=lambda o: o != key))
-        )
-        for key, entry in found.items()
+    """Every statement of the catalog, in its order, with the sources that check it."""
+    sources: dict[str, dict[str, list[str]]] = {
+        key: {"discretizations": [], "studies": [], "smooth": [], "surfaces": []} for key in CATALOG
     }
+    owners: list[tuple[str, str, tuple[Statement, ...]]] = [
+        ("discretizations", e.info.id, e.info.statements) for e in _ENTRIES
+    ]
+    owners += [("studies", s.info.id, s.info.statements) for s in _STUDIES]
+    owners += [("smooth", s.info.id, s.info.statements) for s in _SMOOTH]
+    owners += [("surfaces", key, statements) for key, statements in SURFACE_STATEMENTS.items()]
+    for kind, owner, statements in owners:
+        for statement in statements:
+            if CATALOG.get(statement.id) is not statement:
+                raise ValueError(f"{owner} checks {statement.id!r}, which is not the catalog's")
+            sources[statement.id][kind].append(owner)
+    entries = {}
+    for key, statement in CATALOG.items():
+        found = sources[key]
+        # a property named after a discretization (d1, d3, ...) is checked on it by default
+        curves = tuple(sorted(found["discretizations"], key=lambda o: o != key))
+        entries[key] = StatementEntry(
+            statement,
+            SECTION_OF[key],
+            curves,
+            tuple(found["studies"]),
+            tuple(found["smooth"]),
+            tuple(found["surfaces"]),
+        )
+    return entries
 
 
 STATEMENTS: dict[str, StatementEntry] = _statements()
+"""The catalog (``app.geometry.catalog``) joined with what checks each statement."""

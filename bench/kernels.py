@@ -24,10 +24,11 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from app.geometry.d1 import closed_forms as d1_closed
-from app.geometry.d2a import closed_forms as d2a_closed
-from app.geometry.d2a import construction as christoffel
-from app.geometry.d2b import closed_forms as catenoid_convergence
-from app.geometry.d2b import construction as vanishing_mean_curvature
+from app.geometry.d2a import closed_forms as d2a_closed, construction as christoffel
+from app.geometry.d2b import (
+    closed_forms as catenoid_convergence,
+    construction as vanishing_mean_curvature,
+)
 from app.geometry.d3 import closed_forms as d3_closed
 from app.geometry.d4a import closed_forms as d4a_closed
 from app.geometry.d4b import closed_forms as d4b_closed

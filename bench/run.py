@@ -13,11 +13,12 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from bench import d4b, kernels, mp, serving, stick_chain
+from bench import d4b, kernels, mp, selection, serving, stick_chain
 
 if __name__ == "__main__":
     start = time.perf_counter()
-    for part in (kernels.main, stick_chain.main, d4b.main, mp.main, serving.main):
+    parts = (kernels.main, stick_chain.main, d4b.main, mp.main, serving.main, selection.main)
+    for part in parts:
         part()
         print(flush=True)
     print(f"make bench: {time.perf_counter() - start:.0f} s")

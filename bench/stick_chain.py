@@ -16,12 +16,9 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from app.geometry.d1 import closed_forms as d1_closed
-from app.geometry.d1 import construction as hanging_chain
-from app.geometry.d3 import closed_forms as d3_closed
-from app.geometry.d3 import construction as area_length
-from app.geometry.d4a import closed_forms as d4a_closed
-from app.geometry.d4a import construction as sauer_tractrix
+from app.geometry.d1 import closed_forms as d1_closed, construction as hanging_chain
+from app.geometry.d3 import closed_forms as d3_closed, construction as area_length
+from app.geometry.d4a import closed_forms as d4a_closed, construction as sauer_tractrix
 from app.geometry.precision import Float64
 from bench.common import compare, ratio_row
 

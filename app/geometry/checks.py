@@ -30,6 +30,9 @@ class Statement:
     defaults: tuple[tuple[str, str], ...] = ()
     """Parameters (name, value) under which the statement applies, used when a request to
     /theorems/{id} does not set them (e.g. Remark 13 is about ``sequence=remark-13``)."""
+    errata: tuple[str, ...] = ()
+    """Errata (``E<n>`` of docs/errata.md) whose printed formula the check carries at the
+    default parameters: the print is wrong and the check tests the correction."""
 
 
 @dataclass(frozen=True)

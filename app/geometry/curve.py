@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import Any
+from dataclasses import dataclass, field, replace
+from typing import Any, Protocol
 
 import numpy as np
 
@@ -45,6 +45,53 @@ class Curve:
     Gauss image built by a long recursion (D4b's inscribed n) or paired with a long
     construction carries that rounding. ``relations`` uses it."""
 
+    def selected(self, selection: Selection) -> Curve:
+        """This curve with only the companions and checks of ``selection``."""
+        return replace(
+            self,
+            companions={k: v for k, v in self.companions.items() if selection.wants_companion(k)},
+            checks=selection.keep(self.checks),
+        )
+
+
+@dataclass(frozen=True)
+class Selection:
+    """What a request asks for: which checks (statement ids) and which companions.
+
+    ``None`` means all of them. A discretization computes a companion or a check only when it is
+    selected (or when a selected one needs it); ``failed_only`` keeps, of the checks computed,
+    those whose verdict is ``holds: false``.
+    """
+
+    checks: frozenset[str] | None = None
+    companions: frozenset[str] | None = None
+    failed_only: bool = False
+
+    def wants_check(self, statement_id: str) -> bool:
+        """Whether the check of ``statement_id`` is asked for."""
+        return self.checks is None or statement_id in self.checks
+
+    def wants_companion(self, name: str) -> bool:
+        """Whether the companion ``name`` is asked for."""
+        return self.companions is None or name in self.companions
+
+    @property
+    def no_checks(self) -> bool:
+        """Whether no check at all is asked for."""
+        return self.checks is not None and not self.checks
+
+    def keep(self, checks: list[Check]) -> list[Check]:
+        """The selected checks of ``checks``, in their order."""
+        kept = [c for c in checks if self.wants_check(c.id)]
+        return [c for c in kept if c.holds is False] if self.failed_only else kept
+
+
+EVERYTHING = Selection()
+"""Every check and every companion (the default of every endpoint)."""
+
+NOTHING = Selection(frozenset(), frozenset())
+"""The polygon alone (``format=npy``, ``checks=none&companions=none``)."""
+
 
 @dataclass(frozen=True)
 class DiscretizationInfo:
@@ -68,13 +115,17 @@ class DiscretizationInfo:
         parameters: dict[str, Any],
         polygon: Array,
         companions: dict[str, Array] | None = None,
+        selection: Selection = EVERYTHING,
         **fields: Any,
     ) -> Curve:
         """This discretization's ``Curve`` on ``parameters["i_min"] .. parameters["i_max"]``.
 
         ``polygon`` and each companion are ``(m, 2)`` arrays starting at i_min (m may exceed the
         range: extra rows that fed the checks are cut); ``fields`` are further ``Curve`` fields.
+        Companions and checks outside ``selection`` are left out.
         """
+        if "checks" in fields:
+            fields["checks"] = selection.keep(fields["checks"])
         indices = np.arange(parameters["i_min"], parameters["i_max"] + 1, dtype=np.int64)
         n = len(indices)
         return Curve(
@@ -87,6 +138,7 @@ class DiscretizationInfo:
             companions={
                 name: Polyline(indices, points[:n], self.companions[name])
                 for name, points in (companions or {}).items()
+                if selection.wants_companion(name)
             },
             **fields,
         )
@@ -96,3 +148,27 @@ def require_range(i_min: int, i_max: int) -> None:
     """Raise ``DomainError`` unless i_min <= i_max."""
     if i_max < i_min:
         raise DomainError("i_max", "i_min <= i_max", i_max, f"i_min = {i_min}")
+
+
+class ComputeCurve(Protocol):
+    """What a discretization's ``compute`` is: ``compute(ar, <the paper's parameters>, i_min,
+    i_max, …, detail=False, selection=EVERYTHING) -> Curve``.
+
+    The paper's parameters differ from one discretization to the next (the request model of
+    each, ``app/schemas/<id>.py``, has a field for each of them; tests/api/test_catalog.py
+    checks that the two agree), so only the arithmetic and the result are typed here.
+    """
+
+    def __call__(self, ar: Arithmetic, /, *args: Any, **parameters: Any) -> Curve: ...
+
+
+class DiscretizationModule(Protocol):
+    """What each discretization's ``discretization`` module provides (``app.geometry.<id>``)."""
+
+    INFO: DiscretizationInfo
+    """Catalog facts: id, title, reference, companions, constants, statements."""
+
+    @property
+    def compute(self) -> ComputeCurve:
+        """The curve on a range from the definition, its companions and checks."""
+        ...

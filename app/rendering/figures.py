@@ -22,8 +22,7 @@ import numpy as np
 from app.geometry.curve import Curve
 from app.geometry.d2a import construction as christoffel
 from app.geometry.precision import Float64
-from app.geometry.smooth import curves as smooth
-from app.geometry.smooth import references as smooth_curves
+from app.geometry.smooth import curves as smooth, references as smooth_curves
 from app.registry import DISCRETIZATIONS
 from app.rendering.curves import drawable
 from app.rendering.svg import Panels, Plot, Series, describe_parameters, segments

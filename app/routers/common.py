@@ -1,6 +1,6 @@
 """What the curve and theorem endpoints share: parsing, limits, computing, encoding."""
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from typing import Any, TypeVar
 
 import orjson
@@ -9,7 +9,7 @@ from fastapi.exceptions import RequestValidationError
 from pydantic import BaseModel, ValidationError
 
 from app.errors import UnknownIdError
-from app.geometry.curve import Curve
+from app.geometry.curve import Curve, Selection
 from app.geometry.studies.tractrix import Study
 from app.limits import enforce_drawing, enforce_range, enforce_study, timed_arithmetic
 from app.registry import DISCRETIZATIONS, STUDIES, ConvergenceStudy, Discretization
@@ -25,6 +25,7 @@ from app.responses import (
 )
 from app.schemas.common import PROBLEM_RESPONSES, CurveQuery
 from app.schemas.convergence import StudyQuery
+from app.services.selection import selection
 from app.settings import Settings
 
 #: An SVG opened on its own is a document: it may style itself but load and run nothing.
@@ -151,8 +152,16 @@ def prepare_study(
     return lambda: entry.run(timed_arithmetic(settings, query.precision, query.digits), **arguments)
 
 
+def selection_of(
+    query: CurveQuery, statements: Iterable[str], companions: Iterable[str]
+) -> Selection:
+    """The checks and companions a curve request asks for (``app.services.selection``)."""
+    return selection(query.checks, query.companions, statements, companions, query.format)
+
+
 def compute(entry: Discretization, query: CurveQuery, settings: Settings) -> Curve:
-    """Check the work budget, then run the core."""
+    """Check the work budget, then run the core on what the request selects."""
+    selection = selection_of(query, (s.id for s in entry.info.statements), entry.info.companions)
     arguments = query.core_arguments()
     enforce_range(
         settings,
@@ -164,7 +173,8 @@ def compute(entry: Discretization, query: CurveQuery, settings: Settings) -> Cur
     )
     if query.format == "svg":
         enforce_drawing(settings, arguments["i_min"], arguments["i_max"])
-    return entry.compute(timed_arithmetic(settings, query.precision, query.digits), **arguments)
+    ar = timed_arithmetic(settings, query.precision, query.digits)
+    return entry.compute(ar, **arguments, selection=selection)
 
 
 def curve_response(curve: Curve, response_format: str) -> Response:

@@ -16,6 +16,7 @@ from app.routers.common import (
     curve_response,
     example_of,
     reject_repeated_parameters,
+    selection_of,
     settings_of,
     with_example,
 )
@@ -58,7 +59,10 @@ def _register(name: str, compute: Callable[..., Curve], title: str, description:
         def build() -> Response:
             enforce_samples(settings, query)
             ar = timed_arithmetic(settings, query.precision, query.digits)
-            return curve_response(compute(ar, **query.core_arguments()), query.format)
+            curve = compute(ar, **query.core_arguments())
+            statements = (check.id for check in curve.checks)
+            selection = selection_of(query, statements, curve.companions)
+            return curve_response(curve.selected(selection), query.format)
 
         return cached(request, canonical_key(request.url.path, query.model_dump()), settings, build)
 

@@ -4,7 +4,6 @@ from typing import Annotated, Any
 
 from fastapi import APIRouter, Body, Depends, Path, Request, Response
 
-from app import surface_service
 from app.registry import DISCRETIZATIONS
 from app.responses import cached, canonical_key
 from app.routers.common import (
@@ -13,13 +12,14 @@ from app.routers.common import (
     reject_repeated_parameters,
     settings_of,
 )
-from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES
+from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES, CurveQuery
 from app.schemas.surfaces import (
     SURFACES_DESCRIPTION,
     SurfaceEntry,
     SurfaceQuery,
     SurfaceResponse,
 )
+from app.services import surfaces as surface_service
 
 router = APIRouter(prefix="/surfaces", tags=["surfaces"])
 
@@ -96,12 +96,24 @@ def _split(values: dict[str, Any]) -> tuple[SurfaceQuery, dict[str, Any]]:
     return parse_query(SurfaceQuery, own), rest
 
 
-def _build(identifier: str, values: dict[str, Any], request: Request) -> tuple[Any, Any]:
+def parse(
+    identifier: str, values: dict[str, Any]
+) -> tuple[surface_service.SurfaceKind, SurfaceQuery, CurveQuery]:
+    """The surface kind, the surface's own parameters and its discretization's, validated."""
     kind = surface_service.kind_of(identifier)
     surface, rest = _split(values)
     entry = discretization(surface.discretization)
-    curve_query = parse_query(entry.query, rest)
+    return kind, surface, parse_query(entry.query, rest)
+
+
+def _build(identifier: str, values: dict[str, Any], request: Request) -> tuple[Any, Any]:
+    kind, surface, curve_query = parse(identifier, values)
     return kind, (surface, curve_query)
+
+
+def _file(result: surface_service.SurfaceResult, file_format: str) -> Response:
+    body, media_type, headers = surface_service.encoded(result, file_format)
+    return Response(body, media_type=media_type, headers=headers)
 
 
 @router.get(
@@ -132,7 +144,7 @@ def get_surface(
         request,
         key,
         settings,
-        lambda: surface_service.file_response(
+        lambda: _file(
             surface_service.compute(kind, surface, curve_query, settings), surface.format
         ),
     )
@@ -160,7 +172,7 @@ def post_surface(
         request,
         key,
         settings,
-        lambda: surface_service.file_response(
+        lambda: _file(
             surface_service.compute(kind, surface, curve_query, settings), surface.format
         ),
     )

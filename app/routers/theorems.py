@@ -1,17 +1,15 @@
 """GET /theorems (statement catalog) and GET /theorems/{id} (one statement checked)."""
 
-from functools import lru_cache
 from typing import Annotated, Any, Literal
-from urllib.parse import urlencode
 
 from fastapi import APIRouter, Depends, Path, Query, Request, Response
 
 from app.errors import UnknownIdError
 from app.geometry.checks import Check
-from app.geometry.errors import DomainError
-from app.geometry.precision import Float64, arithmetic
-from app.registry import DISCRETIZATIONS, SMOOTH, STATEMENTS, STUDIES, StatementEntry
-from app.responses import JSONBytesResponse, cached, canonical_key, check_document, encode_json
+from app.geometry.precision import arithmetic
+from app.registry import SMOOTH, STATEMENTS
+from app.responses import JSONBytesResponse, cached, canonical_key, encode_json
+from app.routers import surfaces
 from app.routers.common import (
     compute,
     discretization,
@@ -23,123 +21,11 @@ from app.routers.common import (
 )
 from app.routers.discretizations import parameter_infos
 from app.routers.smooth import enforce_samples
-from app.schemas.catalog import ParameterInfo, StatementInfo, TheoremResponse
-from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES, StrictModel
+from app.schemas.catalog import StatementInfo, TheoremResponse
+from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES
+from app.services import surfaces as surface_service, theorems
 
 router = APIRouter(prefix="/theorems", tags=["theorems"])
-
-
-def default_source(identifier: str, entry: StatementEntry) -> tuple[str, str]:
-    """(kind, id) of the source a statement is checked on by default; kind is
-    ``discretization``, ``study`` or ``smooth``.
-
-    A statement named like a study (theorem-11, theorem-14, theorem-15) is a limit claim: its
-    study checks it. Otherwise its first discretization, else its first study, else its smooth
-    reference.
-    """
-    if identifier in entry.studies:
-        return "study", identifier
-    if entry.discretizations:
-        return "discretization", entry.discretizations[0]
-    if entry.studies:
-        return "study", entry.studies[0]
-    return "smooth", entry.smooth[0]
-
-
-def _source_model(
-    identifier: str, entry: StatementEntry
-) -> tuple[dict[str, str], type[StrictModel], tuple[tuple[str, str], ...]]:
-    """The fixed query, request model and statement defaults of a statement's default source.
-
-    The fixed query names the source (``discretization=...`` or, for a statement that curves
-    check too, ``study=...``); the statement's defaults apply to curves only.
-    """
-    kind, owner = default_source(identifier, entry)
-    if kind == "discretization":
-        return {"discretization": owner}, DISCRETIZATIONS[owner].query, entry.statement.defaults
-    if kind == "smooth":
-        return {}, SMOOTH[owner].query, ()
-    fixed = {"study": owner} if entry.discretizations else {}
-    return fixed, STUDIES[owner].query, ()
-
-
-def _resolve_source(
-    identifier: str, entry: StatementEntry, discretization_id: str | None, study_id: str | None
-) -> tuple[str, str]:
-    """(kind, id) of the source asked for (or the default), validated against the statement."""
-    if discretization_id is not None and study_id is not None:
-        raise DomainError(
-            "study",
-            "at most one of discretization and study",
-            study_id,
-            f"discretization = {discretization_id}",
-        )
-    kind, owner = default_source(identifier, entry)
-    elsewhere = (
-        f"discretization={entry.discretizations[0]}"
-        if entry.discretizations
-        else f"GET /convergence/{entry.studies[0]}"
-        if entry.studies
-        else f"GET /smooth/{entry.smooth[0]}"
-    )
-    if study_id is not None:
-        if not entry.studies:
-            raise DomainError(
-                "study", f"a study that checks this statement: none ({elsewhere})", study_id
-            )
-        if study_id not in entry.studies:
-            raise UnknownIdError("study for this statement", study_id, list(entry.studies))
-        return "study", study_id
-    if discretization_id is not None:
-        if not entry.discretizations:
-            raise DomainError(
-                "discretization",
-                f"a discretization that checks this statement: none ({elsewhere})",
-                discretization_id,
-            )
-        if discretization_id not in entry.discretizations:
-            raise UnknownIdError(
-                "discretization for this statement",
-                discretization_id,
-                list(entry.discretizations),
-            )
-        return "discretization", discretization_id
-    return kind, owner
-
-
-def example_url(
-    identifier: str,
-    fixed: dict[str, str],
-    parameters: list[ParameterInfo],
-    defaults: tuple[tuple[str, str], ...] = (),
-) -> str:
-    """/theorems/{id} with every paper parameter at its default (the statement's own first)."""
-    values: dict[str, Any] = dict(fixed)
-    values.update(
-        {p.name: p.default for p in parameters if p.kind == "paper" and p.default is not None}
-    )
-    values.update(dict(defaults))
-    return f"/theorems/{identifier}?{urlencode(values)}"
-
-
-@lru_cache(maxsize=1)
-def default_errata() -> dict[str, tuple[str, ...]]:
-    """Statement id -> ids of the errata its check carries at the default parameters (float64).
-
-    Computed once per process from every discretization and study at its defaults.
-    """
-    found: dict[str, set[str]] = {}
-
-    def collect(checks: list[Check]) -> None:
-        for check in checks:
-            if check.erratum is not None:
-                found.setdefault(check.id, set()).add(check.erratum.id)
-
-    for entry in DISCRETIZATIONS.values():
-        collect(entry.compute(Float64(), **entry.query.model_validate({}).core_arguments()).checks)
-    for source in STUDIES.values():
-        collect(source.run(Float64(), **source.query.model_validate({}).core_arguments()).checks)
-    return {k: tuple(sorted(v, key=lambda e: int(e[1:]))) for k, v in found.items()}
 
 
 @router.get(
@@ -153,10 +39,9 @@ def default_errata() -> dict[str, tuple[str, ...]]:
     response_model=list[StatementInfo],
 )
 def list_statements() -> list[StatementInfo]:
-    errata = default_errata()
     out = []
     for identifier, entry in STATEMENTS.items():
-        fixed, model, defaults = _source_model(identifier, entry)
+        fixed, model, defaults = theorems.source_model(identifier, entry)
         parameters = parameter_infos(model)
         out.append(
             StatementInfo(
@@ -166,11 +51,12 @@ def list_statements() -> list[StatementInfo]:
                 discretizations=list(entry.discretizations),
                 studies=list(entry.studies),
                 smooth=list(entry.smooth),
+                surfaces=list(entry.surfaces),
                 url=f"/theorems/{identifier}",
-                example_url=example_url(identifier, fixed, parameters, defaults),
+                example_url=theorems.example_url(identifier, fixed, parameters, defaults),
                 parameters=parameters,
                 conditions=list(entry.statement.conditions),
-                errata=list(errata.get(identifier, ())),
+                errata=list(entry.statement.errata),
             )
         )
     return out
@@ -213,26 +99,14 @@ def check_statement(
     entry = STATEMENTS.get(statement_id)
     if entry is None:
         raise UnknownIdError("statement", statement_id, sorted(STATEMENTS))
-    kind, owner = _resolve_source(statement_id, entry, discretization_id, study_id)
+    kind, owner = theorems.resolve_source(statement_id, entry, discretization_id, study_id)
     values: dict[str, Any] = dict(request.query_params)
     values.pop("discretization", None)
     values.pop("study", None)
     settings = settings_of(request)
 
     def respond(checks: list[Check], parameters: dict[str, Any], ar: Any) -> Response:
-        check = next(c for c in checks if c.id == statement_id)
-        document = {
-            "id": statement_id,
-            "reference": check.reference,
-            "claim": check.claim,
-            "discretization": owner if kind == "discretization" else None,
-            "study": owner if kind == "study" else None,
-            "smooth": owner if kind == "smooth" else None,
-            "parameters": parameters,
-            "precision": ar.describe(),
-            "conditions": list(entry.statement.conditions),
-            "check": check_document(check),
-        }
+        document = theorems.document(entry, kind, owner, checks, parameters, ar.describe())
         return JSONBytesResponse(encode_json(document))
 
     if kind == "study":
@@ -260,6 +134,22 @@ def check_statement(
 
         key = canonical_key(request.url.path, {"smooth": owner, **smooth_query.model_dump()})
         return cached(request, key, settings, build_smooth)
+
+    if kind == "surface":
+        values.pop("detail", None)
+        if discretization_id is not None:
+            values["discretization"] = discretization_id
+        surface_kind, surface_query, curve_query = surfaces.parse(owner, values)
+
+        def build_surface() -> Response:
+            result = surface_service.compute(surface_kind, surface_query, curve_query, settings)
+            return respond(result.surface.checks, result.parameters, result.surface.arithmetic)
+
+        key = canonical_key(
+            request.url.path,
+            {"surface": owner, **surface_query.model_dump(), **curve_query.model_dump()},
+        )
+        return cached(request, key, settings, build_surface)
 
     target = discretization(owner)
     query = parse_query(target.query, {**dict(entry.statement.defaults), **values})

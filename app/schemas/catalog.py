@@ -59,6 +59,10 @@ class StatementInfo(BaseModel):
         default_factory=list,
         description="Smooth references of Section 2 whose responses check it (GET /smooth/{id}).",
     )
+    surfaces: list[str] = Field(
+        default_factory=list,
+        description="Surfaces whose mesh responses check it (GET /surfaces/{id}).",
+    )
     url: str = Field(description="Path that checks it with default parameters.")
     example_url: str = Field(
         description="A ready-to-use request with every parameter of the paper at its default "
@@ -94,6 +98,9 @@ class TheoremResponse(BaseModel):
     )
     smooth: str | None = Field(
         None, description="The smooth reference it was checked on (GET /smooth/{id})."
+    )
+    surface: str | None = Field(
+        None, description="The surface whose meshes it was checked on (GET /surfaces/{id})."
     )
     parameters: dict[str, Any] = Field(description="Effective parameters of that computation.")
     precision: PrecisionInfo

@@ -30,6 +30,46 @@ class StrictModel(BaseModel):
         return value
 
 
+CHECKS_DESCRIPTION = (
+    "Which checks to compute and return: `all` (default), `none`, `failed` (those whose verdict "
+    "is `holds: false`), or a comma-separated list of statement ids (GET /theorems; the "
+    "discretization's own are listed in GET /discretizations). Only what is asked for is "
+    "computed, so `checks=none` answers fastest. An unknown id is a 422 listing the valid ones."
+)
+COMPANIONS_DESCRIPTION = (
+    "Which companion polygons to compute and return: `all` (default), `none`, or a "
+    "comma-separated list of names (GET /discretizations lists each discretization's). "
+    "An unknown name is a 422 listing the valid ones."
+)
+_SELECTION_WORDS = {"checks": ("all", "none", "failed"), "companions": ("all", "none")}
+
+
+def normalized_selection(value: Any, name: str) -> str:
+    """A selection as one canonical string: a keyword, or sorted unique ids joined by commas.
+
+    Accepts a string (``"theorem-5, d1"``) or, in a JSON body, a list of strings.
+    """
+    if isinstance(value, list | tuple):
+        if not all(isinstance(v, str) for v in value):
+            raise PydanticCustomError("selection", "{name} is a list of ids", {"name": name})
+        value = ",".join(value)
+    if not isinstance(value, str):
+        raise PydanticCustomError("selection", "{name} is a string of ids", {"name": name})
+    ids = sorted({part.strip() for part in value.split(",") if part.strip()})
+    words = _SELECTION_WORDS[name]
+    if not ids:
+        raise PydanticCustomError(
+            "selection", "{name} is one of {words} or a list of ids", {"name": name, "words": words}
+        )
+    if len(ids) > 1 and set(ids) & set(words):
+        raise PydanticCustomError(
+            "selection",
+            "{name}: {words} stand alone, not in a list of ids",
+            {"name": name, "words": ", ".join(words)},
+        )
+    return ",".join(ids)
+
+
 class CurveQuery(StrictModel):
     """Parameters every curve endpoint accepts; subclasses add the paper's parameters."""
 
@@ -57,6 +97,18 @@ class CurveQuery(StrictModel):
     detail: bool = Field(
         False, description="Fill each check's `per_index` with the residual at every index."
     )
+    checks: str = Field(
+        "all", max_length=4096, description=CHECKS_DESCRIPTION, examples=["all", "theorem-5,d1"]
+    )
+    companions: str = Field(
+        "all", max_length=1024, description=COMPANIONS_DESCRIPTION, examples=["all", "tractrix"]
+    )
+
+    @field_validator("checks", "companions", mode="before")
+    @classmethod
+    def _selection(cls, value: Any, info: ValidationInfo) -> str:
+        """One canonical spelling per selection (it is part of the cache key and the ETag)."""
+        return normalized_selection(value, str(info.field_name))
 
     @field_validator("format", mode="after")
     @classmethod
@@ -72,7 +124,7 @@ class CurveQuery(StrictModel):
 
     def core_arguments(self) -> dict[str, Any]:
         """The keyword arguments of the core's ``compute`` (the paper's parameters)."""
-        return self.model_dump(exclude={"precision", "digits", "format"})
+        return self.model_dump(exclude={"precision", "digits", "format", "checks", "companions"})
 
 
 def strict_body(model: type[CurveQuery]) -> type[CurveQuery]:

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from typing import Any, Literal
 
-from pydantic import BaseModel, Field
+from pydantic import BaseModel, Field, field_validator
 
-from app.schemas.common import StrictModel
+from app.schemas.common import StrictModel, normalized_selection
 from app.schemas.curve import CheckModel, Coordinate, PrecisionInfo
 
 SURFACES_DESCRIPTION = """\
@@ -50,6 +50,21 @@ class SurfaceQuery(StrictModel):
         "circumscribed one) or `circumscribed`.",
     )
     format: Literal["json", "obj", "ply", "glb"] = Field("json", description="Output format.")
+    checks: str = Field(
+        "all",
+        max_length=4096,
+        description="Which checks of the meshes to compute and return: `all` (default), `none`, "
+        "`failed`, or a comma-separated list of statement ids (face-planarity, "
+        "face-parallelity, equation-17, and vanishing-mean-curvature for catenoids or theorem-7 "
+        "for the pseudosphere). A surface has no companions: its response holds the mesh and "
+        "its face values.",
+    )
+
+    @field_validator("checks", mode="before")
+    @classmethod
+    def _selection(cls, value: Any) -> str:
+        """One canonical spelling (it is part of the cache key and the ETag)."""
+        return normalized_selection(value, "checks")
 
 
 class SurfaceLayout(BaseModel):

@@ -2,12 +2,16 @@
 
 from __future__ import annotations
 
+import inspect
+
 import pytest
 from fastapi.testclient import TestClient
 
 from app import __version__
 from app.geometry.d4b import discretization as d4b
+from app.registry import DISCRETIZATIONS
 from app.schemas.catalog import StatementInfo, TheoremResponse
+from app.schemas.surfaces import SurfaceQuery
 
 
 def test_health(client: TestClient) -> None:
@@ -83,8 +87,12 @@ def test_every_statement_lists_parameters_an_example_and_its_source(client: Test
     for entry in statements:
         StatementInfo.model_validate(entry)
         sources = entry["discretizations"] + entry["studies"] + entry["smooth"]
-        assert sources, entry["id"]
         names = {p["name"]: p for p in entry["parameters"]}
+        if not sources:  # a statement about meshes: checked on a surface
+            assert entry["surfaces"], entry["id"]
+            assert set(names) == set(SurfaceQuery.model_fields)
+            assert entry["example_url"].startswith(f"/theorems/{entry['id']}?discretization=d4b&")
+            continue
         if not entry["discretizations"] and not entry["studies"]:
             assert set(names) == set(SMOOTH[entry["smooth"][0]].query.model_fields)
             assert entry["example_url"].startswith(f"/theorems/{entry['id']}?h=1.0&")
@@ -225,3 +233,14 @@ def test_statements_of_section_2_are_checked_on_the_smooth_tractrix(client: Test
     assert client.get("/theorems/evolute-s4", params={"count": 1}).status_code == 422
     wrong = client.get("/theorems/evolute-s4", params={"discretization": "d4b"})
     assert wrong.status_code == 422 and "GET /smooth/tractrix" in wrong.text
+
+
+@pytest.mark.parametrize("identifier", sorted(DISCRETIZATIONS))
+def test_each_request_model_matches_its_compute_function(identifier: str) -> None:
+    """Every field the core takes is a parameter of compute, and every parameter of compute
+    (but the arithmetic and the selection) is a field of the request model."""
+    entry = DISCRETIZATIONS[identifier]
+    parameters = inspect.signature(entry.compute).parameters
+    taken = set(entry.query.model_validate({}).core_arguments())
+    assert taken == set(parameters) - {"ar", "selection"}
+    assert next(iter(parameters)) == "ar" and "selection" in parameters

@@ -8,8 +8,7 @@ import numpy as np
 import pytest
 from fastapi.testclient import TestClient
 
-from app.geometry.d2a import hex as d2a_hex
-from app.geometry.d2a import quad as d2a_quad
+from app.geometry.d2a import hex as d2a_hex, quad as d2a_quad
 from app.geometry.precision import Float64
 from app.schemas.curve import CurveResponse
 

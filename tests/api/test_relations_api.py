@@ -12,13 +12,15 @@ from app.main import create_app
 from app.registry import DISCRETIZATIONS
 from app.schemas.relations import RelationsResponse
 from app.settings import Settings
-from tests.reference import curvature as reference_curvature
-from tests.reference import d1 as reference_d1
-from tests.reference import d2a as reference_d2a
-from tests.reference import d3 as reference_d3
-from tests.reference import d4a as reference_d4a
-from tests.reference import d4b as reference_d4b
-from tests.reference import relations as reference
+from tests.reference import (
+    curvature as reference_curvature,
+    d1 as reference_d1,
+    d2a as reference_d2a,
+    d3 as reference_d3,
+    d4a as reference_d4a,
+    d4b as reference_d4b,
+    relations as reference,
+)
 from tests.svg_reading import parse
 
 CONDITIONS = ("d1", "d3", "equation-2", "equation-7")

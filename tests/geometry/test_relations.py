@@ -10,8 +10,7 @@ import pytest
 from app.geometry import relations
 from app.geometry.curve import Curve, Polyline
 from app.geometry.d1 import discretization as d1
-from app.geometry.d2a import hex as d2a_hex
-from app.geometry.d2a import quad as d2a_quad
+from app.geometry.d2a import hex as d2a_hex, quad as d2a_quad
 from app.geometry.d2b import discretization as d2b
 from app.geometry.d3 import discretization as d3
 from app.geometry.d4a import discretization as d4a

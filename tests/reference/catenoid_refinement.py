@@ -15,8 +15,7 @@ from __future__ import annotations
 
 import mpmath
 
-from tests.reference import convergence as reference_convergence
-from tests.reference import curvature as reference_curvature
+from tests.reference import convergence as reference_convergence, curvature as reference_curvature
 
 
 def _g(name: str, t):

@@ -92,6 +92,7 @@ D4A_STICKS = Statement(
     "largest of | |d_i − x_i| − h |, |x_i^y| and the distance of the far end from "
     "x_i + (h − s)(d_i − x_i)/|d_i − x_i|, relative to the magnitude of the points.",
     conditions=(D4A_CUSP,),
+    errata=("E20",),
 )
 
 # d4a/discretization.py
@@ -111,6 +112,7 @@ D4A_DARBOUX = Statement(
     "|e_{i+1} − e_i| = |x_{i+1} − x_i|. Residual: largest difference of the edge lengths, "
     "relative to the magnitude of the four points.",
     conditions=(D4A_DARBOUX_SIDES,),
+    errata=("E21",),
 )
 
 # d4a/discretization.py
@@ -120,6 +122,7 @@ D4A_DARBOUX_DISTANCE = Statement(
     "|x_i − e_i| is the same for every i, namely 2h − s. Residual: largest | |x_i − e_i| − "
     "(2h − s) |, relative to the magnitude of x_i and e_i.",
     conditions=(D4A_DARBOUX_SIDES,),
+    errata=("E21",),
 )
 
 # d4a/discretization.py

@@ -53,6 +53,7 @@ D4B_THEOREM_4_I = Statement(
     "Residual: largest |Δ²p_i^y − c(l_i + l_{i+1})|, relative to the magnitude of the "
     "coordinates it is computed from (docs/checks.md).",
     conditions=(D4B_HYPOTHESIS_ALWAYS,),
+    errata=("E2",),
 )
 
 # d4b/discretization.py
@@ -82,6 +83,7 @@ D4B_ROTATION_ANGLE = Statement(
     "The rotation about p_i, which takes x_{i−1} to x_i, turns by α_i = 2 arctan(d/p_i^y). "
     "Residual: largest |angle(x_{i−1} − p_i, x_i − p_i) − 2 arctan(d/p_i^y)|.",
     conditions=(D4B_LOCAL_NUMBERING,),
+    errata=("E1",),
 )
 
 # d4b/discretization.py
@@ -100,6 +102,7 @@ D4B_TWO_STEP = Statement(
     "p_{i+2}^y = (p_i⁵ + d²(p_{i−1}³ + 2p_{i−1}²p_i + 3p_{i−1}p_i² + 4p_i³) + d⁴(2p_{i−1} + 3p_i))"
     " / (d² − p_{i−1}p_i)² (all heights p^y). Residual: largest relative difference.",
     conditions=(D4B_RECURSION_DENOMINATOR,),
+    errata=("E3",),
 )
 
 # d4b/discretization.py
@@ -132,6 +135,7 @@ QUAD_THEOREM_1 = Statement(
     "the fitted c and with c_theorem_1, each relative to the magnitude of the coordinates it is "
     "computed from (docs/checks.md).",
     conditions=(QUAD_ONLY_AT_R_STAR,),
+    errata=("E42",),
 )
 
 # d2a/quad.py
@@ -180,6 +184,7 @@ QUAD_X_STEP = Statement(
     "every i (constants.x_step). Residual: largest |Δp^x − d| relative to the magnitude of "
     "p_{i−1}, p_i.",
     conditions=(QUAD_CONVENTIONS,),
+    errata=("E40",),
 )
 
 # d2a/quad.py
@@ -189,6 +194,7 @@ QUAD_SECOND_DIFFERENCE = Statement(
     "p_{i+1} − 2p_i + p_{i−1} = (0, −(f_i² + 1)/(2f_i)) (printed without the minus sign, E41). "
     "Residual: largest |Δ²p − formula| relative to |p_{i−1}| + 2|p_i| + |p_{i+1}| (coordinates).",
     conditions=(QUAD_CONVENTIONS,),
+    errata=("E41",),
 )
 
 # d2a/quad.py
@@ -231,6 +237,7 @@ HEX_THEOREM_2 = Statement(
     "(11), each relative to the magnitude of the coordinates it is computed from. The "
     "erratum's printed residual is that of (2), which Section 4.1 attributes to Theorem 2.",
     conditions=(HEX_ONLY_AT_R_STAR,),
+    errata=("E45",),
 )
 
 # d2a/hex.py
@@ -242,6 +249,7 @@ HEX_START_HEIGHT = Statement(
     "vertically by r* − r satisfies (7) with c_1, c_2 of (11). Holds for every r. Residual: as "
     "for (7), on the moved polygon.",
     conditions=(HEX_R_ANY,),
+    errata=("E44",),
 )
 
 # d2a/hex.py
@@ -263,6 +271,7 @@ HEX_THEOREM_3_EVEN = Statement(
     "p_i^y has the factor b^{−i/2} − a^{−i/2}, E43). Residual: largest |p_i − closed form| / "
     "|closed form|.",
     conditions=(HEX_RANGE,),
+    errata=("E43",),
 )
 
 # d2a/hex.py

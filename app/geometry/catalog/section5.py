@@ -29,6 +29,7 @@ D4B_EQUATION_18 = Statement(
     "(h+d)^{2i} − (h−d)^{2i}) / ((h−d)^{2i} + (h+d)^{2i}) (corrected sign; see erratum). "
     "Residual: largest |n_i − closed form|.",
     conditions=(D4B_FIRST_NORMAL, D4B_VERTICAL_STICK),
+    errata=("E60",),
 )
 
 # d4b/curvature.py
@@ -38,6 +39,7 @@ D4B_EQUATION_18_SLOPE = Statement(
     "n_i lies on the line through the centre with the slope k_{i+1} = (p_{i+1}^y − p_i^y)/2d "
     "of the edge p_i p_{i+1}: n_i = (1, k_{i+1})/√(1 + k_{i+1}²). Residual: largest |n_i − that|.",
     conditions=(D4B_SLOPE_SIGN,),
+    errata=("E61",),
 )
 
 # d4b/curvature.py
@@ -48,6 +50,7 @@ D4B_EQUATION_19 = Statement(
     "(h+d)^{2i}, 2(h−d)^i(h+d)^i) / ((h−d)^{2i} + (h+d)^{2i}) (corrected sign; see erratum). "
     "Residual: largest |ñ_i − closed form|.",
     conditions=(D4B_CONTACT_SIDE, D4B_VERTICAL_STICK),
+    errata=("E62",),
 )
 
 # d4b/curvature.py
@@ -77,6 +80,7 @@ D4B_EQUATION_20 = Statement(
     "2h(h²−d²)^i) / (hB − dA) (corrected; see erratum), so m_i^y = h / p_i^y. "
     "Residual: largest |m_i − closed form| / |closed form|.",
     conditions=(D4B_POLE, D4B_APPROXIMATES_SPHERE, D4B_VERTICAL_STICK),
+    errata=("E63",),
 )
 
 # d4b/curvature.py
@@ -121,6 +125,11 @@ SURFACE_PLANARITY = Statement(
     "Section 1 (meshes are polyhedral surfaces); eq. (15)",
     "Every quad of the surface and of its Gauss image is planar. Residual: largest distance "
     "between the diagonals of a quad over their mean length.",
+    conditions=(
+        "The paper takes planarity for granted: a quad of (15) joins two parallel circles, so it "
+        "is an isosceles trapezoid, planar for every meridian; the check confirms it on the "
+        "computed mesh (a wrong rotation or meridian would show).",
+    ),
 )
 
 # surfaces/rotational.py
@@ -129,6 +138,11 @@ SURFACE_PARALLELITY = Statement(
     "Section 5 (curvature theory [3] requires parallel meshes)",
     "Every face of the surface is parallel to the corresponding face of the Gauss image. "
     "Residual: largest |A(f)⃗ × A(n)⃗| relative to the magnitudes of the areas.",
+    conditions=(
+        "Parallel meshes are the hypothesis of the mixed-area curvatures [3] that Section 5 "
+        "uses: K = A(n)/A(f) and H = −A(f, n)/A(f) mean something only for faces parallel to "
+        "their Gauss image faces, which the paper asserts for its Gauss images (18)–(20).",
+    ),
 )
 
 # surfaces/rotational.py
@@ -138,4 +152,9 @@ SURFACE_MINIMAL = Statement(
     "H = 0 on every face with respect to the Gauss image (mixed-area definition): the surface "
     "is a discrete minimal surface, a discrete catenoid. Residual: largest |A(f, n)| relative "
     "to the magnitude of the mixed area.",
+    conditions=(
+        "Holds for the (D2b) meridian with its Gauss image (the definition) and for (D4b) with "
+        "its circumscribed Gauss image m (Theorem 8); with another meridian or Gauss image the "
+        "check answers how far the surface is from minimal.",
+    ),
 )

@@ -49,6 +49,7 @@ D2B_LEMMA_10 = Statement(
     "|closed form|, on a curve over its range, on /convergence/theorem-11 over every vertex of "
     "every level of both sequences.",
     conditions=D2B_LEMMA_HYPOTHESES,
+    errata=("E64",),
 )
 
 # d2b/discretization.py
@@ -111,6 +112,7 @@ T11_REMARK_13_UNIFORM = Statement(
         "A bounded g' is not enough in general: g = tanh (g' <= 1, g(0) = 0, g' > 0) gives "
         "u' = 1 and an error (i/j)/(6j²) that grows without bound in i for fixed j.",
     ),
+    errata=("E66",),
 )
 
 # studies/theorem_11.py
@@ -122,6 +124,7 @@ T11_LEMMA_10_PROOF = Statement(
     "Σ_{k<i} (s_k − s_{k+1})/(1 − s_k²), with t_k = k/j (printed with g and g' evaluated at "
     "s_k, E65). Measures `riemann-sum`, `difference-sum` (order 1). " + T11__REFINEMENT,
     conditions=(T11_PROOF_PARAMETERS,),
+    errata=("E65",),
 )
 
 # studies/tractrix.py
@@ -221,6 +224,7 @@ PROOF_15_Y = Statement(
     "exponent, E80); then f(d) → e^{−x/h}, g(d) → e^{x/h} by (21) and (22) applies. Residual: "
     "largest relative difference at the sample points of every level.",
     conditions=(PROOF_SUBSTITUTION,),
+    errata=("E80",),
 )
 
 # studies/tractrix.py
@@ -232,6 +236,7 @@ PROOF_15_X = Statement(
     "g(d) → e^{x/h} and (22) gives c^x(x) → x − h tanh(x/h). Residual: largest absolute "
     "difference (both sides lie in [−1, 1]) at the sample points of every level.",
     conditions=(PROOF_SUBSTITUTION,),
+    errata=("E81",),
 )
 
 # studies/tractrix.py

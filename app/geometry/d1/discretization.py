@@ -19,7 +19,7 @@ from app.geometry.catalog.section3 import (
     D1_CLOSED_FORM as CLOSED_FORM,
 )
 from app.geometry.checks import Check, Statement, check_residuals, not_applicable, point_distance
-from app.geometry.curve import Curve, DiscretizationInfo, require_range
+from app.geometry.curve import EVERYTHING, Curve, DiscretizationInfo, Selection, require_range
 from app.geometry.d1 import closed_forms
 from app.geometry.d1.construction import construct, validate
 from app.geometry.errors import NotRepresentableError
@@ -131,6 +131,7 @@ def compute(
     i_max: int = 10,
     method: Method = "construction",
     detail: bool = False,
+    selection: Selection = EVERYTHING,
 ) -> Curve:
     """(D1) on i_min .. i_max with its constants and checks."""
     validate(c, delta, y0, y1)
@@ -148,7 +149,9 @@ def compute(
         "i_max": i_max,
         "method": method,
     }
-    return INFO.curve(ar, parameters, data.p, constants=constants, checks=checks)
+    return INFO.curve(
+        ar, parameters, data.p, constants=constants, checks=checks, selection=selection
+    )
 
 
 def _closed_form(ctx: properties.Context, data: D1Polygons, steps: int) -> Check:

@@ -9,8 +9,7 @@ from typing import Any
 import numpy as np
 
 from app.geometry import conditions
-from app.geometry.catalog.section3 import D1 as SHARED_D1
-from app.geometry.catalog.section3 import D3 as SHARED_D3
+from app.geometry.catalog.section3 import D1 as SHARED_D1, D3 as SHARED_D3
 from app.geometry.catalog.section4 import EQUATION_2 as SHARED_EQUATION_2
 from app.geometry.checks import (
     Check,

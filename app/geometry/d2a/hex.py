@@ -17,23 +17,14 @@ import numpy as np
 from app.geometry import conditions
 from app.geometry.catalog.section4 import (
     HEX_EQUATION_10 as EQUATION_10,
-)
-from app.geometry.catalog.section4 import (
     HEX_START_HEIGHT as START_HEIGHT,
-)
-from app.geometry.catalog.section4 import (
     HEX_THEOREM_2 as THEOREM_2,
-)
-from app.geometry.catalog.section4 import (
     HEX_THEOREM_3_EVEN as THEOREM_3_EVEN,
-)
-from app.geometry.catalog.section4 import (
     HEX_THEOREM_3_ODD as THEOREM_3_ODD,
 )
 from app.geometry.checks import Check, Statement, not_applicable, relative_to
-from app.geometry.curve import Curve, DiscretizationInfo, require_range
-from app.geometry.d2a import closed_forms as cf
-from app.geometry.d2a import construction as christoffel
+from app.geometry.curve import EVERYTHING, Curve, DiscretizationInfo, Selection, require_range
+from app.geometry.d2a import closed_forms as cf, construction as christoffel
 from app.geometry.d2a.common import (
     FLOAT64_MIN_GAP,
     SHARED_D1,
@@ -221,6 +212,7 @@ def compute(
     i_min: int = -10,
     i_max: int = 10,
     detail: bool = False,
+    selection: Selection = EVERYTHING,
 ) -> Curve:
     """(D2a) hexagonal on i_min .. i_max with companions, constants and checks (r = None: r*)."""
     christoffel.validate_hex(a, b, lam, r)
@@ -250,6 +242,7 @@ def compute(
         constants=constants,
         checks=checks,
         local_tolerance=local_tolerance(ar, smallest_gap(data.a, data.b, data.lam)),
+        selection=selection,
     )
 
 

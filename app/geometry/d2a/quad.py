@@ -17,38 +17,19 @@ import numpy as np
 from app.geometry import conditions
 from app.geometry.catalog.section4 import (
     QUAD_AREA_SUM as AREA_SUM,
-)
-from app.geometry.catalog.section4 import (
     QUAD_DUAL_EDGE as DUAL_EDGE,
-)
-from app.geometry.catalog.section4 import (
     QUAD_EQUATION_5 as EQUATION_5,
-)
-from app.geometry.catalog.section4 import (
     QUAD_GAUSS_EDGE as GAUSS_EDGE,
-)
-from app.geometry.catalog.section4 import (
     QUAD_GAUSS_NORM as GAUSS_NORM,
-)
-from app.geometry.catalog.section4 import (
     QUAD_HEIGHTS as HEIGHTS,
-)
-from app.geometry.catalog.section4 import (
     QUAD_SECOND_DIFFERENCE as SECOND_DIFFERENCE,
-)
-from app.geometry.catalog.section4 import (
     QUAD_START_HEIGHT as START_HEIGHT,
-)
-from app.geometry.catalog.section4 import (
     QUAD_THEOREM_1 as THEOREM_1,
-)
-from app.geometry.catalog.section4 import (
     QUAD_X_STEP as X_STEP,
 )
 from app.geometry.checks import Check, Statement, relative_to
-from app.geometry.curve import Curve, DiscretizationInfo, require_range
-from app.geometry.d2a import closed_forms as cf
-from app.geometry.d2a import construction as christoffel
+from app.geometry.curve import EVERYTHING, Curve, DiscretizationInfo, Selection, require_range
+from app.geometry.d2a import closed_forms as cf, construction as christoffel
 from app.geometry.d2a.common import (
     FLOAT64_MIN_GAP,
     SHARED_D1,
@@ -212,6 +193,7 @@ def compute(
     i_min: int = -10,
     i_max: int = 10,
     detail: bool = False,
+    selection: Selection = EVERYTHING,
 ) -> Curve:
     """(D2a) quad on i_min .. i_max with companions, constants and checks (r = None: r*)."""
     christoffel.validate_quad(f0, f1, r)
@@ -237,6 +219,7 @@ def compute(
         constants=constants,
         checks=checks,
         local_tolerance=local_tolerance(ar, (data.f1 - data.f0) / data.f1),
+        selection=selection,
     )
 
 

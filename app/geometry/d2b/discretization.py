@@ -16,26 +16,15 @@ import numpy as np
 
 from app.geometry.catalog.section3 import (
     D2B_MEAN_CURVATURE as MEAN_CURVATURE,
-)
-from app.geometry.catalog.section3 import (
     D2B_PARALLEL as PARALLEL,
 )
+from app.geometry.catalog.section5 import RING_EQUATION_17 as EQUATION_17
 from app.geometry.catalog.section6 import (
     D2B_EXAMPLE_12 as EXAMPLE_12,
-)
-from app.geometry.catalog.section6 import (
     D2B_LEMMA_10 as LEMMA_10,
-)
-from app.geometry.catalog.section6 import (
     D2B_RADII as RADII,
-)
-from app.geometry.catalog.section6 import (
     D2B_RECURSION as RECURSION,
-)
-from app.geometry.catalog.section6 import (
     D2B_REMARK_13 as REMARK_13,
-)
-from app.geometry.catalog.section6 import (
     D2B_THEOREM_11 as THEOREM_11,
 )
 from app.geometry.checks import (
@@ -49,14 +38,15 @@ from app.geometry.checks import (
     relative_difference,
     relative_point_difference,
 )
-from app.geometry.curve import Curve, DiscretizationInfo
-from app.geometry.d2b import closed_forms as catenoid_convergence
-from app.geometry.d2b import construction as vanishing_mean_curvature
+from app.geometry.curve import EVERYTHING, Curve, DiscretizationInfo, Selection
+from app.geometry.d2b import (
+    closed_forms as catenoid_convergence,
+    construction as vanishing_mean_curvature,
+)
 from app.geometry.d2b.construction import GaussSequence, SequenceName
 from app.geometry.errors import DomainError
 from app.geometry.precision import Arithmetic, Array
 from app.geometry.surfaces.ring_curvature import (
-    EQUATION_17,
     edge_parallel_residuals,
     equation_17_check,
     minimal_residuals,
@@ -368,6 +358,7 @@ def compute(
     i_min: int | None = None,
     i_max: int | None = None,
     detail: bool = False,
+    selection: Selection = EVERYTHING,
 ) -> Curve:
     """(D2b) on i_min .. i_max with its Gauss image and checks (defaults: ``resolve_range``)."""
     if sequence == "custom" and j is not None:
@@ -392,4 +383,5 @@ def compute(
         {"gauss_image": data.n[window]},
         checks=checks,
         companion_tolerances={"gauss_image": construction_tolerance(ar, data)},
+        selection=selection,
     )

@@ -16,6 +16,7 @@ from typing import Any, Literal
 import numpy as np
 
 from app.geometry import properties
+from app.geometry.catalog import section3, section4
 from app.geometry.catalog.section3 import (
     D3_CLOSED_FORM as CLOSED_FORM,
 )
@@ -26,7 +27,7 @@ from app.geometry.checks import (
     not_applicable,
     relative_point_difference,
 )
-from app.geometry.curve import Curve, DiscretizationInfo, require_range
+from app.geometry.curve import EVERYTHING, Curve, DiscretizationInfo, Selection, require_range
 from app.geometry.d3 import closed_forms
 from app.geometry.d3.construction import Branch, construct, validate
 from app.geometry.errors import NotRepresentableError
@@ -39,10 +40,10 @@ FLOAT64_COORDINATE_LIMIT = 1e150
 
 
 STATEMENTS: tuple[Statement, ...] = (
-    properties.D3,
-    properties.D1,
-    properties.EQUATION_2,
-    properties.HANGING_STICKS,
+    section3.D3,
+    section3.D1,
+    section4.EQUATION_2,
+    section3.HANGING_STICKS,
     CLOSED_FORM,
 )
 
@@ -139,6 +140,7 @@ def compute(
     i_max: int = 10,
     method: Method = "construction",
     detail: bool = False,
+    selection: Selection = EVERYTHING,
 ) -> Curve:
     """(D3) on i_min .. i_max with its constants and checks."""
     validate(c, delta, y0, branch)
@@ -156,7 +158,9 @@ def compute(
         "i_max": i_max,
         "method": method,
     }
-    return INFO.curve(ar, parameters, data.p, constants=constants, checks=checks)
+    return INFO.curve(
+        ar, parameters, data.p, constants=constants, checks=checks, selection=selection
+    )
 
 
 def _closed_form(

@@ -19,23 +19,11 @@ import numpy as np
 from app.geometry import darboux, properties
 from app.geometry.catalog.section3 import (
     D4A_ARC_LENGTH as ARC_LENGTH,
-)
-from app.geometry.catalog.section3 import (
     D4A_CLOSED_FORM as CLOSED_FORM,
-)
-from app.geometry.catalog.section3 import (
     D4A_DARBOUX as DARBOUX,
-)
-from app.geometry.catalog.section3 import (
     D4A_DARBOUX_DISTANCE as DARBOUX_DISTANCE,
-)
-from app.geometry.catalog.section3 import (
     D4A_NIKOLAIDES as NIKOLAIDES,
-)
-from app.geometry.catalog.section3 import (
     D4A_ROTATION as ROTATION,
-)
-from app.geometry.catalog.section3 import (
     D4A_STICKS as STICKS,
 )
 from app.geometry.checks import (
@@ -48,9 +36,8 @@ from app.geometry.checks import (
     printed_residual,
     relative_point_difference,
 )
-from app.geometry.curve import Curve, DiscretizationInfo, require_range
-from app.geometry.d4a import closed_forms as sauer_closed_forms
-from app.geometry.d4a import construction as sauer_tractrix
+from app.geometry.curve import EVERYTHING, Curve, DiscretizationInfo, Selection, require_range
+from app.geometry.d4a import closed_forms as sauer_closed_forms, construction as sauer_tractrix
 from app.geometry.errors import NotRepresentableError
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array, Scalar
@@ -229,6 +216,7 @@ def compute(
     i_max: int = 10,
     method: Method = "construction",
     detail: bool = False,
+    selection: Selection = EVERYTHING,
 ) -> Curve:
     """(D4a) on i_min .. i_max with its companions, constants and checks."""
     sauer_tractrix.validate(h, s, beta0)
@@ -255,7 +243,9 @@ def compute(
     }
 
     companions = {"tractrix": data.tractrix, "axis_points": data.axis, "darboux": data.darboux}
-    return INFO.curve(ar, parameters, data.p, companions, constants=constants, checks=checks)
+    return INFO.curve(
+        ar, parameters, data.p, companions, constants=constants, checks=checks, selection=selection
+    )
 
 
 def _sticks(ctx: properties.Context, h: Scalar, s: Scalar, data: D4aPolygons) -> Check:

@@ -22,27 +22,14 @@ import numpy as np
 from app.geometry import gauss_image
 from app.geometry.catalog.section5 import (
     D4B_EQUATION_18 as EQUATION_18,
-)
-from app.geometry.catalog.section5 import (
     D4B_EQUATION_18_SLOPE as EQUATION_18_SLOPE,
-)
-from app.geometry.catalog.section5 import (
     D4B_EQUATION_19 as EQUATION_19,
-)
-from app.geometry.catalog.section5 import (
     D4B_EQUATION_19_ROTATION as EQUATION_19_ROTATION,
-)
-from app.geometry.catalog.section5 import (
     D4B_EQUATION_20 as EQUATION_20,
-)
-from app.geometry.catalog.section5 import (
     D4B_EQUATION_20_INVERSION as EQUATION_20_INVERSION,
-)
-from app.geometry.catalog.section5 import (
     D4B_THEOREM_7 as THEOREM_7,
-)
-from app.geometry.catalog.section5 import (
     D4B_THEOREM_8 as THEOREM_8,
+    RING_EQUATION_17 as EQUATION_17,
 )
 from app.geometry.checks import (
     Check,
@@ -58,7 +45,6 @@ from app.geometry.d4b import closed_forms as kinematic_closed_forms
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 from app.geometry.surfaces.ring_curvature import (
-    EQUATION_17,
     constant_curvature_residuals,
     equation_17_check,
     minimal_residuals,

@@ -9,7 +9,9 @@ assembled in ``d4b_curvature``.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from collections.abc import Callable
+from dataclasses import replace
+from functools import cached_property
 from typing import Any, Literal
 
 import numpy as np
@@ -17,38 +19,18 @@ import numpy as np
 from app.geometry import conditions, darboux, nikolaides
 from app.geometry.catalog.section3 import (
     D4B_DARBOUX as DARBOUX,
-)
-from app.geometry.catalog.section3 import (
     D4B_DARBOUX_DISTANCE as DARBOUX_DISTANCE,
-)
-from app.geometry.catalog.section3 import (
     D4B_NIKOLAIDES as NIKOLAIDES,
 )
 from app.geometry.catalog.section4 import (
     D4B_HYPOTHESIS as HYPOTHESIS,
-)
-from app.geometry.catalog.section4 import (
     D4B_RECURSION_13 as RECURSION_13,
-)
-from app.geometry.catalog.section4 import (
     D4B_ROTATION_ANGLE as ROTATION_ANGLE,
-)
-from app.geometry.catalog.section4 import (
     D4B_THEOREM_4_I as THEOREM_4_I,
-)
-from app.geometry.catalog.section4 import (
     D4B_THEOREM_4_II as THEOREM_4_II,
-)
-from app.geometry.catalog.section4 import (
     D4B_THEOREM_4_III as THEOREM_4_III,
-)
-from app.geometry.catalog.section4 import (
     D4B_THEOREM_5 as THEOREM_5,
-)
-from app.geometry.catalog.section4 import (
     D4B_THEOREM_6 as THEOREM_6,
-)
-from app.geometry.catalog.section4 import (
     D4B_TWO_STEP as TWO_STEP,
 )
 from app.geometry.checks import (
@@ -61,10 +43,9 @@ from app.geometry.checks import (
     relative_difference,
     relative_point_difference,
 )
-from app.geometry.curve import Curve, DiscretizationInfo, require_range
-from app.geometry.d4b import closed_forms as kinematic_closed_forms
-from app.geometry.d4b import curvature as d4b_curvature
-from app.geometry.d4b.construction import construct, validate
+from app.geometry.curve import EVERYTHING, Curve, DiscretizationInfo, Selection, require_range
+from app.geometry.d4b import closed_forms as kinematic_closed_forms, curvature as d4b_curvature
+from app.geometry.d4b.construction import KinematicTractrix, construct, validate
 from app.geometry.errors import NotRepresentableError
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 
@@ -145,29 +126,133 @@ ERRATUM_TWO_STEP = (
 )
 
 
-@dataclass(frozen=True)
 class D4bPolygons:
     """The polygons of one (D4b) computation, ``(n + 1, 2)`` each, on i_min .. i_max + 1.
 
     The extra last index only feeds checks (d_i needs p_{i+1}); responses show i_min .. i_max.
     ``p`` and ``tractrix`` come from the construction or, for ``method="closed-form"``, are the
     closed forms themselves (then ``constructed`` is false and Theorems 5, 6 are not compared).
+
+    Every polygon is computed when it is first used, at most once: a request that asks for p
+    alone runs the construction (or the closed form) and nothing else. ``replaced`` gives a copy
+    with some polygons swapped (the tests perturb them to see the checks fail).
     """
 
-    i_min: int
-    p: Array
-    tractrix: Array
-    axis: Array
-    darboux: Array
-    closed_p: Array
-    closed_tractrix: Array
-    constructed: bool
-    gauss: d4b_curvature.GaussImages
-    """Section 5: n_i, ñ_i, m_i (see ``d4b_curvature.GaussImages`` for their alignment)."""
-    exponent: float = 0.0
-    """Largest |(i + τ)L| of the closed forms: each closed-form vertex carries a relative error of
-    about eps·exponent from rounding that argument. The comparisons with the construction allow
-    for it, and so do the local checks when the polygons *are* the closed forms."""
+    def __init__(
+        self,
+        ar: Arithmetic,
+        h: float,
+        d: float,
+        beta0: float | None,
+        i_min: int,
+        i_max: int,
+        method: Method = "construction",
+    ) -> None:
+        self.ar, self.beta0, self.i_min, self.i_max = ar, beta0, i_min, i_max
+        self.parameters = (h, d)
+        self.h, self.d = ar.scalar(h), ar.scalar(d)
+        self.constructed = method == "construction"
+
+    def replaced(self, **polygons: Any) -> D4bPolygons:
+        """A copy with the given polygons (``p=…``, ``gauss=…``) in place of the computed ones."""
+        copy = object.__new__(D4bPolygons)
+        copy.__dict__.update(self.__dict__)
+        copy.__dict__.update(polygons)
+        return copy
+
+    @cached_property
+    def shift(self) -> Scalar:
+        """τ = ln(tan(β0/2))/L, the index shift of a tilted first stick (0 for a vertical one)."""
+        return kinematic_closed_forms.tilt_shift(self.ar, self.h, self.d, self.beta0)
+
+    @cached_property
+    def _i(self) -> Array:
+        return self.ar.indices(self.i_min, self.i_max + 1)
+
+    @cached_property
+    def _hull(self) -> tuple[int, KinematicTractrix]:
+        """The construction on the hull of 0 and i_min − 1 .. i_max + 2 (it starts at stick 0
+        anyway): the Gauss image n starts at index 0, and m_i needs p_{i−1} .. p_{i+1}."""
+        lo, hi = min(0, self.i_min - 1), max(0, self.i_max + 2)
+        return lo, construct(self.ar, *self.parameters, self.beta0, lo, hi)
+
+    def _window(self, points: Array) -> Array:
+        lo = self._hull[0]
+        return points[self.i_min - lo : self.i_max + 2 - lo]
+
+    @cached_property
+    def closed_p(self) -> Array:
+        """Theorem 5, eq. (14), at i_min .. i_max + 1."""
+        ar = self.ar
+        return kinematic_closed_forms.hyperbolic_cosine(ar, self.h, self.d, self._i, self.shift)
+
+    @cached_property
+    def closed_tractrix(self) -> Array:
+        """Theorem 6, eq. (16), at i_min .. i_max + 1."""
+        return kinematic_closed_forms.tractrix(self.ar, self.h, self.d, self._i, self.shift)
+
+    @cached_property
+    def p(self) -> Array:
+        """The rotation centres p_i (the discrete hyperbolic cosine)."""
+        return self._window(self._hull[1].centres) if self.constructed else self.closed_p
+
+    @cached_property
+    def tractrix(self) -> Array:
+        """The stick ends d_i (the discrete tractrix)."""
+        return self._window(self._hull[1].tractrix) if self.constructed else self.closed_tractrix
+
+    @cached_property
+    def axis(self) -> Array:
+        """The axis points x_i = (2di, 0)."""
+        if self.constructed:
+            return self._window(self._hull[1].axis_points)
+        return stack_points(2 * self.d * self._i, self.ar.zeros(len(self._i)))
+
+    @cached_property
+    def darboux(self) -> Array:
+        """e_i = 2d_i − x_i, the Darboux transform of x."""
+        return darboux.reflect_in_points(self.axis, self.tractrix)
+
+    @cached_property
+    def gauss(self) -> d4b_curvature.GaussImages:
+        """Section 5: n_i, ñ_i, m_i (see ``d4b_curvature.GaussImages`` for their alignment)."""
+        ar, h, d = self.ar, self.h, self.d
+        if not self.constructed:
+            return d4b_curvature.build(
+                ar, h, d, self.shift, self.i_min, self.i_max, 0, None, None, None
+            )
+        lo, built = self._hull
+        u0 = built.directions[0 - lo]
+        return d4b_curvature.build(
+            ar,
+            h,
+            d,
+            self.shift,
+            self.i_min,
+            self.i_max,
+            lo,
+            built.tractrix,
+            (u0[0], u0[1]),
+            built.centres[self.i_min - 1 - lo : self.i_max + 3 - lo],
+        )
+
+    @cached_property
+    def exponent(self) -> float:
+        """Largest |(i + τ)L| of the closed forms over i_min .. i_max + 1.
+
+        Each closed-form vertex carries a relative error of about eps·exponent from rounding that
+        argument; the comparisons with the construction allow for it, and so do the local checks
+        when the polygons *are* the closed forms. |(i + τ)L| is largest at an end of the range.
+        """
+        ar = self.ar
+        ends = ar.array([self.i_min, self.i_max + 1])
+        log_ratio = kinematic_closed_forms.log_ratio(ar, self.h, self.d)
+        return ar.to_float(np.max(abs((ends + self.shift) * log_ratio)))
+
+    @property
+    def vertices(self) -> int:
+        """n + 1: the rows of every polygon (i_min .. i_max + 1)."""
+        return self.i_max - self.i_min + 2
 
 
 def polygons(
@@ -179,44 +264,8 @@ def polygons(
     i_max: int,
     method: Method = "construction",
 ) -> D4bPolygons:
-    """Construction (Section 3) and closed forms (14), (16) on i_min .. i_max + 1.
-
-    The construction runs on the hull of 0 and i_min − 1 .. i_max + 2 (it starts at stick 0
-    anyway): the Gauss image n starts at index 0, and m_i needs p_{i−1} .. p_{i+1}.
-    """
-    hh, dd = ar.scalar(h), ar.scalar(d)
-    shift = kinematic_closed_forms.tilt_shift(ar, hh, dd, beta0)
-    i = ar.indices(i_min, i_max + 1)
-    closed_p = kinematic_closed_forms.hyperbolic_cosine(ar, hh, dd, i, shift)
-    closed_d = kinematic_closed_forms.tractrix(ar, hh, dd, i, shift)
-    if method == "construction":
-        lo, hi = min(0, i_min - 1), max(0, i_max + 2)
-        built = construct(ar, h, d, beta0, lo, hi)
-        window = slice(i_min - lo, i_max + 2 - lo)
-        p, tractrix, axis = built.centres[window], built.tractrix[window], built.axis_points[window]
-        u0 = built.directions[0 - lo]
-        gauss = d4b_curvature.build(
-            ar,
-            hh,
-            dd,
-            shift,
-            i_min,
-            i_max,
-            lo,
-            built.tractrix,
-            (u0[0], u0[1]),
-            built.centres[i_min - 1 - lo : i_max + 3 - lo],
-        )
-    else:
-        p, tractrix = closed_p, closed_d
-        axis = stack_points(2 * dd * i, ar.zeros(len(i)))
-        gauss = d4b_curvature.build(ar, hh, dd, shift, i_min, i_max, 0, None, None, None)
-    e = darboux.reflect_in_points(axis, tractrix)
-    constructed = method == "construction"
-    exponent = ar.to_float(np.max(abs((i + shift) * kinematic_closed_forms.log_ratio(ar, hh, dd))))
-    return D4bPolygons(
-        i_min, p, tractrix, axis, e, closed_p, closed_d, constructed, gauss, exponent
-    )
+    """Construction (Section 3) and closed forms (14), (16) on i_min .. i_max + 1, on demand."""
+    return D4bPolygons(ar, h, d, beta0, i_min, i_max, method)
 
 
 def conditioning(h: float, d: float) -> float:
@@ -237,48 +286,38 @@ def evaluate(
     data: D4bPolygons,
     detail: bool = False,
     beta0: float | None = None,
+    selection: Selection = EVERYTHING,
 ) -> tuple[dict[str, Scalar], list[Check]]:
-    """Fitted constants and every check of ``STATEMENTS`` on the given polygons."""
-    hh, dd = ar.scalar(h), ar.scalar(d)
-    n = len(data.p) - 1
-    indices = np.arange(data.i_min, data.i_min + n + 1, dtype=np.int64)
-    p, tractrix, axis, e = data.p, data.tractrix, data.axis, data.darboux
-    fits = {
-        "d1": conditions.d1(ar, p[:n]),
-        "d3": conditions.d3(ar, p[:n]),
-        "eq2": conditions.equation_2(ar, p[:n]),
-    }
-    constants = {k: f.constant for k, f in fits.items() if f.constant is not None}
-    local, construction, steps = tolerances(ar, h, d, data)
-    ctx = _Context(ar, hh, dd, indices, n, local, detail)
+    """Fitted constants and the selected checks of ``STATEMENTS`` on the given polygons.
+
+    Each check computes only the polygons and shared quantities it needs (``_Context``); the
+    constants of (D1), (D3) and (2) come with the checks (none for ``checks=none``).
+    """
+    ctx = _Context(ar, ar.scalar(h), ar.scalar(d), data, detail)
     checks = [
-        _hypothesis(ctx, p),
-        _fitted(ctx, THEOREM_4_I, fits["d1"], _ratio_erratum(ctx, p)),
-        _fitted(ctx, THEOREM_4_II, fits["d3"]),
-        _equation_2(ctx, fits, p[:n]),
-        _rotation_angle(ctx, p, axis),
-        _recursion(ctx, p),
-        _two_step(ctx, p),
-        _closed_form(ctx, THEOREM_5, data.constructed, p, data.closed_p, steps),
-        _closed_form(ctx, THEOREM_6, data.constructed, tractrix, data.closed_tractrix, steps),
-        ctx.check(DARBOUX, 0, darboux.edge_length_residuals(ar, axis[:n], e[:n])),
-        ctx.check(DARBOUX_DISTANCE, 0, darboux.distance_residuals(ar, axis[:n], e[:n], 2 * hh)),
-        _nikolaides(ctx, p, tractrix, axis),
+        evaluator(ctx)
+        for statement, evaluator in _EVALUATORS
+        if selection.wants_check(statement.id)
     ]
-    shift = kinematic_closed_forms.tilt_shift(ar, hh, dd, beta0)
-    checks += d4b_curvature.evaluate(
-        ar,
-        hh,
-        p,
-        tractrix,
-        data.gauss,
-        d4b_curvature.printed_forms(ar, hh, dd, shift, data.i_min, data.i_min + n - 1),
-        indices,
-        n,
-        ctx.tolerance,
-        construction,
-        detail,
-    )
+    if any(selection.wants_check(s.id) for s in d4b_curvature.STATEMENTS):
+        n = ctx.n
+        shift = kinematic_closed_forms.tilt_shift(ar, ctx.h, ctx.d, beta0)
+        checks += d4b_curvature.evaluate(
+            ar,
+            ctx.h,
+            data.p,
+            data.tractrix,
+            data.gauss,
+            d4b_curvature.printed_forms(ar, ctx.h, ctx.d, shift, data.i_min, data.i_min + n - 1),
+            ctx.indices,
+            n,
+            ctx.tolerance,
+            ctx.construction_tolerance,
+            detail,
+        )
+    constants: dict[str, Scalar] = {}
+    if not selection.no_checks:
+        constants = {k: f.constant for k, f in ctx.fits.items() if f.constant is not None}
     return constants, checks
 
 
@@ -289,7 +328,7 @@ def tolerances(ar: Arithmetic, h: float, d: float, data: D4bPolygons) -> tuple[f
     forms' own rounding when the polygons are the closed forms). Construction: comparisons
     along the whole recursion from stick 0.
     """
-    n = len(data.p) - 1
+    n = data.vertices - 1
     rounding = 4 * math.ceil(data.exponent)  # steps' worth of the closed forms' own rounding
     kappa = conditioning(h, d)
     local = kappa * ar.tolerance(LOCAL_STEPS + (0 if data.constructed else rounding))
@@ -306,6 +345,7 @@ def compute(
     i_max: int = 10,
     method: Method = "construction",
     detail: bool = False,
+    selection: Selection = EVERYTHING,
 ) -> Curve:
     """(D4b) on i_min .. i_max with its companions, constants and checks."""
     validate(h, d, beta0)
@@ -314,7 +354,7 @@ def compute(
     if ar.mode == "float64":
         _require_float64_representable(h, d, beta0, i_min, i_max)
     data = polygons(ar, h, d, beta0, i_min, i_max, method)
-    constants, checks = evaluate(ar, h, d, data, detail, beta0)
+    constants, checks = evaluate(ar, h, d, data, detail, beta0, selection)
     local, construction, _ = tolerances(ar, h, d, data)
     parameters: dict[str, Any] = {
         "h": h,
@@ -324,15 +364,12 @@ def compute(
         "i_max": i_max,
         "method": method,
     }
-
     companions = {
-        "tractrix": data.tractrix,
-        "axis_points": data.axis,
-        "darboux": data.darboux,
-        "tractrix_gauss_image": data.gauss.tractrix_gauss,
-        "contact_points": data.gauss.contact[1:],
-        "gauss_image": data.gauss.gauss,
+        name: build(data) for name, build in COMPANIONS.items() if selection.wants_companion(name)
     }
+    gauss_tolerances = {}
+    if any(name in companions for name in d4b_curvature.COMPANIONS):
+        gauss_tolerances = d4b_curvature.companion_tolerances(ar, data.gauss, construction)
     return INFO.curve(
         ar,
         parameters,
@@ -341,26 +378,60 @@ def compute(
         constants=constants,
         checks=checks,
         local_tolerance=local,
-        companion_tolerances=d4b_curvature.companion_tolerances(ar, data.gauss, construction),
+        companion_tolerances=gauss_tolerances,
+        selection=selection,
     )
 
 
+#: How each companion of ``INFO`` is read off the polygons (computed only when selected).
+COMPANIONS: dict[str, Callable[[D4bPolygons], Array]] = {
+    "tractrix": lambda data: data.tractrix,
+    "axis_points": lambda data: data.axis,
+    "darboux": lambda data: data.darboux,
+    "tractrix_gauss_image": lambda data: data.gauss.tractrix_gauss,
+    "contact_points": lambda data: data.gauss.contact[1:],
+    "gauss_image": lambda data: data.gauss.gauss,
+}
+
+
 class _Context:
-    """What every check of one computation shares."""
+    """What the checks of one computation share, each part computed when first needed."""
 
     def __init__(
-        self,
-        ar: Arithmetic,
-        h: Scalar,
-        d: Scalar,
-        indices: np.ndarray[Any, np.dtype[np.int64]],
-        n: int,
-        tolerance: float,
-        detail: bool,
+        self, ar: Arithmetic, h: Scalar, d: Scalar, data: D4bPolygons, detail: bool
     ) -> None:
-        self.ar, self.h, self.d = ar, h, d
-        self.indices, self.n = indices, n
-        self.tolerance, self.detail = tolerance, detail
+        self.ar, self.h, self.d, self.data, self.detail = ar, h, d, data, detail
+        self.n = data.vertices - 1
+        self.indices = np.arange(data.i_min, data.i_min + self.n + 1, dtype=np.int64)
+
+    @cached_property
+    def _tolerances(self) -> tuple[float, float, int]:
+        return tolerances(self.ar, self.h, self.d, self.data)
+
+    @property
+    def tolerance(self) -> float:
+        """The local tolerance: a check on a few neighbouring vertices."""
+        return self._tolerances[0]
+
+    @property
+    def construction_tolerance(self) -> float:
+        """Comparisons along the whole recursion from stick 0."""
+        return self._tolerances[1]
+
+    @property
+    def steps(self) -> int:
+        """Construction steps from stick 0 to the farthest index (plus the closed forms')."""
+        return self._tolerances[2]
+
+    @cached_property
+    def fits(self) -> dict[str, conditions.ConditionFit]:
+        """Least-squares fits of (D1), (D3) and (2) on p_{i_min} .. p_{i_max}."""
+        p = self.data.p[: self.n]
+        return {
+            "d1": conditions.d1(self.ar, p),
+            "d3": conditions.d3(self.ar, p),
+            "eq2": conditions.equation_2(self.ar, p),
+        }
 
     def check(
         self,
@@ -477,7 +548,7 @@ def _closed_form(
     statement: Statement,
     constructed: bool,
     computed: Array,
-    closed: Array,
+    closed_form: Callable[[], Array],
     steps: int,
 ) -> Check:
     """Construction against closed form; the construction's rounding grows with its steps."""
@@ -486,6 +557,7 @@ def _closed_form(
         return not_applicable(
             statement, tolerance, "method=closed-form: the construction was not run to compare"
         )
+    closed = closed_form()
     residuals = relative_point_difference(ctx.ar, computed[: ctx.n], closed[: ctx.n])
     return check_residuals(
         statement, ctx.ar, ctx.indices[: ctx.n], residuals, tolerance, ctx.detail
@@ -497,6 +569,53 @@ def _nikolaides(ctx: _Context, p: Array, tractrix: Array, axis: Array) -> Check:
     at_p = nikolaides.right_angle_residuals(tractrix[:n], axis[:n], p[:n])
     at_next = nikolaides.right_angle_residuals(tractrix[:n], axis[:n], p[1 : n + 1])
     return ctx.check(NIKOLAIDES, 0, np.maximum(at_p, at_next))
+
+
+def _darboux(ctx: _Context) -> Check:
+    n, axis, e = ctx.n, ctx.data.axis, ctx.data.darboux
+    return ctx.check(DARBOUX, 0, darboux.edge_length_residuals(ctx.ar, axis[:n], e[:n]))
+
+
+def _darboux_distance(ctx: _Context) -> Check:
+    n, axis, e = ctx.n, ctx.data.axis, ctx.data.darboux
+    residuals = darboux.distance_residuals(ctx.ar, axis[:n], e[:n], 2 * ctx.h)
+    return ctx.check(DARBOUX_DISTANCE, 0, residuals)
+
+
+#: Each statement of Section 3 and 4.2 about (D4b) and the function that evaluates it, in the
+#: order of the response; each reads only the polygons and fits it needs.
+_EVALUATORS: tuple[tuple[Statement, Callable[[_Context], Check]], ...] = (
+    (HYPOTHESIS, lambda c: _hypothesis(c, c.data.p)),
+    (
+        THEOREM_4_I,
+        lambda c: _fitted(c, THEOREM_4_I, c.fits["d1"], _ratio_erratum(c, c.data.p)),
+    ),
+    (THEOREM_4_II, lambda c: _fitted(c, THEOREM_4_II, c.fits["d3"])),
+    (THEOREM_4_III, lambda c: _equation_2(c, c.fits, c.data.p[: c.n])),
+    (ROTATION_ANGLE, lambda c: _rotation_angle(c, c.data.p, c.data.axis)),
+    (RECURSION_13, lambda c: _recursion(c, c.data.p)),
+    (TWO_STEP, lambda c: _two_step(c, c.data.p)),
+    (
+        THEOREM_5,
+        lambda c: _closed_form(
+            c, THEOREM_5, c.data.constructed, c.data.p, lambda: c.data.closed_p, c.steps
+        ),
+    ),
+    (
+        THEOREM_6,
+        lambda c: _closed_form(
+            c,
+            THEOREM_6,
+            c.data.constructed,
+            c.data.tractrix,
+            lambda: c.data.closed_tractrix,
+            c.steps,
+        ),
+    ),
+    (DARBOUX, _darboux),
+    (DARBOUX_DISTANCE, _darboux_distance),
+    (NIKOLAIDES, lambda c: _nikolaides(c, c.data.p, c.data.tractrix, c.data.axis)),
+)
 
 
 def _require_resolvable(ar: Arithmetic, h: float, d: float) -> None:

@@ -17,11 +17,7 @@ import numpy as np
 from app.geometry import nikolaides
 from app.geometry.catalog.section2 import (
     S4_EVOLUTE as EVOLUTE,
-)
-from app.geometry.catalog.section2 import (
     S4_NIKOLAIDES as NIKOLAIDES,
-)
-from app.geometry.catalog.section2 import (
     S4_PURSUIT as PURSUIT,
 )
 from app.geometry.checks import Check, Statement, check_residuals, point_distance

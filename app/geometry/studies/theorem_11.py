@@ -29,10 +29,9 @@ from dataclasses import replace
 
 import numpy as np
 
+from app.geometry.catalog import section6
 from app.geometry.catalog.section6 import (
     T11_LEMMA_10_PROOF as LEMMA_10_PROOF,
-)
-from app.geometry.catalog.section6 import (
     T11_REMARK_13_UNIFORM as REMARK_13_UNIFORM,
 )
 from app.geometry.checks import (
@@ -44,9 +43,7 @@ from app.geometry.checks import (
     printed_residual,
     relative_point_difference,
 )
-from app.geometry.d2b import closed_forms as cc
-from app.geometry.d2b import construction as vmc
-from app.geometry.d2b import discretization as d2b
+from app.geometry.d2b import closed_forms as cc, construction as vmc, discretization as d2b
 from app.geometry.errors import DomainError
 from app.geometry.precision import Arithmetic, Array
 from app.geometry.smooth.distance import distance_to_catenary
@@ -145,10 +142,10 @@ THEOREM_11_INFO = StudyInfo(
     step_name="1/j",
     measures=MEASURES,
     statements=(
-        d2b.THEOREM_11,
-        d2b.LEMMA_10,
-        d2b.EXAMPLE_12,
-        d2b.REMARK_13,
+        section6.D2B_THEOREM_11,
+        section6.D2B_LEMMA_10,
+        section6.D2B_EXAMPLE_12,
+        section6.D2B_REMARK_13,
         REMARK_13_UNIFORM,
         LEMMA_10_PROOF,
     ),
@@ -337,12 +334,17 @@ def theorem_11(
             *d2b.ERRATUM_LEMMA_10, printed_residual=max(lemma_printed) if lemma_printed else None
         )
         return [
-            converges(d2b.THEOREM_11, result, CONVERGENT, fits, "1/j"),
+            converges(section6.D2B_THEOREM_11, result, CONVERGENT, fits, "1/j"),
             lemma.check(
-                ar, d2b.LEMMA_10, "every vertex of every level, both sequences", lemma_erratum
+                ar,
+                section6.D2B_LEMMA_10,
+                "every vertex of every level, both sequences",
+                lemma_erratum,
             ),
-            example.check(ar, d2b.EXAMPLE_12, "every vertex i >= 0 of every level"),
-            remark.check(ar, d2b.REMARK_13, "every vertex −j/2 < i <= 2^k i_max of every level"),
+            example.check(ar, section6.D2B_EXAMPLE_12, "every vertex i >= 0 of every level"),
+            remark.check(
+                ar, section6.D2B_REMARK_13, "every vertex −j/2 < i <= 2^k i_max of every level"
+            ),
             _with_erratum(uniform, ERRATUM_REMARK_13, _largest_ratio(domain_errors)),
             _with_erratum(proof, ERRATUM_RIEMANN, _largest_ratio(printed_sums)),
         ]

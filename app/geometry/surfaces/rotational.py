@@ -19,17 +19,9 @@ import numpy as np
 
 from app.geometry.catalog.section5 import (
     D4B_THEOREM_7 as THEOREM_7,
-)
-from app.geometry.catalog.section5 import (
     RING_EQUATION_17 as EQUATION_17_FACES,
-)
-from app.geometry.catalog.section5 import (
     SURFACE_MINIMAL as MINIMAL,
-)
-from app.geometry.catalog.section5 import (
     SURFACE_PARALLELITY as PARALLELITY,
-)
-from app.geometry.catalog.section5 import (
     SURFACE_PLANARITY as PLANARITY,
 )
 from app.geometry.checks import Check, Statement, check_residuals, not_applicable
@@ -43,6 +35,12 @@ LOCAL_STEPS = 16
 
 
 Claim = Literal["minimal", "constant-curvature"]
+
+#: What ``build`` checks the meshes of a rotational surface for, by the claim it is built with.
+STATEMENTS: dict[str, tuple[Statement, ...]] = {
+    "minimal": (PLANARITY, PARALLELITY, EQUATION_17_FACES, MINIMAL),
+    "constant-curvature": (PLANARITY, PARALLELITY, EQUATION_17_FACES, THEOREM_7),
+}
 
 
 @dataclass(frozen=True)

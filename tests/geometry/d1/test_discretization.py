@@ -9,9 +9,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from app.geometry.d1 import closed_forms
-from app.geometry.d1 import construction as hanging_chain
-from app.geometry.d1 import discretization as d1
+from app.geometry.d1 import closed_forms, construction as hanging_chain, discretization as d1
 from app.geometry.errors import DomainError, NotRepresentableError
 from app.geometry.precision import Float64, MultiPrecision
 from tests.reference import d1 as reference

@@ -9,10 +9,12 @@ import mpmath
 import numpy as np
 import pytest
 
-from app.geometry.d2a import construction as christoffel
-from app.geometry.d2a import hex as d2a_hex
-from app.geometry.d2a import quad as d2a_quad
-from app.geometry.d2a import stereographic
+from app.geometry.d2a import (
+    construction as christoffel,
+    hex as d2a_hex,
+    quad as d2a_quad,
+    stereographic,
+)
 from app.geometry.errors import DomainError
 from app.geometry.precision import Arithmetic, Float64, MultiPrecision
 from tests.reference import d2a as reference

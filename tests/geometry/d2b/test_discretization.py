@@ -7,9 +7,11 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from app.geometry.d2b import closed_forms as catenoid_convergence
-from app.geometry.d2b import construction as vanishing_mean_curvature
-from app.geometry.d2b import discretization as d2b
+from app.geometry.d2b import (
+    closed_forms as catenoid_convergence,
+    construction as vanishing_mean_curvature,
+    discretization as d2b,
+)
 from app.geometry.errors import DomainError
 from app.geometry.precision import Arithmetic, Float64, MultiPrecision
 from tests.reference import curvature as reference

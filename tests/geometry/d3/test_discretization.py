@@ -9,8 +9,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from app.geometry.d3 import construction as area_length
-from app.geometry.d3 import discretization as d3
+from app.geometry.d3 import construction as area_length, discretization as d3
 from app.geometry.errors import DomainError, NotRepresentableError
 from app.geometry.precision import Float64, MultiPrecision
 from tests.reference import d3 as reference

@@ -10,9 +10,11 @@ import mpmath
 import numpy as np
 import pytest
 
-from app.geometry.d4a import closed_forms as sauer_closed_forms
-from app.geometry.d4a import construction as sauer_tractrix
-from app.geometry.d4a import discretization as d4a
+from app.geometry.d4a import (
+    closed_forms as sauer_closed_forms,
+    construction as sauer_tractrix,
+    discretization as d4a,
+)
 from app.geometry.errors import DomainError, NotRepresentableError
 from app.geometry.precision import Float64, MultiPrecision
 from tests.reference import d4a as reference

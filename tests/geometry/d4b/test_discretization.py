@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import math
-from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -68,7 +67,7 @@ def test_errata_carry_printed_residuals_far_above_tolerance(float64: Float64) ->
 def _perturbed(data: d4b.D4bPolygons, field: str, index: int, factor: float) -> d4b.D4bPolygons:
     points = getattr(data, field).copy()
     points[index] = points[index] * factor
-    return replace(data, **{field: points})
+    return data.replaced(**{field: points})
 
 
 PERTURBED_P = {
@@ -105,7 +104,7 @@ def test_checks_fail_on_a_perturbed_polygon(
     assert all(verdicts(d4b.evaluate(float64, 1.0, 0.3, data)[1]).values())
     bad = _perturbed(data, field, 12, 1 + 1e-7)
     if field == "tractrix":  # the Darboux transform is derived from the tractrix
-        bad = replace(bad, darboux=2 * bad.tractrix - bad.axis)
+        bad = bad.replaced(darboux=2 * bad.tractrix - bad.axis)
     results = verdicts(d4b.evaluate(float64, 1.0, 0.3, bad)[1])
     assert {k for k, v in results.items() if v is False} == failing
 
@@ -116,7 +115,7 @@ def test_rotation_angle_check_fails_when_a_centre_leaves_the_bisector(float64: F
     data = d4b.polygons(float64, 1.0, 0.3, None, -5, 5)
     p = data.p.copy()
     p[6, 0] += 1e-3
-    results = verdicts(d4b.evaluate(float64, 1.0, 0.3, replace(data, p=p))[1])
+    results = verdicts(d4b.evaluate(float64, 1.0, 0.3, data.replaced(p=p))[1])
     assert results["theorem-4-rotation-angle"] is False
 
 
@@ -126,7 +125,7 @@ def test_hypothesis_check_fails_when_heights_drop_below_d(float64: Float64) -> N
     p[4:6, 1] = 0.2  # p_{i-1}^y p_i^y = 0.04 < d² = 0.09
     check = next(
         c
-        for c in d4b.evaluate(float64, 1.0, 0.3, replace(data, p=p))[1]
+        for c in d4b.evaluate(float64, 1.0, 0.3, data.replaced(p=p))[1]
         if c.id == "theorem-4-hypothesis"
     )
     assert check.holds is False

@@ -12,8 +12,7 @@ import pytest
 
 from app.geometry.errors import DomainError, NotRepresentableError
 from app.geometry.precision import Float64, MultiPrecision
-from app.geometry.smooth import curves as smooth
-from app.geometry.smooth import references as smooth_curves
+from app.geometry.smooth import curves as smooth, references as smooth_curves
 from tests.reference import smooth as reference
 from tests.reference.compare import worst_relative
 

@@ -8,8 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from app.geometry.d2b import closed_forms as cc
-from app.geometry.d2b import construction as vmc
+from app.geometry.d2b import closed_forms as cc, construction as vmc
 from app.geometry.errors import DomainError
 from app.geometry.precision import Arithmetic, Float64, MultiPrecision
 from app.geometry.studies import theorem_11 as cr

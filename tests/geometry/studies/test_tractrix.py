@@ -12,8 +12,7 @@ import pytest
 from app.geometry.d4b.construction import KinematicTractrix, construct
 from app.geometry.errors import DomainError
 from app.geometry.precision import Arithmetic, Float64, MultiPrecision
-from app.geometry.studies import limit_curves as lc
-from app.geometry.studies import tractrix as cv
+from app.geometry.studies import limit_curves as lc, tractrix as cv
 from tests.reference import convergence as reference
 
 SMALL = {"h": 1.0, "d0": 0.2, "levels": 5, "x_max": 1.5, "samples": 41}

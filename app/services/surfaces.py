@@ -2,28 +2,30 @@
 
 The geometry is in ``app.geometry.surfaces.rotational``; this module picks the polygons from a
 discretization's curve (through the registry, so any discretization with the right companions
-works), enforces the mesh budget before any work, and encodes JSON, OBJ, PLY or GLB.
+works; the curve is computed with those companions only and no checks), enforces the mesh
+budget before any work, and encodes JSON, OBJ, PLY or GLB as bytes.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
-from fastapi import Response
 
 from app.errors import UnknownIdError
 from app.geometry import gauss_image
+from app.geometry.curve import Selection
 from app.geometry.errors import DomainError, NotRepresentableError
 from app.geometry.precision import Arithmetic, MultiPrecision
 from app.geometry.surfaces import rotational as rotational_surface
 from app.limits import enforce_mesh, enforce_range, timed_arithmetic
 from app.mesh_formats import glb_bytes, obj_bytes, ply_bytes
 from app.registry import DISCRETIZATIONS
-from app.responses import JSONBytesResponse, check_document, encode_json
+from app.responses import check_document, encode_json
 from app.schemas.common import CurveQuery
 from app.schemas.surfaces import SurfaceQuery
+from app.services.selection import chosen
 from app.settings import Settings
 
 
@@ -103,6 +105,8 @@ def compute(
     settings: Settings,
 ) -> SurfaceResult:
     """Check the budgets, compute the meridian curve, then the meshes and their checks."""
+    claim = "constant-curvature" if kind.meridian == "tractrix" else "minimal"
+    wanted = chosen("checks", surface.checks, (s.id for s in rotational_surface.STATEMENTS[claim]))
     entry = DISCRETIZATIONS[surface.discretization]
     arguments = curve_query.core_arguments()
     i_min, i_max = arguments["i_min"], arguments["i_max"]
@@ -140,8 +144,12 @@ def compute(
             surface.discretization,
         )
     ar = timed_arithmetic(settings, curve_query.precision, curve_query.digits)
+    if kind.meridian == "tractrix":
+        needed = frozenset({"tractrix", "tractrix_gauss_image"})
+    else:
+        needed = frozenset() if circumscribed else frozenset({"gauss_image"})
     try:
-        curve = entry.compute(ar, **arguments)
+        curve = entry.compute(ar, **arguments, selection=Selection(frozenset(), needed))
     except DomainError as error:
         if not circumscribed:
             raise
@@ -175,6 +183,8 @@ def compute(
         K,
         ar.tolerance(max(recursion, rotational_surface.LOCAL_STEPS)),
     )
+    selected = Selection(wanted, failed_only=surface.checks == "failed")
+    built = replace(built, checks=selected.keep(built.checks))
     parameters = {**curve.parameters, "i_min": i_min, "i_max": i_max}
     parameters.update({"m": m, "steps": steps, "gauss_image": resolved})
     return SurfaceResult(
@@ -263,10 +273,11 @@ def _comments(result: SurfaceResult) -> list[str]:
     ]
 
 
-def file_response(result: SurfaceResult, file_format: str) -> Response:
-    """The surface in ``file_format`` (json, obj, ply, glb), with a download file name."""
+def encoded(result: SurfaceResult, file_format: str) -> tuple[bytes, str, dict[str, str]]:
+    """(body, media type, headers) of the surface in ``file_format`` (json, obj, ply, glb);
+    files carry a download file name."""
     if file_format == "json":
-        return JSONBytesResponse(encode_json(document(result)))
+        return encode_json(document(result)), "application/json", {}
     built = result.surface
     ar = built.arithmetic
     vertices = _vertices(result)
@@ -284,8 +295,4 @@ def file_response(result: SurfaceResult, file_format: str) -> Response:
         extras = {"id": result.kind.id, "parameters": result.parameters}
         body = glb_bytes(_floats(ar, vertices), faces, floats, extras)
     name = f"{result.kind.id}.{file_format}"
-    return Response(
-        body,
-        media_type=MEDIA_TYPES[file_format],
-        headers={"Content-Disposition": f'attachment; filename="{name}"'},
-    )
+    return body, MEDIA_TYPES[file_format], {"Content-Disposition": f'attachment; filename="{name}"'}
