@@ -26,11 +26,7 @@ from app.geometry.catalog.section4 import (
 )
 from app.geometry.checks import Check, Erratum, Statement, check_residuals
 from app.geometry.precision import Arithmetic, Array, Scalar
-
-#: Local checks combine a handful of neighbouring values; their tolerance allows this many
-#: rounding steps (as for D4b).
-LOCAL_STEPS = 16
-
+from app.geometry.tolerances import LOCAL_STEPS
 
 PROPERTIES: tuple[Statement, ...] = (D1, D3, EQUATION_2, HANGING_STICKS)
 

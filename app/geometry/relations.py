@@ -39,9 +39,7 @@ from app.geometry.surfaces.ring_curvature import (
     minimal_residuals,
     ring_curvatures,
 )
-
-#: Local conditions combine a handful of neighbouring values (as in the discretizations' checks).
-LOCAL_STEPS = 16
+from app.geometry.tolerances import LOCAL_STEPS
 
 
 @dataclass(frozen=True)

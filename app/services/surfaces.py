@@ -19,6 +19,7 @@ from app.geometry.curve import Selection
 from app.geometry.errors import DomainError, NotRepresentableError
 from app.geometry.precision import Arithmetic, MultiPrecision
 from app.geometry.surfaces import rotational as rotational_surface
+from app.geometry.tolerances import LOCAL_STEPS
 from app.limits import enforce_mesh, enforce_range, timed_arithmetic
 from app.mesh_formats import glb_bytes, obj_bytes, ply_bytes
 from app.registry import DISCRETIZATIONS
@@ -181,7 +182,7 @@ def compute(
         steps,
         claim,  # type: ignore[arg-type]
         K,
-        ar.tolerance(max(recursion, rotational_surface.LOCAL_STEPS)),
+        ar.tolerance(max(recursion, LOCAL_STEPS)),
     )
     selected = Selection(wanted, failed_only=surface.checks == "failed")
     built = replace(built, checks=selected.keep(built.checks))

@@ -24,11 +24,9 @@ from app.geometry.d1 import closed_forms
 from app.geometry.d1.construction import construct, validate
 from app.geometry.errors import NotRepresentableError
 from app.geometry.precision import Arithmetic, Array, Scalar
+from app.geometry.tolerances import FLOAT64_COORDINATE_LIMIT, LOCAL_STEPS, NOT_CONSTRUCTED
 
 Method = Literal["construction", "closed-form"]
-
-#: Float64 results keep every coordinate below this size (checks multiply two coordinates).
-FLOAT64_COORDINATE_LIMIT = 1e150
 
 
 STATEMENTS: tuple[Statement, ...] = (*properties.PROPERTIES, CLOSED_FORM)
@@ -157,11 +155,9 @@ def compute(
 def _closed_form(ctx: properties.Context, data: D1Polygons, steps: int) -> Check:
     """Construction against closed form; the construction's rounding grows with its steps."""
     ar = ctx.ar
-    tolerance = ar.tolerance(max(steps, properties.LOCAL_STEPS))
+    tolerance = ar.tolerance(max(steps, LOCAL_STEPS))
     if not data.constructed:
-        return not_applicable(
-            CLOSED_FORM, tolerance, "method=closed-form: the construction was not run to compare"
-        )
+        return not_applicable(CLOSED_FORM, tolerance, NOT_CONSTRUCTED)
     tiny = ar.scalar(np.finfo(np.float64).tiny)
     size = np.where(data.closed_size > tiny, data.closed_size, tiny)  # p_0 = (0, 0): absolute
     residuals = point_distance(ar, data.p, data.closed) / size

@@ -22,11 +22,7 @@ from app.geometry.checks import (
 from app.geometry.errors import NotRepresentableError
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
-
-#: Local checks combine a handful of neighbouring values; their tolerance allows this many
-#: rounding steps. Checks that compare vertices with closed forms add the number of edges
-#: summed from p_0 (rounding grows along the cumulative sum).
-LOCAL_STEPS = 16
+from app.geometry.tolerances import LOCAL_STEPS
 
 #: In float64 every f_i and 1/f_i stays below this bound, so that the printed formulas (which
 #: hold f⁴) and the areas (products of coordinates) stay finite.

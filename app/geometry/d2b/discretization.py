@@ -52,9 +52,7 @@ from app.geometry.surfaces.ring_curvature import (
     minimal_residuals,
     ring_curvatures,
 )
-
-#: Local checks combine a handful of neighbouring values.
-LOCAL_STEPS = 16
+from app.geometry.tolerances import LOCAL_STEPS
 
 #: theorem-11 holds when doubling j shrinks the distance to the catenary (ratio below 1).
 CONVERGENCE_TOLERANCE = 1.0

@@ -32,11 +32,9 @@ from app.geometry.d3 import closed_forms
 from app.geometry.d3.construction import Branch, construct, validate
 from app.geometry.errors import NotRepresentableError
 from app.geometry.precision import Arithmetic, Array, Scalar
+from app.geometry.tolerances import FLOAT64_COORDINATE_LIMIT, LOCAL_STEPS, NOT_CONSTRUCTED
 
 Method = Literal["construction", "closed-form"]
-
-#: Float64 results keep every coordinate below this size (checks multiply two coordinates).
-FLOAT64_COORDINATE_LIMIT = 1e150
 
 
 STATEMENTS: tuple[Statement, ...] = (
@@ -179,7 +177,7 @@ def _closed_form(
     v_min = ar.to_float(ar.acosh(ratio)) if ratio > 1 else 0.0
     amplification = math.ceil(1 / max(v_min, math.sqrt(ar.eps), 1e-300))
     amplification = max(1, amplification)
-    tolerance = ar.tolerance(max(steps, properties.LOCAL_STEPS) * amplification)
+    tolerance = ar.tolerance(max(steps, LOCAL_STEPS) * amplification)
     note = (
         f"the polygon passes within v = {v_min:.3g} of its lowest point (argument of the "
         f"catenary), where rounding grows about 1/v times; the tolerance allows it"
@@ -187,9 +185,7 @@ def _closed_form(
         else None
     )
     if not data.constructed:
-        return not_applicable(
-            CLOSED_FORM, tolerance, "method=closed-form: the construction was not run to compare"
-        )
+        return not_applicable(CLOSED_FORM, tolerance, NOT_CONSTRUCTED)
     residuals = relative_point_difference(ar, data.p, data.closed)
     return check_residuals(
         CLOSED_FORM, ar, ctx.indices, residuals, tolerance, ctx.detail, note=note

@@ -41,11 +41,10 @@ from app.geometry.d4a import closed_forms as sauer_closed_forms, construction as
 from app.geometry.errors import NotRepresentableError
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array, Scalar
+from app.geometry.tolerances import FLOAT64_COORDINATE_LIMIT, LOCAL_STEPS, NOT_CONSTRUCTED
 
 Method = Literal["construction", "closed-form"]
 
-#: Float64 results keep every coordinate below this size (checks multiply two coordinates).
-FLOAT64_COORDINATE_LIMIT = 1e150
 
 #: Below this step ratio s/h the symmetry lines of consecutive tractrix edges meet at angles
 #: too small for float64 (p loses about log10(h/s) digits; see docs/errata.md, D4a numerics).
@@ -192,7 +191,7 @@ def evaluate(
     steps = max(abs(data.i_min - 1), abs(data.i_min + n + 2)) + 1
     # p_i is where nearly parallel lines meet: resolved to about h/s + (sticks walked) units of
     # rounding (docs/checks.md); every check that reads p allows that
-    p_tolerance = ar.tolerance(properties.LOCAL_STEPS + steps + math.ceil(h / s))
+    p_tolerance = ar.tolerance(LOCAL_STEPS + steps + math.ceil(h / s))
     property_checks = properties.checks(ctx, found, None, p_tolerance)
     checks = [
         _sticks(ctx, hh, ss, data),
@@ -316,9 +315,7 @@ def _closed_form(ctx: properties.Context, data: D4aPolygons, tolerance: float) -
     """
     ar = ctx.ar
     if not data.constructed:
-        return not_applicable(
-            CLOSED_FORM, tolerance, "method=closed-form: the construction was not run to compare"
-        )
+        return not_applicable(CLOSED_FORM, tolerance, NOT_CONSTRUCTED)
     n = len(data.p) - 1
     ends = data.explicit_tractrix[:n]
     residuals = np.maximum(

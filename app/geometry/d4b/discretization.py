@@ -48,20 +48,15 @@ from app.geometry.d4b import closed_forms as kinematic_closed_forms, curvature a
 from app.geometry.d4b.construction import KinematicTractrix, construct, validate
 from app.geometry.errors import NotRepresentableError
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
+from app.geometry.tolerances import (
+    FLOAT64_COORDINATE_LIMIT,
+    LOCAL_STEPS,
+    NOT_CONSTRUCTED,
+    RESOLUTION_MARGIN,
+)
 
 Method = Literal["construction", "closed-form"]
 
-#: Local checks combine a handful of neighbouring values; their tolerance allows this many
-#: rounding steps.
-LOCAL_STEPS = 16
-
-#: Float64 results keep every coordinate below this size, so that the checks, which multiply
-#: two coordinates (areas, dot products), stay finite.
-FLOAT64_COORDINATE_LIMIT = 1e150
-
-#: Δ²p^y/p^y is about (2d/h)²; the constants of (D1), (2) are resolved when that exceeds the
-#: working precision by this factor squared (float64: d/h >= 1.5e-6).
-RESOLUTION_MARGIN = 100
 
 S = Statement
 
@@ -554,9 +549,7 @@ def _closed_form(
     """Construction against closed form; the construction's rounding grows with its steps."""
     tolerance = conditioning(ctx.h, ctx.d) * ctx.ar.tolerance(max(steps, LOCAL_STEPS))
     if not constructed:
-        return not_applicable(
-            statement, tolerance, "method=closed-form: the construction was not run to compare"
-        )
+        return not_applicable(statement, tolerance, NOT_CONSTRUCTED)
     closed = closed_form()
     residuals = relative_point_difference(ctx.ar, computed[: ctx.n], closed[: ctx.n])
     return check_residuals(

@@ -26,15 +26,11 @@ from app.geometry.errors import NotRepresentableError
 from app.geometry.polygon import magnitude
 from app.geometry.precision import GUARD_DIGITS, Arithmetic, Array, stack_points
 from app.geometry.smooth import curves as smooth
-
-#: Samples stay below this size in float64, as the discretizations' coordinates do.
-FLOAT64_COORDINATE_LIMIT = 1e150
+from app.geometry.tolerances import FLOAT64_COORDINATE_LIMIT, LOCAL_STEPS
 
 #: In mp, cosh(x/h) is resolved to about |x/h| units of the working precision, which carries
 #: GUARD_DIGITS more digits than requested: |x|/h up to 10^GUARD_DIGITS keeps the requested ones.
 MP_ARGUMENT_LIMIT = 10.0**GUARD_DIGITS
-
-LOCAL_STEPS = 16
 
 
 STATEMENTS: tuple[Statement, ...] = (PURSUIT, EVOLUTE, NIKOLAIDES)

@@ -48,7 +48,6 @@ from app.geometry.errors import DomainError
 from app.geometry.precision import Arithmetic, Array
 from app.geometry.smooth.distance import distance_to_catenary
 from app.geometry.studies.tractrix import (
-    LOCAL_STEPS,
     SAMPLE_COST,
     WORK_CAP,
     Level,
@@ -59,6 +58,7 @@ from app.geometry.studies.tractrix import (
     converges,
     observed_order,
 )
+from app.geometry.tolerances import LOCAL_STEPS
 
 Meridian = Callable[[Arithmetic, Array, int], Array]
 """The (D2b) construction the study measures (tests pass a perturbed one)."""

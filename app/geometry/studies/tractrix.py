@@ -63,13 +63,12 @@ from app.geometry.errors import DomainError
 from app.geometry.precision import Arithmetic, Array, Scalar
 from app.geometry.smooth.distance import distance_to_catenary, distance_to_tractrix
 from app.geometry.studies import limit_curves as lc
+from app.geometry.tolerances import LOCAL_STEPS
 
 #: A limit claim holds under refinement when every halving of the step multiplies the sup
 #: error by at most this factor: a local order of at least 1/2 at every level.
 CONVERGENCE_RATIO = 2**-0.5
 
-#: Local identities combine a handful of operations; their tolerance allows this many steps.
-LOCAL_STEPS = 16
 
 #: The compact set is |x| <= x_max with x_max <= MAX_SPAN·h (cosh(x/h) stays far from overflow).
 MAX_SPAN = 20

@@ -29,10 +29,7 @@ from app.geometry.curvature import FaceCurvatures, face_curvatures, planarity
 from app.geometry.precision import Arithmetic, Array
 from app.geometry.surfaces.mesh import MeshLayout, face_vertices, layout, revolve
 from app.geometry.surfaces.revolution_formulas import face_residuals
-
-#: Local checks on one face combine a handful of rounded values.
-LOCAL_STEPS = 16
-
+from app.geometry.tolerances import LOCAL_STEPS
 
 Claim = Literal["minimal", "constant-curvature"]
 
