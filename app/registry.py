@@ -21,8 +21,8 @@ from app.geometry.d3 import discretization as d3
 from app.geometry.d4a import discretization as d4a
 from app.geometry.d4b import discretization as d4b
 from app.geometry.smooth import references as smooth_curves
-from app.geometry.studies import theorem_11 as catenoid_refinement, tractrix as convergence
-from app.geometry.studies.tractrix import Study, StudyInfo
+from app.geometry.studies import theorem_11 as catenoid_refinement, theorem_14, theorem_15, tractrix
+from app.geometry.studies.common import Study, StudyInfo
 from app.geometry.surfaces import rotational
 from app.schemas.common import CurveQuery, strict_body
 from app.schemas.convergence import (
@@ -102,19 +102,19 @@ _STUDIES = (  # in the paper's order
         THEOREM_11_DESCRIPTION,
     ),
     ConvergenceStudy(
-        convergence.THEOREM_14_INFO,
+        theorem_14.THEOREM_14_INFO,
         TractrixStudyQuery,
-        convergence.theorem_14,
-        convergence.mp_work,
-        convergence.work,
+        theorem_14.theorem_14,
+        tractrix.mp_work,
+        tractrix.work,
         THEOREM_14_DESCRIPTION,
     ),
     ConvergenceStudy(
-        convergence.THEOREM_15_INFO,
+        theorem_15.THEOREM_15_INFO,
         TractrixStudyQuery,
-        convergence.theorem_15,
-        convergence.mp_work,
-        convergence.work,
+        theorem_15.theorem_15,
+        tractrix.mp_work,
+        tractrix.work,
         THEOREM_15_DESCRIPTION,
     ),
 )

@@ -18,7 +18,7 @@ from app.geometry.checks import Check
 from app.geometry.curve import Curve, Polyline
 from app.geometry.errors import NotRepresentableError
 from app.geometry.precision import Arithmetic, Array, MultiPrecision
-from app.geometry.studies.tractrix import Study
+from app.geometry.studies.common import Study
 from app.response_cache import (
     ResponseCache,
     caching_headers,

@@ -12,7 +12,7 @@ import math
 
 import numpy as np
 
-from app.geometry.studies.tractrix import Study
+from app.geometry.studies.common import Study
 from app.rendering.svg import PALETTE, Plot, Series, describe_parameters
 
 

@@ -10,7 +10,7 @@ from pydantic import BaseModel, ValidationError
 
 from app.errors import UnknownIdError
 from app.geometry.curve import Curve, Selection
-from app.geometry.studies.tractrix import Study
+from app.geometry.studies.common import Study
 from app.limits import enforce_drawing, enforce_range, enforce_study, timed_arithmetic
 from app.registry import DISCRETIZATIONS, STUDIES, ConvergenceStudy, Discretization
 from app.rendering.curves import SVG_MEDIA_TYPE, curve_svg

@@ -11,7 +11,6 @@ from app.geometry.catalog.conditions import (
 )
 from app.geometry.checks import Statement
 
-# smooth/references.py
 S4_PURSUIT = Statement(
     "tractrix-s4",
     "Section 2, (S4): the tractrix as a pursuit curve",
@@ -21,7 +20,6 @@ S4_PURSUIT = Statement(
     conditions=(S4_LEADER,),
 )
 
-# smooth/references.py
 S4_EVOLUTE = Statement(
     "evolute-s4",
     "Section 2, (S4): the evolute of the tractrix is the hyperbolic cosine",
@@ -31,7 +29,6 @@ S4_EVOLUTE = Statement(
     conditions=(S4_CUSP,),
 )
 
-# smooth/references.py
 S4_NIKOLAIDES = Statement(
     "nikolaides-s4",
     "Section 2, (S4): construction of Nikolaides",

@@ -24,7 +24,6 @@ from app.geometry.catalog.conditions import (
 )
 from app.geometry.checks import Statement
 
-# properties.py
 D1 = Statement(
     "d1",
     "Section 3, (D1)",
@@ -36,7 +35,6 @@ D1 = Statement(
     conditions=(SPACING, D1_RANGE, D2A_NOT_FOR_D2A),
 )
 
-# properties.py
 D3 = Statement(
     "d3",
     "Section 3, (D3)",
@@ -47,7 +45,6 @@ D3 = Statement(
     conditions=(SPACING, D3_RANGE, D3_FOLDS, D2A_NOT_FOR_D2A),
 )
 
-# properties.py
 HANGING_STICKS = Statement(
     "hanging-sticks",
     "Section 3, after (D1): sticks hanging from hinges",
@@ -59,7 +56,6 @@ HANGING_STICKS = Statement(
     conditions=(EQUILIBRIUM_SPACING,),
 )
 
-# d1/discretization.py
 D1_CLOSED_FORM = Statement(
     "d1-closed-form",
     "Section 3, (D1) with constant spacing: closed form (derived here, not in the paper)",
@@ -71,7 +67,6 @@ D1_CLOSED_FORM = Statement(
     conditions=(D1_CLOSED_FORM_RANGE,),
 )
 
-# d3/discretization.py
 D3_CLOSED_FORM = Statement(
     "d3-closed-form",
     "Section 3, (D3) with constant spacing: closed form (derived here, not in the paper)",
@@ -82,7 +77,6 @@ D3_CLOSED_FORM = Statement(
     conditions=(D3_CLOSED_FORM_RANGE,),
 )
 
-# d4a/discretization.py
 D4A_STICKS = Statement(
     "d4a-sticks",
     "Section 3, (D4a) and Figure 3",
@@ -95,7 +89,6 @@ D4A_STICKS = Statement(
     errata=("E20",),
 )
 
-# d4a/discretization.py
 D4A_ARC_LENGTH = Statement(
     "d4a-arc-length",
     "Section 3, (D4a) and Figure 3: discrete arc length",
@@ -104,7 +97,6 @@ D4A_ARC_LENGTH = Statement(
     conditions=(D4A_CUSP,),
 )
 
-# d4a/discretization.py
 D4A_DARBOUX = Statement(
     "darboux-d4a",
     "Section 3, (D4a): Darboux transform",
@@ -115,7 +107,6 @@ D4A_DARBOUX = Statement(
     errata=("E21",),
 )
 
-# d4a/discretization.py
 D4A_DARBOUX_DISTANCE = Statement(
     "darboux-d4a-distance",
     "Section 3, (D4a): Darboux transform",
@@ -125,7 +116,6 @@ D4A_DARBOUX_DISTANCE = Statement(
     errata=("E21",),
 )
 
-# d4a/discretization.py
 D4A_ROTATION = Statement(
     "rotation-centre-d4a",
     "Section 3, (D4a): p_i as a centre of rotation",
@@ -136,7 +126,6 @@ D4A_ROTATION = Statement(
     conditions=(D4A_INDEXING, D4A_RESOLUTION),
 )
 
-# d4a/discretization.py
 D4A_NIKOLAIDES = Statement(
     "nikolaides-d4a",
     "Section 3, (D4a) and (S4): construction of Nikolaides",
@@ -145,7 +134,6 @@ D4A_NIKOLAIDES = Statement(
     conditions=(D4A_INDEXING, D4A_RESOLUTION),
 )
 
-# d4a/discretization.py
 D4A_CLOSED_FORM = Statement(
     "d4a-closed-form",
     "Section 3, (D4a): explicit form (derived here, not in the paper)",
@@ -158,7 +146,6 @@ D4A_CLOSED_FORM = Statement(
     conditions=(D4A_RESOLUTION,),
 )
 
-# d4b/discretization.py
 D4B_DARBOUX = Statement(
     "darboux-d4b",
     "Section 3, (D4b): Darboux transform",
@@ -168,7 +155,6 @@ D4B_DARBOUX = Statement(
     conditions=(D4B_POINT_REFLECTION,),
 )
 
-# d4b/discretization.py
 D4B_DARBOUX_DISTANCE = Statement(
     "darboux-d4b-distance",
     "Section 3, (D4b): Darboux transform",
@@ -177,7 +163,6 @@ D4B_DARBOUX_DISTANCE = Statement(
     conditions=(D4B_POINT_REFLECTION,),
 )
 
-# d4b/discretization.py
 D4B_NIKOLAIDES = Statement(
     "nikolaides-d4b",
     "Section 3, (D4b) and (S4): construction of Nikolaides",
@@ -187,7 +172,6 @@ D4B_NIKOLAIDES = Statement(
     conditions=(D4B_CENTRE_INDEX,),
 )
 
-# d2b/discretization.py
 D2B_MEAN_CURVATURE = Statement(
     "d2b-mean-curvature",
     "Section 3, (D2b)",
@@ -197,7 +181,6 @@ D2B_MEAN_CURVATURE = Statement(
     conditions=(D2B_GAUSS_IMAGE_CHOICE,),
 )
 
-# d2b/discretization.py
 D2B_PARALLEL = Statement(
     "d2b-parallel",
     "Section 3, (D2b); proof of Theorem 11",

@@ -25,7 +25,6 @@ from app.geometry.catalog.conditions import (
 )
 from app.geometry.checks import Statement
 
-# properties.py
 EQUATION_2 = Statement(
     "equation-2",
     "Section 4.1, eq. (2)",
@@ -36,7 +35,6 @@ EQUATION_2 = Statement(
     conditions=(EQUATION_2_SOURCE, D2A_NOT_FOR_D2A),
 )
 
-# d4b/discretization.py
 D4B_HYPOTHESIS = Statement(
     "theorem-4-hypothesis",
     "Theorem 4, hypothesis",
@@ -45,7 +43,6 @@ D4B_HYPOTHESIS = Statement(
     conditions=(D4B_HYPOTHESIS_NEEDLESS,),
 )
 
-# d4b/discretization.py
 D4B_THEOREM_4_I = Statement(
     "theorem-4-i",
     "Theorem 4 (i), (D1)",
@@ -56,7 +53,6 @@ D4B_THEOREM_4_I = Statement(
     errata=("E2",),
 )
 
-# d4b/discretization.py
 D4B_THEOREM_4_II = Statement(
     "theorem-4-ii",
     "Theorem 4 (ii), (D3)",
@@ -65,7 +61,6 @@ D4B_THEOREM_4_II = Statement(
     conditions=(D4B_HYPOTHESIS_ALWAYS,),
 )
 
-# d4b/discretization.py
 D4B_THEOREM_4_III = Statement(
     "theorem-4-iii",
     "Theorem 4 (iii), eq. (2)",
@@ -76,7 +71,6 @@ D4B_THEOREM_4_III = Statement(
     conditions=(D4B_HYPOTHESIS_ALWAYS,),
 )
 
-# d4b/discretization.py
 D4B_ROTATION_ANGLE = Statement(
     "theorem-4-rotation-angle",
     "Proof of Theorem 4",
@@ -86,7 +80,6 @@ D4B_ROTATION_ANGLE = Statement(
     errata=("E1",),
 )
 
-# d4b/discretization.py
 D4B_RECURSION_13 = Statement(
     "recursion-13",
     "Proof of Theorem 4, eq. (13)",
@@ -95,7 +88,6 @@ D4B_RECURSION_13 = Statement(
     conditions=(D4B_RECURSION_DENOMINATOR,),
 )
 
-# d4b/discretization.py
 D4B_TWO_STEP = Statement(
     "recursion-13-two-step",
     "Proof of Theorem 4 (i), formula for p_{i+2}^y",
@@ -105,7 +97,6 @@ D4B_TWO_STEP = Statement(
     errata=("E3",),
 )
 
-# d4b/discretization.py
 D4B_THEOREM_5 = Statement(
     "theorem-5",
     "Theorem 5, eq. (14)",
@@ -115,7 +106,6 @@ D4B_THEOREM_5 = Statement(
     conditions=(D4B_VERTICAL_START,),
 )
 
-# d4b/discretization.py
 D4B_THEOREM_6 = Statement(
     "theorem-6",
     "Theorem 6, eq. (16)",
@@ -124,7 +114,6 @@ D4B_THEOREM_6 = Statement(
     conditions=(D4B_VERTICAL_START,),
 )
 
-# d2a/quad.py
 QUAD_THEOREM_1 = Statement(
     "theorem-1",
     "Theorem 1, eq. (2)",
@@ -138,7 +127,6 @@ QUAD_THEOREM_1 = Statement(
     errata=("E42",),
 )
 
-# d2a/quad.py
 QUAD_START_HEIGHT = Statement(
     "theorem-1-start-height",
     "Proof of Theorem 1, eq. (5) at i = 1",
@@ -148,7 +136,6 @@ QUAD_START_HEIGHT = Statement(
     conditions=(QUAD_SPECIAL_R,),
 )
 
-# d2a/quad.py
 QUAD_GAUSS_EDGE = Statement(
     "theorem-1-gauss-edge",
     "Proof of Theorem 1, Δφ_{i−1}",
@@ -158,7 +145,6 @@ QUAD_GAUSS_EDGE = Statement(
     conditions=(QUAD_CONVENTIONS,),
 )
 
-# d2a/quad.py
 QUAD_GAUSS_NORM = Statement(
     "theorem-1-gauss-edge-norm",
     "Proof of Theorem 1, ‖Δφ_{i−1}‖²",
@@ -167,7 +153,6 @@ QUAD_GAUSS_NORM = Statement(
     conditions=(QUAD_CONVENTIONS,),
 )
 
-# d2a/quad.py
 QUAD_DUAL_EDGE = Statement(
     "theorem-1-dual-edge",
     "Proof of Theorem 1, Δp_{i−1}",
@@ -176,7 +161,6 @@ QUAD_DUAL_EDGE = Statement(
     conditions=(QUAD_CONVENTIONS,),
 )
 
-# d2a/quad.py
 QUAD_X_STEP = Statement(
     "theorem-1-x-step",
     "Proof of Theorem 1, the x-step d",
@@ -187,7 +171,6 @@ QUAD_X_STEP = Statement(
     errata=("E40",),
 )
 
-# d2a/quad.py
 QUAD_SECOND_DIFFERENCE = Statement(
     "theorem-1-second-difference",
     "Proof of Theorem 1, Δ²p_{i−1}",
@@ -197,7 +180,6 @@ QUAD_SECOND_DIFFERENCE = Statement(
     errata=("E41",),
 )
 
-# d2a/quad.py
 QUAD_EQUATION_5 = Statement(
     "equation-5",
     "Proof of Theorem 1, eq. (5)",
@@ -206,7 +188,6 @@ QUAD_EQUATION_5 = Statement(
     conditions=(QUAD_ONLY_AT_R_STAR,),
 )
 
-# d2a/quad.py
 QUAD_HEIGHTS = Statement(
     "theorem-1-heights",
     "Proof of Theorem 1, p_i^y and p_{i+1}^y",
@@ -216,7 +197,6 @@ QUAD_HEIGHTS = Statement(
     conditions=(QUAD_ONLY_AT_R_STAR,),
 )
 
-# d2a/quad.py
 QUAD_AREA_SUM = Statement(
     "theorem-1-area-sum",
     "Proof of Theorem 1, A_{i−1} + A_i",
@@ -226,7 +206,6 @@ QUAD_AREA_SUM = Statement(
     conditions=(QUAD_ONLY_AT_R_STAR,),
 )
 
-# d2a/hex.py
 HEX_THEOREM_2 = Statement(
     "theorem-2",
     "Theorem 2, eq. (7)",
@@ -240,7 +219,6 @@ HEX_THEOREM_2 = Statement(
     errata=("E45",),
 )
 
-# d2a/hex.py
 HEX_START_HEIGHT = Statement(
     "theorem-2-start-height",
     "Proof of Theorem 2, the choice of r",
@@ -252,7 +230,6 @@ HEX_START_HEIGHT = Statement(
     errata=("E44",),
 )
 
-# d2a/hex.py
 HEX_EQUATION_10 = Statement(
     "equation-10",
     "Proof of Theorem 2, eqs. (10) and (11)",
@@ -262,7 +239,6 @@ HEX_EQUATION_10 = Statement(
     conditions=(HEX_R_ANY,),
 )
 
-# d2a/hex.py
 HEX_THEOREM_3_EVEN = Statement(
     "theorem-3-even",
     "Theorem 3, eq. (8)",
@@ -274,7 +250,6 @@ HEX_THEOREM_3_EVEN = Statement(
     errata=("E43",),
 )
 
-# d2a/hex.py
 HEX_THEOREM_3_ODD = Statement(
     "theorem-3-odd",
     "Theorem 3, eq. (9)",

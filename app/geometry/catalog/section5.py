@@ -20,7 +20,6 @@ from app.geometry.catalog.conditions import (
 )
 from app.geometry.checks import Statement
 
-# d4b/curvature.py
 D4B_EQUATION_18 = Statement(
     "equation-18",
     "Section 5, eq. (18)",
@@ -32,7 +31,6 @@ D4B_EQUATION_18 = Statement(
     errata=("E60",),
 )
 
-# d4b/curvature.py
 D4B_EQUATION_18_SLOPE = Statement(
     "equation-18-slope",
     "Section 5, eq. (18), first form",
@@ -42,7 +40,6 @@ D4B_EQUATION_18_SLOPE = Statement(
     errata=("E61",),
 )
 
-# d4b/curvature.py
 D4B_EQUATION_19 = Statement(
     "equation-19",
     "Section 5, eq. (19)",
@@ -53,7 +50,6 @@ D4B_EQUATION_19 = Statement(
     errata=("E62",),
 )
 
-# d4b/curvature.py
 D4B_EQUATION_19_ROTATION = Statement(
     "equation-19-rotation",
     "Section 5, before eq. (19)",
@@ -62,7 +58,6 @@ D4B_EQUATION_19_ROTATION = Statement(
     conditions=(D4B_CONTACT_SIDE,),
 )
 
-# d4b/curvature.py
 D4B_EQUATION_20_INVERSION = Statement(
     "equation-20-inversion",
     "Proof of Theorem 8, eq. (20), first form",
@@ -72,7 +67,6 @@ D4B_EQUATION_20_INVERSION = Statement(
     conditions=(D4B_POLE,),
 )
 
-# d4b/curvature.py
 D4B_EQUATION_20 = Statement(
     "equation-20",
     "Proof of Theorem 8, eq. (20)",
@@ -83,7 +77,6 @@ D4B_EQUATION_20 = Statement(
     errata=("E63",),
 )
 
-# d4b/curvature.py
 D4B_THEOREM_7 = Statement(
     "theorem-7",
     "Theorem 7",
@@ -95,7 +88,6 @@ D4B_THEOREM_7 = Statement(
     conditions=(RING_SIGN_CONVENTION, D4B_FIRST_NORMAL),
 )
 
-# d4b/curvature.py
 D4B_THEOREM_8 = Statement(
     "theorem-8",
     "Theorem 8",
@@ -106,7 +98,6 @@ D4B_THEOREM_8 = Statement(
     conditions=(RING_SIGN_CONVENTION, D4B_ZERO_OVER_ZERO),
 )
 
-# surfaces/ring_curvature.py
 RING_EQUATION_17 = Statement(
     "equation-17",
     "Section 5, eq. (17)",
@@ -119,7 +110,6 @@ RING_EQUATION_17 = Statement(
     conditions=(RING_SIGN_CONVENTION, RING_ZERO_OVER_ZERO),
 )
 
-# surfaces/rotational.py
 SURFACE_PLANARITY = Statement(
     "face-planarity",
     "Section 1 (meshes are polyhedral surfaces); eq. (15)",
@@ -132,7 +122,6 @@ SURFACE_PLANARITY = Statement(
     ),
 )
 
-# surfaces/rotational.py
 SURFACE_PARALLELITY = Statement(
     "face-parallelity",
     "Section 5 (curvature theory [3] requires parallel meshes)",
@@ -145,7 +134,6 @@ SURFACE_PARALLELITY = Statement(
     ),
 )
 
-# surfaces/rotational.py
 SURFACE_MINIMAL = Statement(
     "vanishing-mean-curvature",
     "Theorem 8 (d4b with its circumscribed Gauss image); (D2b); (D2)",

@@ -20,7 +20,6 @@ from app.geometry.catalog.conditions import (
 )
 from app.geometry.checks import Statement
 
-# d2b/discretization.py
 D2B_RADII = Statement(
     "theorem-11-radii",
     "Proof of Theorem 11",
@@ -29,7 +28,6 @@ D2B_RADII = Statement(
     conditions=(D2B_START,),
 )
 
-# d2b/discretization.py
 D2B_RECURSION = Statement(
     "theorem-11-recursion",
     "Proof of Theorem 11",
@@ -39,7 +37,6 @@ D2B_RECURSION = Statement(
     conditions=(D2B_RECURSION_DIVIDES,),
 )
 
-# d2b/discretization.py
 D2B_LEMMA_10 = Statement(
     "lemma-10",
     "Lemma 10",
@@ -52,7 +49,6 @@ D2B_LEMMA_10 = Statement(
     errata=("E64",),
 )
 
-# d2b/discretization.py
 D2B_THEOREM_11 = Statement(
     "theorem-11",
     "Theorem 11 (with Example 12 / Remark 13)",
@@ -75,7 +71,6 @@ D2B_THEOREM_11 = Statement(
     ),
 )
 
-# d2b/discretization.py
 D2B_EXAMPLE_12 = Statement(
     "example-12",
     "Example 12",
@@ -86,7 +81,6 @@ D2B_EXAMPLE_12 = Statement(
     conditions=(D2B__EXAMPLE_DOMAIN,),
 )
 
-# d2b/discretization.py
 D2B_REMARK_13 = Statement(
     "remark-13",
     "Remark 13",
@@ -98,7 +92,6 @@ D2B_REMARK_13 = Statement(
     conditions=(D2B__REMARK_DOMAIN,),
 )
 
-# studies/theorem_11.py
 T11_REMARK_13_UNIFORM = Statement(
     "remark-13-uniform",
     "Remark 13 (with Theorem 11)",
@@ -115,7 +108,6 @@ T11_REMARK_13_UNIFORM = Statement(
     errata=("E66",),
 )
 
-# studies/theorem_11.py
 T11_LEMMA_10_PROOF = Statement(
     "lemma-10-proof",
     "Proof of Lemma 10, the Riemann sums",
@@ -127,7 +119,6 @@ T11_LEMMA_10_PROOF = Statement(
     errata=("E65",),
 )
 
-# studies/tractrix.py
 THEOREM_14 = Statement(
     "theorem-14",
     "Theorem 14",
@@ -143,7 +134,6 @@ THEOREM_14 = Statement(
     ),
 )
 
-# studies/tractrix.py
 INTERPOLATION_14 = Statement(
     "theorem-14-interpolation",
     "Theorem 14",
@@ -153,7 +143,6 @@ INTERPOLATION_14 = Statement(
     conditions=(_VERTICAL,),
 )
 
-# studies/tractrix.py
 REARRANGEMENT_14 = Statement(
     "theorem-14-rearrangement",
     "Proof of Theorem 14",
@@ -163,7 +152,6 @@ REARRANGEMENT_14 = Statement(
     conditions=(_VERTICAL,),
 )
 
-# studies/tractrix.py
 SUBSTITUTION_21 = Statement(
     "equation-21-substitution",
     "Proof of Theorem 14, eq. (21)",
@@ -175,7 +163,6 @@ SUBSTITUTION_21 = Statement(
     ),
 )
 
-# studies/tractrix.py
 EQUATION_21 = Statement(
     "equation-21",
     "Proof of Theorem 14, eq. (21)",
@@ -185,7 +172,6 @@ EQUATION_21 = Statement(
     conditions=(ORDER_21,),
 )
 
-# studies/tractrix.py
 THEOREM_15 = Statement(
     "theorem-15",
     "Theorem 15",
@@ -205,7 +191,6 @@ THEOREM_15 = Statement(
     ),
 )
 
-# studies/tractrix.py
 INTERPOLATION_15 = Statement(
     "theorem-15-interpolation",
     "Theorem 15",
@@ -215,7 +200,6 @@ INTERPOLATION_15 = Statement(
     conditions=(_VERTICAL,),
 )
 
-# studies/tractrix.py
 PROOF_15_Y = Statement(
     "theorem-15-proof-y",
     "Proof of Theorem 15, the y-component",
@@ -227,7 +211,6 @@ PROOF_15_Y = Statement(
     errata=("E80",),
 )
 
-# studies/tractrix.py
 PROOF_15_X = Statement(
     "theorem-15-proof-x",
     "Proof of Theorem 15, the x-component",
@@ -239,7 +222,6 @@ PROOF_15_X = Statement(
     errata=("E81",),
 )
 
-# studies/tractrix.py
 INEQUALITY_22 = Statement(
     "inequality-22",
     "Proof of Theorem 15, (22)",

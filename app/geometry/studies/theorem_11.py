@@ -47,7 +47,7 @@ from app.geometry.d2b import closed_forms as cc, construction as vmc, discretiza
 from app.geometry.errors import DomainError
 from app.geometry.precision import Arithmetic, Array
 from app.geometry.smooth.distance import distance_to_catenary
-from app.geometry.studies.tractrix import (
+from app.geometry.studies.common import (
     SAMPLE_COST,
     WORK_CAP,
     Level,

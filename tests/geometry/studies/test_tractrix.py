@@ -12,7 +12,13 @@ import pytest
 from app.geometry.d4b.construction import KinematicTractrix, construct
 from app.geometry.errors import DomainError
 from app.geometry.precision import Arithmetic, Float64, MultiPrecision
-from app.geometry.studies import limit_curves as lc, tractrix as cv
+from app.geometry.studies import (
+    common as cv,
+    limit_curves as lc,
+    theorem_14,
+    theorem_15,
+    tractrix,
+)
 from tests.reference import convergence as reference
 
 SMALL = {"h": 1.0, "d0": 0.2, "levels": 5, "x_max": 1.5, "samples": 41}
@@ -35,10 +41,14 @@ def verdicts(study: cv.Study) -> dict[str, bool | None]:
 @pytest.mark.parametrize(
     ("kind", "run", "measures"),
     [
-        ("theorem-14", cv.theorem_14, ("parametric", "distance", "vertices", "equation-21")),
+        (
+            "theorem-14",
+            theorem_14.theorem_14,
+            ("parametric", "distance", "vertices", "equation-21"),
+        ),
         (
             "theorem-15",
-            cv.theorem_15,
+            theorem_15.theorem_15,
             (
                 "parametric",
                 "distance",
@@ -65,7 +75,7 @@ def test_observed_orders_agree_with_an_independent_study(
         np.testing.assert_allclose(ours, theirs, rtol=0.02, err_msg=measure)
 
 
-@pytest.mark.parametrize("run", [cv.theorem_14, cv.theorem_15])
+@pytest.mark.parametrize("run", [theorem_14.theorem_14, theorem_15.theorem_15])
 def test_default_orders_are_the_predicted_ones_and_every_check_holds(run) -> None:
     study = run(Float64())
     for measure in study.info.measures:
@@ -77,7 +87,7 @@ def test_default_orders_are_the_predicted_ones_and_every_check_holds(run) -> Non
 
 
 def test_tractrix_parametric_and_distance_errors_differ_by_one_order() -> None:
-    study = cv.theorem_15(Float64(), h=2.0, d0=0.1, levels=6, x_max=5.0, samples=201)
+    study = theorem_15.theorem_15(Float64(), h=2.0, d0=0.1, levels=6, x_max=5.0, samples=201)
     parametric, distance = study.fits["parametric"].order, study.fits["distance"].order
     assert parametric == pytest.approx(1, abs=0.02) and distance == pytest.approx(2, abs=0.05)
     finest = study.levels[-1]
@@ -85,7 +95,7 @@ def test_tractrix_parametric_and_distance_errors_differ_by_one_order() -> None:
     assert finest.errors["parametric"] == pytest.approx(finest.step * math.tanh(2.5), rel=0.01)
 
 
-@pytest.mark.parametrize("run", [cv.theorem_14, cv.theorem_15])
+@pytest.mark.parametrize("run", [theorem_14.theorem_14, theorem_15.theorem_15])
 def test_every_check_holds_at_30_digits(run) -> None:
     study = run(MultiPrecision(30), h=1.5, d0=0.3, levels=3, x_max=1.0, samples=9)
     for check in study.checks:
@@ -110,7 +120,10 @@ def _perturbed_builder(factor: float):
 
 @pytest.mark.parametrize(
     ("run", "check_id"),
-    [(cv.theorem_14, "theorem-14-interpolation"), (cv.theorem_15, "theorem-15-interpolation")],
+    [
+        (theorem_14.theorem_14, "theorem-14-interpolation"),
+        (theorem_15.theorem_15, "theorem-15-interpolation"),
+    ],
 )
 def test_interpolation_fails_on_a_perturbed_polygon(run, check_id: str) -> None:
     study = run(Float64(), **SMALL, build=_perturbed_builder(1 + 1e-8))
@@ -120,7 +133,7 @@ def test_interpolation_fails_on_a_perturbed_polygon(run, check_id: str) -> None:
 
 
 def test_vertex_measures_stop_converging_on_a_perturbed_polygon() -> None:
-    study = cv.theorem_15(Float64(), **SMALL, build=_perturbed_builder(1 + 1e-2))
+    study = theorem_15.theorem_15(Float64(), **SMALL, build=_perturbed_builder(1 + 1e-2))
     assert study.fits["vertices-distance"].order < 0.5, study.fits["vertices-distance"]
     assert study.fits["distance"].order == pytest.approx(2, abs=0.05)  # c(x) is unaffected
 
@@ -146,7 +159,7 @@ def test_theorem_14_checks_fail_on_perturbed_formulas(
     monkeypatch: pytest.MonkeyPatch, name: str, check_id: str, wrap
 ) -> None:
     monkeypatch.setattr(lc, name, wrap(getattr(lc, name)))
-    results = verdicts(cv.theorem_14(Float64(), **SMALL))
+    results = verdicts(theorem_14.theorem_14(Float64(), **SMALL))
     assert results[check_id] is False, results
 
 
@@ -179,12 +192,12 @@ def test_theorem_15_checks_fail_on_perturbed_formulas(
     monkeypatch: pytest.MonkeyPatch, name: str, check_ids: set[str], wrap
 ) -> None:
     monkeypatch.setattr(lc, name, wrap(getattr(lc, name)))
-    results = verdicts(cv.theorem_15(Float64(), **SMALL))
+    results = verdicts(theorem_15.theorem_15(Float64(), **SMALL))
     assert {k for k, v in results.items() if v is not True} == check_ids, results
 
 
 def test_errata_of_the_proof_of_theorem_15_carry_large_printed_residuals() -> None:
-    study = cv.theorem_15(Float64(), **SMALL)
+    study = theorem_15.theorem_15(Float64(), **SMALL)
     errata = {c.id: c.erratum for c in study.checks if c.erratum is not None}
     assert set(errata) == {"theorem-15-proof-y", "theorem-15-proof-x"}
     assert errata["theorem-15-proof-y"].id == "E80"
@@ -216,7 +229,7 @@ def test_unresolved_levels_are_left_out_of_fits_and_checks() -> None:
     fit = cv.observed_order(levels, "m")
     assert fit.levels == (0, 1, 2) and fit.order == pytest.approx(2)
     assert fit.local_orders[2:] == (None, None)
-    statement = cv.THEOREM_14
+    statement = theorem_14.THEOREM_14
     check = cv.converges(statement, levels, ("m",), {"m": fit})
     assert check.holds is True and check.residual == pytest.approx(0.25)
     none = cv.converges(
@@ -228,7 +241,7 @@ def test_unresolved_levels_are_left_out_of_fits_and_checks() -> None:
 def test_a_claim_fails_when_an_error_stops_shrinking() -> None:
     levels = _levels([1e-2, 5e-3, 4e-3])
     fit = cv.observed_order(levels, "m")
-    check = cv.converges(cv.THEOREM_14, levels, ("m",), {"m": fit})
+    check = cv.converges(theorem_14.THEOREM_14, levels, ("m",), {"m": fit})
     assert check.holds is False and check.residual == pytest.approx(0.8)
 
 
@@ -245,28 +258,28 @@ def test_a_claim_fails_when_an_error_stops_shrinking() -> None:
         ({"h": math.nan}, "h", "h > 0"),
     ],
 )
-@pytest.mark.parametrize("run", [cv.theorem_14, cv.theorem_15, cv.work])
+@pytest.mark.parametrize("run", [theorem_14.theorem_14, theorem_15.theorem_15, tractrix.work])
 def test_domain_errors_name_the_parameter(
     run, arguments: dict, parameter: str, constraint: str
 ) -> None:
     full = {"h": 1.0, "d0": 0.2, "levels": 4, "x_max": 2.0, "samples": 11, **arguments}
-    call = (lambda: run(**full)) if run is cv.work else (lambda: run(Float64(), **full))
+    call = (lambda: run(**full)) if run is tractrix.work else (lambda: run(Float64(), **full))
     with pytest.raises(DomainError, match=f"^{parameter} must satisfy") as error:
         call()
     assert constraint in error.value.constraint
 
 
 def test_index_range_and_work_count_the_vertices_on_the_compact_set() -> None:
-    assert cv.index_range(0.1, 1.0) == (-4, 5)  # x = −0.9 .. 0.9
-    assert cv.index_range(0.1, 1.1) == (-5, 6)  # x = ±1.1 (bounds included)
-    study = cv.theorem_14(Float64(), h=1.0, d0=0.1, levels=3, x_max=1.0, samples=5)
+    assert tractrix.index_range(0.1, 1.0) == (-4, 5)  # x = −0.9 .. 0.9
+    assert tractrix.index_range(0.1, 1.1) == (-5, 6)  # x = ±1.1 (bounds included)
+    study = theorem_14.theorem_14(Float64(), h=1.0, d0=0.1, levels=3, x_max=1.0, samples=5)
     assert [level.vertices for level in study.levels] == [10, 20, 40]
-    steps, sampled = cv.work(1.0, 0.1, 3, 1.0, 5)
+    steps, sampled = tractrix.work(1.0, 0.1, 3, 1.0, 5)
     assert sampled == 15 and steps >= sum(level.vertices for level in study.levels)
-    assert cv.mp_work(1.0, 0.1, 3, 1.0, 5) == steps + cv.SAMPLE_COST * 15
+    assert tractrix.mp_work(1.0, 0.1, 3, 1.0, 5) == steps + cv.SAMPLE_COST * 15
 
 
-@pytest.mark.parametrize("run", [cv.theorem_14, cv.theorem_15])
+@pytest.mark.parametrize("run", [theorem_14.theorem_14, theorem_15.theorem_15])
 def test_float64_leaves_out_printed_powers_beyond_its_range(run) -> None:
     """h = 2, |x| <= 5: (h ± d)^t over- or underflows at the finest levels; those points are
     dropped with a note (subnormal values would lose digits), and the identities still hold."""
@@ -278,7 +291,7 @@ def test_float64_leaves_out_printed_powers_beyond_its_range(run) -> None:
     assert all(c.note is None or "left out" not in c.note for c in full.checks)
 
 
-@pytest.mark.parametrize("run", [cv.theorem_14, cv.theorem_15])
+@pytest.mark.parametrize("run", [theorem_14.theorem_14, theorem_15.theorem_15])
 @pytest.mark.parametrize("scale", [1e-40, 1e40])
 def test_studies_scale_with_h(run, scale: float) -> None:
     """Every length scales with h: the errors scale, the orders and verdicts do not."""
