@@ -7,13 +7,13 @@ from fastapi import APIRouter, Depends, Query, Request, Response
 from app.errors import UnknownIdError
 from app.limits import enforce_drawing
 from app.rendering.curves import SVG_MEDIA_TYPE
-from app.rendering.figures import FIGURES, Figure
 from app.responses import cached, canonical_key
 from app.routers.common import SVG_HEADERS, reject_repeated_parameters, settings_of
 from app.routers.discretizations import parameter_infos
 from app.schemas.catalog import FigureEntry
 from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES
 from app.schemas.figures import FigureQuery
+from app.services.figures import FIGURES, Figure, render
 
 router = APIRouter(prefix="/figures", tags=["figures"])
 
@@ -60,8 +60,7 @@ def _register(figure: Figure) -> None:
         enforce_drawing(settings, *parsed.vertex_range())
 
         def build() -> Response:
-            svg = figure.draw(parsed).render().encode()
-            return Response(svg, media_type=SVG_MEDIA_TYPE, headers=SVG_HEADERS)
+            return Response(render(figure, parsed), media_type=SVG_MEDIA_TYPE, headers=SVG_HEADERS)
 
         return cached(
             request, canonical_key(request.url.path, parsed.model_dump()), settings, build

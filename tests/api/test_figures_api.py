@@ -11,7 +11,7 @@ import pytest
 from fastapi.testclient import TestClient
 
 from app.main import create_app
-from app.rendering.figures import FIGURES
+from app.services.figures import FIGURES
 from app.settings import Settings
 from tests.svg_reading import (
     Inverse,
