@@ -18,6 +18,7 @@ MODULES = (
     "app.geometry.d3.construction",
     "app.geometry.d4a.construction",
     "app.geometry.d4b.construction",
+    "app.geometry.d4b.residual_kernels",
     "app.geometry.surfaces.equation_17_kernel",
     "app.geometry.surfaces.ring_kernel",
 )
