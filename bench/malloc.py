@@ -1,16 +1,16 @@
-"""glibc's mmap threshold for the server (SERVER_ENV in the Makefile), chosen by measurement.
+"""glibc's malloc thresholds for the server (SERVER_ENV in the Makefile), chosen by measurement.
 
 A buffer above ``MALLOC_MMAP_THRESHOLD_`` is a fresh mmap, returned to the system on free, and
-its pages fault in again on the next request; below it, it comes from the heap, which keeps
-what ``MALLOC_TRIM_THRESHOLD_`` allows. For each candidate threshold a fresh process (the
-server's other settings: ``MALLOC_ARENA_MAX=2``, ``MALLOC_TRIM_THRESHOLD_=8388608``) times
-D4b as served (construction and every check) at 10^4, 10^5 and 10^6 vertices and D2a-quad at
-10^5, and reports its resident memory after the 10^6-vertex computation is freed. The
-candidates run in alternation, round after round; figures are medians over rounds, each as a
-ratio to glibc's default (no threshold set: dynamic, 128 KiB rising to 32 MiB) in the same
-round.
+its pages fault in again on the next request; a smaller one comes from the heap, whose free top
+goes back to the system once it exceeds ``MALLOC_TRIM_THRESHOLD_`` (and faults in again on the
+next request). For each candidate pair a fresh process (``MALLOC_ARENA_MAX=2`` as the server)
+times the D4b construction at 10^4, 10^5, 10^6 vertices, D4b with every check at 10^5 and
+D2a-quad at 10^5, and reports its resident memory once a 10^6-vertex D4b with every check has
+been computed and freed. The candidates run in alternation, round after round; figures are
+medians over rounds, with the ratio to glibc's default (no threshold set: dynamic, 128 KiB
+rising to 32 MiB) in the same round.
 
-Run: .venv/bin/python bench/malloc.py [rounds]   (about 2 minutes with 3 rounds)
+Run: .venv/bin/python bench/malloc.py [rounds]   (about 3 minutes with 3 rounds)
 """
 
 from __future__ import annotations
@@ -25,18 +25,20 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 
-CANDIDATES: dict[str, str | None] = {
+#: (MALLOC_MMAP_THRESHOLD_, MALLOC_TRIM_THRESHOLD_); None: glibc's default (dynamic).
+CANDIDATES: dict[str, tuple[str, str] | None] = {
     "glibc default": None,
-    "128 KiB": "131072",
-    "1 MiB": "1048576",
-    "4 MiB": "4194304",
-    "32 MiB": "33554432",
+    "128 KiB / 8 MiB": ("131072", "8388608"),
+    "32 MiB / 8 MiB": ("33554432", "8388608"),
+    "32 MiB / 32 MiB": ("33554432", "33554432"),
+    "32 MiB / 64 MiB": ("33554432", "67108864"),
 }
 
 CHILD = r"""
 import json, sys, time
 sys.path.insert(0, sys.argv[1])
 from app.geometry.d4b import discretization as d4b
+from app.geometry.d4b.construction import construct
 from app.geometry.d2a import quad
 from app.geometry.precision import Float64
 ar = Float64()
@@ -53,24 +55,29 @@ def best(f, repeat):
     return sorted(times)[len(times) // 2]
 
 out = {}
-for n, repeat in ((10**4, 9), (10**5, 5), (10**6, 3)):
+for n, repeat in ((10**4, 21), (10**5, 9), (10**6, 5)):
     lo, hi = -(n // 2), n - n // 2 - 1
-    d4b.compute(ar, 1.0, 1e-4, None, lo, hi)
-    out[f"d4b {n}"] = best(lambda: d4b.compute(ar, 1.0, 1e-4, None, lo, hi), repeat)
-    if n == 10**6:
-        out["rss after 10^6 (MiB)"] = rss() / 1024
+    construct(ar, 1.0, 1e-4, None, lo, hi)
+    out[f"D4b constr. {n:.0e}"] = best(lambda: construct(ar, 1.0, 1e-4, None, lo, hi), repeat)
+n = 10**5
+lo, hi = -(n // 2), n - n // 2 - 1
+d4b.compute(ar, 1.0, 1e-4, None, lo, hi)
+out["D4b all 1e+05"] = best(lambda: d4b.compute(ar, 1.0, 1e-4, None, lo, hi), 3)
+n = 10**6
+d4b.compute(ar, 1.0, 1e-4, None, -(n // 2), n // 2 - 1)
+out["rss after 10^6 (MiB)"] = rss() / 1024
 n = 10**5
 quad.compute(ar, 1.0, 1.001, None, -(n // 2), n // 2 - 1)
-out["d2a-quad 100000"] = best(lambda: quad.compute(ar, 1.0, 1.001, None, -(n // 2), n // 2 - 1), 5)
+out["D2a-quad 1e+05"] = best(lambda: quad.compute(ar, 1.0, 1.001, None, -(n // 2), n // 2 - 1), 3)
 print(json.dumps(out))
 """
 
 
-def run(threshold: str | None) -> dict[str, float]:
+def run(thresholds: tuple[str, str] | None) -> dict[str, float]:
     env = {k: v for k, v in os.environ.items() if not k.startswith("MALLOC_")}
-    env.update({"MALLOC_ARENA_MAX": "2", "MALLOC_TRIM_THRESHOLD_": "8388608"})
-    if threshold is not None:
-        env["MALLOC_MMAP_THRESHOLD_"] = threshold
+    env["MALLOC_ARENA_MAX"] = "2"
+    if thresholds is not None:
+        env["MALLOC_MMAP_THRESHOLD_"], env["MALLOC_TRIM_THRESHOLD_"] = thresholds
     result = subprocess.run(
         [sys.executable, "-c", CHILD, str(ROOT)], env=env, capture_output=True, text=True
     )
@@ -82,8 +89,9 @@ def run(threshold: str | None) -> dict[str, float]:
 
 def main(rounds: int = 3) -> None:
     print(
-        f"MALLOC_MMAP_THRESHOLD_ (ARENA_MAX=2, TRIM_THRESHOLD_=8 MiB), {rounds} rounds; "
-        "time × glibc's default in the same round (median), resident memory after 10^6"
+        f"MALLOC_MMAP_THRESHOLD_ / MALLOC_TRIM_THRESHOLD_ (ARENA_MAX=2), {rounds} rounds; "
+        "CPU time and its ratio to glibc's default in the same round (medians); resident "
+        "memory once a 10^6-vertex D4b with every check is freed"
     )
     samples: dict[str, list[dict[str, float]]] = {name: [] for name in CANDIDATES}
     start = time.perf_counter()
@@ -91,7 +99,7 @@ def main(rounds: int = 3) -> None:
         for name, threshold in CANDIDATES.items():
             samples[name].append(run(threshold))
     keys = [k for k in samples["glibc default"][0] if not k.startswith("rss")]
-    print(f"  {'threshold':<14}" + "".join(f"{k:>17}" for k in keys) + f"{'RSS (MiB)':>12}")
+    print(f"  {'mmap / trim':<16}" + "".join(f"{k:>19}" for k in keys) + f"{'RSS MiB':>9}")
     for name in CANDIDATES:
         cells = []
         for key in keys:
@@ -100,7 +108,7 @@ def main(rounds: int = 3) -> None:
             seconds = statistics.median(s[key] for s in samples[name])
             cells.append(f"{seconds * 1e3:8.1f} ms {ratio:4.2f}×")
         rss = statistics.median(s["rss after 10^6 (MiB)"] for s in samples[name])
-        print(f"  {name:<14}" + "".join(f"{c:>17}" for c in cells) + f"{rss:12.0f}")
+        print(f"  {name:<16}" + "".join(f"{c:>19}" for c in cells) + f"{rss:9.0f}")
     print(f"  ({time.perf_counter() - start:.0f} s)")
 
 

@@ -13,11 +13,11 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from bench import d4b, kernels, mp, serving, stick_chain
+from bench import compiled, d4b, kernels, mp, serving, stick_chain
 
 if __name__ == "__main__":
     start = time.perf_counter()
-    for part in (kernels.main, stick_chain.main, d4b.main, mp.main, serving.main):
+    for part in (compiled.main, kernels.main, stick_chain.main, d4b.main, mp.main, serving.main):
         part()
         print(flush=True)
     print(f"make bench: {time.perf_counter() - start:.0f} s")

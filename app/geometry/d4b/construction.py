@@ -123,6 +123,46 @@ def _sticks(
     return cos_u, sin_u, centre_y
 
 
+@kernel(
+    "UniTuple(float64[:, :], 4)"
+    "(float64, float64, float64[:], float64[:], float64[:], int64, int64, int64)"
+)
+def _points(
+    h: float,
+    d: float,
+    cos_u: Array,
+    sin_u: Array,
+    centre_y: Array,
+    first: int,
+    i_min: int,
+    i_max: int,
+) -> tuple[Array, Array, Array, Array]:
+    """x_i = (2di, 0), d_i = x_i + h u_i, p_i = ((2i − 1)d, p_i^y) and u_i for i_min .. i_max.
+
+    Entry ``first`` of the recursion's arrays is index i_min; the same operations as
+    ``_assemble`` (which mp uses), in one pass.
+    """
+    n = i_max - i_min + 1
+    axis = np.empty((n, 2))
+    tractrix = np.empty((n, 2))
+    centres = np.empty((n, 2))
+    u = np.empty((n, 2))
+    two_d = 2 * d
+    for k in range(n):
+        i = float(i_min + k)
+        c, s = cos_u[first + k], sin_u[first + k]
+        x = two_d * i
+        axis[k, 0] = x
+        axis[k, 1] = 0.0
+        tractrix[k, 0] = x + h * c
+        tractrix[k, 1] = 0.0 + h * s
+        centres[k, 0] = (2 * i - 1) * d
+        centres[k, 1] = centre_y[first + k]
+        u[k, 0] = c
+        u[k, 1] = s
+    return axis, tractrix, centres, u
+
+
 def construct(
     ar: Arithmetic,
     h: float,
@@ -145,7 +185,14 @@ def construct(
     if ar.mode == "float64":
         c0, s0 = initial_direction(ar, beta0)
         cos_f, sin_f, centre_f = _sticks(float(h), float(d), float(c0), float(s0), lo, hi)
-        return _assemble(ar, hh, dd, i_min, i_max, cos_f[window], sin_f[window], centre_f[window])
+        axis, tractrix, centres, u = _points(h, d, cos_f, sin_f, centre_f, i_min - lo, i_min, i_max)
+        return KinematicTractrix(
+            indices=np.arange(i_min, i_max + 1, dtype=np.int64),
+            axis_points=axis,
+            tractrix=tractrix,
+            centres=centres,
+            directions=u,
+        )
     cos_u = [ar.scalar(0)] * (hi - lo + 1)
     sin_u = list(cos_u)
     centre_y = list(cos_u)
