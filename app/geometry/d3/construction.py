@@ -207,6 +207,7 @@ def construct(
         heights = _heights(
             q.sum_factor, q.root_factor, q.product_term, q.lowest, yy0, branch == "up", lo, hi
         )
+        ar.check_time()  # once, after the kernel: ≈ 20 ns per step
         return AreaLengthPolygon(
             indices=np.arange(i_min, i_max + 1, dtype=np.int64),
             vertices=stack_points(dd * i, heights[i_min - lo : i_max - lo + 1]),

@@ -185,6 +185,7 @@ def construct(
     if ar.mode == "float64":
         c0, s0 = initial_direction(ar, beta0)
         cos_f, sin_f, centre_f = _sticks(float(h), float(d), float(c0), float(s0), lo, hi)
+        ar.check_time()  # once, after the kernel: ≈ 20 ns per stick
         axis, tractrix, centres, u = _points(h, d, cos_f, sin_f, centre_f, i_min - lo, i_min, i_max)
         return KinematicTractrix(
             indices=np.arange(i_min, i_max + 1, dtype=np.int64),
