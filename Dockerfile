@@ -1,6 +1,7 @@
 # The service image: the same pinned install as `make run` (requirements/runtime.txt, then the
 # package without dependencies), run by a non-root user. Build: docker build -t dcosh .
-# Run: docker run -p 8000:8000 -e WORKERS=2 dcosh   (works with --read-only: nothing is written)
+# Run: docker run -p 8000:8000 -e WORKERS=2 dcosh   (works with --read-only: nothing is written;
+# the numba kernels compiled at build time are read from /srv/.numba-cache)
 # The explorer's three.js files: npm ci from the pinned lock file, then copied into
 # app/static/vendor (what `make assets` does).
 FROM node:20-bookworm-slim AS assets
@@ -20,9 +21,10 @@ ENV PYTHONDONTWRITEBYTECODE=1 \
     HOST=0.0.0.0 \
     PORT=8000 \
     WORKERS=2 \
+    NUMBA_CACHE_DIR=/srv/.numba-cache \
     MALLOC_ARENA_MAX=2 \
-    MALLOC_MMAP_THRESHOLD_=131072 \
-    MALLOC_TRIM_THRESHOLD_=8388608
+    MALLOC_MMAP_THRESHOLD_=33554432 \
+    MALLOC_TRIM_THRESHOLD_=67108864
 
 WORKDIR /srv
 COPY requirements/runtime.txt requirements/runtime.txt
@@ -33,6 +35,7 @@ COPY app ./app
 COPY --from=assets /build/app/static/vendor ./app/static/vendor
 RUN /opt/venv/bin/python -m pip install --no-deps . \
     && /opt/venv/bin/python -m compileall -q /opt/venv /srv/app \
+    && /opt/venv/bin/python -m app.geometry.warm \
     && useradd --system --uid 10001 --no-create-home --shell /usr/sbin/nologin dcosh
 
 USER 10001

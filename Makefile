@@ -1,5 +1,7 @@
 # Two commands do all the set-up: `make run` and `make test` (see README.md).
 SHELL := /bin/bash
+# numba's on-disk cache of the compiled float64 kernels (app/geometry/compiled.py); not committed
+export NUMBA_CACHE_DIR ?= $(CURDIR)/.numba-cache
 PYTHON ?= $(shell command -v python3.11 2>/dev/null || command -v python3)
 VENV := .venv
 BIN := $(VENV)/bin
@@ -14,7 +16,7 @@ CHROMIUM ?= /usr/bin/chromium
 # root installs system packages directly; anyone else through sudo
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: run test lint openapi paper-map bench fuzz load install install-dev assets browser clean
+.PHONY: run test lint openapi paper-map bench fuzz load install install-dev assets browser warm clean
 
 # The runtime install: a virtual environment with every package pinned in requirements/runtime.txt.
 $(BIN)/.runtime-installed: requirements/runtime.txt pyproject.toml
@@ -32,6 +34,14 @@ $(BIN)/.dev-installed: $(BIN)/.runtime-installed requirements/dev.txt
 install: $(BIN)/.runtime-installed
 install-dev: $(BIN)/.dev-installed
 
+# Every compiled kernel into the cache before the server or the tests start (2-3 s once; again
+# when app/geometry changes), so that no request and no test worker compiles one.
+$(NUMBA_CACHE_DIR)/.warm: $(BIN)/.runtime-installed $(shell find app/geometry -name '*.py')
+	$(BIN)/python -m app.geometry.warm
+	touch $@
+
+warm: $(NUMBA_CACHE_DIR)/.warm
+
 # The explorer's front-end files: three.js from the npm registry, pinned in package-lock.json,
 # copied into app/static/vendor/ (not committed). Debian's nodejs and npm if node is missing.
 $(VENDOR)/.built: package.json package-lock.json scripts/build-assets.mjs
@@ -48,16 +58,18 @@ browser:
 	test -x $(CHROMIUM) || { $(SUDO) apt-get update -qq && \
 	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq chromium; }
 
-# glibc malloc: few arenas and a fixed mmap threshold, so that the large numpy buffers of big
-# responses go back to the system after each request (bench/load.py measures it); a trim
-# threshold of 8 MiB keeps the 64 KiB block temporaries of the numpy kernels on the heap instead
-# of returning and faulting them back block by block (docs/performance.md).
-SERVER_ENV := MALLOC_ARENA_MAX=2 MALLOC_MMAP_THRESHOLD_=131072 MALLOC_TRIM_THRESHOLD_=8388608
+# glibc malloc: few arenas; buffers up to 32 MiB from the heap (a 10^6-vertex (n, 2) array is
+# 16 MB) and up to 64 MiB of free heap kept between requests, so that temporaries do not fault
+# their pages in again on every request; larger buffers are mmaps, returned to the system when
+# freed. Chosen by bench/malloc.py against the fixed 128 KiB threshold before (D4b with every
+# check 4× faster at 10^5 vertices, D2a-quad 5.5×, the same resident memory after a 10^6-vertex
+# request; docs/performance.md).
+SERVER_ENV := MALLOC_ARENA_MAX=2 MALLOC_MMAP_THRESHOLD_=33554432 MALLOC_TRIM_THRESHOLD_=67108864
 
-run: $(BIN)/.runtime-installed $(VENDOR)/.built
+run: $(BIN)/.runtime-installed $(VENDOR)/.built warm
 	$(SERVER_ENV) $(BIN)/python -m uvicorn app.main:app --host $(HOST) --port $(PORT) --workers $(WORKERS)
 
-test: $(BIN)/.dev-installed $(VENDOR)/.built browser
+test: $(BIN)/.dev-installed $(VENDOR)/.built browser warm
 	DCOSH_CHROMIUM=$(CHROMIUM) timeout -k 30 $(TEST_TIME_LIMIT) $(BIN)/python -m pytest -n auto $(PYTEST_ARGS)
 
 lint: $(BIN)/.dev-installed
@@ -78,16 +90,16 @@ fuzz: $(BIN)/.dev-installed
 	  $(BIN)/python -m pytest -q -n auto tests/api/test_fuzz.py
 
 # A bounded load run on 127.0.0.1: errors, latency percentiles, server memory.
-load: $(BIN)/.dev-installed
+load: $(BIN)/.dev-installed warm
 	$(BIN)/python bench/load.py
 
 # Ratios measured side by side (docs/performance.md): kernels, constructions, D4b as served, mp,
 # and HTTP on 127.0.0.1 with wrk (Debian's package, installed here when missing), in the
 # server's malloc settings. Under five minutes.
-bench: $(BIN)/.dev-installed
+bench: $(BIN)/.dev-installed warm
 	command -v wrk >/dev/null 2>&1 || { $(SUDO) apt-get update -qq && \
 	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq wrk; }
 	$(SERVER_ENV) $(BIN)/python bench/run.py
 
 clean:
-	rm -rf $(VENV) .pytest_cache .mypy_cache .ruff_cache node_modules $(VENDOR) test-output
+	rm -rf $(VENV) $(NUMBA_CACHE_DIR) .pytest_cache .mypy_cache .ruff_cache node_modules $(VENDOR) test-output

@@ -1,7 +1,7 @@
 """D4b as served: the whole computation (polygons and every check) and the JSON of the response.
 
 At 10^6 vertices, float64, h = 1, d = 10^-4:
-- the construction (a sequential scalar loop: each stick needs the previous one) and the whole
+- the construction (a compiled recursion: each stick needs the previous one) and the whole
   computation with every check, by both methods, against copying the (n, 2) output;
 - encoding the whole response (p, six companions, checks) against orjson of the same arrays
   alone (the encoder's floor for this document).
@@ -56,7 +56,7 @@ def one_size(ar: Float64, n: int) -> None:
     size = len(whole())
     encode = compare(alone, whole, repeat, reference_min_time=0.0)
     print(f" n = {n:>9,} vertices (copy of the output {built.reference * 1e3:.3f} ms)")
-    label = f"construction (sequential loop, {built.seconds / n * 1e9:.0f} ns/vertex)"
+    label = f"construction (compiled recursion, {built.seconds / n * 1e9:.0f} ns/vertex)"
     print(ratio_row(label, built, "copy"))
     print(ratio_row("compute, method=closed-form, every check", closed, "copy"))
     print(ratio_row("compute, method=construction, every check", full, "copy"))

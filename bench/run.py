@@ -13,11 +13,19 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from bench import d4b, kernels, mp, selection, serving, stick_chain
+from bench import compiled, d4b, kernels, mp, selection, serving, stick_chain
 
 if __name__ == "__main__":
     start = time.perf_counter()
-    parts = (kernels.main, stick_chain.main, d4b.main, mp.main, serving.main, selection.main)
+    parts = (
+        compiled.main,
+        kernels.main,
+        stick_chain.main,
+        d4b.main,
+        mp.main,
+        serving.main,
+        selection.main,
+    )
     for part in parts:
         part()
         print(flush=True)

@@ -33,11 +33,11 @@ import orjson
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from app.geometry.curve import NOTHING  # noqa: E402
-from app.geometry.d4b import closed_forms, discretization as d4b  # noqa: E402
-from app.geometry.precision import Float64  # noqa: E402
-from bench.load import free_port  # noqa: E402
-from bench.serving import ROUNDS, UNIQUE_SCRIPT, _verdict, fetch, start_server, wrk  # noqa: E402
+from app.geometry.curve import NOTHING
+from app.geometry.d4b import closed_forms, discretization as d4b
+from app.geometry.precision import Float64
+from bench.load import free_port
+from bench.serving import ROUNDS, UNIQUE_SCRIPT, _verdict, fetch, start_server, wrk
 
 BIG = "/discretizations/d4b?h=1&i_min=-500000&i_max=499999"
 SMALL = "/discretizations/d4b?i_min=-50&i_max=49"

@@ -40,10 +40,10 @@ import orjson
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from app.geometry import smooth  # noqa: E402
-from app.geometry.precision import Float64  # noqa: E402
-from bench.common import sample  # noqa: E402
-from bench.load import SERVER_ENV, free_port  # noqa: E402
+from app.geometry import smooth
+from app.geometry.precision import Float64
+from bench.common import sample
+from bench.load import SERVER_ENV, free_port
 
 clock = time.perf_counter
 

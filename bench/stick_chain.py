@@ -1,9 +1,11 @@
 """D1, D3, D4a: the sequential constructions against their vectorized closed forms.
 
-Each construction is a scalar loop (each step needs the previous vertex: a quadratic root for
-D1 and D3, the previous stick for D4a), so it cannot be vectorized; the closed forms (theorems,
-checked against the constructions) are numpy kernels (bench/kernels.py). Every figure is a
-median of paired ratios to copying the (n, 2) float64 output, here at 10^5 vertices.
+Each construction is a sequential recursion (each step needs the previous vertex: a quadratic
+root for D1 and D3, the previous stick for D4a), so numpy cannot vectorize it; it runs as a
+compiled kernel (app/geometry/compiled.py; bench/compiled.py compares it with the Python
+loop); the closed forms (theorems, checked against the constructions) are numpy kernels
+(bench/kernels.py). Every figure is a median of paired ratios to copying the (n, 2) float64
+output, here at 10^5 vertices.
 """
 
 from __future__ import annotations
@@ -27,12 +29,15 @@ def cases(ar: Float64, lo: int, hi: int) -> list[tuple[str, Callable[[], object]
     """What is timed for the index range lo .. hi."""
     i = ar.indices(lo, hi)
     return [
-        ("D1 construction (loop)", lambda: hanging_chain.construct(ar, 1e-4, 0.2, 1, 1, lo, hi)),
+        (
+            "D1 construction (compiled)",
+            lambda: hanging_chain.construct(ar, 1e-4, 0.2, 1, 1, lo, hi),
+        ),
         ("D1 closed form", lambda: d1_closed.hyperbolic_cosine(ar, 1e-4, 0.2, 1.0, 1.0, i)),
-        ("D3 construction (loop)", lambda: area_length.construct(ar, 1, 1e-4, 1, "up", lo, hi)),
+        ("D3 construction", lambda: area_length.construct(ar, 1, 1e-4, 1, "up", lo, hi)),
         ("D3 closed form", lambda: d3_closed.hyperbolic_cosine(ar, 1.0, 1e-4, 1.0, True, i)),
         (
-            "D4a construction (loop)",
+            "D4a construction (compiled)",
             lambda: sauer_tractrix.construct_sticks(ar, 1, 1e-3, None, lo, hi),
         ),
         ("D4a explicit form", lambda: d4a_closed.tractrix(ar, 1.0, 1e-3, None, lo, hi)),

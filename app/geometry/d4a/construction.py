@@ -34,9 +34,11 @@ the difference of the edge's end points, which loses log10(h/s) digits.
 i (the paper's midpoint of d_i and d_{i+1} on the pursuit side).
 
 **Numerics.** Each stick is built from the previous one, so the construction is a scalar loop
-over the sticks from 0 to i_min − 1 and i_max + 3 (about 1.6 µs per stick in float64 on an idle
-2-core machine). Vectorizing it would mean solving the recursion first — the heights form a
-geometric sequence and the axis points partial sums — which is the explicit form
+over the sticks from 0 to i_min − 1 and i_max + 3: in float64 the compiled kernel ``_sticks``
+(app/geometry/compiled.py; ≈ 20 ns per stick, 1.6 µs as a Python loop), in mp the loop of
+``construct_sticks`` over mpmath numbers, with the same moves (``_Stepper``). Vectorizing it
+would mean solving the recursion first — the heights form a geometric sequence and the axis
+points partial sums — which is the explicit form
 (``sauer_closed_forms``) the checks compare with, so it is not done here; ``method=closed-form``
 serves long ranges from that form, vectorized. The horizontal distance from a new end to its
 axis point, √(h² − (d^y)²), is evaluated as √(h² cos²β + s(2h − s) sin²β) (no cancellation next
@@ -45,11 +47,13 @@ to the cusp).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
+from app.geometry.compiled import kernel
 from app.geometry.errors import DomainError
 from app.geometry.precision import CLOCK_STEPS, Arithmetic, Array, Scalar, stack_points
 
@@ -123,6 +127,68 @@ class _Stepper:
         return x + self.h * cos_b - self.carry * cos_n, cos_n, sin_n
 
 
+@kernel(
+    "Tuple((float64[:], float64[:], float64[:], int64[:]))"
+    "(float64, float64, float64, float64, float64, float64, int64, int64)"
+)
+def _sticks(
+    h: float,
+    carry: float,
+    keep: float,
+    widening: float,
+    c0: float,
+    s0: float,
+    k0: int,
+    n: int,
+) -> tuple[Array, Array, Array, Any]:
+    """The float64 recursion of ``construct_sticks``: (x, cos β, sin β, side) of n sticks.
+
+    Stick k0 starts at x = 0 with direction (c0, s0); ``carry``, ``keep`` and ``widening`` are
+    the ``_Stepper`` numbers h − s, (h − s)/h and s(2h − s)/h². The moves are ``_Stepper.pull``
+    (the next stick is the one whose end is this stick's carried point) and
+    ``_Stepper.carrier`` (the next stick is the one carrying this stick's end), chosen by the
+    side of the cusp as in ``construct_sticks``.
+    """
+    x = np.zeros(n)
+    cos_u = np.zeros(n)
+    sin_u = np.zeros(n)
+    side = np.zeros(n, dtype=np.int64)
+    cos_u[k0] = c0
+    sin_u[k0] = s0
+    side[k0] = CUSP if s0 > keep else (PURSUIT if c0 < 0 else MIRRORED)
+    for k in range(k0 + 1, n):  # forward: stick k from stick k − 1
+        xb, cb, sb = x[k - 1], cos_u[k - 1], sin_u[k - 1]
+        if side[k - 1] >= CUSP:  # pull, the leader moves ahead
+            root = math.sqrt(cb * cb + widening * sb * sb)
+            x[k] = (xb + carry * cb) + h * root
+            cos_u[k] = -root
+            sin_u[k] = keep * sb
+            side[k] = PURSUIT
+        else:  # carrier leaning forward
+            sin_n = sb / keep
+            cos_n = math.sqrt((1 - sin_n) * (1 + sin_n))
+            x[k] = xb + h * cb - carry * cos_n
+            cos_u[k] = cos_n
+            sin_u[k] = sin_n
+            side[k] = CUSP if sin_n > keep else MIRRORED
+    for k in range(k0 - 1, -1, -1):  # backward: stick k from stick k + 1
+        xb, cb, sb = x[k + 1], cos_u[k + 1], sin_u[k + 1]
+        if side[k + 1] <= CUSP:  # pull, the leader moves behind
+            root = math.sqrt(cb * cb + widening * sb * sb)
+            x[k] = (xb + carry * cb) - h * root
+            cos_u[k] = root
+            sin_u[k] = keep * sb
+            side[k] = MIRRORED
+        else:  # carrier leaning back
+            sin_n = sb / keep
+            cos_n = -math.sqrt((1 - sin_n) * (1 + sin_n))
+            x[k] = xb + h * cb - carry * cos_n
+            cos_u[k] = cos_n
+            sin_u[k] = sin_n
+            side[k] = CUSP if sin_n > keep else PURSUIT
+    return x, cos_u, sin_u, side
+
+
 def construct_sticks(
     ar: Arithmetic, h: float, s: float, beta0: float | None, i_lo: int, i_hi: int
 ) -> SauerSticks:
@@ -131,15 +197,21 @@ def construct_sticks(
     hh, ss = ar.scalar(h), ar.scalar(s)
     step = _Stepper(ar, hh, ss)
     n = i_hi - i_lo + 1
-    zero = ar.scalar(0)
-    x, cos_u, sin_u = [zero] * n, [zero] * n, [zero] * n
-    side = np.zeros(n, dtype=np.int64)
     if beta0 is None:
         c0, s0 = ar.scalar(0), ar.scalar(1)
     else:
         angle = ar.scalar(beta0)
         c0, s0 = ar.cos(angle), ar.sin(angle)
     k0 = -i_lo
+    if ar.mode == "float64":
+        axis_f, cos_f, sin_f, side_f = _sticks(
+            hh, step.carry, step.keep, step.widening, c0, s0, k0, n
+        )
+        ar.check_time()  # once, after the kernel: ≈ 20 ns per stick
+        return _assemble(ar, hh, i_lo, i_hi, axis_f, cos_f, sin_f, side_f)
+    zero = ar.scalar(0)
+    x, cos_u, sin_u = [zero] * n, [zero] * n, [zero] * n
+    side = np.zeros(n, dtype=np.int64)
     cos_u[k0], sin_u[k0] = c0, s0
     side[k0] = CUSP if step.is_cusp(s0) else (PURSUIT if c0 < 0 else MIRRORED)
     for k in range(k0 + 1, n):  # forward: stick k from stick k − 1
@@ -162,13 +234,26 @@ def construct_sticks(
         else:  # d_{k+1} lies on stick k (pursuit side): stick k is the one carrying it
             x[k], cos_u[k], sin_u[k] = step.carrier(*args, lean_back=True)
             side[k] = CUSP if step.is_cusp(sin_u[k]) else PURSUIT
-    axis_x = ar.array(x)
-    u = stack_points(ar.array(cos_u), ar.array(sin_u))
-    axis = stack_points(axis_x, ar.zeros(n))
+    return _assemble(ar, hh, i_lo, i_hi, ar.array(x), ar.array(cos_u), ar.array(sin_u), side)
+
+
+def _assemble(
+    ar: Arithmetic,
+    h: Scalar,
+    i_lo: int,
+    i_hi: int,
+    axis_x: Array,
+    cos_u: Array,
+    sin_u: Array,
+    side: np.ndarray[Any, np.dtype[np.int64]],
+) -> SauerSticks:
+    """The points of sticks i_lo .. i_hi from their axis points and directions."""
+    u = stack_points(cos_u, sin_u)
+    axis = stack_points(axis_x, ar.zeros(len(axis_x)))
     return SauerSticks(
         indices=np.arange(i_lo, i_hi + 1, dtype=np.int64),
         axis_points=axis,
-        tractrix=axis + hh * u,
+        tractrix=axis + h * u,
         directions=u,
         side=side,
     )

@@ -12,6 +12,11 @@ centre of the rotation from stick i−1 to stick i, so p_i^x = (2i − 1)d; indi
 the backward steps use the inverse rotations.
 
 Nothing here uses the closed forms of Theorems 5 and 6: the checks compare the two.
+
+The recursion is sequential (each step needs where the previous stick points). In float64 it
+runs as one compiled kernel (``_sticks``, app/geometry/compiled.py, ≈ 20 ns per stick); in mp
+as the Python loop of ``construct`` over mpmath numbers. Both are the same steps: the centre on
+the bisector and the normal, then the rotation of ``rotation_about``.
 """
 
 from __future__ import annotations
@@ -21,6 +26,7 @@ from typing import Any
 
 import numpy as np
 
+from app.geometry.compiled import kernel
 from app.geometry.errors import DomainError
 from app.geometry.precision import CLOCK_STEPS, Arithmetic, Array, Scalar, stack_points
 
@@ -73,6 +79,90 @@ def rotation_about(p_y: Scalar, d: Scalar) -> tuple[Scalar, Scalar]:
     return (1 - r * r) / q, 2 * r / q
 
 
+@kernel("UniTuple(float64[:], 3)(float64, float64, float64, float64, int64, int64)")
+def _sticks(
+    h: float, d: float, c0: float, s0: float, lo: int, hi: int
+) -> tuple[Array, Array, Array]:
+    """The float64 recursion of ``construct``: (cos β_j, sin β_j, p_j^y) for j = lo .. hi.
+
+    Stick 0 has direction (c0, s0). Forwards, p_j lies on x = (2j − 1)d and on the normal of
+    stick j−1 at d_{j−1}: p_j^y = (h − d cos β_{j−1})/sin β_{j−1}; the rotation about p_j with
+    cos α = (1 − r²)/(1 + r²), sin α = 2r/(1 + r²), r = d/p_j^y, turns stick j−1 into stick j.
+    Backwards, p_j is on the normal of stick j at d_j, p_j^y = (h + d cos β_j)/sin β_j, and the
+    inverse rotation turns stick j into stick j−1. Entry 0 of p^y (no rotation into stick 0 is
+    computed when lo = 0) stays 0, as in the mp loop.
+    """
+    n = hi - lo + 1
+    cos_u = np.zeros(n)
+    sin_u = np.zeros(n)
+    centre_y = np.zeros(n)
+    cos_u[-lo] = c0
+    sin_u[-lo] = s0
+    for j in range(1, hi + 1):  # forward: stick j−1 -> stick j about p_j
+        c = cos_u[j - 1 - lo]
+        s = sin_u[j - 1 - lo]
+        p_y = (h - d * c) / s
+        r = d / p_y
+        q = 1 + r * r
+        ca = (1 - r * r) / q
+        sa = 2 * r / q
+        centre_y[j - lo] = p_y
+        cos_u[j - lo] = ca * c - sa * s
+        sin_u[j - lo] = sa * c + ca * s
+    for j in range(0, lo, -1):  # backward: stick j -> stick j−1 about p_j
+        c = cos_u[j - lo]
+        s = sin_u[j - lo]
+        p_y = (h + d * c) / s
+        r = d / p_y
+        q = 1 + r * r
+        ca = (1 - r * r) / q
+        sa = 2 * r / q
+        centre_y[j - lo] = p_y
+        cos_u[j - 1 - lo] = ca * c + sa * s
+        sin_u[j - 1 - lo] = ca * s - sa * c
+    return cos_u, sin_u, centre_y
+
+
+@kernel(
+    "UniTuple(float64[:, :], 4)"
+    "(float64, float64, float64[:], float64[:], float64[:], int64, int64, int64)"
+)
+def _points(
+    h: float,
+    d: float,
+    cos_u: Array,
+    sin_u: Array,
+    centre_y: Array,
+    first: int,
+    i_min: int,
+    i_max: int,
+) -> tuple[Array, Array, Array, Array]:
+    """x_i = (2di, 0), d_i = x_i + h u_i, p_i = ((2i − 1)d, p_i^y) and u_i for i_min .. i_max.
+
+    Entry ``first`` of the recursion's arrays is index i_min; the same operations as
+    ``_assemble`` (which mp uses), in one pass.
+    """
+    n = i_max - i_min + 1
+    axis = np.empty((n, 2))
+    tractrix = np.empty((n, 2))
+    centres = np.empty((n, 2))
+    u = np.empty((n, 2))
+    two_d = 2 * d
+    for k in range(n):
+        i = float(i_min + k)
+        c, s = cos_u[first + k], sin_u[first + k]
+        x = two_d * i
+        axis[k, 0] = x
+        axis[k, 1] = 0.0
+        tractrix[k, 0] = x + h * c
+        tractrix[k, 1] = 0.0 + h * s
+        centres[k, 0] = (2 * i - 1) * d
+        centres[k, 1] = centre_y[first + k]
+        u[k, 0] = c
+        u[k, 1] = s
+    return axis, tractrix, centres, u
+
+
 def construct(
     ar: Arithmetic,
     h: float,
@@ -84,12 +174,26 @@ def construct(
     """(D4b), Section 3: sticks, rotation centres and tractrix for i = i_min .. i_max.
 
     The step from one stick to the next depends on where the previous stick points, so the
-    recursion is sequential: a scalar loop over max(|i_min − 1|, |i_max|) sticks (measured in
-    bench/; method="closed-form" serves very long ranges from Theorems 5 and 6 instead).
+    recursion is sequential over max(|i_min − 1|, |i_max|) sticks: the compiled ``_sticks`` in
+    float64, this loop in mp (measured in bench/; method="closed-form" serves very long ranges
+    from Theorems 5 and 6 instead).
     """
     validate(h, d, beta0)
     hh, dd = ar.scalar(h), ar.scalar(d)
     lo, hi = min(0, i_min - 1), max(0, i_max)
+    window = slice(i_min - lo, i_max - lo + 1)
+    if ar.mode == "float64":
+        c0, s0 = initial_direction(ar, beta0)
+        cos_f, sin_f, centre_f = _sticks(float(h), float(d), float(c0), float(s0), lo, hi)
+        ar.check_time()  # once, after the kernel: ≈ 20 ns per stick
+        axis, tractrix, centres, u = _points(h, d, cos_f, sin_f, centre_f, i_min - lo, i_min, i_max)
+        return KinematicTractrix(
+            indices=np.arange(i_min, i_max + 1, dtype=np.int64),
+            axis_points=axis,
+            tractrix=tractrix,
+            centres=centres,
+            directions=u,
+        )
     cos_u = [ar.scalar(0)] * (hi - lo + 1)
     sin_u = list(cos_u)
     centre_y = list(cos_u)
@@ -110,14 +214,36 @@ def construct(
         ca, sa = rotation_about(p_y, dd)
         centre_y[j - lo] = p_y
         cos_u[j - 1 - lo], sin_u[j - 1 - lo] = ca * c + sa * s, ca * s - sa * c
-    window = slice(i_min - lo, i_max - lo + 1)
+    return _assemble(
+        ar,
+        hh,
+        dd,
+        i_min,
+        i_max,
+        ar.array(cos_u[window]),
+        ar.array(sin_u[window]),
+        ar.array(centre_y[window]),
+    )
+
+
+def _assemble(
+    ar: Arithmetic,
+    h: Scalar,
+    d: Scalar,
+    i_min: int,
+    i_max: int,
+    cos_u: Array,
+    sin_u: Array,
+    centre_y: Array,
+) -> KinematicTractrix:
+    """The points of sticks i_min .. i_max from their directions and centre heights."""
     i = ar.indices(i_min, i_max)
-    u = stack_points(ar.array(cos_u[window]), ar.array(sin_u[window]))
-    axis = stack_points(2 * dd * i, ar.zeros(len(i)))
+    u = stack_points(cos_u, sin_u)
+    axis = stack_points(2 * d * i, ar.zeros(len(i)))
     return KinematicTractrix(
         indices=np.arange(i_min, i_max + 1, dtype=np.int64),
         axis_points=axis,
-        tractrix=axis + hh * u,
-        centres=stack_points((2 * i - 1) * dd, ar.array(centre_y[window])),
+        tractrix=axis + h * u,
+        centres=stack_points((2 * i - 1) * d, centre_y),
         directions=u,
     )

@@ -44,7 +44,11 @@ from app.geometry.checks import (
     relative_point_difference,
 )
 from app.geometry.curve import EVERYTHING, Curve, DiscretizationInfo, Selection, require_range
-from app.geometry.d4b import closed_forms as kinematic_closed_forms, curvature as d4b_curvature
+from app.geometry.d4b import (
+    closed_forms as kinematic_closed_forms,
+    curvature as d4b_curvature,
+    residual_kernels,
+)
 from app.geometry.d4b.construction import KinematicTractrix, construct, validate
 from app.geometry.errors import NotRepresentableError
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
@@ -517,6 +521,8 @@ def _signed_angle(ar: Arithmetic, a: Array, b: Array) -> Array:
 
 def _recursion(ctx: _Context, p: Array) -> Check:
     y = p[:, 1]
+    if ctx.ar.mode == "float64":  # the same residuals in one compiled pass
+        return ctx.check(RECURSION_13, 1, residual_kernels.recursion_residuals(ctx.d, y)[0])
     predicted = kinematic_closed_forms.recursion_13(ctx.d, y[:-2], y[1:-1])
     return ctx.check(RECURSION_13, 1, relative_difference(ctx.ar, y[2:], predicted))
 
@@ -524,7 +530,6 @@ def _recursion(ctx: _Context, p: Array) -> Check:
 def _two_step(ctx: _Context, p: Array) -> Check:
     y = p[:, 1]
     ar = ctx.ar
-    corrected = kinematic_closed_forms.two_step(ctx.d, y[:-3], y[1:-2])
     erratum = None
     if ar.mode == "mp" or float(np.max(abs(y))) < 1e60:  # the printed form has 7th powers
         printed = kinematic_closed_forms.two_step_printed(ctx.d, y[:-3], y[1:-2])
@@ -535,7 +540,12 @@ def _two_step(ctx: _Context, p: Array) -> Check:
     else:
         erratum = Erratum(*ERRATUM_TWO_STEP, printed_residual=None)
     # (13) twice: three vertices and about three times the operations of a local check
-    return ctx.check(TWO_STEP, 1, relative_difference(ar, y[3:], corrected), erratum, factor=3)
+    if ar.mode == "float64":  # the same residuals in one compiled pass
+        residuals = residual_kernels.recursion_residuals(ctx.d, y)[1]
+    else:
+        corrected = kinematic_closed_forms.two_step(ctx.d, y[:-3], y[1:-2])
+        residuals = relative_difference(ar, y[3:], corrected)
+    return ctx.check(TWO_STEP, 1, residuals, erratum, factor=3)
 
 
 def _closed_form(
@@ -559,6 +569,10 @@ def _closed_form(
 
 def _nikolaides(ctx: _Context, p: Array, tractrix: Array, axis: Array) -> Check:
     n = ctx.n
+    if ctx.ar.mode == "float64":  # the same residuals in one compiled pass
+        return ctx.check(
+            NIKOLAIDES, 0, residual_kernels.right_angle_residuals(tractrix, axis, p, n)
+        )
     at_p = nikolaides.right_angle_residuals(tractrix[:n], axis[:n], p[:n])
     at_next = nikolaides.right_angle_residuals(tractrix[:n], axis[:n], p[1 : n + 1])
     return ctx.check(NIKOLAIDES, 0, np.maximum(at_p, at_next))

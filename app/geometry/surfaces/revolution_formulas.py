@@ -26,6 +26,7 @@ from typing import Any, Protocol
 import numpy as np
 
 from app.geometry.precision import Arithmetic, Array
+from app.geometry.surfaces import equation_17_kernel
 
 
 @dataclass(frozen=True)
@@ -91,6 +92,8 @@ def face_residuals(
     1 per face, which leaves the ratios unchanged). The mask tells the faces where (17) is not
     0/0 (p1 ≠ p0).
     """
+    if ar.mode == "float64":  # the same operations in one compiled pass
+        return equation_17_kernel.face_residuals(p0, p1, n0, n1, areas)
     # (17) is homogeneous in the radii p: divide them by c = max(|p0|, |p1|) per face, and
     # A(f) by c² (K equation) or c (H equation), so that no product overflows
     tiny = ar.scalar(np.finfo(np.float64).tiny)

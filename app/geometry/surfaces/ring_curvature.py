@@ -19,6 +19,7 @@ from app.geometry.checks import Check, check_residuals, not_applicable
 from app.geometry.curvature import FaceCurvatures, face_curvatures
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array
+from app.geometry.surfaces import ring_kernel
 from app.geometry.surfaces.mesh import ring_faces
 from app.geometry.surfaces.revolution_formulas import equation_17_residuals
 
@@ -30,6 +31,10 @@ def ring_curvatures(ar: Arithmetic, meridian: Array, gauss: Array) -> FaceCurvat
     """Mixed-area curvatures of the ring of faces of two meridians ``(n, 2)``; ``(n−1,)``."""
     theta = ar.pi / RING_M
     cos, sin = ar.cos(theta), ar.sin(theta)
+    if ar.mode == "float64":  # the same arithmetic in one compiled pass (``ring_kernel``)
+        compiled = ring_kernel.ring_curvatures(meridian, gauss, cos, sin)
+        if compiled is not None:
+            return compiled
     f = ring_faces(ar, meridian[:-1], meridian[1:], cos, sin)
     g = ring_faces(ar, gauss[:-1], gauss[1:], cos, sin)
     return face_curvatures(ar, f, g)

@@ -1,0 +1,71 @@
+"""Float64 kernels compiled to machine code (numba), and the list of them for the warm-up.
+
+The recursive constructions (D1), (D3), (D4a), (D4b) need the previous vertex for the next one,
+so numpy cannot vectorize them; a Python loop costs 0.4–1.5 µs per vertex. Each of them has one
+float64 implementation, a kernel compiled here and written in its own ``construction.py`` from
+the paper's definition, step for step as the mp path (which keeps its Python loop over mpmath
+numbers). The hot float64 checks of (D4b) are kernels too (``d4b/residual_kernels.py``).
+
+Every kernel is declared with its signature, so it is compiled (or loaded from numba's on-disk
+cache) when its module is imported, never on a first request; ``python -m app.geometry.warm``
+imports all of them once, so that ``make run`` and ``make test`` find the cache filled
+(``NUMBA_CACHE_DIR``, docs/performance.md).
+
+The cache (``NUMBA_CACHE_DIR``, set by the Makefile to ``.numba-cache/``) may be read-only, as
+in the service image: numba's own locator refuses a directory it cannot write to, so
+``ReadableCacheLocator`` comes first and loads from it anyway. Should a kernel still need
+compiling there (another CPU than the one that filled the cache), saving fails and the kernel is
+compiled in memory instead, at import as before: the service starts, only more slowly.
+
+Kernels are compiled without fast-math: IEEE operations in the order they are written, no
+contraction into fused multiply-adds, so a kernel returns the same bits as the same formula
+evaluated by numpy or Python floats (tests/geometry/*/test_construction.py compare them).
+"""
+
+from __future__ import annotations
+
+import contextlib
+from collections.abc import Callable
+from typing import Any, TypeVar, cast
+
+import numba
+from numba.core import caching
+
+F = TypeVar("F", bound=Callable[..., Any])
+
+
+class ReadableCacheLocator(caching.UserProvidedCacheLocator):
+    """``NUMBA_CACHE_DIR``, used when it can be read even if it cannot be written."""
+
+    def ensure_cache_path(self) -> None:
+        # read-only: loading works; a save fails, and ``kernel`` compiles in memory instead
+        with contextlib.suppress(OSError):
+            super().ensure_cache_path()  # type: ignore[no-untyped-call]
+
+
+caching.CacheImpl._locator_classes = [
+    ReadableCacheLocator,
+    *caching.CacheImpl._locator_classes,
+]
+
+#: Every compiled kernel, by qualified name (``python -m app.geometry.warm`` lists them).
+KERNELS: dict[str, Any] = {}
+
+
+def kernel(signature: str) -> Callable[[F], F]:
+    """Compile a float64 kernel with this numba signature, cached on disk, at import time.
+
+    ``error_model="numpy"``: a division by zero gives inf or NaN as in numpy instead of raising;
+    ``nogil``: a kernel releases the GIL, so other requests' threads go on meanwhile.
+    """
+
+    def compile_(function: F) -> F:
+        options: dict[str, Any] = {"nogil": True, "error_model": "numpy"}
+        try:
+            compiled = numba.njit(signature, cache=True, **options)(function)
+        except (OSError, RuntimeError):  # no cache to read or write: compile in memory
+            compiled = numba.njit(signature, cache=False, **options)(function)
+        KERNELS[f"{function.__module__}.{function.__qualname__}"] = compiled
+        return cast(F, compiled)
+
+    return compile_

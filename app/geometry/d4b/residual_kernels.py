@@ -1,0 +1,87 @@
+"""Hot float64 checks of Section 4.2 on (D4b), as one compiled pass over the heights.
+
+``discretization`` checks eq. (13), its two-step form and the right angles of Nikolaides on the
+polygons with numpy (a dozen passes each, and many small calls on short polygons); the kernels
+here compute the same residual arrays entry by entry, with the same operations in the same order
+(``closed_forms.recursion_13``, ``closed_forms.two_step``, ``checks.relative_difference``,
+``nikolaides.right_angle_residuals``), so they agree with the numpy evaluation bit for bit
+(tests/geometry/d4b/test_residual_kernels.py). They hold the proof's formulas, as
+``closed_forms`` does, and take the polygons as given (arrays in, residual arrays out): the
+construction is never consulted here. The mp path keeps the numpy/mpmath evaluation.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from app.geometry.compiled import kernel
+
+TINY = float(np.finfo(np.float64).tiny)
+
+
+@kernel("UniTuple(float64[:], 2)(float64, float64[:], float64)")
+def _recursions(d: float, y: Any, tiny: float) -> tuple[Any, Any]:
+    """Relative differences of p_{i+1}^y from (13) and of p_{i+2}^y from its two-step form.
+
+    (13): (b(b/a) + 2d(d/a) + d(d/b)) / (1 − (d/a)(d/b)); two steps, with e = d/a, f = d/b:
+    (b(b/a)(b/a) + (df)(a/b + 2 + 3(b/a) + 4(b/a)(b/a)) + (de)(ef)(2(a/b) + 3)) / ((1 − ef)²),
+    a = p_{i−1}^y, b = p_i^y; each residual is |y − predicted| / max(|predicted|, tiny).
+    """
+    n = y.shape[0]
+    one = np.empty(max(n - 2, 0))
+    two = np.empty(max(n - 3, 0))
+    for k in range(n - 2):
+        a, b = y[k], y[k + 1]
+        predicted = (b * (b / a) + 2 * d * (d / a) + d * (d / b)) / (1 - (d / a) * (d / b))
+        scale = abs(predicted)
+        one[k] = abs(y[k + 2] - predicted) / (scale if scale > tiny else tiny)
+        if k < n - 3:
+            e = d / a
+            f = d / b
+            numerator = b * (b / a) * (b / a) + (d * f) * (
+                a / b + 2 + 3 * (b / a) + 4 * (b / a) * (b / a)
+            )
+            numerator = numerator + (d * e) * (e * f) * (2 * (a / b) + 3)
+            predicted = numerator / ((1 - e * f) * (1 - e * f))
+            scale = abs(predicted)
+            two[k] = abs(y[k + 3] - predicted) / (scale if scale > tiny else tiny)
+    return one, two
+
+
+@kernel("float64[:](float64[:, :], float64[:, :], float64[:, :], int64)")
+def _right_angles(tractrix: Any, axis: Any, p: Any, n: int) -> Any:
+    """max over the angles x_i d_i p_i and x_i d_i p_{i+1} of |cos| measured as Nikolaides'.
+
+    For a vertex v = d_i and ends a = x_i, b = p_i (then p_{i+1}):
+    |(a − v)·(b − v)| / ((|a^x| + |a^y| + |v^x| + |v^y|)(|b^x| + |b^y| + |v^x| + |v^y|)).
+    """
+    out = np.empty(n)
+    for k in range(n):
+        vx, vy = tractrix[k, 0], tractrix[k, 1]
+        ux, uy = axis[k, 0] - vx, axis[k, 1] - vy
+        size_a = abs(axis[k, 0]) + abs(axis[k, 1]) + abs(vx) + abs(vy)
+        wx, wy = p[k, 0] - vx, p[k, 1] - vy
+        size_b = abs(p[k, 0]) + abs(p[k, 1]) + abs(vx) + abs(vy)
+        at_p = abs(ux * wx + uy * wy) / (size_a * size_b)
+        wx, wy = p[k + 1, 0] - vx, p[k + 1, 1] - vy
+        size_b = abs(p[k + 1, 0]) + abs(p[k + 1, 1]) + abs(vx) + abs(vy)
+        at_next = abs(ux * wx + uy * wy) / (size_a * size_b)
+        # np.maximum: NaN wins
+        out[k] = at_p if (at_p >= at_next or at_p != at_p) else at_next
+    return out
+
+
+def recursion_residuals(d: float, y: Any) -> tuple[Any, Any]:
+    """(residuals of (13) for p_{i+1}^y, of the two-step form for p_{i+2}^y) on heights y."""
+    return _recursions(float(d), np.ascontiguousarray(y, dtype=np.float64), TINY)
+
+
+def right_angle_residuals(tractrix: Any, axis: Any, p: Any, n: int) -> Any:
+    """Nikolaides' right angles at d_i (to p_i and to p_{i+1}) for i = 0 .. n − 1, the larger."""
+
+    def f64(points: Any) -> Any:
+        return np.ascontiguousarray(points, dtype=np.float64)
+
+    return _right_angles(f64(tractrix), f64(axis), f64(p), n)

@@ -1,0 +1,102 @@
+"""The compiled ring of faces gives the bits of the numpy definition (faces, then [3])."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from app.geometry.curvature import face_curvatures
+from app.geometry.d4b import discretization as d4b
+from app.geometry.errors import DomainError
+from app.geometry.precision import Float64
+from app.geometry.surfaces import revolution_formulas, ring_curvature
+from app.geometry.surfaces.mesh import ring_faces
+from app.geometry.surfaces.ring_kernel import ring_curvatures
+
+FIELDS = (
+    "area",
+    "gauss_area",
+    "mixed_area",
+    "K",
+    "H",
+    "parallel",
+    "area_magnitude",
+    "gauss_area_magnitude",
+    "mixed_area_magnitude",
+)
+
+
+def numpy_ring(ar: Float64, meridian: np.ndarray, gauss: np.ndarray) -> object:
+    theta = ar.pi / ring_curvature.RING_M
+    cos, sin = ar.cos(theta), ar.sin(theta)
+    f = ring_faces(ar, meridian[:-1], meridian[1:], cos, sin)
+    g = ring_faces(ar, gauss[:-1], gauss[1:], cos, sin)
+    return face_curvatures(ar, f, g)
+
+
+def meridians(seed: int) -> list[tuple[np.ndarray, np.ndarray]]:
+    """Catenoid and pseudosphere rings of D4b, and random meridians with random parallels."""
+    ar = Float64()
+    data = d4b.polygons(ar, 1.0, 0.3, 1.2, -40, 40)
+    rng = np.random.default_rng(seed)
+    x = np.cumsum(rng.uniform(0.1, 1.0, 300))
+    y = rng.uniform(0.5, 3.0, 300) * rng.choice([1.0, 1e-5, 1e5], 300)
+    noise = rng.normal(size=(300, 2)) * rng.choice([1.0, 1e-9], (300, 1))
+    return [
+        (data.p, data.gauss.gauss),
+        (data.tractrix, data.gauss.tractrix_gauss),
+        (np.stack([x, y], axis=1), np.stack([x, y], axis=1) * 0.5 + noise),
+    ]
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_compiled_ring_equals_the_numpy_definition_bit_for_bit(seed: int) -> None:
+    ar = Float64()
+    for meridian, gauss in meridians(seed):
+        n = min(len(meridian), len(gauss))
+        expected = numpy_ring(ar, meridian[:n], gauss[:n])
+        theta = ar.pi / ring_curvature.RING_M
+        got = ring_curvatures(meridian[:n], gauss[:n], ar.cos(theta), ar.sin(theta))
+        assert got is not None
+        for name in FIELDS:
+            np.testing.assert_array_equal(getattr(got, name), getattr(expected, name), name)
+
+
+def test_a_face_without_area_is_still_a_domain_error() -> None:
+    meridian = np.array([[0.0, 1.0], [1.0, 1.0], [1.0, 1.0], [2.0, 2.0]])
+    gauss = np.array([[0.0, 1.0], [0.5, 1.0], [0.7, 1.0], [1.0, 1.5]])
+    with pytest.raises(DomainError, match="positive area"):
+        ring_curvature.ring_curvatures(Float64(), meridian, gauss)
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_compiled_equation_17_residuals_equal_the_numpy_ones(seed: int) -> None:
+    """(17) multiplied out: the kernel against the numpy lines it replaces, bit for bit."""
+    ar = Float64()
+    for meridian, gauss in meridians(seed):
+        n = min(len(meridian), len(gauss))
+        p_y, n_y = meridian[:n, 1], gauss[:n, 1]
+        areas = numpy_ring(ar, meridian[:n], gauss[:n])
+        got = revolution_formulas.face_residuals(ar, p_y[:-1], p_y[1:], n_y[:-1], n_y[1:], areas)
+        expected = numpy_face_residuals(p_y[:-1], p_y[1:], n_y[:-1], n_y[1:], areas)
+        for a, b in zip(got, expected, strict=True):
+            np.testing.assert_array_equal(a, b)
+
+
+def numpy_face_residuals(p0, p1, n0, n1, areas):
+    """The numpy evaluation of ``revolution_formulas.face_residuals`` (its mp path, in floats)."""
+    tiny = np.finfo(np.float64).tiny
+    c = np.maximum(abs(p0), abs(p1))
+    c = np.where(c > tiny, c, 1.0)
+    q0, q1 = p0 / c, p1 / c
+    dp = q1 * q1 - q0 * q0
+    sp = q1 * q1 + q0 * q0
+    area_k, mag_k = areas.area / c / c, areas.area_magnitude / c / c
+    area_h, mag_h = areas.area / c, areas.area_magnitude / c
+    k_scale = areas.gauss_area_magnitude * sp + mag_k * (n1 * n1 + n0 * n0)
+    h_scale = areas.mixed_area_magnitude * sp + mag_h * (abs(q0 * n0) + abs(q1 * n1))
+    k_res = abs(areas.gauss_area * dp - area_k * (n1 * n1 - n0 * n0))
+    h_res = abs(areas.mixed_area * dp + area_h * (q0 * n0 - q1 * n1))
+    k_res = k_res / np.where(k_scale > tiny, k_scale, tiny)
+    h_res = h_res / np.where(h_scale > tiny, h_scale, tiny)
+    return k_res, h_res, dp != 0

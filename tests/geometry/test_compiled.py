@@ -1,0 +1,97 @@
+"""The compiled float64 recursions give the numbers of the Python loops they replaced.
+
+``previous_constructions.json`` holds rows of D1, D3, D4a and D4b as computed by the float64
+Python loops of commit 2496aa5 (the constructions before ``app/geometry/compiled.py``), as exact
+hexadecimal floats, for long ranges on both sides of index 0, tilted first sticks, steps next to
+the lowest point (D3) and next to the cusp (D4a). The kernels run the same IEEE operations in
+the same order, so they agree to the bit; the test allows the issue's 4 units in the last place.
+The mp path keeps its Python loop: it must agree with the kernel to float64 rounding.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+
+from app.geometry.compiled import KERNELS
+from app.geometry.d1.construction import construct as construct_d1
+from app.geometry.d3.construction import construct as construct_d3
+from app.geometry.d4a.construction import construct_sticks
+from app.geometry.d4b.construction import construct as construct_d4b
+from app.geometry.precision import Arithmetic, Float64, MultiPrecision
+
+PREVIOUS = json.loads((Path(__file__).parent / "previous_constructions.json").read_text())
+ULPS = 4
+
+
+def outputs(ar: Arithmetic, kind: str, arguments: list[Any]) -> dict[str, Any]:
+    """The arrays the previous implementation was recorded for."""
+    if kind == "d4b":
+        b = construct_d4b(ar, *arguments)
+        return {"centres": b.centres, "tractrix": b.tractrix, "directions": b.directions}
+    if kind == "d1":
+        c = construct_d1(ar, *arguments)
+        return {"vertices": c.vertices, "slopes": c.slopes}
+    if kind == "d3":
+        return {"vertices": construct_d3(ar, *arguments).vertices}
+    s = construct_sticks(ar, *arguments)
+    return {
+        "axis_points": s.axis_points,
+        "tractrix": s.tractrix,
+        "directions": s.directions,
+        "side": s.side,
+    }
+
+
+def ulps(computed: np.ndarray[Any, Any], recorded: np.ndarray[Any, Any]) -> float:
+    scale = np.spacing(np.maximum(abs(computed), abs(recorded)))
+    return float(np.max(abs(computed - recorded) / scale))
+
+
+@pytest.mark.parametrize(
+    "case", PREVIOUS, ids=[f"{c['construction']}-{k}" for k, c in enumerate(PREVIOUS)]
+)
+def test_kernels_reproduce_the_previous_python_loops(case: dict[str, Any]) -> None:
+    computed = outputs(Float64(), case["construction"], case["arguments"])
+    for name, values in case["values"].items():
+        if name == "side":
+            assert computed[name].tolist() == values
+            continue
+        rows = case["rows"][name]
+        recorded = np.array([[float.fromhex(v) for v in row] for row in values])
+        got = np.asarray(computed[name], dtype=np.float64)[rows].reshape(recorded.shape)
+        assert ulps(got, recorded) <= ULPS, name
+        assert np.array_equal(got, recorded), name  # in fact bit for bit
+
+
+@pytest.mark.parametrize(
+    ("kind", "arguments"),
+    [
+        ("d4b", [1.0, 0.3, 1.1, -40, 45]),
+        ("d1", [0.4, 0.2, 1.0, 0.7, -40, 45]),
+        ("d3", [1.0, 0.3, 1.4, "down", -40, 45]),
+        ("d4a", [1.0, 0.3, 0.9, -40, 45]),
+    ],
+)
+def test_kernel_and_mp_loop_compute_the_same_polygon(kind: str, arguments: list[Any]) -> None:
+    """One definition, two precisions: the compiled float64 steps and the mp loop agree."""
+    fast = outputs(Float64(), kind, arguments)
+    exact = outputs(MultiPrecision(40), kind, arguments)
+    for name, values in fast.items():
+        reference = np.asarray(MultiPrecision(40).to_floats(np.ravel(exact[name])))
+        if name == "side":
+            assert values.tolist() == exact[name].tolist()
+            continue
+        np.testing.assert_allclose(np.ravel(values), reference, rtol=1e-12, atol=1e-300)
+
+
+def test_every_kernel_is_compiled_for_its_signature() -> None:
+    """Declared signatures: compiled (or loaded from the cache) on import, not on a request."""
+    assert len(KERNELS) >= 6
+    for name, compiled in KERNELS.items():
+        assert len(compiled.signatures) == 1, name
+        assert compiled.nopython_signatures, name
