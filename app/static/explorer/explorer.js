@@ -284,6 +284,26 @@ function updateDownloads() {
   }
 }
 
+// Nothing from a previous answer stays on the page once the parameters shown have no answer:
+// the plot is marked stale, and the checks, constants, downloads and figures are emptied with a
+// sentence saying why (what is shown always belongs to the parameters shown).
+function clearResult(reason) {
+  state.curve = null;
+  state.smooth = {};
+  $('plot').classList.add('stale');
+  $('plot').setAttribute('aria-describedby', 'status');
+  $('checks-table').querySelector('tbody').replaceChildren();
+  $('checks-summary').textContent = `No checks: ${reason}`;
+  $('constants').replaceChildren();
+  const downloads = $('downloads');
+  downloads.replaceChildren(html('li', { class: 'hint', 'data-empty': 'true' }, `No downloads: ${reason}`));
+  $('figure-list').replaceChildren();
+  $('figures-note').textContent = `No figures: ${reason}`;
+  $('overlay-status').textContent = '';
+  document.body.dataset.result = 'none';
+  for (const id of ['checks', 'share', 'figures']) $(id).removeAttribute('aria-busy');
+}
+
 function shareURL() {
   const query = new URLSearchParams([['id', state.entry.id], ...changedValues().map(([n, v]) => [n, v])]);
   return `${location.pathname}?${query}`;
@@ -297,6 +317,9 @@ async function compute() {
   clearErrors();
   const request = requestFor(changedValues());
   $('status').textContent = 'Computing…';
+  // until the answer comes, what is shown belongs to the previous parameters: say so
+  for (const id of ['checks', 'share', 'figures']) $(id).setAttribute('aria-busy', 'true');
+  document.body.dataset.result = 'pending';
   let response;
   try {
     response = await fetch(request.url, {
@@ -308,6 +331,8 @@ async function compute() {
   } catch (error) {
     if (error.name === 'AbortError') return;
     $('status').textContent = `The service did not answer: ${error.message}`;
+    clearResult('the service did not answer.');
+    document.body.dataset.state = 'error';
     return;
   }
   if (controller !== state.controller) return;
@@ -316,22 +341,31 @@ async function compute() {
     let problem = { title: `HTTP ${response.status}`, detail: '', errors: [] };
     try { problem = await response.json(); } catch { /* not JSON */ }
     const placed = showProblem(problem);
-    $('plot').classList.add('stale');
     $('status').textContent = placed
       ? `Not computed: the service refused ${placed === 1 ? 'a value' : 'some values'} (see the marked field${placed === 1 ? '' : 's'}).`
       : `Not computed: ${problem.detail || problem.title}`;
+    clearResult(placed ? 'the service refused the parameters above (see the marked field).' : `the request failed (${problem.detail || problem.title}).`);
     document.body.dataset.state = 'error';
     return;
   }
-  const curve = await response.json();
+  let curve;
+  try { curve = await response.json(); } catch (error) {
+    $('status').textContent = `The answer could not be read: ${error.message}`;
+    clearResult('the answer could not be read.');
+    document.body.dataset.state = 'error';
+    return;
+  }
   if (controller !== state.controller) return;
   state.curve = curve;
   $('plot').classList.remove('stale');
+  $('plot').removeAttribute('aria-describedby');
+  document.body.dataset.result = 'current';
   await loadSmooth(curve);
   drawPlot();
   drawChecks(curve);
   updateDownloads();
   updateFigures();
+  for (const id of ['checks', 'share', 'figures']) $(id).removeAttribute('aria-busy');
   $('status').textContent = `${curve.title}: ${curve.vertices.length} vertices, indices ${curve.indices[0]} … ${curve.indices[curve.indices.length - 1]}.`;
   document.body.dataset.state = 'ready';
   document.body.dataset.computed = String(Number(document.body.dataset.computed || 0) + 1);
@@ -520,7 +554,7 @@ function figureURL(figure) {
 function figureItem(figure, url) {
   const li = html('li', { 'data-figure': figure.id });
   const link = html('a', { href: url, class: 'figure-frame' });
-  const img = html('img', { src: url, alt: figure.title, loading: 'lazy', width: 800, height: 640 });
+  const img = html('img', { src: url, alt: figure.title, decoding: 'async', width: 800, height: 640 });
   const caption = html('p', {}, `${figure.title} (${figure.reference})`);
   const problem = html('p', { class: 'field-error', hidden: true, role: 'alert' });
   img.addEventListener('error', async () => {
