@@ -53,3 +53,37 @@ def test_a_refused_value_leaves_nothing_of_the_previous_answer(page: Page, serve
     for figure in ("figure-4", "figure-7"):
         src = page.locator(f"#figure-list li[data-figure='{figure}'] img").get_attribute("src")
         assert src is not None and "d=0.3" in src, src
+
+
+def test_the_page_loads_the_catalogs_it_shows_and_never_the_openapi_document(
+    page: Page, server: Server
+) -> None:
+    requested: list[str] = []
+    page.on("request", lambda request: requested.append(request.url))
+    open_explorer(page, server)
+    expect(page.locator("#surface option")).not_to_have_count(0)
+    expect(page.locator("#overlay-status")).to_contain_text("Drawn with h =")
+    paths = {url.removeprefix(server.url).split("?")[0] for url in requested}
+    assert "/openapi.json" not in paths
+    assert {"/discretizations", "/figures", "/surfaces", "/discretizations/d4b"} <= paths
+    assert {"/smooth/catenary", "/smooth/tractrix"} <= paths
+
+
+def test_on_a_phone_the_plot_comes_first_and_the_figures_are_drawn_unscrolled(
+    page: Page, server: Server
+) -> None:
+    page.set_viewport_size({"width": 390, "height": 844})
+    open_explorer(page, server)
+    plot = page.locator("#plot svg").bounding_box()
+    form = page.locator("#form").bounding_box()
+    assert plot is not None and form is not None
+    assert plot["y"] < form["y"]
+    assert plot["y"] + plot["height"] <= 844, plot  # the whole plot on the first screen
+    # every figure is loaded without scrolling to it (no lazy, blank frames)
+    page.wait_for_function(
+        "() => { const images = [...document.querySelectorAll('#figure-list img')];"
+        " return images.length > 0 && images.every((i) => i.complete && i.naturalWidth > 0); }",
+        timeout=TIMEOUT,
+    )
+    assert page.evaluate("window.scrollY") == 0
+    screenshot(page, "explorer-phone-plot-first")

@@ -1,5 +1,5 @@
 // The explorer: one page on top of the public API (GET /discretizations, /discretizations/{id},
-// /figures, /openapi.json, and /smooth/*, /surfaces/* when the service offers them).
+// /figures, /smooth/{catenary,tractrix} and /surfaces); it never loads the OpenAPI document.
 // Every value from the API is inserted as text (textContent), never as HTML.
 
 import { plotSVG, PALETTE } from './plot.js';
@@ -8,7 +8,6 @@ const $ = (id) => document.getElementById(id);
 const state = {
   catalog: [],
   entry: null,
-  openapi: null,
   curve: null,
   controller: null,
   hidden: new Set(),
@@ -373,16 +372,6 @@ async function compute() {
 
 // ---- smooth references (/smooth/catenary, /smooth/tractrix), when the service has them ---------
 
-function queryParameters(path) {
-  const operation = state.openapi?.paths?.[path]?.get;
-  if (!operation) return null;
-  return (operation.parameters || []).filter((p) => p.in === 'query').map((p) => p.name);
-}
-
-function pick(names, candidates) {
-  return candidates.find((c) => names.includes(c));
-}
-
 function smoothPoints(body) {
   if (Array.isArray(body.vertices)) return numbers(body.vertices);
   if (Array.isArray(body.points)) return numbers(body.points);
@@ -409,24 +398,16 @@ async function loadSmooth(curve) {
   const flip = mirrored(curve);
   const wanted = [['catenary', flip ? 'mirrored smooth catenary −h·cosh(x/h)' : 'smooth catenary h·cosh(x/h)', true]];
   if (curve.companions?.tractrix) wanted.push(['tractrix', 'smooth tractrix', false]);
-  const available = wanted.filter(([name]) => queryParameters(`/smooth/${name}`));
-  $('overlay').hidden = available.length === 0;
-  if (!available.length) return;
+  const available = wanted;
+  $('overlay').hidden = false;
   const h = overlayH(curve);
   if ($('overlay-h').value.trim() === '') $('overlay-h').placeholder = String(h);
   const xs = curve.vertices.map(([x]) => Number(x));
   const [xMin, xMax] = [Math.min(...xs), Math.max(...xs)];
   const notes = [];
   for (const [name, label] of available) {
-    const names = queryParameters(`/smooth/${name}`);
-    const query = new URLSearchParams();
-    if (names.includes('h')) query.set('h', String(h));
-    const low = pick(names, ['x_min', 'a', 'start']);
-    const high = pick(names, ['x_max', 'b', 'stop', 'end']);
-    const count = pick(names, ['count', 'n', 'samples', 'points']);
-    if (low) query.set(low, String(xMin));
-    if (high) query.set(high, String(xMax));
-    if (count) query.set(count, '200');
+    // GET /smooth/{catenary,tractrix}: h and the sampled range x_min … x_max, count samples
+    const query = new URLSearchParams([['h', String(h)], ['x_min', String(xMin)], ['x_max', String(xMax)], ['count', '200']]);
     try {
       const body = await getJSON(`/smooth/${name}?${query}`);
       let points = smoothPoints(body);
@@ -443,42 +424,21 @@ async function loadSmooth(curve) {
 
 // ---- surfaces (GET /surfaces/{id}?format=glb), when the service has them ------------------------
 
-function discoverSurfaces() {
-  const found = [];
-  for (const [path, item] of Object.entries(state.openapi?.paths || {})) {
-    if (!path.startsWith('/surfaces/') || !item.get) continue;
-    const parameters = item.get.parameters || [];
-    const pathParameter = parameters.find((p) => p.in === 'path');
-    const query = parameters.filter((p) => p.in === 'query').map((p) => p.name);
-    if (pathParameter) {
-      const schema = pathParameter.schema || {};
-      const ids = schema.enum || (schema.anyOf || []).flatMap((s) => s.enum || []);
-      for (const id of ids) found.push({ id, path: path.replace(`{${pathParameter.name}}`, id), query });
-    } else {
-      found.push({ id: path.slice('/surfaces/'.length), path, query });
-    }
-  }
-  return found;
-}
-
+// GET /surfaces lists the meshes; each takes the surface's own parameters, the discretization
+// giving the meridian and that discretization's parameters (the form's).
 function surfaceURL(surface, format) {
-  const query = new URLSearchParams();
-  const values = new Map([...getQuery()]);
-  for (const name of surface.query) {
-    if (name === 'format') continue;
-    if (['discretization', 'meridian'].includes(name)) { query.set(name, state.entry.id); continue; }
-    if (values.has(name)) query.set(name, values.get(name));
-  }
+  const query = new URLSearchParams([['discretization', state.entry.id]]);
+  for (const [name, value] of getQuery()) if (!['format', 'detail'].includes(name)) query.set(name, value);
   query.set('format', format);
-  return `${surface.path}?${query}`;
+  return `${surface.url}?${query}`;
 }
 
-function setupSurfaces() {
-  state.surfaces = discoverSurfaces();
+async function setupSurfaces() {
+  try { state.surfaces = await getJSON('/surfaces'); } catch { state.surfaces = []; }
   const select = $('surface');
   select.replaceChildren();
   if (!state.surfaces.length) {
-    $('surface-status').textContent = 'The 3D view needs GET /surfaces/{id}, which this service does not offer yet (it is not in /openapi.json).';
+    $('surface-status').textContent = 'The 3D view needs GET /surfaces, which this service does not offer.';
     return;
   }
   for (const surface of state.surfaces) select.append(html('option', { value: surface.id }, surface.id));
@@ -625,7 +585,6 @@ async function start() {
     $('status').textContent = `The catalog could not be loaded: ${error.message}`;
     return;
   }
-  try { state.openapi = await getJSON('/openapi.json'); } catch { state.openapi = null; }
   const select = $('discretization');
   for (const entry of state.catalog) select.append(html('option', { value: entry.id }, `${entry.id} — ${entry.title}`));
   const params = new URLSearchParams(location.search);
@@ -646,8 +605,7 @@ async function start() {
   $('overlay-h').addEventListener('change', async () => { if (state.curve) { await loadSmooth(state.curve); drawPlot(); } });
   $('show-3d').addEventListener('click', show3D);
   $('colour-by').addEventListener('change', () => { if (!$('view3d').hidden) show3D(); });
-  setupSurfaces();
-  await setupFigures();
+  await Promise.all([setupSurfaces(), setupFigures()]);
   await compute();
 }
 
