@@ -6,6 +6,7 @@ from fastapi import APIRouter, Depends, Query, Request, Response
 
 from app.errors import UnknownIdError
 from app.geometry.precision import Float64
+from app.geometry.statement_tex import PARAMETER_TEX
 from app.registry import DISCRETIZATIONS, Discretization
 from app.responses import cached, canonical_key
 from app.routers.common import (
@@ -43,6 +44,7 @@ def parameter_infos(model: type[StrictModel]) -> list[ParameterInfo]:
                 domain=domain,
                 default=schema.get("default"),
                 json_schema=schema,
+                domain_tex=PARAMETER_TEX.get(domain) if domain else None,
             )
         )
     return infos

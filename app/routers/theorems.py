@@ -10,6 +10,7 @@ from app.errors import UnknownIdError
 from app.geometry.checks import Check
 from app.geometry.errors import DomainError
 from app.geometry.precision import Float64, arithmetic
+from app.geometry.statement_tex import CLAIM_TEX, ERRATUM_TEX
 from app.registry import DISCRETIZATIONS, SMOOTH, STATEMENTS, STUDIES, StatementEntry
 from app.responses import JSONBytesResponse, cached, canonical_key, check_document, encode_json
 from app.routers.common import (
@@ -23,7 +24,7 @@ from app.routers.common import (
 )
 from app.routers.discretizations import parameter_infos
 from app.routers.smooth import enforce_samples
-from app.schemas.catalog import ParameterInfo, StatementInfo, TheoremResponse
+from app.schemas.catalog import ErratumTeX, ParameterInfo, StatementInfo, TheoremResponse
 from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES, StrictModel
 
 router = APIRouter(prefix="/theorems", tags=["theorems"])
@@ -163,6 +164,7 @@ def list_statements() -> list[StatementInfo]:
                 id=identifier,
                 reference=entry.statement.reference,
                 claim=entry.statement.claim,
+                claim_tex=CLAIM_TEX.get(identifier, ""),
                 discretizations=list(entry.discretizations),
                 studies=list(entry.studies),
                 smooth=list(entry.smooth),
@@ -171,6 +173,11 @@ def list_statements() -> list[StatementInfo]:
                 parameters=parameters,
                 conditions=list(entry.statement.conditions),
                 errata=list(errata.get(identifier, ())),
+                errata_tex=[
+                    ErratumTeX(id=e, printed_tex=ERRATUM_TEX[e][0], corrected_tex=ERRATUM_TEX[e][1])
+                    for e in errata.get(identifier, ())
+                    if e in ERRATUM_TEX
+                ],
             )
         )
     return out

@@ -14,6 +14,9 @@ const state = {
   smooth: {},
   surfaces: [],
   figures: [],
+  katex: null,
+  claimTex: new Map(),
+  errataTex: new Map(),
 };
 
 function html(tag, attributes = {}, text = null) {
@@ -24,6 +27,41 @@ function html(tag, attributes = {}, text = null) {
   }
   if (text !== null) node.textContent = text;
   return node;
+}
+
+// TeX from the API typeset by KaTeX (vendored, loaded on first use); the plain text stands in
+// until KaTeX has loaded, and for good if it cannot be.
+function math(tex, text, display = false) {
+  const node = html('span', { class: display ? 'math display' : 'math' });
+  if (tex && state.katex) {
+    try {
+      state.katex.render(tex, node, { throwOnError: true, displayMode: display, strict: 'ignore', output: 'htmlAndMathml' });
+      node.dataset.tex = tex;
+      return node;
+    } catch (error) {
+      node.dataset.texError = String(error.message || error);
+    }
+  }
+  node.textContent = text;
+  return node;
+}
+
+async function loadKatex() {
+  try {
+    state.katex = (await import('/static/vendor/katex/dist/katex.mjs')).default;
+  } catch {
+    state.katex = null; // not built (make assets): the plain text stays
+  }
+}
+
+// GET /theorems carries each statement's claim and each erratum as TeX.
+async function loadStatementTex() {
+  let statements = [];
+  try { statements = await getJSON('/theorems'); } catch { return; }
+  for (const statement of statements) {
+    if (statement.claim_tex) state.claimTex.set(statement.id, statement.claim_tex);
+    for (const erratum of statement.errata_tex || []) state.errataTex.set(erratum.id, [erratum.printed_tex, erratum.corrected_tex]);
+  }
 }
 
 async function getJSON(url) {
@@ -65,8 +103,9 @@ function buildField(parameter, initial) {
   const kind = fieldKind(parameter);
   const id = `param-${name}`;
   const wrap = html('div', { class: `field ${kind === 'boolean' ? 'checkbox' : ''}`, 'data-parameter': name });
-  const help = html('p', { class: 'domain', id: `help-${name}` },
-    [parameter.domain, parameter.description].filter(Boolean).join(' — '));
+  const help = html('p', { class: 'domain', id: `help-${name}` });
+  if (parameter.domain) help.append(math(parameter.domain_tex, parameter.domain), ' — ');
+  help.append(parameter.description || '');
   const error = html('p', { class: 'field-error', id: `error-${name}`, hidden: true, role: 'alert' });
   let input;
   if (kind === 'enum') {
@@ -237,16 +276,25 @@ function drawChecks(curve) {
   for (const check of curve.checks) {
     const row = html('tr', { 'data-check': check.id });
     const statement = html('td');
-    statement.append(html('strong', {}, check.id), html('br'), html('span', {}, check.reference),
-      html('div', { class: 'claim' }, check.claim));
+    statement.append(html('strong', {}, check.id), html('br'), html('span', {}, check.reference));
+    const tex = state.claimTex.get(check.id);
+    if (tex) statement.append(html('div', { class: 'claim-tex' }, null));
+    if (tex) statement.lastChild.append(math(tex, ''));
+    statement.append(html('div', { class: 'claim' }, check.claim));
     if (check.note) statement.append(html('div', { class: 'claim' }, `Note: ${check.note}`));
     const verdict = check.holds === true ? ['holds', '✓ holds'] : check.holds === false ? ['fails', '✗ fails'] : ['na', 'n/a'];
     if (check.holds === true) holds += 1; else if (check.holds === false) fails += 1; else na += 1;
-    const erratum = html('td');
+    const erratum = html('td', { class: 'erratum' });
     if (check.erratum) {
       const e = check.erratum;
-      erratum.append(html('strong', {}, e.id), html('div', {}, `printed: ${e.printed}`),
-        html('div', {}, `corrected: ${e.corrected}`),
+      const [printedTex, correctedTex] = state.errataTex.get(e.id) || [null, null];
+      const sides = html('div', { class: 'erratum-sides' });
+      const printed = html('div', { class: 'printed' });
+      printed.append(html('span', { class: 'side' }, 'Printed'), math(printedTex, e.printed));
+      const corrected = html('div', { class: 'corrected' });
+      corrected.append(html('span', { class: 'side' }, 'Corrected'), math(correctedTex, e.corrected));
+      sides.append(printed, corrected);
+      erratum.append(html('strong', {}, e.id), sides,
         html('div', {}, `residual of the printed form: ${formatNumber(e.printed_residual)}`));
     }
     row.append(statement, html('td', { class: 'number' }, formatNumber(check.residual)),
@@ -259,7 +307,9 @@ function drawChecks(curve) {
   constants.replaceChildren();
   const described = state.entry.constants || {};
   for (const [name, value] of Object.entries(curve.constants || {})) {
-    constants.append(html('dt', { title: described[name] || '' }, name), html('dd', {}, `${value}${described[name] ? ` — ${described[name]}` : ''}`));
+    const dd = html('dd', {}, String(value));
+    if (described[name]) dd.append(` — ${described[name]}`);
+    constants.append(html('dt', { title: described[name] || '' }, name), dd);
   }
 }
 
@@ -580,7 +630,7 @@ function selectDiscretization(id, values = new URLSearchParams()) {
 
 async function start() {
   try {
-    state.catalog = await getJSON('/discretizations');
+    [state.catalog] = await Promise.all([getJSON('/discretizations'), loadKatex()]);
   } catch (error) {
     $('status').textContent = `The catalog could not be loaded: ${error.message}`;
     return;
@@ -607,6 +657,10 @@ async function start() {
   $('colour-by').addEventListener('change', () => { if (!$('view3d').hidden) show3D(); });
   await Promise.all([setupSurfaces(), setupFigures()]);
   await compute();
+  // the typeset claims and errata come after the first plot, then the checks are drawn again
+  await loadStatementTex();
+  if (state.curve) drawChecks(state.curve);
+  document.body.dataset.tex = state.katex ? 'ready' : 'unavailable';
 }
 
 start();
