@@ -132,7 +132,30 @@ function buildField(parameter, initial) {
   input.dataset.default = kind === 'boolean' ? String(parameter.default === true) : defaultText(parameter);
   const label = html('label', { for: id }, name);
   if (kind === 'boolean') wrap.append(input, ' ', label, help, error);
-  else wrap.append(label, input, help, error);
+  else {
+    const range = (kind === 'number' || kind === 'integer') ? sliderRange(parameter) : null;
+    if (range) {
+      const slider = html('input', {
+        type: 'range', id: `slider-${name}`, min: range.min, max: range.max, step: range.step,
+        'aria-label': `${name}, slider from ${sliderText(range.min, range.step)} to ${sliderText(range.max, range.step)}`,
+        'aria-describedby': `help-${name}`, 'data-slider': name,
+      });
+      const value = Number(input.value);
+      slider.value = String(Number.isFinite(value) ? value : parameter.default);
+      slider.addEventListener('input', (event) => {
+        event.stopPropagation(); // not the form's debounced path: this one is live
+        input.value = sliderText(slider.value, range.step);
+        liveCompute();
+      });
+      slider.addEventListener('change', (event) => event.stopPropagation());
+      input.addEventListener('input', () => { const v = Number(input.value); if (input.value.trim() !== '' && Number.isFinite(v)) slider.value = String(v); });
+      const pair = html('div', { class: 'with-slider' });
+      pair.append(input, slider);
+      wrap.append(label, pair, help, error);
+    } else {
+      wrap.append(label, input, help, error);
+    }
+  }
   return wrap;
 }
 
@@ -152,7 +175,52 @@ function buildForm(entry, values) {
 }
 
 function inputs() {
-  return [...document.querySelectorAll('#form [data-parameter] input, #form [data-parameter] select, #form [data-parameter] textarea')];
+  return [...document.querySelectorAll('#form [data-parameter] input:not([type="range"]), #form [data-parameter] select, #form [data-parameter] textarea')];
+}
+
+// A slider's range for a number of the paper: the schema's bounds where they are close, else a
+// range around the default (the service refuses what the domain excludes, and says so).
+function sliderRange(parameter) {
+  const schema = schemaOf(parameter);
+  const value = Number(parameter.default);
+  if (parameter.kind !== 'paper' || !['number', 'integer'].includes(schema.type)) return null;
+  if (parameter.default === null || parameter.default === undefined || !Number.isFinite(value)) return null;
+  const lowBound = schema.minimum ?? schema.exclusiveMinimum;
+  const highBound = schema.maximum ?? schema.exclusiveMaximum;
+  if (schema.type === 'integer') {
+    return { min: Math.max(lowBound ?? -Infinity, value - 40), max: Math.min(highBound ?? Infinity, value + 40), step: 1 };
+  }
+  let min, max;
+  if (Number.isFinite(lowBound) && Number.isFinite(highBound) && highBound - lowBound <= 1e3) {
+    [min, max] = [lowBound, highBound];
+  } else if (Number.isFinite(lowBound) && lowBound >= 0 && lowBound < value) {
+    [min, max] = [lowBound, Math.max(10 * value, lowBound + 1)];
+  } else {
+    const spread = Math.max(4 * Math.abs(value), 1);
+    [min, max] = [value - spread, value + spread];
+  }
+  const step = Number(((max - min) / 200).toPrecision(2));
+  // an excluded end (0 < d) is not offered: the slider starts one step inside
+  if (schema.exclusiveMinimum !== undefined && min === schema.exclusiveMinimum) min += step;
+  if (schema.exclusiveMaximum !== undefined && max === schema.exclusiveMaximum) max -= step;
+  return { min, max, step };
+}
+
+function sliderText(value, step) {
+  const decimals = Math.max(0, -Math.floor(Math.log10(step)) + 1);
+  return String(Number(Number(value).toFixed(decimals)));
+}
+
+// Dragging a slider computes as fast as the service answers: one request at a time, and the
+// latest value once the one in flight has come back (no request is aborted half way).
+const live = { running: false, again: false };
+async function liveCompute() {
+  if (live.running) { live.again = true; return; }
+  live.running = true;
+  try { await compute(); } finally {
+    live.running = false;
+    if (live.again) { live.again = false; liveCompute(); }
+  }
 }
 
 // The parameters that differ from their defaults (what the request and the shared URL carry).
@@ -364,6 +432,7 @@ async function compute() {
   const controller = new AbortController();
   state.controller = controller;
   clearErrors();
+  const asked = JSON.stringify(changedValues());
   const request = requestFor(changedValues());
   $('status').textContent = 'Computing…';
   // until the answer comes, what is shown belongs to the previous parameters: say so
@@ -408,13 +477,16 @@ async function compute() {
   state.curve = curve;
   $('plot').classList.remove('stale');
   $('plot').removeAttribute('aria-describedby');
-  document.body.dataset.result = 'current';
+  // the fields may have moved on while this answer travelled (a slider): then it is not current
+  document.body.dataset.query = request.query.toString();
   await loadSmooth(curve);
   drawPlot();
   drawChecks(curve);
   updateDownloads();
   updateFigures();
-  for (const id of ['checks', 'share', 'figures']) $(id).removeAttribute('aria-busy');
+  const current = JSON.stringify(changedValues()) === asked;
+  document.body.dataset.result = current ? 'current' : 'pending';
+  if (current) for (const id of ['checks', 'share', 'figures']) $(id).removeAttribute('aria-busy');
   $('status').textContent = `${curve.title}: ${curve.vertices.length} vertices, indices ${curve.indices[0]} … ${curve.indices[curve.indices.length - 1]}.`;
   document.body.dataset.state = 'ready';
   document.body.dataset.computed = String(Number(document.body.dataset.computed || 0) + 1);
