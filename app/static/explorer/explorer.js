@@ -15,6 +15,7 @@ const state = {
   surfaces: [],
   figures: [],
   katex: null,
+  compare: {},
   claimTex: new Map(),
   errataTex: new Map(),
 };
@@ -299,6 +300,11 @@ function curveSeries(curve) {
     series.push({ name, label: `${name} — ${polyline.description || ''}`, points: numbers(polyline.vertices), color: PALETTE[k % PALETTE.length], width: 1.2 });
     k += 1;
   }
+  let c = 0;
+  for (const [name, other] of Object.entries(state.compare)) {
+    series.push({ name, label: other.label, points: other.points, color: COMPARE_COLOURS[c % COMPARE_COLOURS.length], dashed: true, width: 2.5 });
+    c += 1;
+  }
   for (const [name, smooth] of Object.entries(state.smooth)) {
     if (smooth.points) series.push({ name, label: smooth.label, points: smooth.points, color: '#555555', dashed: true, markers: false, width: 1.2 });
   }
@@ -407,6 +413,8 @@ function updateDownloads() {
 function clearResult(reason) {
   state.curve = null;
   state.smooth = {};
+  state.compare = {};
+  $('compare-status').textContent = '';
   $('plot').classList.add('stale');
   $('plot').setAttribute('aria-describedby', 'status');
   $('checks-table').querySelector('tbody').replaceChildren();
@@ -480,6 +488,7 @@ async function compute() {
   // the fields may have moved on while this answer travelled (a slider): then it is not current
   document.body.dataset.query = request.query.toString();
   await loadSmooth(curve);
+  await loadCompare(curve);
   drawPlot();
   drawChecks(curve);
   updateDownloads();
@@ -490,6 +499,79 @@ async function compute() {
   $('status').textContent = `${curve.title}: ${curve.vertices.length} vertices, indices ${curve.indices[0]} … ${curve.indices[curve.indices.length - 1]}.`;
   document.body.dataset.state = 'ready';
   document.body.dataset.computed = String(Number(document.body.dataset.computed || 0) + 1);
+}
+
+// ---- compare: other discretizations overlaid, with constants matched where Section 4 relates
+// them (the current polygon's fitted c of (D1) or (D3), its x-step and start heights) ----------
+
+const COMPARE_COLOURS = ['#7B3294', '#A6611A', '#018571', '#D01C8B'];
+
+function vertexAt(curve, index) {
+  const k = curve.indices.indexOf(index);
+  return k < 0 ? null : curve.vertices[k].map(Number);
+}
+
+// The request that should redraw this polygon as (D1) or (D3), or null when nothing matches:
+// (D1) from p_0, p_1 and its constant; (D3) from p_0 and its constant (both branches tried).
+function matchedRequests(target, curve) {
+  const p0 = vertexAt(curve, 0), p1 = vertexAt(curve, 1);
+  const range = [['i_min', String(curve.indices[0])], ['i_max', String(curve.indices[curve.indices.length - 1])]];
+  if (!p0 || !p1 || curve.vertices.some((v) => typeof v[0] !== 'number')) return null;
+  const delta = p1[0] - p0[0];
+  const c = Number(curve.constants?.[target]);
+  if (!(delta > 0) || !Number.isFinite(c)) return null;
+  const common = [['c', String(c)], ['delta', String(delta)], ['y0', String(p0[1])], ...range];
+  const text = `c = ${formatNumber(c)} (this polygon's constants.${target}), δ = ${formatNumber(delta)}, from p_0${target === 'd1' ? ' and p_1' : ''}`;
+  if (target === 'd1') return { text, shift: p0[0], queries: [new URLSearchParams([...common, ['y1', String(p1[1])]])] };
+  if (target === 'd3') return { text, shift: p0[0], queries: ['up', 'down'].map((b) => new URLSearchParams([...common, ['branch', b]])) };
+  return null;
+}
+
+function distance(a, b) {
+  if (a.length !== b.length) return Infinity;
+  return Math.max(...a.map(([x, y], k) => Math.hypot(x - b[k][0], y - b[k][1])));
+}
+
+async function loadCompare(curve) {
+  state.compare = {};
+  const chosen = [...document.querySelectorAll('#compare input:checked')].map((box) => box.value);
+  const notes = [];
+  for (const id of chosen) {
+    const matched = matchedRequests(id, curve);
+    const queries = matched ? matched.queries : [new URLSearchParams()];
+    let best = null;
+    for (const query of queries) {
+      try {
+        const body = await getJSON(`/discretizations/${id}?${query}`);
+        const points = numbers(body.vertices).map(([x, y]) => [x + (matched ? matched.shift : 0), y]);
+        const gap = distance(points, numbers(curve.vertices));
+        if (!best || gap < best.gap) best = { points, gap, query };
+      } catch (error) {
+        if (!best) best = { error: error.message };
+      }
+    }
+    if (!best || best.error) { notes.push(`${id}: not drawn (${best ? best.error : 'no answer'})`); continue; }
+    const how = matched ? `${matched.text}${matched.queries.length > 1 ? `, branch=${best.query.get('branch')}` : ''}` : 'its own defaults';
+    state.compare[`compare-${id}`] = { label: `${id} with ${how}`, points: best.points };
+    const same = matched && best.gap <= 1e-9 * Math.max(1, ...curve.vertices.map(([, y]) => Math.abs(Number(y))));
+    notes.push(`${id} (${how}): ${matched ? (same ? 'the same polygon' : `largest distance ${formatNumber(best.gap)}`) : 'not related by matched constants'}`);
+  }
+  $('compare-status').textContent = notes.join('; ');
+}
+
+function setupCompare() {
+  const box = $('compare');
+  for (const node of [...box.children]) if (node.tagName !== 'LEGEND') node.remove();
+  for (const entry of state.catalog) {
+    if (entry.id === state.entry.id) continue;
+    const id = `compare-${entry.id}`;
+    const label = html('label', { for: id });
+    const input = html('input', { type: 'checkbox', id, value: entry.id });
+    input.addEventListener('change', async () => { if (state.curve) { await loadCompare(state.curve); drawPlot(); $(id).focus(); } });
+    label.append(input, ` ${entry.id}`);
+    box.append(label);
+  }
+  $('compare-status').textContent = '';
 }
 
 // ---- smooth references (/smooth/catenary, /smooth/tractrix), when the service has them ---------
@@ -697,7 +779,9 @@ function selectDiscretization(id, values = new URLSearchParams()) {
   state.entry = state.catalog.find((e) => e.id === id) || state.catalog[0];
   $('discretization').value = state.entry.id;
   state.hidden.clear();
+  state.compare = {};
   buildForm(state.entry, values);
+  setupCompare();
 }
 
 async function start() {
