@@ -3,6 +3,7 @@
 // Every value from the API is inserted as text (textContent), never as HTML.
 
 import { plotSVG, PALETTE } from './plot.js';
+import { Animation } from './animation.js';
 
 const $ = (id) => document.getElementById(id);
 const state = {
@@ -415,6 +416,7 @@ function clearResult(reason) {
   state.smooth = {};
   state.compare = {};
   $('compare-status').textContent = '';
+  animation.update(null, getJSON); // no frames of the refused parameters' predecessor
   $('plot').classList.add('stale');
   $('plot').setAttribute('aria-describedby', 'status');
   $('checks-table').querySelector('tbody').replaceChildren();
@@ -490,6 +492,7 @@ async function compute() {
   await loadSmooth(curve);
   await loadCompare(curve);
   drawPlot();
+  await animation.update(curve, getJSON);
   drawChecks(curve);
   updateDownloads();
   updateFigures();
@@ -768,6 +771,11 @@ async function setupFigures() {
 }
 
 // ---- start ----------------------------------------------------------------------------------
+
+const animation = new Animation({
+  section: $('animation'), title: $('animation-title'), plot: $('animation-plot'), play: $('anim-play'),
+  back: $('anim-back'), forward: $('anim-forward'), slider: $('anim-frame'), text: $('anim-text'),
+});
 
 let timer = null;
 function scheduleCompute() {
