@@ -4,7 +4,7 @@
 // Theorem 11 the (D2b) polygons as j doubles, closing in on the catenary. Every frame is drawn
 // from the API's numbers and described in words with its values (the text under the picture).
 
-import { plotSVG, PALETTE } from './plot.js';
+import { plotSVG, widthFor, PALETTE } from './plot.js';
 
 const num = (points) => points.map(([x, y]) => [Number(x), Number(y)]);
 const fmt = (v) => (Math.abs(v) < 1e-12 ? '0' : String(Number(Number(v).toPrecision(5))).replace('-', '−'));
@@ -139,7 +139,11 @@ export class Animation {
     this.frame = Math.max(0, Math.min(n - 1, frame));
     const { series, text } = this.movie.frames[this.frame];
     const drawn = series.filter((s) => s.points.length);
-    this.el.plot.replaceChildren(plotSVG(drawn, { title: `${this.el.title.textContent} Frame ${this.frame + 1} of ${n}.`, bounds: this.movie.bounds, id: 'animation-plot', height: 460 }));
+    const width = widthFor(this.el.plot);
+    this.el.plot.replaceChildren(plotSVG(drawn, {
+      title: `${this.el.title.textContent} Frame ${this.frame + 1} of ${n}.`, bounds: this.movie.bounds,
+      id: 'animation-plot', width, height: Math.round(width * 0.58),
+    }));
     this.el.slider.value = String(this.frame);
     this.el.slider.setAttribute('aria-valuetext', `Frame ${this.frame + 1} of ${n}`);
     this.el.text.textContent = `Frame ${this.frame + 1} of ${n}. ${text}`;

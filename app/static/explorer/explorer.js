@@ -2,7 +2,7 @@
 // /figures, /smooth/{catenary,tractrix} and /surfaces); it never loads the OpenAPI document.
 // Every value from the API is inserted as text (textContent), never as HTML.
 
-import { plotSVG, PALETTE } from './plot.js';
+import { plotSVG, widthFor, PALETTE } from './plot.js';
 import { Animation } from './animation.js';
 
 const $ = (id) => document.getElementById(id);
@@ -317,7 +317,8 @@ function drawPlot() {
   if (!state.curve) return;
   const all = curveSeries(state.curve);
   const shown = all.filter((s) => !state.hidden.has(s.name));
-  plot.replaceChildren(plotSVG(shown, { title: state.curve.title }));
+  const width = widthFor(plot);
+  plot.replaceChildren(plotSVG(shown, { title: state.curve.title, width, height: Math.round(width * 0.65) }));
   const layers = $('layers');
   for (const node of [...layers.children]) if (node.tagName !== 'LEGEND') node.remove();
   for (const s of all) {

@@ -39,6 +39,13 @@ function range(values) {
   return [low, high];
 }
 
+// The picture's width in its own units for a container: on a phone the plot is drawn narrower
+// (not scaled down), so that its labels keep their size.
+export function widthFor(container) {
+  const available = container?.clientWidth || 800;
+  return Math.round(Math.max(340, Math.min(800, available)));
+}
+
 // series: [{name, label, points: [[x, y], ...], color, dashed, width, markers}]
 // bounds: [[x, y], ...] points the view must include (a fixed frame for an animation);
 // id: distinguishes the clip path of several plots on one page.
