@@ -10,6 +10,7 @@ Pure data keyed by id, so that it does not depend on where the statements are de
   and as it should read. Errata about words rather than formulas keep their words in
   ``\text{…}``.
 - ``PARAMETER_TEX``: a parameter's domain as written in the catalogs -> the same as TeX.
+- ``CONSTANT_TEX``: a constant of the curve responses -> what it is, as TeX.
 
 Conventions as in the paper: Δ is the forward difference (Δp_i = p_{i+1} − p_i, Δ²p_i =
 p_{i+1} − 2p_i + p_{i−1}, centred as in (D1)), l_i = |p_i − p_{i−1}|, A_i the signed area
@@ -332,4 +333,22 @@ PARAMETER_TEX: dict[str, str] = {
     "0 < s < h": r"0 < s < h",
     "0 < beta0 < π": r"0 < \beta_0 < \pi",
     "0 < d < h": r"0 < d < h",
+}
+
+#: A fitted or derived constant of the curve responses (``constants``) -> what it is, as TeX.
+CONSTANT_TEX: dict[str, str] = {
+    "d1": r"c \text{ of (D1)}:\ \Delta^2 p_i^y = c\,(l_i + l_{i+1})",
+    "d3": r"c \text{ of (D3)}:\ A_i = c\, l_i",
+    "eq2": r"c \text{ of (2)}:\ \Delta^2 p_i^y = c\,(A_i + A_{i+1})",
+    "equilibrium": r"c:\ k_{i+1} - k_i = c\,(l_i + l_{i+1})",
+    "c_theorem_1": _C1,
+    "r_theorem_1": r"r^* = -\frac{f_1(1 + f_0^2)}{2(f_1 - f_0)^2}",
+    "x_step": r"d = \frac{f_0 + f_1}{2(f_1 - f_0)}",
+    "c1": r"c_1 \text{ of (7)}",
+    "c2": r"c_2 \text{ of (7)}",
+    "c1_eq11": r"c_1 \text{ of (11)}",
+    "c2_eq11": r"c_2 \text{ of (11)}",
+    "r_theorem_2": r"r^* \text{ of Theorem 2}",
+    "x_step_even": r"p_{i+1}^x - p_i^x\ (i \text{ even})",
+    "x_step_odd": r"p_{i+1}^x - p_i^x\ (i \text{ odd})",
 }

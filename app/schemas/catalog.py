@@ -30,6 +30,9 @@ class DiscretizationEntry(BaseModel):
     parameters: list[ParameterInfo]
     companions: dict[str, str] = Field(description="Companion polygons in the response.")
     constants: dict[str, str] = Field(description="Fitted constants in the response.")
+    constants_tex: dict[str, str] = Field(
+        default_factory=dict, description="Each constant's defining relation as TeX."
+    )
     statements: list[str] = Field(description="Ids of the statements checked (GET /theorems).")
 
 

@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 from fastapi.testclient import TestClient
 
-from app.geometry.statement_tex import CLAIM_TEX, ERRATUM_TEX, PARAMETER_TEX
+from app.geometry.statement_tex import CLAIM_TEX, CONSTANT_TEX, ERRATUM_TEX, PARAMETER_TEX
 from app.registry import STATEMENTS
 
 ERRATA = Path(__file__).resolve().parents[2] / "docs" / "errata.md"
@@ -41,7 +41,12 @@ def test_every_statement_and_erratum_has_its_tex() -> None:
 
 @pytest.mark.parametrize(
     "tex",
-    [*CLAIM_TEX.values(), *(t for pair in ERRATUM_TEX.values() for t in pair)],
+    [
+        *CLAIM_TEX.values(),
+        *(t for pair in ERRATUM_TEX.values() for t in pair),
+        *CONSTANT_TEX.values(),
+        *PARAMETER_TEX.values(),
+    ],
 )
 def test_the_tex_is_balanced_and_not_plain_unicode(tex: str) -> None:
     assert tex.strip() and balanced(tex), tex
@@ -66,6 +71,7 @@ def test_the_catalogs_serve_the_tex(client: TestClient) -> None:
             assert (erratum["printed_tex"], erratum["corrected_tex"]) == (printed, corrected)
     assert any(s["errata_tex"] for s in statements)
     for entry in client.get("/discretizations").json():
+        assert entry["constants_tex"] == {k: CONSTANT_TEX[k] for k in entry["constants"]}
         for parameter in entry["parameters"]:
             domain = parameter["domain"]
             if domain is None or domain in WORDS:

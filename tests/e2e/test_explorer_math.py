@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 from playwright.sync_api import Page, expect
 
-from app.geometry.statement_tex import CLAIM_TEX, ERRATUM_TEX, PARAMETER_TEX
+from app.geometry.statement_tex import CLAIM_TEX, CONSTANT_TEX, ERRATUM_TEX, PARAMETER_TEX
 from tests.e2e.conftest import SCREENSHOTS, Server, screenshot
 from tests.e2e.test_explorer import TIMEOUT, api, open_explorer
 
@@ -38,6 +38,7 @@ def test_katex_renders_every_claim_erratum_and_domain_without_error(
     for identifier, (printed, corrected) in ERRATUM_TEX.items():
         sources += [(f"{identifier} printed", printed), (f"{identifier} corrected", corrected)]
     sources += [(f"domain {d}", tex) for d, tex in PARAMETER_TEX.items()]
+    sources += [(f"constant {c}", tex) for c, tex in CONSTANT_TEX.items()]
     assert page.evaluate(RENDER_ALL, sources) == []
 
 
@@ -57,6 +58,8 @@ def test_the_checks_and_the_help_are_typeset(page: Page, server: Server) -> None
     # the MathML a screen reader reads carries the formula, not only glyph boxes
     mathml = row.locator(".corrected annotation[encoding='application/x-tex']").text_content() or ""
     assert mathml.strip() == corrected
+    # each constant with its defining relation
+    expect(page.locator("#constants dt .katex")).to_have_count(len(body["constants"]))
     # the parameter help: 0 < d < h typeset
     expect(page.locator("#help-d .katex")).to_have_count(1)
     assert page.locator("#help-d .math").get_attribute("data-tex") == PARAMETER_TEX["0 < d < h"]

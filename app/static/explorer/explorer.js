@@ -385,7 +385,10 @@ function drawChecks(curve) {
   for (const [name, value] of Object.entries(curve.constants || {})) {
     const dd = html('dd', {}, String(value));
     if (described[name]) dd.append(` — ${described[name]}`);
-    constants.append(html('dt', { title: described[name] || '' }, name), dd);
+    const dt = html('dt', { title: described[name] || '' }, name);
+    const tex = state.entry.constants_tex?.[name];
+    if (tex) dt.append(html('br'), math(tex, ''));
+    constants.append(dt, dd);
   }
 }
 
