@@ -1,7 +1,7 @@
 // Copies the front-end files the service serves from node_modules (installed by `npm ci` from the
 // pinned package-lock.json) into app/static/vendor/: three.js for the explorer, keeping three's
-// own layout so that the page's import map ("three", "three/addons/") resolves; KaTeX (its ES
-// module, stylesheet and WOFF2 fonts) for the explorer's mathematics; axe-core, which only the
+// own layout so that the page's import map ("three", "three/addons/") resolves; KaTeX (its
+// minified script, stylesheet and WOFF2 fonts) for the explorer's mathematics; axe-core, which only the
 // browser tests load (an accessibility audit of the explorer); Swagger UI for /docs and ReDoc
 // for /redoc, so that the documentation pages work without any CDN.
 // Run by `make assets` and the Dockerfile.
@@ -39,7 +39,7 @@ const katexFonts = readdirSync(join(root, 'node_modules', 'katex', 'dist', 'font
 const docs = {
   'swagger-ui': ['swagger-ui-dist', ['LICENSE', 'swagger-ui-bundle.js', 'swagger-ui.css', 'favicon-32x32.png']],
   redoc: ['redoc', ['LICENSE', 'bundles/redoc.standalone.js']],
-  katex: ['katex', ['LICENSE', 'dist/katex.mjs', 'dist/katex.min.css', ...katexFonts]],
+  katex: ['katex', ['LICENSE', 'dist/katex.min.js', 'dist/katex.min.css', ...katexFonts]],
   'axe-core': ['axe-core', ['LICENSE', 'axe.min.js']],
 };
 for (const [name, [pkg, wanted]] of Object.entries(docs)) {

@@ -14,7 +14,7 @@ from tests.e2e.test_explorer import TIMEOUT, api, open_explorer
 pytestmark = pytest.mark.e2e
 
 RENDER_ALL = """async (sources) => {
-  const katex = (await import('/static/vendor/katex/dist/katex.mjs')).default;
+  const katex = window.katex;  // loaded by the page
   const failures = [];
   for (const [key, tex] of sources) {
     try {
