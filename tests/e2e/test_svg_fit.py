@@ -42,6 +42,13 @@ def pictures(page: Page, server: Server) -> list[str]:
 
     urls = [f["url"] for f in get("/figures")]
     urls += [f"/discretizations/{d['id']}?format=svg" for d in get("/discretizations")]
+    # long subtitles: many digits, mp arithmetic, a figure with every parameter set
+    urls += [
+        "/discretizations/d4b?format=svg&precision=mp&digits=40&h=1.234567891234&d=0.123456789123"
+        "&beta0=1.3&i_min=-3&i_max=4",
+        "/discretizations/d2a-hex?format=svg&a=0.912345678&b=2.712345678&lambda=0.312345678",
+        "/discretizations/d1?format=svg&c=0.000123456789&delta=12345.6789&y0=-98765.4321",
+    ]
     studies = page.request.get(f"{server.url}/convergence")
     if studies.ok:
         urls += [f"/convergence/{s['id']}?format=svg" for s in studies.json()]

@@ -74,15 +74,22 @@ function hangingSticks(curve) {
   return { title: '(D1) as a hanging chain: homogeneous sticks joined by hinges; at each hinge the slope changes by c times the two lengths.', frames, bounds: p };
 }
 
+const LEVELS = new Map();
+
 async function convergence(curve, getJSON) {
   const sequence = curve.parameters.sequence;
   if (sequence !== 'example-12' && sequence !== 'remark-13') return null;
   const levels = [1, 2, 4, 8, 16, 32];
-  const polygons = [];
-  for (const j of levels) {
-    const body = await getJSON(`/discretizations/d2b?sequence=${sequence}&j=${j}`);
-    polygons.push([j, num(body.vertices)]);
+  // the levels depend on the sequence only: fetched once per sequence, not on every change
+  if (!LEVELS.has(sequence)) {
+    const polygons = [];
+    for (const j of levels) {
+      const body = await getJSON(`/discretizations/d2b?sequence=${sequence}&j=${j}`);
+      polygons.push([j, num(body.vertices)]);
+    }
+    LEVELS.set(sequence, polygons);
   }
+  const polygons = LEVELS.get(sequence);
   const all = polygons.flatMap(([, points]) => points);
   const xs = all.map(([x]) => x);
   const [x0, x1] = [Math.min(...xs), Math.max(...xs)];
