@@ -112,7 +112,8 @@ def test_the_figures_follow_the_form(page: Page, server: Server) -> None:
     page.locator("#figures").scroll_into_view_if_needed()
     item = page.locator("#figure-list li[data-figure='figure-5']")
     expect(item).to_have_attribute("data-state", "error", timeout=TIMEOUT)
-    expect(item.locator(".field-error")).to_contain_text("f1/f0 < 3 + 2√2")
+    # the reason comes from a second request for the figure (slow under a loaded machine)
+    expect(item.locator(".field-error")).to_contain_text("f1/f0 < 3 + 2√2", timeout=TIMEOUT)
     item.screenshot(path=str(SCREENSHOTS / "explorer-figure-refused.png"))
 
 
