@@ -29,6 +29,8 @@ from xml.sax.saxutils import escape, quoteattr
 
 import numpy as np
 
+from app.rendering.text_width import text_width, wrap
+
 #: Colour-blind-safe palette (Okabe–Ito), in the order series are added without a colour.
 PALETTE = (
     "#0072B2",
@@ -132,8 +134,12 @@ class Panels:
         renderers = [(name, _Renderer(plot, prefix=f"{name}-")) for name, plot in self.panels]
         width = sum(r.plot.width for _, r in renderers) or 400
         tallest = max((r.total_height for _, r in renderers), default=0)
-        footnote = 20 if self.footnote else 0
-        height = self.HEADER + tallest + footnote
+        title_lines = wrap(self.title, width - 16, 16, bold=True)
+        subtitle_lines = wrap(self.subtitle, width - 16, 12) if self.subtitle else []
+        footnote_lines = wrap(self.footnote, width - 32, 10) if self.footnote else []
+        header = self.HEADER + 20 * (len(title_lines) - 1) + 16 * max(0, len(subtitle_lines) - 1)
+        footnote = 20 + 13 * (len(footnote_lines) - 1) if footnote_lines else 0
+        height = header + tallest + footnote
         words = " ".join(f"{name}: {r.description()}" for name, r in renderers)
         parts = [
             '<svg xmlns="http://www.w3.org/2000/svg" class="dcosh-plot dcosh-figure" '
@@ -144,27 +150,42 @@ class Panels:
             f'<desc id="plot-desc">{escape(words)}</desc>',
             f'<rect class="background" x="0" y="0" width="{width}" height="{height}" '
             'fill="#ffffff"/>',
-            f'<text class="title" x="{width / 2:g}" y="22" text-anchor="middle" font-size="16" '
-            f'font-weight="bold">{escape(self.title)}</text>',
+            _text(
+                'class="title" text-anchor="middle" font-size="16" font-weight="bold"',
+                title_lines,
+                width / 2,
+                22,
+                20,
+            ),
         ]
-        if self.subtitle:
+        if subtitle_lines:
             parts.append(
-                f'<text class="subtitle" x="{width / 2:g}" y="42" text-anchor="middle" '
-                f'fill="#444444">{escape(self.subtitle)}</text>'
+                _text(
+                    'class="subtitle" text-anchor="middle" fill="#444444"',
+                    subtitle_lines,
+                    width / 2,
+                    42 + 20 * (len(title_lines) - 1),
+                    16,
+                )
             )
         x = 0
         for name, renderer in renderers:
             parts.append(
                 f'<g class="panel" data-panel={quoteattr(name)} '
-                f'transform="translate({x} {self.HEADER})">'
+                f'transform="translate({x} {header})">'
             )
             parts.append(renderer.body())
             parts.append("</g>")
             x += renderer.plot.width
-        if self.footnote:
+        if footnote_lines:
             parts.append(
-                f'<text class="footnote" x="16" y="{height - 8}" font-size="10" '
-                f'fill="#555555">{escape(self.footnote)}</text>'
+                _text(
+                    'class="footnote" font-size="10" fill="#555555"',
+                    footnote_lines,
+                    16,
+                    height - 8 - 13 * (len(footnote_lines) - 1),
+                    13,
+                )
             )
         parts.append("</svg>")
         return "\n".join(parts) + "\n"
@@ -220,6 +241,13 @@ def parse_tick_label(text: str) -> float:
     return float(text.replace("\u2212", "-"))
 
 
+def _text(attributes: str, lines: list[str], x: float, y: float, step: float) -> str:
+    """One ``<text>`` element; further lines as ``<tspan>`` at the same ``x``, ``step`` lower."""
+    first, rest = lines[0], lines[1:]
+    spans = "".join(f'<tspan x="{x:g}" dy="{step:g}">{escape(line)}</tspan>' for line in rest)
+    return f'<text {attributes} x="{x:g}" y="{y:g}">{escape(first)}{spans}</text>'
+
+
 def _fmt(value: float) -> str:
     text = f"{value:.{DECIMALS}f}".rstrip("0").rstrip(".")
     return "0" if text in ("-0", "") else text
@@ -247,15 +275,47 @@ class _Renderer:
         self.plot = plot
         self.prefix = prefix
         """Prefix of the element ids (several plots in one document need distinct ids)."""
-        legend_rows = len(plot.series)
-        self.legend_height = 18 * legend_rows + 12 if legend_rows else 0
-        self.footnote_height = 18 if plot.footnote else 0
+        w = plot.width
+        self.title_lines = wrap(plot.title, w - 16, 15, bold=True)
+        self.subtitle_lines = wrap(plot.subtitle, w - 16, 12) if plot.subtitle else []
+        # one line each: the title's baseline at 22, the subtitle's at 40, the plot from 48 or 64
+        header = 22 + 18 * (len(self.title_lines) - 1)
+        self.subtitle_y = header + 18
+        if self.subtitle_lines:
+            header = self.subtitle_y + 16 * (len(self.subtitle_lines) - 1)
+        self.top = header + (24 if self.subtitle_lines else 26)
+        grown = self.top - (self.MARGIN_TOP + (16 if plot.subtitle else 0))
+        self.right = w - self.MARGIN_RIGHT
+        self.bottom = plot.height + grown - self.MARGIN_BOTTOM
         self.left = self.MARGIN_LEFT
-        self.top = self.MARGIN_TOP + (16 if plot.subtitle else 0)
-        self.right = plot.width - self.MARGIN_RIGHT
-        self.bottom = plot.height - self.MARGIN_BOTTOM
-        self.total_height = plot.height + self.legend_height + self.footnote_height
         self.x_range, self.y_range, self.transform = self._fit()
+        # the widest y tick label and the rotated y label beside it must fit left of the frame
+        needed = math.ceil(max(text_width(label, 12) for _, label in self._y_ticks()) + 30)
+        if needed > self.left:
+            self.left = needed
+            self.x_range, self.y_range, self.transform = self._fit()
+        text_room = w - (self.left + 32) - 8
+        self.legend_lines = [
+            wrap(s.label + (f" — {s.description}" if s.description else ""), text_room, 12)
+            for s in plot.series
+        ]
+        rows = sum(18 + 15 * (len(lines) - 1) for lines in self.legend_lines)
+        self.legend_height = rows + 12 if plot.series else 0
+        self.footnote_lines = wrap(plot.footnote, w - self.left - 8, 10) if plot.footnote else []
+        self.footnote_height = (
+            18 + 13 * (len(self.footnote_lines) - 1) if self.footnote_lines else 0
+        )
+        self.total_height = plot.height + grown + self.legend_height + self.footnote_height
+
+    def _x_ticks(self) -> list[tuple[float, str]]:
+        target = max(3, (self.right - self.left) // 90)
+        step = nice_step(self.x_range[1] - self.x_range[0], target)
+        return [(v, tick_label(v, step)) for v in ticks(*self.x_range, target)]
+
+    def _y_ticks(self) -> list[tuple[float, str]]:
+        target = max(3, (self.bottom - self.top) // 60)
+        step = nice_step(self.y_range[1] - self.y_range[0], target)
+        return [(v, tick_label(v, step)) for v in ticks(*self.y_range, target)]
 
     def _fit(self) -> tuple[tuple[float, float], tuple[float, float], Transform]:
         series = self.plot.series
@@ -306,23 +366,38 @@ class _Renderer:
             f'<clipPath id="{area}"><rect x="{self.left}" y="{self.top}" '
             f'width="{self.right - self.left}" height="{self.bottom - self.top}"/></clipPath>',
             "</defs>",
-            f'<text class="title" x="{w / 2:g}" y="22" text-anchor="middle" font-size="15" '
-            f'font-weight="bold">{escape(plot.title)}</text>',
+            _text(
+                'class="title" text-anchor="middle" font-size="15" font-weight="bold"',
+                self.title_lines,
+                w / 2,
+                22,
+                18,
+            ),
         ]
-        if plot.subtitle:
+        if self.subtitle_lines:
             parts.append(
-                f'<text class="subtitle" x="{w / 2:g}" y="40" text-anchor="middle" '
-                f'fill="#444444">{escape(plot.subtitle)}</text>'
+                _text(
+                    'class="subtitle" text-anchor="middle" fill="#444444"',
+                    self.subtitle_lines,
+                    w / 2,
+                    self.subtitle_y,
+                    16,
+                )
             )
         parts.append(self._axes())
         parts.append(f'<g class="data" clip-path="url(#{area})">')
         parts.extend(self._series(s) for s in plot.series)
         parts.append("</g>")
         parts.append(self._legend())
-        if plot.footnote:
+        if self.footnote_lines:
             parts.append(
-                f'<text class="footnote" x="{self.left}" y="{h - 8}" font-size="10" '
-                f'fill="#555555">{escape(plot.footnote)}</text>'
+                _text(
+                    'class="footnote" font-size="10" fill="#555555"',
+                    self.footnote_lines,
+                    self.left,
+                    h - 8 - 13 * (len(self.footnote_lines) - 1),
+                    13,
+                )
             )
         return "\n".join(parts)
 
@@ -339,25 +414,24 @@ class _Renderer:
             f'<rect class="frame" x="{left}" y="{top}" width="{right - left}" '
             f'height="{bottom - top}" fill="none" stroke="#999999"/>',
         ]
-        x_target = max(3, (right - left) // 90)
-        y_target = max(3, (bottom - top) // 60)
-        x_step = nice_step(self.x_range[1] - self.x_range[0], x_target)
-        y_step = nice_step(self.y_range[1] - self.y_range[0], y_target)
-        for value in ticks(*self.x_range, x_target):
+        for value, label in self._x_ticks():
             X = _fmt(t.ax + t.bx * value)
+            # a label at either end stays inside the picture (the tick line keeps its place)
+            half = text_width(label, 12) / 2
+            at = min(max(t.ax + t.bx * value, half + 2), self.plot.width - half - 2)
             out.append(
                 f'<g class="tick x"><line x1="{X}" y1="{top}" x2="{X}" y2="{bottom}" '
                 f'stroke="#eeeeee"/><line x1="{X}" y1="{bottom}" x2="{X}" y2="{bottom + 5}"/>'
-                f'<text x="{X}" y="{bottom + 18}" text-anchor="middle" stroke="none">'
-                f"{tick_label(value, x_step)}</text></g>"
+                f'<text x="{_fmt(at)}" y="{bottom + 18}" text-anchor="middle" stroke="none">'
+                f"{label}</text></g>"
             )
-        for value in ticks(*self.y_range, y_target):
+        for value, label in self._y_ticks():
             Y = _fmt(t.ay - t.by * value)
             out.append(
                 f'<g class="tick y"><line x1="{left}" y1="{Y}" x2="{right}" y2="{Y}" '
                 f'stroke="#eeeeee"/><line x1="{left - 5}" y1="{Y}" x2="{left}" y2="{Y}"/>'
                 f'<text x="{left - 8}" y="{Y}" dy="0.35em" text-anchor="end" stroke="none">'
-                f"{tick_label(value, y_step)}</text></g>"
+                f"{label}</text></g>"
             )
         # the coordinate axes themselves, where they cross the plot
         if self.y_range[0] <= 0 <= self.y_range[1]:
@@ -433,10 +507,9 @@ class _Renderer:
     def _legend(self) -> str:
         if not self.plot.series:
             return ""
-        y = self.bottom + self.MARGIN_BOTTOM + 14
+        row = self.bottom + self.MARGIN_BOTTOM + 14
         out = ['<g class="legend">']
-        for k, s in enumerate(self.plot.series):
-            row = y + 18 * k
+        for s, lines in zip(self.plot.series, self.legend_lines, strict=True):
             x = self.left
             dash = ' stroke-dasharray="6 4"' if s.dashed else ""
             if s.kind == "points":
@@ -451,11 +524,9 @@ class _Renderer:
                     f'<line x1="{x}" y1="{row - 4}" x2="{x + 24}" y2="{row - 4}" '
                     f'stroke="{s.color}" stroke-width="{max(s.width, 2):g}"{dash}/>'
                 )
-            text = s.label + (f" — {s.description}" if s.description else "")
-            out.append(
-                f'<g class="entry" data-name={quoteattr(s.name)}>{swatch}'
-                f'<text x="{x + 32}" y="{row}">{escape(text)}</text></g>'
-            )
+            label = _text('class="label"', lines, x + 32, row, 15)
+            out.append(f'<g class="entry" data-name={quoteattr(s.name)}>{swatch}{label}</g>')
+            row += 18 + 15 * (len(lines) - 1)
         out.append("</g>")
         return "\n".join(out)
 

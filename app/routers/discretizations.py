@@ -6,6 +6,7 @@ from fastapi import APIRouter, Depends, Query, Request, Response
 
 from app.errors import UnknownIdError
 from app.geometry.precision import Float64
+from app.geometry.statement_tex import CONSTANT_TEX, PARAMETER_TEX
 from app.registry import DISCRETIZATIONS, Discretization
 from app.responses import cached, canonical_key
 from app.routers.common import (
@@ -43,6 +44,7 @@ def parameter_infos(model: type[StrictModel]) -> list[ParameterInfo]:
                 domain=domain,
                 default=schema.get("default"),
                 json_schema=schema,
+                domain_tex=PARAMETER_TEX.get(domain) if domain else None,
             )
         )
     return infos
@@ -61,6 +63,7 @@ def catalog_entry(entry: Discretization) -> DiscretizationEntry:
         parameters=parameter_infos(entry.query),
         companions=info.companions,
         constants=info.constants,
+        constants_tex={k: CONSTANT_TEX[k] for k in info.constants if k in CONSTANT_TEX},
         statements=[s.id for s in info.statements],
     )
 

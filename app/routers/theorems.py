@@ -7,6 +7,7 @@ from fastapi import APIRouter, Depends, Path, Query, Request, Response
 from app.errors import UnknownIdError
 from app.geometry.checks import Check
 from app.geometry.precision import arithmetic
+from app.geometry.statement_tex import CLAIM_TEX, ERRATUM_TEX
 from app.registry import SMOOTH, STATEMENTS
 from app.responses import JSONBytesResponse, cached, canonical_key, encode_json
 from app.routers import surfaces
@@ -21,7 +22,7 @@ from app.routers.common import (
 )
 from app.routers.discretizations import parameter_infos
 from app.routers.smooth import enforce_samples
-from app.schemas.catalog import StatementInfo, TheoremResponse
+from app.schemas.catalog import ErratumTeX, StatementInfo, TheoremResponse
 from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES
 from app.services import surfaces as surface_service, theorems
 
@@ -48,6 +49,7 @@ def list_statements() -> list[StatementInfo]:
                 id=identifier,
                 reference=entry.statement.reference,
                 claim=entry.statement.claim,
+                claim_tex=CLAIM_TEX.get(identifier, ""),
                 discretizations=list(entry.discretizations),
                 studies=list(entry.studies),
                 smooth=list(entry.smooth),
@@ -57,6 +59,11 @@ def list_statements() -> list[StatementInfo]:
                 parameters=parameters,
                 conditions=list(entry.statement.conditions),
                 errata=list(entry.statement.errata),
+                errata_tex=[
+                    ErratumTeX(id=e, printed_tex=ERRATUM_TEX[e][0], corrected_tex=ERRATUM_TEX[e][1])
+                    for e in entry.statement.errata
+                    if e in ERRATUM_TEX
+                ],
             )
         )
     return out

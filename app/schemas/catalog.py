@@ -16,6 +16,7 @@ class ParameterInfo(BaseModel):
     domain: str | None = Field(None, description="The admissible values, e.g. `0 < d < h`.")
     default: Any = Field(None, description="Default value.")
     json_schema: dict[str, Any] = Field(description="JSON Schema of the value (type, bounds).")
+    domain_tex: str | None = Field(None, description="`domain` as TeX, where it has a formula.")
 
 
 class DiscretizationEntry(BaseModel):
@@ -29,6 +30,9 @@ class DiscretizationEntry(BaseModel):
     parameters: list[ParameterInfo]
     companions: dict[str, str] = Field(description="Companion polygons in the response.")
     constants: dict[str, str] = Field(description="Fitted constants in the response.")
+    constants_tex: dict[str, str] = Field(
+        default_factory=dict, description="Each constant's defining relation as TeX."
+    )
     statements: list[str] = Field(description="Ids of the statements checked (GET /theorems).")
 
 
@@ -46,10 +50,17 @@ class FigureEntry(BaseModel):
     )
 
 
+class ErratumTeX(BaseModel):
+    id: str = Field(description="Erratum id (docs/errata.md), e.g. `E3`.")
+    printed_tex: str = Field(description="The formula as printed, as TeX.")
+    corrected_tex: str = Field(description="The formula as corrected, as TeX.")
+
+
 class StatementInfo(BaseModel):
     id: str
     reference: str = Field(description="Where the paper states it.")
     claim: str = Field(description="The claim in words, and how its residual is measured.")
+    claim_tex: str = Field("", description="The claim's formula as TeX (KaTeX renders it).")
     discretizations: list[str] = Field(description="Discretizations whose responses check it.")
     studies: list[str] = Field(
         default_factory=list,
@@ -81,6 +92,9 @@ class StatementInfo(BaseModel):
         default_factory=list,
         description="Errata (docs/errata.md) the check carries at the default parameters: the "
         "printed formula is wrong and the check tests the corrected one.",
+    )
+    errata_tex: list[ErratumTeX] = Field(
+        default_factory=list, description="Each of `errata`: printed and corrected, as TeX."
     )
 
 

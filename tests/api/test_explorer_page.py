@@ -39,17 +39,17 @@ def test_the_page_scripts_are_served_as_javascript(client: TestClient) -> None:
 
 
 def test_the_page_uses_public_endpoints_only(client: TestClient) -> None:
-    """Every path the scripts fetch is in the OpenAPI document (or is the document itself).
-
-    /smooth and /surfaces are fetched only after the page found them in /openapi.json.
-    """
+    """Every path the scripts fetch is in the OpenAPI document, and the page never loads the
+    document itself: the catalogs say what it needs."""
     spec = client.get("/openapi.json").json()
     source = "".join(
-        client.get(f"/static/explorer/{name}").text for name in ("explorer.js", "view3d.js")
+        client.get(f"/static/explorer/{name}").text
+        for name in ("explorer.js", "view3d.js", "animation.js", "plot.js")
     )
     fetched = set(re.findall(r"(?:getJSON|fetch)\(\s*[`'\"](/[a-z.]+)", source))
-    assert {"/discretizations", "/openapi.json", "/figures"} <= fetched
-    for path in fetched - {"/openapi.json", "/smooth"}:
+    assert {"/discretizations", "/figures", "/surfaces", "/theorems", "/smooth"} <= fetched
+    assert "openapi" not in source
+    for path in fetched:
         assert any(p == path or p.startswith(path + "/") for p in spec["paths"]), path
 
 

@@ -112,7 +112,8 @@ def test_the_figures_follow_the_form(page: Page, server: Server) -> None:
     page.locator("#figures").scroll_into_view_if_needed()
     item = page.locator("#figure-list li[data-figure='figure-5']")
     expect(item).to_have_attribute("data-state", "error", timeout=TIMEOUT)
-    expect(item.locator(".field-error")).to_contain_text("f1/f0 < 3 + 2√2")
+    # the reason comes from a second request for the figure (slow under a loaded machine)
+    expect(item.locator(".field-error")).to_contain_text("f1/f0 < 3 + 2√2", timeout=TIMEOUT)
     item.screenshot(path=str(SCREENSHOTS / "explorer-figure-refused.png"))
 
 
@@ -195,3 +196,20 @@ def test_a_custom_sequence_is_downloaded_and_its_errors_are_placed(
     expect(error).to_be_visible(timeout=TIMEOUT)
     expect(page.locator("#param-s")).to_have_attribute("aria-invalid", "true")
     screenshot(page, "explorer-d2b-custom-error")
+
+
+def test_every_discretization_on_a_phone(page: Page, server: Server) -> None:
+    """The same views at 390 px: the plot first, nothing wider than the screen, every section
+    (animation, checks, figures) written to a screenshot per discretization."""
+    page.set_viewport_size({"width": 390, "height": 844})
+    catalog = api(page, server, "/discretizations")
+    for entry in catalog:
+        identifier = entry["id"]
+        open_explorer(page, server, f"?id={identifier}")
+        plot = page.locator("#plot svg").bounding_box()
+        form = page.locator("#form").bounding_box()
+        assert plot is not None and form is not None and plot["y"] < form["y"], identifier
+        width = page.evaluate("document.documentElement.scrollWidth")
+        assert width <= 390, f"{identifier}: the page is {width}px wide on a 390px screen"
+        figures_ready(page)
+        screenshot(page, f"explorer-{identifier}-phone")

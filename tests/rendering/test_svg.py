@@ -18,6 +18,7 @@ from app.rendering.svg import (
     tick_label,
     ticks,
 )
+from app.rendering.text_width import text_width, wrap
 from tests.svg_reading import (
     circle_pixels,
     inverse_transform,
@@ -158,3 +159,37 @@ def test_panels_keep_their_own_axes_and_distinct_ids() -> None:
     # the panels have different scales: reading one with the other's ticks is wrong
     wrong = inverse_transform(panel(root, "left"))
     assert not np.allclose(wrong(polyline_pixels(series(panel(root, "right"), "c"))), large, atol=1)
+
+
+def test_long_text_is_wrapped_inside_the_picture_and_the_picture_grows() -> None:
+    long = "GET /discretizations/d4b?" + "&".join(f"name{k}={k / 7:.12f}" for k in range(12))
+    short = Plot(title="t", subtitle="s", footnote="f")
+    short.add(Series("p", "p", circle(8), description="short"))
+    plot = Plot(title="A title " * 12, subtitle=long, footnote=long)
+    plot.add(Series("p", "p", circle(8), description="a legend entry " * 12))
+    root = parse(plot.render())
+    width = float(root.get("width") or 0)
+    assert int(root.get("height") or 0) > int(parse(short.render()).get("height") or 0)
+    svg = "{http://www.w3.org/2000/svg}"
+    for text in root.iter(f"{svg}text"):
+        lines = [text.text or ""] + [span.text or "" for span in text.iter(f"{svg}tspan")]
+        bold = text.get("font-weight") == "bold"
+        size = float(text.get("font-size") or 12)
+        x = float(text.get("x") or 0)
+        for line in lines:
+            w = text_width(line, size, bold)
+            anchor = text.get("text-anchor")
+            left = x - w / 2 if anchor == "middle" else x - w if anchor == "end" else x
+            assert left >= 0 and left + w <= width, (line, left, w)
+    # nothing is lost by wrapping
+    subtitle = next(t for t in root.iter(f"{svg}text") if t.get("class") == "subtitle")
+    assert "".join(subtitle.itertext()).replace(" ", "") == long.replace(" ", "")
+
+
+def test_wrap_keeps_every_word_and_fits_the_width() -> None:
+    text = "the discrete hyperbolic cosine p_i and its companions " * 5
+    lines = wrap(text, 150, 12)
+    assert len(lines) > 3
+    assert " ".join(lines).split() == text.split()
+    assert all(text_width(line, 12) <= 150 for line in lines)
+    assert wrap("", 100, 12) == [""]

@@ -1,20 +1,24 @@
 // The explorer: one page on top of the public API (GET /discretizations, /discretizations/{id},
-// /figures, /openapi.json, and /smooth/*, /surfaces/* when the service offers them).
+// /figures, /smooth/{catenary,tractrix} and /surfaces); it never loads the OpenAPI document.
 // Every value from the API is inserted as text (textContent), never as HTML.
 
-import { plotSVG, PALETTE } from './plot.js';
+import { plotSVG, widthFor, PALETTE } from './plot.js';
+import { Animation } from './animation.js';
 
 const $ = (id) => document.getElementById(id);
 const state = {
   catalog: [],
   entry: null,
-  openapi: null,
   curve: null,
   controller: null,
   hidden: new Set(),
   smooth: {},
   surfaces: [],
   figures: [],
+  katex: null,
+  compare: {},
+  claimTex: new Map(),
+  errataTex: new Map(),
 };
 
 function html(tag, attributes = {}, text = null) {
@@ -25,6 +29,53 @@ function html(tag, attributes = {}, text = null) {
   }
   if (text !== null) node.textContent = text;
   return node;
+}
+
+// TeX from the API typeset by KaTeX (vendored, loaded on first use); the plain text stands in
+// until KaTeX has loaded, and for good if it cannot be.
+function math(tex, text, display = false) {
+  const node = html('span', { class: display ? 'math display' : 'math' });
+  if (tex && state.katex) {
+    try {
+      state.katex.render(tex, node, { throwOnError: true, displayMode: display, strict: 'ignore', output: 'htmlAndMathml' });
+      node.dataset.tex = tex;
+      return node;
+    } catch (error) {
+      node.dataset.texError = String(error.message || error);
+    }
+  }
+  node.textContent = text;
+  return node;
+}
+
+// KaTeX's minified build (a classic script from this origin, as the page's CSP allows): half the
+// size of its ES module.
+function loadScript(src) {
+  return new Promise((resolve, reject) => {
+    const script = html('script', { src });
+    script.addEventListener('load', resolve);
+    script.addEventListener('error', () => reject(new Error(`${src} did not load`)));
+    document.head.append(script);
+  });
+}
+
+async function loadKatex() {
+  try {
+    await loadScript('/static/vendor/katex/dist/katex.min.js');
+    state.katex = window.katex || null;
+  } catch {
+    state.katex = null; // not built (make assets): the plain text stays
+  }
+}
+
+// GET /theorems carries each statement's claim and each erratum as TeX.
+async function loadStatementTex() {
+  let statements = [];
+  try { statements = await getJSON('/theorems'); } catch { return; }
+  for (const statement of statements) {
+    if (statement.claim_tex) state.claimTex.set(statement.id, statement.claim_tex);
+    for (const erratum of statement.errata_tex || []) state.errataTex.set(erratum.id, [erratum.printed_tex, erratum.corrected_tex]);
+  }
 }
 
 async function getJSON(url) {
@@ -66,8 +117,9 @@ function buildField(parameter, initial) {
   const kind = fieldKind(parameter);
   const id = `param-${name}`;
   const wrap = html('div', { class: `field ${kind === 'boolean' ? 'checkbox' : ''}`, 'data-parameter': name });
-  const help = html('p', { class: 'domain', id: `help-${name}` },
-    [parameter.domain, parameter.description].filter(Boolean).join(' — '));
+  const help = html('p', { class: 'domain', id: `help-${name}` });
+  if (parameter.domain) help.append(math(parameter.domain_tex, parameter.domain), ' — ');
+  help.append(parameter.description || '');
   const error = html('p', { class: 'field-error', id: `error-${name}`, hidden: true, role: 'alert' });
   let input;
   if (kind === 'enum') {
@@ -94,7 +146,30 @@ function buildField(parameter, initial) {
   input.dataset.default = kind === 'boolean' ? String(parameter.default === true) : defaultText(parameter);
   const label = html('label', { for: id }, name);
   if (kind === 'boolean') wrap.append(input, ' ', label, help, error);
-  else wrap.append(label, input, help, error);
+  else {
+    const range = (kind === 'number' || kind === 'integer') ? sliderRange(parameter) : null;
+    if (range) {
+      const slider = html('input', {
+        type: 'range', id: `slider-${name}`, min: range.min, max: range.max, step: range.step,
+        'aria-label': `${name}, slider from ${sliderText(range.min, range.step)} to ${sliderText(range.max, range.step)}`,
+        'aria-describedby': `help-${name}`, 'data-slider': name,
+      });
+      const value = Number(input.value);
+      slider.value = String(Number.isFinite(value) ? value : parameter.default);
+      slider.addEventListener('input', (event) => {
+        event.stopPropagation(); // not the form's debounced path: this one is live
+        input.value = sliderText(slider.value, range.step);
+        liveCompute();
+      });
+      slider.addEventListener('change', (event) => event.stopPropagation());
+      input.addEventListener('input', () => { const v = Number(input.value); if (input.value.trim() !== '' && Number.isFinite(v)) slider.value = String(v); });
+      const pair = html('div', { class: 'with-slider' });
+      pair.append(input, slider);
+      wrap.append(label, pair, help, error);
+    } else {
+      wrap.append(label, input, help, error);
+    }
+  }
   return wrap;
 }
 
@@ -114,7 +189,52 @@ function buildForm(entry, values) {
 }
 
 function inputs() {
-  return [...document.querySelectorAll('#form [data-parameter] input, #form [data-parameter] select, #form [data-parameter] textarea')];
+  return [...document.querySelectorAll('#form [data-parameter] input:not([type="range"]), #form [data-parameter] select, #form [data-parameter] textarea')];
+}
+
+// A slider's range for a number of the paper: the schema's bounds where they are close, else a
+// range around the default (the service refuses what the domain excludes, and says so).
+function sliderRange(parameter) {
+  const schema = schemaOf(parameter);
+  const value = Number(parameter.default);
+  if (parameter.kind !== 'paper' || !['number', 'integer'].includes(schema.type)) return null;
+  if (parameter.default === null || parameter.default === undefined || !Number.isFinite(value)) return null;
+  const lowBound = schema.minimum ?? schema.exclusiveMinimum;
+  const highBound = schema.maximum ?? schema.exclusiveMaximum;
+  if (schema.type === 'integer') {
+    return { min: Math.max(lowBound ?? -Infinity, value - 40), max: Math.min(highBound ?? Infinity, value + 40), step: 1 };
+  }
+  let min, max;
+  if (Number.isFinite(lowBound) && Number.isFinite(highBound) && highBound - lowBound <= 1e3) {
+    [min, max] = [lowBound, highBound];
+  } else if (Number.isFinite(lowBound) && lowBound >= 0 && lowBound < value) {
+    [min, max] = [lowBound, Math.max(10 * value, lowBound + 1)];
+  } else {
+    const spread = Math.max(4 * Math.abs(value), 1);
+    [min, max] = [value - spread, value + spread];
+  }
+  const step = Number(((max - min) / 200).toPrecision(2));
+  // an excluded end (0 < d) is not offered: the slider starts one step inside
+  if (schema.exclusiveMinimum !== undefined && min === schema.exclusiveMinimum) min += step;
+  if (schema.exclusiveMaximum !== undefined && max === schema.exclusiveMaximum) max -= step;
+  return { min, max, step };
+}
+
+function sliderText(value, step) {
+  const decimals = Math.max(0, -Math.floor(Math.log10(step)) + 1);
+  return String(Number(Number(value).toFixed(decimals)));
+}
+
+// Dragging a slider computes as fast as the service answers: one request at a time, and the
+// latest value once the one in flight has come back (no request is aborted half way).
+const live = { running: false, again: false };
+async function liveCompute() {
+  if (live.running) { live.again = true; return; }
+  live.running = true;
+  try { await compute(); } finally {
+    live.running = false;
+    if (live.again) { live.again = false; liveCompute(); }
+  }
 }
 
 // The parameters that differ from their defaults (what the request and the shared URL carry).
@@ -193,6 +313,11 @@ function curveSeries(curve) {
     series.push({ name, label: `${name} — ${polyline.description || ''}`, points: numbers(polyline.vertices), color: PALETTE[k % PALETTE.length], width: 1.2 });
     k += 1;
   }
+  let c = 0;
+  for (const [name, other] of Object.entries(state.compare)) {
+    series.push({ name, label: other.label, points: other.points, color: COMPARE_COLOURS[c % COMPARE_COLOURS.length], dashed: true, width: 2.5 });
+    c += 1;
+  }
   for (const [name, smooth] of Object.entries(state.smooth)) {
     if (smooth.points) series.push({ name, label: smooth.label, points: smooth.points, color: '#555555', dashed: true, markers: false, width: 1.2 });
   }
@@ -204,7 +329,8 @@ function drawPlot() {
   if (!state.curve) return;
   const all = curveSeries(state.curve);
   const shown = all.filter((s) => !state.hidden.has(s.name));
-  plot.replaceChildren(plotSVG(shown, { title: state.curve.title }));
+  const width = widthFor(plot);
+  plot.replaceChildren(plotSVG(shown, { title: state.curve.title, width, height: Math.round(width * 0.65) }));
   const layers = $('layers');
   for (const node of [...layers.children]) if (node.tagName !== 'LEGEND') node.remove();
   for (const s of all) {
@@ -238,16 +364,25 @@ function drawChecks(curve) {
   for (const check of curve.checks) {
     const row = html('tr', { 'data-check': check.id });
     const statement = html('td');
-    statement.append(html('strong', {}, check.id), html('br'), html('span', {}, check.reference),
-      html('div', { class: 'claim' }, check.claim));
+    statement.append(html('strong', {}, check.id), html('br'), html('span', {}, check.reference));
+    const tex = state.claimTex.get(check.id);
+    if (tex) statement.append(html('div', { class: 'claim-tex' }, null));
+    if (tex) statement.lastChild.append(math(tex, ''));
+    statement.append(html('div', { class: 'claim' }, check.claim));
     if (check.note) statement.append(html('div', { class: 'claim' }, `Note: ${check.note}`));
     const verdict = check.holds === true ? ['holds', '✓ holds'] : check.holds === false ? ['fails', '✗ fails'] : ['na', 'n/a'];
     if (check.holds === true) holds += 1; else if (check.holds === false) fails += 1; else na += 1;
-    const erratum = html('td');
+    const erratum = html('td', { class: 'erratum' });
     if (check.erratum) {
       const e = check.erratum;
-      erratum.append(html('strong', {}, e.id), html('div', {}, `printed: ${e.printed}`),
-        html('div', {}, `corrected: ${e.corrected}`),
+      const [printedTex, correctedTex] = state.errataTex.get(e.id) || [null, null];
+      const sides = html('div', { class: 'erratum-sides' });
+      const printed = html('div', { class: 'printed' });
+      printed.append(html('span', { class: 'side' }, 'Printed'), math(printedTex, e.printed));
+      const corrected = html('div', { class: 'corrected' });
+      corrected.append(html('span', { class: 'side' }, 'Corrected'), math(correctedTex, e.corrected));
+      sides.append(printed, corrected);
+      erratum.append(html('strong', {}, e.id), sides,
         html('div', {}, `residual of the printed form: ${formatNumber(e.printed_residual)}`));
     }
     row.append(statement, html('td', { class: 'number' }, formatNumber(check.residual)),
@@ -260,7 +395,12 @@ function drawChecks(curve) {
   constants.replaceChildren();
   const described = state.entry.constants || {};
   for (const [name, value] of Object.entries(curve.constants || {})) {
-    constants.append(html('dt', { title: described[name] || '' }, name), html('dd', {}, `${value}${described[name] ? ` — ${described[name]}` : ''}`));
+    const dd = html('dd', {}, String(value));
+    if (described[name]) dd.append(` — ${described[name]}`);
+    const dt = html('dt', { title: described[name] || '' }, name);
+    const tex = state.entry.constants_tex?.[name];
+    if (tex) dt.append(html('br'), math(tex, ''));
+    constants.append(dt, dd);
   }
 }
 
@@ -284,6 +424,29 @@ function updateDownloads() {
   }
 }
 
+// Nothing from a previous answer stays on the page once the parameters shown have no answer:
+// the plot is marked stale, and the checks, constants, downloads and figures are emptied with a
+// sentence saying why (what is shown always belongs to the parameters shown).
+function clearResult(reason) {
+  state.curve = null;
+  state.smooth = {};
+  state.compare = {};
+  $('compare-status').textContent = '';
+  animation.update(null, getJSON); // no frames of the refused parameters' predecessor
+  $('plot').classList.add('stale');
+  $('plot').setAttribute('aria-describedby', 'status');
+  $('checks-table').querySelector('tbody').replaceChildren();
+  $('checks-summary').textContent = `No checks: ${reason}`;
+  $('constants').replaceChildren();
+  const downloads = $('downloads');
+  downloads.replaceChildren(html('li', { class: 'hint', 'data-empty': 'true' }, `No downloads: ${reason}`));
+  $('figure-list').replaceChildren();
+  $('figures-note').textContent = `No figures: ${reason}`;
+  $('overlay-status').textContent = '';
+  document.body.dataset.result = 'none';
+  for (const id of ['checks', 'share', 'figures']) $(id).removeAttribute('aria-busy');
+}
+
 function shareURL() {
   const query = new URLSearchParams([['id', state.entry.id], ...changedValues().map(([n, v]) => [n, v])]);
   return `${location.pathname}?${query}`;
@@ -295,8 +458,12 @@ async function compute() {
   const controller = new AbortController();
   state.controller = controller;
   clearErrors();
+  const asked = JSON.stringify(changedValues());
   const request = requestFor(changedValues());
   $('status').textContent = 'Computing…';
+  // until the answer comes, what is shown belongs to the previous parameters: say so
+  for (const id of ['checks', 'share', 'figures']) $(id).setAttribute('aria-busy', 'true');
+  document.body.dataset.result = 'pending';
   let response;
   try {
     response = await fetch(request.url, {
@@ -308,6 +475,8 @@ async function compute() {
   } catch (error) {
     if (error.name === 'AbortError') return;
     $('status').textContent = `The service did not answer: ${error.message}`;
+    clearResult('the service did not answer.');
+    document.body.dataset.state = 'error';
     return;
   }
   if (controller !== state.controller) return;
@@ -316,38 +485,115 @@ async function compute() {
     let problem = { title: `HTTP ${response.status}`, detail: '', errors: [] };
     try { problem = await response.json(); } catch { /* not JSON */ }
     const placed = showProblem(problem);
-    $('plot').classList.add('stale');
     $('status').textContent = placed
       ? `Not computed: the service refused ${placed === 1 ? 'a value' : 'some values'} (see the marked field${placed === 1 ? '' : 's'}).`
       : `Not computed: ${problem.detail || problem.title}`;
+    clearResult(placed ? 'the service refused the parameters above (see the marked field).' : `the request failed (${problem.detail || problem.title}).`);
     document.body.dataset.state = 'error';
     return;
   }
-  const curve = await response.json();
+  let curve;
+  try { curve = await response.json(); } catch (error) {
+    $('status').textContent = `The answer could not be read: ${error.message}`;
+    clearResult('the answer could not be read.');
+    document.body.dataset.state = 'error';
+    return;
+  }
   if (controller !== state.controller) return;
   state.curve = curve;
   $('plot').classList.remove('stale');
+  $('plot').removeAttribute('aria-describedby');
+  // the fields may have moved on while this answer travelled (a slider): then it is not current
+  document.body.dataset.query = request.query.toString();
   await loadSmooth(curve);
+  await loadCompare(curve);
   drawPlot();
+  await animation.update(curve, getJSON);
   drawChecks(curve);
   updateDownloads();
   updateFigures();
+  const current = JSON.stringify(changedValues()) === asked;
+  document.body.dataset.result = current ? 'current' : 'pending';
+  if (current) for (const id of ['checks', 'share', 'figures']) $(id).removeAttribute('aria-busy');
   $('status').textContent = `${curve.title}: ${curve.vertices.length} vertices, indices ${curve.indices[0]} … ${curve.indices[curve.indices.length - 1]}.`;
   document.body.dataset.state = 'ready';
   document.body.dataset.computed = String(Number(document.body.dataset.computed || 0) + 1);
 }
 
+// ---- compare: other discretizations overlaid, with constants matched where Section 4 relates
+// them (the current polygon's fitted c of (D1) or (D3), its x-step and start heights) ----------
+
+const COMPARE_COLOURS = ['#7B3294', '#A6611A', '#018571', '#D01C8B'];
+
+function vertexAt(curve, index) {
+  const k = curve.indices.indexOf(index);
+  return k < 0 ? null : curve.vertices[k].map(Number);
+}
+
+// The request that should redraw this polygon as (D1) or (D3), or null when nothing matches:
+// (D1) from p_0, p_1 and its constant; (D3) from p_0 and its constant (both branches tried).
+function matchedRequests(target, curve) {
+  const p0 = vertexAt(curve, 0), p1 = vertexAt(curve, 1);
+  const range = [['i_min', String(curve.indices[0])], ['i_max', String(curve.indices[curve.indices.length - 1])]];
+  if (!p0 || !p1 || curve.vertices.some((v) => typeof v[0] !== 'number')) return null;
+  const delta = p1[0] - p0[0];
+  const c = Number(curve.constants?.[target]);
+  if (!(delta > 0) || !Number.isFinite(c)) return null;
+  const common = [['c', String(c)], ['delta', String(delta)], ['y0', String(p0[1])], ...range];
+  const text = `c = ${formatNumber(c)} (this polygon's constants.${target}), δ = ${formatNumber(delta)}, from p_0${target === 'd1' ? ' and p_1' : ''}`;
+  if (target === 'd1') return { text, shift: p0[0], queries: [new URLSearchParams([...common, ['y1', String(p1[1])]])] };
+  if (target === 'd3') return { text, shift: p0[0], queries: ['up', 'down'].map((b) => new URLSearchParams([...common, ['branch', b]])) };
+  return null;
+}
+
+function distance(a, b) {
+  if (a.length !== b.length) return Infinity;
+  return Math.max(...a.map(([x, y], k) => Math.hypot(x - b[k][0], y - b[k][1])));
+}
+
+async function loadCompare(curve) {
+  state.compare = {};
+  const chosen = [...document.querySelectorAll('#compare input:checked')].map((box) => box.value);
+  const notes = [];
+  for (const id of chosen) {
+    const matched = matchedRequests(id, curve);
+    const queries = matched ? matched.queries : [new URLSearchParams()];
+    let best = null;
+    for (const query of queries) {
+      try {
+        const body = await getJSON(`/discretizations/${id}?${query}`);
+        const points = numbers(body.vertices).map(([x, y]) => [x + (matched ? matched.shift : 0), y]);
+        const gap = distance(points, numbers(curve.vertices));
+        if (!best || gap < best.gap) best = { points, gap, query };
+      } catch (error) {
+        if (!best) best = { error: error.message };
+      }
+    }
+    if (!best || best.error) { notes.push(`${id}: not drawn (${best ? best.error : 'no answer'})`); continue; }
+    const how = matched ? `${matched.text}${matched.queries.length > 1 ? `, branch=${best.query.get('branch')}` : ''}` : 'its own defaults';
+    state.compare[`compare-${id}`] = { label: `${id} with ${how}`, points: best.points };
+    const same = matched && best.gap <= 1e-9 * Math.max(1, ...curve.vertices.map(([, y]) => Math.abs(Number(y))));
+    notes.push(`${id} (${how}): ${matched ? (same ? 'the same polygon' : `largest distance ${formatNumber(best.gap)}`) : 'not related by matched constants'}`);
+  }
+  $('compare-status').textContent = notes.join('; ');
+}
+
+function setupCompare() {
+  const box = $('compare');
+  for (const node of [...box.children]) if (node.tagName !== 'LEGEND') node.remove();
+  for (const entry of state.catalog) {
+    if (entry.id === state.entry.id) continue;
+    const id = `compare-${entry.id}`;
+    const label = html('label', { for: id });
+    const input = html('input', { type: 'checkbox', id, value: entry.id });
+    input.addEventListener('change', async () => { if (state.curve) { await loadCompare(state.curve); drawPlot(); $(id).focus(); } });
+    label.append(input, ` ${entry.id}`);
+    box.append(label);
+  }
+  $('compare-status').textContent = '';
+}
+
 // ---- smooth references (/smooth/catenary, /smooth/tractrix), when the service has them ---------
-
-function queryParameters(path) {
-  const operation = state.openapi?.paths?.[path]?.get;
-  if (!operation) return null;
-  return (operation.parameters || []).filter((p) => p.in === 'query').map((p) => p.name);
-}
-
-function pick(names, candidates) {
-  return candidates.find((c) => names.includes(c));
-}
 
 function smoothPoints(body) {
   if (Array.isArray(body.vertices)) return numbers(body.vertices);
@@ -375,24 +621,16 @@ async function loadSmooth(curve) {
   const flip = mirrored(curve);
   const wanted = [['catenary', flip ? 'mirrored smooth catenary −h·cosh(x/h)' : 'smooth catenary h·cosh(x/h)', true]];
   if (curve.companions?.tractrix) wanted.push(['tractrix', 'smooth tractrix', false]);
-  const available = wanted.filter(([name]) => queryParameters(`/smooth/${name}`));
-  $('overlay').hidden = available.length === 0;
-  if (!available.length) return;
+  const available = wanted;
+  $('overlay').hidden = false;
   const h = overlayH(curve);
   if ($('overlay-h').value.trim() === '') $('overlay-h').placeholder = String(h);
   const xs = curve.vertices.map(([x]) => Number(x));
   const [xMin, xMax] = [Math.min(...xs), Math.max(...xs)];
   const notes = [];
   for (const [name, label] of available) {
-    const names = queryParameters(`/smooth/${name}`);
-    const query = new URLSearchParams();
-    if (names.includes('h')) query.set('h', String(h));
-    const low = pick(names, ['x_min', 'a', 'start']);
-    const high = pick(names, ['x_max', 'b', 'stop', 'end']);
-    const count = pick(names, ['count', 'n', 'samples', 'points']);
-    if (low) query.set(low, String(xMin));
-    if (high) query.set(high, String(xMax));
-    if (count) query.set(count, '200');
+    // GET /smooth/{catenary,tractrix}: h and the sampled range x_min … x_max, count samples
+    const query = new URLSearchParams([['h', String(h)], ['x_min', String(xMin)], ['x_max', String(xMax)], ['count', '200']]);
     try {
       const body = await getJSON(`/smooth/${name}?${query}`);
       let points = smoothPoints(body);
@@ -409,42 +647,21 @@ async function loadSmooth(curve) {
 
 // ---- surfaces (GET /surfaces/{id}?format=glb), when the service has them ------------------------
 
-function discoverSurfaces() {
-  const found = [];
-  for (const [path, item] of Object.entries(state.openapi?.paths || {})) {
-    if (!path.startsWith('/surfaces/') || !item.get) continue;
-    const parameters = item.get.parameters || [];
-    const pathParameter = parameters.find((p) => p.in === 'path');
-    const query = parameters.filter((p) => p.in === 'query').map((p) => p.name);
-    if (pathParameter) {
-      const schema = pathParameter.schema || {};
-      const ids = schema.enum || (schema.anyOf || []).flatMap((s) => s.enum || []);
-      for (const id of ids) found.push({ id, path: path.replace(`{${pathParameter.name}}`, id), query });
-    } else {
-      found.push({ id: path.slice('/surfaces/'.length), path, query });
-    }
-  }
-  return found;
-}
-
+// GET /surfaces lists the meshes; each takes the surface's own parameters, the discretization
+// giving the meridian and that discretization's parameters (the form's).
 function surfaceURL(surface, format) {
-  const query = new URLSearchParams();
-  const values = new Map([...getQuery()]);
-  for (const name of surface.query) {
-    if (name === 'format') continue;
-    if (['discretization', 'meridian'].includes(name)) { query.set(name, state.entry.id); continue; }
-    if (values.has(name)) query.set(name, values.get(name));
-  }
+  const query = new URLSearchParams([['discretization', state.entry.id]]);
+  for (const [name, value] of getQuery()) if (!['format', 'detail'].includes(name)) query.set(name, value);
   query.set('format', format);
-  return `${surface.path}?${query}`;
+  return `${surface.url}?${query}`;
 }
 
-function setupSurfaces() {
-  state.surfaces = discoverSurfaces();
+async function setupSurfaces() {
+  try { state.surfaces = await getJSON('/surfaces'); } catch { state.surfaces = []; }
   const select = $('surface');
   select.replaceChildren();
   if (!state.surfaces.length) {
-    $('surface-status').textContent = 'The 3D view needs GET /surfaces/{id}, which this service does not offer yet (it is not in /openapi.json).';
+    $('surface-status').textContent = 'The 3D view needs GET /surfaces, which this service does not offer.';
     return;
   }
   for (const surface of state.surfaces) select.append(html('option', { value: surface.id }, surface.id));
@@ -520,7 +737,7 @@ function figureURL(figure) {
 function figureItem(figure, url) {
   const li = html('li', { 'data-figure': figure.id });
   const link = html('a', { href: url, class: 'figure-frame' });
-  const img = html('img', { src: url, alt: figure.title, loading: 'lazy', width: 800, height: 640 });
+  const img = html('img', { src: url, alt: figure.title, decoding: 'async', width: 800, height: 640 });
   const caption = html('p', {}, `${figure.title} (${figure.reference})`);
   const problem = html('p', { class: 'field-error', hidden: true, role: 'alert' });
   img.addEventListener('error', async () => {
@@ -571,6 +788,11 @@ async function setupFigures() {
 
 // ---- start ----------------------------------------------------------------------------------
 
+const animation = new Animation({
+  section: $('animation'), title: $('animation-title'), plot: $('animation-plot'), play: $('anim-play'),
+  back: $('anim-back'), forward: $('anim-forward'), slider: $('anim-frame'), text: $('anim-text'),
+});
+
 let timer = null;
 function scheduleCompute() {
   clearTimeout(timer);
@@ -581,17 +803,18 @@ function selectDiscretization(id, values = new URLSearchParams()) {
   state.entry = state.catalog.find((e) => e.id === id) || state.catalog[0];
   $('discretization').value = state.entry.id;
   state.hidden.clear();
+  state.compare = {};
   buildForm(state.entry, values);
+  setupCompare();
 }
 
 async function start() {
   try {
-    state.catalog = await getJSON('/discretizations');
+    [state.catalog] = await Promise.all([getJSON('/discretizations'), loadKatex()]);
   } catch (error) {
     $('status').textContent = `The catalog could not be loaded: ${error.message}`;
     return;
   }
-  try { state.openapi = await getJSON('/openapi.json'); } catch { state.openapi = null; }
   const select = $('discretization');
   for (const entry of state.catalog) select.append(html('option', { value: entry.id }, `${entry.id} — ${entry.title}`));
   const params = new URLSearchParams(location.search);
@@ -612,9 +835,12 @@ async function start() {
   $('overlay-h').addEventListener('change', async () => { if (state.curve) { await loadSmooth(state.curve); drawPlot(); } });
   $('show-3d').addEventListener('click', show3D);
   $('colour-by').addEventListener('change', () => { if (!$('view3d').hidden) show3D(); });
-  setupSurfaces();
-  await setupFigures();
+  await Promise.all([setupSurfaces(), setupFigures()]);
   await compute();
+  // the typeset claims and errata come after the first plot, then the checks are drawn again
+  await loadStatementTex();
+  if (state.curve) drawChecks(state.curve);
+  document.body.dataset.tex = state.katex ? 'ready' : 'unavailable';
 }
 
 start();

@@ -39,11 +39,21 @@ function range(values) {
   return [low, high];
 }
 
+// The picture's width in its own units for a container: on a phone the plot is drawn narrower
+// (not scaled down), so that its labels keep their size.
+export function widthFor(container) {
+  const available = container?.clientWidth || 800;
+  return Math.round(Math.max(340, Math.min(800, available)));
+}
+
 // series: [{name, label, points: [[x, y], ...], color, dashed, width, markers}]
-export function plotSVG(series, { width = 800, height = 520, title = '' } = {}) {
+// bounds: [[x, y], ...] points the view must include (a fixed frame for an animation);
+// id: distinguishes the clip path of several plots on one page.
+export function plotSVG(series, { width = 800, height = 520, title = '', bounds = [], id = 'explorer-plot' } = {}) {
   const left = 60, right = width - 12, top = 12, bottom = height - 44;
   const xs = [], ys = [];
   for (const s of series) for (const [x, y] of s.points) { xs.push(x); ys.push(y); }
+  for (const [x, y] of bounds) { xs.push(x); ys.push(y); }
   let [x0, x1] = range(xs);
   let [y0, y1] = range(ys);
   const padx = 0.04 * (x1 - x0), pady = 0.06 * (y1 - y0);
@@ -62,7 +72,7 @@ export function plotSVG(series, { width = 800, height = 520, title = '' } = {}) 
   svg.append(el('title', {}, title));
   svg.append(el('rect', { x: 0, y: 0, width, height, fill: '#ffffff' }));
   const defs = el('defs');
-  const clip = el('clipPath', { id: 'explorer-plot-area' });
+  const clip = el('clipPath', { id: `${id}-area` });
   clip.append(el('rect', { x: left, y: top, width: w, height: h }));
   defs.append(clip);
   svg.append(defs);
@@ -91,7 +101,7 @@ export function plotSVG(series, { width = 800, height = 520, title = '' } = {}) 
   axes.append(el('text', { x: 14, y: (top + bottom) / 2, 'text-anchor': 'middle', stroke: 'none' }, 'y'));
   svg.append(axes);
 
-  const data = el('g', { class: 'data', 'clip-path': 'url(#explorer-plot-area)' });
+  const data = el('g', { class: 'data', 'clip-path': `url(#${id}-area)` });
   for (const s of series) {
     const g = el('g', { class: 'series', 'data-name': s.name });
     g.append(el('title', {}, s.label));
