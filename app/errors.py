@@ -21,6 +21,7 @@ from starlette.exceptions import HTTPException as StarletteHTTPException
 from starlette.routing import Match
 
 from app.geometry.errors import DomainError, GeometryError
+from app.geometry.precision import ExactReal
 from app.limits import LimitExceededError
 
 PROBLEM_MEDIA_TYPE = "application/problem+json"
@@ -51,7 +52,18 @@ def problem(
         "errors": errors or [],
         **extra,
     }
-    return Response(orjson.dumps(body), status_code=status, media_type=PROBLEM_MEDIA_TYPE)
+    return Response(
+        orjson.dumps(body, default=_exact_number),
+        status_code=status,
+        media_type=PROBLEM_MEDIA_TYPE,
+    )
+
+
+def _exact_number(value: Any) -> Any:
+    """A precision=mp parameter (``ExactReal``) as the JSON number the client wrote."""
+    if isinstance(value, ExactReal):
+        return orjson.Fragment(value.text)
+    raise TypeError(f"{type(value).__name__} is not JSON serializable")
 
 
 def json_safe(value: Any) -> Any:

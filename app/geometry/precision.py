@@ -50,6 +50,28 @@ GUARD_DIGITS = 10
 #: allocation (about 2× faster at 10^6 vertices; bench/kernels.py, docs/performance.md).
 BLOCK_SIZE = 8192
 
+
+class ExactReal(float):
+    """A real parameter as the client wrote it: a float (its nearest double) with the exact text.
+
+    Validation, comparisons and float64 use the double; ``MultiPrecision.scalar`` reads
+    ``text``, so precision=mp computes with the decimal the client wrote, carried at the
+    working precision (``d=0.12345678901234567890123`` is not rounded to 17 digits first).
+    ``text`` is a plain decimal (``[-]digits[.digits][E[+-]digits]``, as ``decimal.Decimal``
+    prints it), which is also a valid JSON number: responses echo it as written.
+    """
+
+    text: str
+
+    def __new__(cls, text: str) -> ExactReal:
+        value = super().__new__(cls, text)
+        value.text = text
+        return value
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        return (ExactReal, (self.text,))
+
+
 Kernel = Callable[..., Any]
 """An elementwise formula: arrays aligned entry by entry in, an array (or a pair) out."""
 
@@ -197,7 +219,7 @@ class Float64(Arithmetic):
     hypot = staticmethod(np.hypot)
 
     def scalar(self, value: float | int | str) -> float:
-        return float(value)
+        return float(value)  # an ExactReal's nearest double
 
     def array(self, values: Iterable[Any]) -> Array:
         return (
@@ -279,8 +301,11 @@ class MultiPrecision(Arithmetic):
         self._isfinite = np.frompyfunc(ctx.isfinite, 1, 1)
 
     def scalar(self, value: float | int | str) -> Any:
-        # repr() gives the shortest decimal that round-trips a float: d=0.3 means 3/10 here,
-        # not the binary neighbour 0.29999999999999998889...
+        # An ExactReal is read as the decimal the client wrote; any other float through repr(),
+        # the shortest decimal that round-trips it: d=0.3 means 3/10 here, not the binary
+        # neighbour 0.29999999999999998889...
+        if isinstance(value, ExactReal):
+            return self.ctx.mpf(value.text)
         return self.ctx.mpf(repr(float(value)) if isinstance(value, float) else value)
 
     def array(self, values: Iterable[Any]) -> Array:
