@@ -36,3 +36,12 @@ def test_d1_d3_with_a_positive_constant_hold(client: TestClient) -> None:
     checks = _checks(client, "/discretizations/d4b")
     assert checks["theorem-4-i"]["holds"] is True
     assert checks["theorem-4-ii"]["holds"] is True
+
+
+def test_lemma_10_says_why_its_printed_residual_is_null(client: TestClient) -> None:
+    default = _checks(client, "/discretizations/d2b")["lemma-10"]
+    assert default["erratum"]["printed_residual"] is None
+    assert "remark-13" in default["note"]
+    shown = _checks(client, "/discretizations/d2b?sequence=remark-13")["lemma-10"]
+    assert shown["holds"] is True
+    assert shown["erratum"]["printed_residual"] > 1e3 * shown["tolerance"]
