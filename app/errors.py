@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import logging
 import math
+import warnings
 from typing import Any
 
 import orjson
@@ -196,8 +197,28 @@ async def _unexpected_handler(request: Request, exc: Exception) -> Response:
     return problem(500, "Internal error", "The service failed on this request; it was logged.")
 
 
+async def _numerical_handler(request: Request, exc: Exception) -> Response:
+    """A numerical warning of the core (overflow, 0/0), raised as an error: a 422, never a
+    result computed from infinities (the tests turn the same warnings into errors)."""
+    entry = {
+        "parameter": "precision",
+        "constraint": "values representable in the chosen precision",
+        "value": request.query_params.get("precision"),
+    }
+    return problem(
+        422,
+        "Outside the domain",
+        f"A value of this computation cannot be represented ({exc}); use precision=mp or a "
+        "shorter range.",
+        [entry],
+    )
+
+
 def install(app: FastAPI) -> None:
-    """Register every handler on ``app``."""
+    """Register every handler on ``app``; numerical warnings of the core become errors."""
+    warnings.filterwarnings("error", category=RuntimeWarning, module=r"app(\.|$)")
+    app.add_exception_handler(RuntimeWarning, _numerical_handler)
+    app.add_exception_handler(FloatingPointError, _numerical_handler)
     app.add_exception_handler(RequestValidationError, _validation_handler)
     app.add_exception_handler(GeometryError, _domain_handler)
     app.add_exception_handler(LimitExceededError, _domain_handler)

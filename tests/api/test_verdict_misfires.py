@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 from fastapi.testclient import TestClient
 
@@ -45,3 +46,26 @@ def test_lemma_10_says_why_its_printed_residual_is_null(client: TestClient) -> N
     shown = _checks(client, "/discretizations/d2b?sequence=remark-13")["lemma-10"]
     assert shown["holds"] is True
     assert shown["erratum"]["printed_residual"] > 1e3 * shown["tolerance"]
+
+
+def test_the_catenoid_gauss_image_overflow_is_gone(client: TestClient) -> None:
+    response = client.get("/surfaces/catenoid-gauss-image?method=construction&i_max=1675")
+    assert response.status_code == 200
+    checks = {check["id"]: check for check in response.json()["checks"]}
+    assert checks["face-planarity"]["holds"] is True
+    assert checks["face-planarity"]["residual"] < 1e-14
+
+
+def test_a_numerical_warning_in_the_server_is_a_422() -> None:
+    from app.main import create_app
+    from app.settings import Settings
+
+    application = create_app(Settings())
+
+    @application.get("/overflow")
+    def overflow() -> float:
+        return float(np.float64(1e308) * 10)
+
+    response = TestClient(application).get("/overflow")
+    assert response.status_code == 422
+    assert response.json()["errors"][0]["parameter"] == "precision"

@@ -21,9 +21,11 @@ from app.geometry.checks import (
     Statement,
     check_residuals,
     not_applicable,
+    point_distance,
     printed_residual,
     relative_difference,
     relative_point_difference,
+    relative_to,
 )
 from app.geometry.curve import Curve, DiscretizationInfo, require_range
 from app.geometry.d4b import closed_forms as kinematic_closed_forms
@@ -348,7 +350,15 @@ def evaluate(
         _recursion(ctx, p),
         _two_step(ctx, p),
         _closed_form(ctx, THEOREM_5, data.constructed, p, data.closed_p, steps),
-        _closed_form(ctx, THEOREM_6, data.constructed, tractrix, data.closed_tractrix, steps),
+        _closed_form(
+            ctx,
+            THEOREM_6,
+            data.constructed,
+            tractrix,
+            data.closed_tractrix,
+            steps,
+            abs(axis[:, 0]) + hh,  # d_i = x_i + h u_i: the terms' magnitude
+        ),
         ctx.check(DARBOUX, 0, darboux.edge_length_residuals(ar, axis[:n], e[:n])),
         ctx.check(DARBOUX_DISTANCE, 0, darboux.distance_residuals(ar, axis[:n], e[:n], 2 * hh)),
         _nikolaides(ctx, p, tractrix, axis),
@@ -567,14 +577,25 @@ def _closed_form(
     computed: Array,
     closed: Array,
     steps: int,
+    scale: Array | None = None,
 ) -> Check:
-    """Construction against closed form; the construction's rounding grows with its steps."""
+    """Construction against closed form; the construction's rounding grows with its steps.
+
+    ``scale`` (per vertex) replaces |closed form| as the magnitude the difference is measured
+    against where the vertex is a difference of larger terms: d_i = x_i + h·u_i is computed to
+    a few units of |x_i| + h, and its x-coordinate vanishes (|d_i| → 0) near β0 → 0 or π, where
+    a difference relative to |d_i| reported errors of 1e-7 for points right to 1e-16 (issue 15).
+    """
     tolerance = conditioning(ctx.h, ctx.d) * ctx.ar.tolerance(max(steps, LOCAL_STEPS))
     if not constructed:
         return not_applicable(
             statement, tolerance, "method=closed-form: the construction was not run to compare"
         )
-    residuals = relative_point_difference(ctx.ar, computed[: ctx.n], closed[: ctx.n])
+    if scale is None:
+        residuals = relative_point_difference(ctx.ar, computed[: ctx.n], closed[: ctx.n])
+    else:
+        difference = point_distance(ctx.ar, computed[: ctx.n], closed[: ctx.n])
+        residuals = relative_to(ctx.ar, difference, scale[: ctx.n])
     return check_residuals(
         statement, ctx.ar, ctx.indices[: ctx.n], residuals, tolerance, ctx.detail
     )
