@@ -296,6 +296,7 @@ def polygons(
             built.tractrix,
             (u0[0], u0[1]),
             built.centres[i_min - 1 - lo : i_max + 3 - lo],
+            built.directions,
         )
     else:
         p, tractrix = closed_p, closed_d
