@@ -14,7 +14,7 @@ D = "0.12345678901234567890123"
 
 def test_balls_contain_the_reference_and_every_statement_is_proved() -> None:
     result = certified.certify(40, 1.0, ExactReal(D), None, -20, 20)
-    centres, tips, _ = reference.construct("1", D, None, -20, 20, dps=60)
+    centres, _, _ = reference.construct("1", D, None, -20, 20, dps=60)
     ctx = mpmath.MPContext()
     ctx.dps = 60
     for k, i in enumerate(result.indices):
