@@ -42,9 +42,9 @@ class StrictModel(BaseModel):
     ) -> Any:
         """In precision=mp a real parameter is the decimal the client wrote (an ``ExactReal``).
 
-        GET gives the query text; POST gives a JSON string (accepted in mp only) or a number
-        (its shortest repr, which is the number written whenever it has at most 15 significant
-        digits: JSON numbers reach the service as doubles). In float64 nothing changes.
+        GET gives the query text; POST a JSON string (accepted in mp only) or a JSON number,
+        as written where the route reads bodies with ``ExactJSONRoute`` (else its shortest
+        repr). In float64 nothing changes.
         """
         field = cls.model_fields.get(info.field_name or "")
         if (
@@ -54,8 +54,12 @@ class StrictModel(BaseModel):
             or isinstance(value, bool)
             or not isinstance(value, str | int | float)
         ):
-            return handler(value)
-        text = value.strip() if isinstance(value, str) else repr(value)
+            # a JSON number read as written (routers.common.ExactJSONRoute) is its double here
+            return handler(float(value) if isinstance(value, ExactReal) else value)
+        if isinstance(value, ExactReal):
+            text = value.text
+        else:
+            text = value.strip() if isinstance(value, str) else repr(value)
         if isinstance(value, str):
             if len(text) > MAX_DECIMAL_CHARACTERS or DECIMAL.fullmatch(text) is None:
                 raise PydanticCustomError(

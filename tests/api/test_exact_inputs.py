@@ -91,3 +91,19 @@ def test_every_discretization_echoes_its_real_parameters(client: TestClient) -> 
         response = client.get(f"/discretizations/{identifier}?{query}&precision=mp&digits=40")
         assert response.status_code == 200, (identifier, response.text[:300])
         assert _exact(response.text)["parameters"][name] == value
+
+
+def test_post_takes_a_json_number_as_written_in_mp(client: TestClient) -> None:
+    body = '{"d": 0.12345678901234567890123, "precision": "mp", "digits": 40}'
+    headers = {"content-type": "application/json"}
+    response = client.post("/discretizations/d4b", content=body, headers=headers)
+    assert response.status_code == 200
+    document = _exact(response.text)
+    assert document["parameters"]["d"] == D
+    centres, _, _ = reference.construct("1", D, None, -10, 10, dps=60)
+    assert _largest_error(document, centres) < 1e-35
+    plain = client.post(
+        "/discretizations/d4b", content='{"d": 0.12345678901234567890123}', headers=headers
+    )
+    assert plain.json()["parameters"]["d"] == float(D)
+    assert plain.text.count('"d":0.12345678901234568,') == 1
