@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import re
 from decimal import Decimal
-from typing import Any, Literal
+from typing import Any, Literal, get_args
 
 from pydantic import (
     BaseModel,
@@ -30,6 +30,11 @@ DECIMAL = re.compile(r"[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?")
 MAX_DECIMAL_CHARACTERS = 2000
 
 
+def _is_real(annotation: Any) -> bool:
+    """Whether a field holds a real parameter: ``float`` or ``float | None``."""
+    return annotation is float or set(get_args(annotation)) == {float, type(None)}
+
+
 class StrictModel(BaseModel):
     """Base of every request model: rejects unknown fields, NaN/Infinity and tiny magnitudes."""
 
@@ -49,7 +54,7 @@ class StrictModel(BaseModel):
         field = cls.model_fields.get(info.field_name or "")
         if (
             field is None
-            or field.annotation is not float
+            or not _is_real(field.annotation)
             or info.data.get("precision") != "mp"
             or isinstance(value, bool)
             or not isinstance(value, str | int | float)

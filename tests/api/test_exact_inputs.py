@@ -107,3 +107,12 @@ def test_post_takes_a_json_number_as_written_in_mp(client: TestClient) -> None:
     )
     assert plain.json()["parameters"]["d"] == float(D)
     assert plain.text.count('"d":0.12345678901234568,') == 1
+
+
+def test_an_optional_real_is_exact_too(client: TestClient) -> None:
+    query = "r=-6.0000000000000000000001&precision=mp&digits=40"
+    document = _exact(client.get(f"/discretizations/d2a-quad?{query}").text)
+    assert document["parameters"]["r"] == "-6.0000000000000000000001"
+    default = _exact(client.get("/discretizations/d2a-quad?precision=mp&digits=40").text)
+    assert document["vertices"][10][1] != default["vertices"][10][1]  # p_0 = (0, r)
+    assert document["vertices"][10][1] == "-6.0000000000000000000001"
