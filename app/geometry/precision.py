@@ -452,15 +452,20 @@ class Ball(Arithmetic):
             setattr(self, name, _ball_function(name, self.check_time))
         atan2 = np.frompyfunc(flint.arb.atan2, 2, 1)
         self.atan2 = lambda y, x: atan2(y, x)
-        self.hypot = lambda x, y: self.sqrt(abs(x) * abs(x) + abs(y) * abs(y))  # never < 0
+        # a ball around 0 squared reaches below 0: keep the part >= 0 (it holds the exact value)
+        nonnegative = np.frompyfunc(lambda v: v.nonnegative_part(), 1, 1)
+        self.hypot = lambda x, y: self.sqrt(nonnegative(x * x + y * y))
 
     def enter(self) -> None:
         """Make this arithmetic's precision flint's working precision."""
         flint.ctx.prec = self.bits
 
-    def scalar(self, value: float | int | str) -> Any:
-        if isinstance(value, flint.arb):
+    def scalar(self, value: Any) -> Any:
+        kind = type(value)
+        if kind is flint.arb:
             return value
+        if kind is int:
+            return flint.arb(value)
         if isinstance(value, ExactReal):
             return flint.arb(value.text)  # the ball of the decimal written
         if isinstance(value, float):
@@ -468,9 +473,20 @@ class Ball(Arithmetic):
         return flint.arb(value)
 
     def array(self, values: Iterable[Any]) -> Array:
-        items = [self.scalar(v) for v in values]
+        ball = flint.arb
+        items = [v if type(v) is ball else self.scalar(v) for v in values]
         out = np.empty(len(items), dtype=object)
         out[:] = items
+        return out
+
+    def indices(self, i_min: int, i_max: int) -> Array:
+        out = np.empty(i_max - i_min + 1, dtype=object)
+        out[:] = [flint.arb(i) for i in range(i_min, i_max + 1)]
+        return out
+
+    def zeros(self, n: int) -> Array:
+        out = np.empty(n, dtype=object)
+        out[:] = [flint.arb(0)] * n  # arb numbers are immutable
         return out
 
     def empty(self, n: int) -> Array:

@@ -6,7 +6,10 @@ is a midpoint and a radius that contains the exact value for the exact inputs (`
 ``beta0`` as the decimals written). From them:
 
 - coordinates: decimal midpoints with ``digits`` significant digits, plus the largest radius;
-- the residual of a statement: a rigorous upper bound of the largest relative difference, so
+- the residual of a statement (theorem-4-hypothesis, theorem-4-rotation-angle, recursion-13
+  and its two-step form, theorem-5, theorem-6, darboux-d4b, darboux-d4b-distance,
+  nikolaides-d4b; measured as in the float checks, docs/checks.md): a rigorous upper bound of
+  the largest residual, so
   ``holds`` (bound <= tolerance) is a proof that the computed polygon satisfies the statement to
   that tolerance;
 - the residual of a printed formula (erratum E3, the two-step formula of the proof of Theorem 4):
@@ -23,6 +26,7 @@ guess. mpmath is not used here; its only remaining uses are the float-to-decimal
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 from typing import Any
@@ -30,6 +34,7 @@ from typing import Any
 import flint
 import numpy as np
 
+from app.geometry import darboux, nikolaides
 from app.geometry.d4b import closed_forms
 from app.geometry.d4b.construction import construct, validate
 from app.geometry.errors import NotRepresentableError
@@ -86,8 +91,8 @@ def _resolved(points: Array, digits: int) -> bool:
     """Whether every radius is below 10^−(digits+1) of its point's largest coordinate."""
     limit = flint.arb(10) ** (-digits - 1)
     for x, y in points:
-        size = max(abs(x).lower(), abs(y).lower(), key=lambda b: float(b.mid()))
-        if not (size > 0 and max(x.rad(), y.rad(), key=lambda b: float(b.mid())) < limit * size):
+        size = abs(x).lower().max(abs(y).lower())
+        if not (size > 0 and x.rad().max(y.rad()) < limit * size):
             return False
     return True
 
@@ -143,6 +148,40 @@ def certify(
             abs(y[3:] - closed_forms.two_step(dd, y[:-3], y[1:-2])) / abs(y[3:]),
             3 * local,
         ),
+        _statement(
+            "theorem-4-hypothesis",
+            np.frompyfunc(lambda v: v.nonnegative_part(), 1, 1)(dd * dd - y[:-1] * y[1:])
+            / (dd * dd),
+            local,
+        ),
+        _statement(
+            "theorem-4-rotation-angle",
+            abs(
+                _angle(axis[:-1] - p[1:], axis[1:] - p[1:])
+                - 2 * ar.atan2(np.full(len(y) - 1, dd, dtype=object), y[1:])
+            ),
+            local,
+        ),
+        _statement(
+            "darboux-d4b-distance",
+            darboux.distance_residuals(ar, axis[shown], 2 * tractrix[shown] - axis[shown], 2 * hh),
+            local,
+        ),
+        _statement(
+            "darboux-d4b",
+            darboux.edge_length_residuals(ar, axis[1:-1], 2 * tractrix[1:-1] - axis[1:-1]),
+            local,
+        ),
+        _statement(
+            "nikolaides-d4b",
+            np.concatenate(
+                [
+                    nikolaides.right_angle_residuals(tractrix[1:-1], axis[1:-1], p[1:-1]),
+                    nikolaides.right_angle_residuals(tractrix[1:-1], axis[1:-1], p[2:]),
+                ]
+            ),
+            local,
+        ),
         _printed(
             "E3",
             abs(y[3:] - closed_forms.two_step_printed(dd, y[:-3], y[1:-2])) / abs(y[3:]),
@@ -160,6 +199,13 @@ def certify(
     )
 
 
+def _angle(a: Array, b: Array) -> Array:
+    """The angle turning vector a_k into b_k (atan2 of cross and dot products)."""
+    cross = a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]
+    dot = a[:, 0] * b[:, 0] + a[:, 1] * b[:, 1]
+    return np.frompyfunc(flint.arb.atan2, 2, 1)(cross, dot)
+
+
 def _distance(a: Array, b: Array) -> Array:
     dx, dy = a[:, 0] - b[:, 0], a[:, 1] - b[:, 1]
     # a ball around 0 squared reaches below 0 (sqrt: NaN): keep its part >= 0, which holds the
@@ -175,18 +221,20 @@ def _relative_distance(a: Array, b: Array) -> Array:
 def _statement(identifier: str, residuals: Array, tolerance: Any) -> Verdict:
     """Holds when the upper bound of every residual is <= the tolerance (compared as balls,
     so that bounds below the float range still decide)."""
-    bounds = [abs(v).upper() for v in residuals]
-    holds = all(bool(b <= tolerance) for b in bounds)
-    worst = max((_up(b) for b in bounds), default=0.0)
-    return Verdict(identifier, worst, _up(tolerance), holds)
+    worst = _largest(abs(v).upper() for v in residuals)
+    return Verdict(identifier, _up(worst), _up(tolerance), bool(worst <= tolerance))
 
 
 def _printed(identifier: str, residuals: Array, tolerance: Any) -> Verdict:
     """Certified false when a residual's ball excludes 0 (its lower bound is > 0)."""
-    bounds = [abs(v).lower() for v in residuals]
-    certain = any(bool(b > 0) for b in bounds)
-    worst = max((_down(b) for b in bounds), default=0.0)
-    return Verdict(identifier, worst, _up(tolerance), False if certain else None, certain)
+    worst = _largest(abs(v).lower() for v in residuals)
+    certain = bool(worst > 0)
+    return Verdict(identifier, _down(worst), _up(tolerance), False if certain else None, certain)
+
+
+def _largest(bounds: Any) -> Any:
+    """The largest of exact (radius-0) arb bounds, 0 for none."""
+    return functools.reduce(lambda a, b: a.max(b), bounds, flint.arb(0))
 
 
 def _up(value: Any) -> float:
@@ -194,6 +242,8 @@ def _up(value: Any) -> float:
     nearest = float(value.mid())
     if math.isnan(nearest):
         return math.inf
+    if nearest == 0.0 and value.is_zero():
+        return 0.0
     return math.nextafter(nearest, math.inf) if math.isfinite(nearest) else nearest
 
 

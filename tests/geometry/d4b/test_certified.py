@@ -26,7 +26,7 @@ def test_balls_contain_the_reference_and_every_statement_is_proved() -> None:
             assert abs(midpoint - centres[int(i)][j]) < 1e-35 * max(1, abs(centres[int(i)][j]))
     assert result.radius < 1e-35
     verdicts = {v.id: v for v in result.verdicts}
-    for statement in ("theorem-5", "theorem-6", "recursion-13", "recursion-13-two-step"):
+    for statement in set(verdicts) - {"E3"}:
         assert verdicts[statement].holds is True, statement
         assert verdicts[statement].residual <= verdicts[statement].tolerance
     assert verdicts["E3"].certified_false is True
@@ -37,8 +37,8 @@ def test_balls_contain_the_reference_and_every_statement_is_proved() -> None:
 @pytest.mark.parametrize("beta0", [3.16e-9, 1.2, 3.1415925])
 def test_certified_near_the_axis(beta0: float) -> None:
     verdicts = {v.id: v for v in certified.certify(30, 1.0, 0.05, beta0, -30, 30).verdicts}
-    assert verdicts["theorem-6"].holds is True
-    assert verdicts["theorem-5"].holds is True
+    assert all(v.holds is True for v in verdicts.values() if v.id != "E3")
+    assert len(verdicts) == 10
 
 
 def test_a_wrong_value_is_not_proved_and_a_zero_is_undecided() -> None:
