@@ -84,10 +84,13 @@ openapi: $(BIN)/.runtime-installed
 paper-map: $(BIN)/.runtime-installed
 	$(BIN)/python scripts/paper_map.py docs/paper-map.md
 
-# A long schema-fuzzing run: thousands of generated requests per operation, new ones each run.
+# A long schema-fuzzing run: thousands of generated requests per operation, new ones each run;
+# then the verdict property test (random valid parameters, both precisions) with many examples.
 fuzz: $(BIN)/.dev-installed
 	FUZZ_EXAMPLES=$${FUZZ_EXAMPLES:-1000} HYPOTHESIS_PROFILE=$${HYPOTHESIS_PROFILE:-random} \
 	  $(BIN)/python -m pytest -q -n auto tests/api/test_fuzz.py
+	PROPERTY_EXAMPLES=$${PROPERTY_EXAMPLES:-200} HYPOTHESIS_PROFILE=$${HYPOTHESIS_PROFILE:-random} \
+	  $(BIN)/python -m pytest -q -n auto tests/geometry/test_verdicts_property.py
 
 # A bounded load run on 127.0.0.1: errors, latency percentiles, server memory.
 load: $(BIN)/.dev-installed warm

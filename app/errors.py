@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import logging
 import math
+import warnings
 from typing import Any
 
 import orjson
@@ -21,6 +22,7 @@ from starlette.exceptions import HTTPException as StarletteHTTPException
 from starlette.routing import Match
 
 from app.geometry.errors import DomainError, GeometryError
+from app.geometry.precision import ExactReal
 from app.limits import LimitExceededError
 
 PROBLEM_MEDIA_TYPE = "application/problem+json"
@@ -51,7 +53,18 @@ def problem(
         "errors": errors or [],
         **extra,
     }
-    return Response(orjson.dumps(body), status_code=status, media_type=PROBLEM_MEDIA_TYPE)
+    return Response(
+        orjson.dumps(body, default=_exact_number),
+        status_code=status,
+        media_type=PROBLEM_MEDIA_TYPE,
+    )
+
+
+def _exact_number(value: Any) -> Any:
+    """A precision=mp parameter (``ExactReal``) as the JSON number the client wrote."""
+    if isinstance(value, ExactReal):
+        return orjson.Fragment(value.text)
+    raise TypeError(f"{type(value).__name__} is not JSON serializable")
 
 
 def json_safe(value: Any) -> Any:
@@ -184,8 +197,28 @@ async def _unexpected_handler(request: Request, exc: Exception) -> Response:
     return problem(500, "Internal error", "The service failed on this request; it was logged.")
 
 
+async def _numerical_handler(request: Request, exc: Exception) -> Response:
+    """A numerical warning of the core (overflow, 0/0), raised as an error: a 422, never a
+    result computed from infinities (the tests turn the same warnings into errors)."""
+    entry = {
+        "parameter": "precision",
+        "constraint": "values representable in the chosen precision",
+        "value": request.query_params.get("precision"),
+    }
+    return problem(
+        422,
+        "Outside the domain",
+        f"A value of this computation cannot be represented ({exc}); use precision=mp or a "
+        "shorter range.",
+        [entry],
+    )
+
+
 def install(app: FastAPI) -> None:
-    """Register every handler on ``app``."""
+    """Register every handler on ``app``; numerical warnings of the core become errors."""
+    warnings.filterwarnings("error", category=RuntimeWarning, module=r"app(\.|$)")
+    app.add_exception_handler(RuntimeWarning, _numerical_handler)
+    app.add_exception_handler(FloatingPointError, _numerical_handler)
     app.add_exception_handler(RequestValidationError, _validation_handler)
     app.add_exception_handler(GeometryError, _domain_handler)
     app.add_exception_handler(LimitExceededError, _domain_handler)

@@ -17,7 +17,7 @@ from fastapi import Request, Response
 from app.geometry.checks import Check
 from app.geometry.curve import Curve, Polyline
 from app.geometry.errors import NotRepresentableError
-from app.geometry.precision import Arithmetic, Array, MultiPrecision
+from app.geometry.precision import Arithmetic, Array, ExactReal, MultiPrecision
 from app.geometry.studies.common import Study
 from app.response_cache import (
     ResponseCache,
@@ -41,9 +41,16 @@ class JSONBytesResponse(Response):
     media_type = JSON_MEDIA_TYPE
 
 
+def exact_number(value: Any) -> orjson.Fragment:
+    """orjson's fallback: a parameter of precision=mp as the JSON number the client wrote."""
+    if isinstance(value, ExactReal):
+        return orjson.Fragment(value.text)
+    raise TypeError(f"{type(value).__name__} is not JSON serializable")
+
+
 def encode_json(document: Any) -> bytes:
-    """orjson bytes; numpy arrays and scalars are encoded natively."""
-    return orjson.dumps(document, option=JSON_OPTIONS)
+    """orjson bytes; numpy arrays and scalars are encoded natively, exact decimals as written."""
+    return orjson.dumps(document, option=JSON_OPTIONS, default=exact_number)
 
 
 def coordinates(ar: Arithmetic, points: Array) -> Any:
@@ -196,7 +203,9 @@ def cached(
 
 def canonical_key(path: str, query: Any) -> str:
     """Path plus the validated query with defaults, keys sorted: one key per distinct answer."""
-    return path + "?" + orjson.dumps(query, option=orjson.OPT_SORT_KEYS).decode()
+    return (
+        path + "?" + orjson.dumps(query, option=orjson.OPT_SORT_KEYS, default=exact_number).decode()
+    )
 
 
 def study_document(study: Study) -> dict[str, Any]:

@@ -1,4 +1,4 @@
-"""The core imports numpy, mpmath, numba and the standard library only (brief: pure core)."""
+"""The core imports numpy, mpmath, numba, python-flint and the standard library only (pure core)."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import sys
 from pathlib import Path
 
 CORE = Path(__file__).resolve().parents[1] / "app" / "geometry"
-ALLOWED = {"numpy", "mpmath", "numba", "app"}
+ALLOWED = {"numpy", "mpmath", "numba", "flint", "app"}
 
 
 def imported_modules(path: Path) -> set[str]:

@@ -91,18 +91,28 @@ def check_residuals(
             statement, tolerance, note or "not enough vertices in the range to evaluate it"
         )
     finite = np.isfinite(values)
-    if not np.all(finite):
-        # A residual that is not a finite number means the claim failed to be evaluable;
-        # report it as a failure and keep NaN/Infinity out of the response.
+    holds: bool | None
+    if np.all(finite):
+        worst = float(np.max(values))
+        holds = worst <= tolerance
+    else:
+        # A residual that cannot be computed (an overflow, 0/0) tests nothing: the check fails
+        # if a computed residual already exceeds the tolerance, and is otherwise not applicable
+        # (never passed). NaN/Infinity stay out of the response.
+        computed = values[finite]
+        worst = float(np.max(computed)) if len(computed) else np.finfo(np.float64).max
+        holds = False if worst > tolerance else None
+        missing = f"{int(np.count_nonzero(~finite))} of {len(values)} residuals could not be "
+        missing += "computed (not finite)"
+        note = f"{note}; {missing}" if note else missing
         values = np.where(finite, values, np.finfo(np.float64).max)
-    worst = float(np.max(values))
     return Check(
         id=statement.id,
         reference=statement.reference,
         claim=statement.claim,
-        residual=worst,
+        residual=worst if holds is not None else None,
         tolerance=tolerance,
-        holds=worst <= tolerance,
+        holds=holds,
         per_index=PerIndex(np.asarray(indices, dtype=np.int64), values) if detail else None,
         erratum=erratum,
         note=note,

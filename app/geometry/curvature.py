@@ -150,8 +150,17 @@ def face_curvatures(ar: Arithmetic, f: Array, n: Array) -> FaceCurvatures:
 def planarity(ar: Arithmetic, faces: Array) -> Array:
     """Distance between the two diagonals of each quad over their mean length; 0 when planar.
 
-    A degenerate quad (a triangle, or diagonals parallel) counts as planar.
+    A degenerate quad (a triangle, or diagonals parallel) counts as planar. The measure is
+    scale-invariant (offset and scale are both cubic in the coordinates), so in float64 each
+    face is first scaled by the power of two that brings its largest coordinate into [½, 1):
+    nothing overflows for any finite face (faces near 1e103 overflowed the cubic products, and
+    an infinite scale made every such face "planar"), and the scaling is exact, so every other
+    face gives the same bits as before. mp numbers do not overflow.
     """
+    if ar.may_overflow and len(faces):
+        largest = np.max(np.max(np.abs(faces), axis=2), axis=1)
+        _, exponent = np.frexp(largest)
+        faces = np.ldexp(faces, -exponent[:, None, None])
     d1, d2 = diagonals(faces)
     normal = cross(d1, d2)
     length = norm(ar, normal)

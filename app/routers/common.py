@@ -1,15 +1,19 @@
 """What the curve and theorem endpoints share: parsing, limits, computing, encoding."""
 
-from collections.abc import Callable, Iterable, Mapping
+import contextlib
+import json
+from collections.abc import Callable, Coroutine, Iterable, Mapping
 from typing import Any, TypeVar
 
 import orjson
 from fastapi import Request, Response
 from fastapi.exceptions import RequestValidationError
+from fastapi.routing import APIRoute
 from pydantic import BaseModel, ValidationError
 
 from app.errors import UnknownIdError
 from app.geometry.curve import Curve, Selection
+from app.geometry.precision import ExactReal
 from app.geometry.studies.common import Study
 from app.limits import enforce_drawing, enforce_range, enforce_study, timed_arithmetic
 from app.registry import DISCRETIZATIONS, STUDIES, ConvergenceStudy, Discretization
@@ -60,6 +64,29 @@ CURVE_RESPONSES: dict[int | str, dict[str, Any]] = {
     304: {"description": "Not modified (the If-None-Match ETag matches)."},
     **PROBLEM_RESPONSES,
 }
+
+
+class ExactJSONRoute(APIRoute):
+    """A route whose JSON body keeps every number with a fraction or exponent as written.
+
+    Such a number arrives as an ``ExactReal``: a float (so validation and float64 are as
+    before) that remembers its text, which precision=mp computes with (issue 15: a POST body's
+    ``"d": 0.12345678901234567890123`` is that decimal, not its nearest double).
+    """
+
+    def get_route_handler(self) -> Callable[[Request], Coroutine[Any, Any, Response]]:
+        handler = super().get_route_handler()
+
+        async def exact_handler(request: Request) -> Response:
+            if request.method == "POST":
+                body = await request.body()
+                with contextlib.suppress(ValueError):  # FastAPI reports a malformed body
+                    parsed = json.loads(body, parse_float=ExactReal)
+                    if isinstance(parsed, dict):  # anything else is refused as FastAPI refuses it
+                        request._json = parsed
+            return await handler(request)
+
+        return exact_handler
 
 
 def example_of(curve: Curve) -> Any:

@@ -11,6 +11,7 @@ from app.registry import DISCRETIZATIONS, Discretization
 from app.responses import cached, canonical_key
 from app.routers.common import (
     CURVE_RESPONSES,
+    ExactJSONRoute,
     compute,
     curve_response,
     example_of,
@@ -22,7 +23,7 @@ from app.schemas.catalog import DiscretizationEntry, ParameterInfo
 from app.schemas.common import NOT_FOUND_RESPONSE, CurveQuery, StrictModel
 from app.schemas.curve import CurveResponse
 
-router = APIRouter(prefix="/discretizations", tags=["discretizations"])
+router = APIRouter(prefix="/discretizations", tags=["discretizations"], route_class=ExactJSONRoute)
 
 COMMON_FIELDS = frozenset(CurveQuery.model_fields)
 

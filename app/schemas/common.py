@@ -2,20 +2,82 @@
 
 from __future__ import annotations
 
-from typing import Any, Literal
+import re
+from decimal import Decimal
+from typing import Any, Literal, get_args
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator
+from pydantic import (
+    BaseModel,
+    ConfigDict,
+    Field,
+    ValidationInfo,
+    ValidatorFunctionWrapHandler,
+    field_validator,
+)
 from pydantic_core import PydanticCustomError
+
+from app.geometry.precision import ExactReal
 
 #: Nonzero real parameters are at least this large in magnitude: the checks square coordinates,
 #: and squares of smaller numbers underflow float64 (subnormal inputs are refused, not garbled).
 SMALLEST_MAGNITUDE = 1e-100
+
+#: A decimal as precision=mp takes it: optional sign, digits with an optional point, optional
+#: exponent (no hex, no underscores, no nan/inf).
+DECIMAL = re.compile(r"[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?")
+
+#: Longest decimal text accepted for a real parameter in precision=mp.
+MAX_DECIMAL_CHARACTERS = 2000
+
+
+def _is_real(annotation: Any) -> bool:
+    """Whether a field holds a real parameter: ``float`` or ``float | None``."""
+    return annotation is float or set(get_args(annotation)) == {float, type(None)}
 
 
 class StrictModel(BaseModel):
     """Base of every request model: rejects unknown fields, NaN/Infinity and tiny magnitudes."""
 
     model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
+
+    @field_validator("*", mode="wrap")
+    @classmethod
+    def _exact_decimal(
+        cls, value: Any, handler: ValidatorFunctionWrapHandler, info: ValidationInfo
+    ) -> Any:
+        """In precision=mp a real parameter is the decimal the client wrote (an ``ExactReal``).
+
+        GET gives the query text; POST a JSON string (accepted in mp only) or a JSON number,
+        as written where the route reads bodies with ``ExactJSONRoute`` (else its shortest
+        repr). In float64 nothing changes.
+        """
+        field = cls.model_fields.get(info.field_name or "")
+        if (
+            field is None
+            or not _is_real(field.annotation)
+            or info.data.get("precision") != "mp"
+            or isinstance(value, bool)
+            or not isinstance(value, str | int | float)
+        ):
+            # a JSON number read as written (routers.common.ExactJSONRoute) is its double here
+            return handler(float(value) if isinstance(value, ExactReal) else value)
+        if isinstance(value, ExactReal):
+            text = value.text
+        else:
+            text = value.strip() if isinstance(value, str) else repr(value)
+        if isinstance(value, str):
+            if len(text) > MAX_DECIMAL_CHARACTERS or DECIMAL.fullmatch(text) is None:
+                raise PydanticCustomError(
+                    "decimal",
+                    "{name} is a decimal number such as 0.125, -3 or 1.5e-7 (at most "
+                    "{limit} characters)",
+                    {"name": info.field_name, "limit": MAX_DECIMAL_CHARACTERS},
+                )
+            value = float(text)
+        result = handler(value)
+        if not isinstance(result, float):
+            return result
+        return ExactReal(str(Decimal(text)))
 
     @field_validator("*", mode="after")
     @classmethod
@@ -75,8 +137,13 @@ class CurveQuery(StrictModel):
 
     precision: Literal["float64", "mp"] = Field(
         "float64",
-        description="`float64`: IEEE doubles with numpy, coordinates as JSON numbers. `mp`: "
-        "mpmath with `digits` significant digits, coordinates as decimal strings.",
+        description="`float64`: IEEE doubles with numpy, coordinates as JSON numbers; every "
+        "real parameter is its nearest double. `mp`: `digits` significant digits, coordinates "
+        "as decimal strings; every real parameter is the decimal written (GET: the query text; "
+        'POST: a JSON string such as "0.1234567890123456789", or a JSON number, which '
+        "arrives as a double and is read as its shortest decimal), carried at the working "
+        "precision and echoed exactly in `parameters`. A malformed decimal is a 422 naming "
+        "the parameter.",
     )
     digits: int = Field(
         30,

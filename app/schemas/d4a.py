@@ -7,6 +7,7 @@ from typing import Annotated, Any, Literal
 
 from pydantic import Field
 
+from app.geometry.precision import ExactReal
 from app.schemas.common import CurveQuery
 from app.schemas.d4b import Index, StickAngle
 
@@ -72,6 +73,6 @@ class D4aQuery(CurveQuery):
 
     def core_arguments(self) -> dict[str, Any]:
         arguments = super().core_arguments()
-        if arguments["beta0"] == math.pi / 2:
+        if arguments["beta0"] == math.pi / 2 and not isinstance(arguments["beta0"], ExactReal):
             arguments["beta0"] = None  # exactly vertical, in every precision
         return arguments

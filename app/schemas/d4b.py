@@ -7,6 +7,7 @@ from typing import Annotated, Any, Literal
 
 from pydantic import Field
 
+from app.geometry.precision import ExactReal
 from app.schemas.common import CurveQuery
 
 D4B_DESCRIPTION = """\
@@ -53,7 +54,8 @@ StickAngle = Annotated[
         gt=0,
         lt=math.pi,
         description="Angle of stick 0 with the positive x-axis, radians, 0 < beta0 < π. The "
-        "default (the double nearest π/2) means exactly vertical, also in precision=mp.",
+        "default (the double nearest π/2) means exactly vertical, also in precision=mp (where "
+        "a written angle is the decimal written).",
         json_schema_extra={"domain": "0 < beta0 < π"},
     ),
 ]
@@ -61,8 +63,11 @@ Index = Annotated[int, Field(ge=-10_000_000, le=10_000_000)]
 
 
 def stick_angle(beta0: float) -> float | None:
-    """The core's ``beta0``: ``None`` (exactly vertical in every precision) for the default."""
-    return None if beta0 == math.pi / 2 else beta0
+    """The core's ``beta0``: ``None`` (exactly vertical in every precision) for the default.
+
+    In precision=mp a written angle is the decimal written (``ExactReal``), never π/2 itself.
+    """
+    return None if beta0 == math.pi / 2 and not isinstance(beta0, ExactReal) else beta0
 
 
 class D4bQuery(CurveQuery):

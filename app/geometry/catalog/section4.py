@@ -110,7 +110,8 @@ D4B_THEOREM_6 = Statement(
     "theorem-6",
     "Theorem 6, eq. (16)",
     "The closed form (16) of the tractrix equals the constructed stick ends d_i. "
-    "Residual: largest |d_i − closed form| / |closed form|.",
+    "Residual: largest |d_i − closed form| / (|x_i| + h): d_i = x_i + h u_i is computed to a few "
+    "units of that size, and |d_i| itself vanishes for a first stick near the axis.",
     conditions=(D4B_VERTICAL_START,),
 )
 

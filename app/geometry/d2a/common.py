@@ -133,6 +133,12 @@ def fitted_condition(
     if check.holds is None:
         return check
     constant = "undetermined" if fit.constant is None else f"{ctx.ar.to_float(fit.constant):.6g}"
+    if check.holds and fit.constant is not None and not fit.constant > 0:
+        # (D1), (D3) and (2) ask for c > 0: a polygon fitting them with c <= 0 is not one of
+        # theirs (as GET /relations answers for the same polygon)
+        return replace(
+            check, holds=False, note=f"least-squares c = {constant}; {note_fails} (c is not > 0)"
+        )
     note = note_holds if check.holds else note_fails
     return replace(check, note=f"least-squares c = {constant}; {note}")
 

@@ -42,7 +42,7 @@ from app.geometry.d2a.common import (
 )
 from app.geometry.errors import NotRepresentableError
 from app.geometry.polygon import area_magnitude, second_difference, signed_areas
-from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
+from app.geometry.precision import Arithmetic, Array, ExactReal, Scalar, stack_points
 
 S = Statement
 
@@ -230,7 +230,7 @@ def compute(
         "a": a,
         "b": b,
         "lambda": lam,
-        "r": ar.to_float(data.r),
+        "r": r if isinstance(r, ExactReal) else ar.to_float(data.r),  # as written (mp)
         "i_min": i_min,
         "i_max": i_max,
     }

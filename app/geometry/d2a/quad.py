@@ -48,7 +48,7 @@ from app.geometry.d2a.common import (
 )
 from app.geometry.errors import NotRepresentableError
 from app.geometry.polygon import area_magnitude, second_difference, signed_areas
-from app.geometry.precision import Arithmetic, Array, Scalar
+from app.geometry.precision import Arithmetic, Array, ExactReal, Scalar
 
 S = Statement
 
@@ -207,7 +207,7 @@ def compute(
     parameters: dict[str, Any] = {
         "f0": f0,
         "f1": f1,
-        "r": ar.to_float(data.r),
+        "r": r if isinstance(r, ExactReal) else ar.to_float(data.r),  # as written (mp)
         "i_min": i_min,
         "i_max": i_max,
     }

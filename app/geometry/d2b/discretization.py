@@ -188,6 +188,23 @@ def construction_tolerance(ar: Arithmetic, data: D2bPolygons) -> float:
     return ar.tolerance(max(len(data.p) + 1, LOCAL_STEPS))
 
 
+def _lemma_10_note(check: Check) -> Check:
+    """Say why E64's printed residual is null: the printed convention differs only for i < 1.
+
+    At i = 0 it needs s_{−1}, outside a list starting at 0 (Example 12's domain starts there,
+    and its g is even, so Σ_{k=−1}^{0} t_k = 0 would agree anyway); for i >= 1 it is the
+    usual sum. Ranges with i < 0 (Remark 13's default, sequence=remark-13) show it.
+    """
+    if check.erratum is None or check.erratum.printed_residual is not None or check.note:
+        return check
+    return replace(
+        check,
+        note="printed_residual is null: E64's printed convention differs from the corrected "
+        "one only for i < 1, where it needs s_{i−1}, which this sequence does not have (an "
+        "even g such as Example 12's would even agree at i = 0); sequence=remark-13 shows it",
+    )
+
+
 def evaluate(ar: Arithmetic, data: D2bPolygons, detail: bool = False) -> list[Check]:
     """Every check of ``STATEMENTS`` on the given polygons (shown range i_min .. i_max)."""
     window = slice(data.first, data.first + data.count)
@@ -238,7 +255,11 @@ def evaluate(ar: Arithmetic, data: D2bPolygons, detail: bool = False) -> list[Ch
         else not_applicable(EQUATION_17, tolerance, "a face needs two vertices"),
         check(RADII, 0, relative_difference(ar, p[:, 1], radii)),
         check(RECURSION, 1, recursion),
-        check(LEMMA_10, 0, relative_point_difference(ar, p, closed[window]), erratum=lemma_erratum),
+        _lemma_10_note(
+            check(
+                LEMMA_10, 0, relative_point_difference(ar, p, closed[window]), erratum=lemma_erratum
+            )
+        ),
         _convergence(ar, data, p, indices, local),
         _example(ar, data, EXAMPLE_12, "example-12", n, indices, local, detail),
         _example(ar, data, REMARK_13, "remark-13", n, indices, local, detail),

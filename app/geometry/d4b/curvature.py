@@ -117,9 +117,8 @@ class GaussImages:
     contact_edges_before: Array | None = None
     """p_{i_min−1} and p_{i_min}: the edge before the range, which m_{i_min} also uses."""
     conditioning: float = 1.0
-    """Σ over the tractrix edges used by n of (|d_k| + |d_{k+1}|)/|d_{k+1} − d_k| (coordinates
-    summed): the edge directions that the inscribed recursion accumulates are known only to
-    eps times this ratio each, so it serves as the step count of n's tolerance."""
+    """Step count of n's tolerance beyond the construction's: 1, since n is read from the stick
+    directions (``build``) instead of accumulated from edge angles."""
 
 
 def build(
@@ -133,12 +132,14 @@ def build(
     tractrix_hull: Array | None,
     first_direction: tuple[Scalar, Scalar] | None,
     p_extended: Array | None,
+    directions_hull: Array | None = None,
 ) -> GaussImages:
     """The Gauss images on i_min .. i_max + 1 (``contact`` from i_min − 1).
 
     With a construction, ``tractrix_hull`` is the tractrix on hull_start .. (covering 0 and the
     range), ``first_direction`` the unit vector of stick 0, ``p_extended`` the hyperbolic cosine on
-    i_min − 1 .. i_max + 2. Without (method=closed-form) the closed forms are used.
+    i_min − 1 .. i_max + 2, ``directions_hull`` the unit stick directions u on the same indices as
+    ``tractrix_hull``. Without (method=closed-form) the closed forms are used.
     """
     i = ar.indices(i_min, i_max + 1)
     closed_n = kinematic_closed_forms.tractrix_gauss_image(ar, h, d, i, shift)
@@ -153,18 +154,18 @@ def build(
         return GaussImages(
             closed_n, closed_c, closed_m, closed_n, closed_c, closed_m, False, before
         )
-    ux, uy = first_direction
-    start = 0 - hull_start
-    n_hull = gauss_image.inscribed_parallel(
-        ar,
-        tractrix_hull,
-        start,
-        ar.array([uy, -ux]),  # the unit normal of stick 0
-    )
+    # n is inscribed with edges parallel to the tractrix's and n_0 = J u_0, the unit normal of
+    # stick 0 (J(x, y) = (y, −x)). Its exact form is n_i = J u_i for every i: the rotation R
+    # about p_{i+1} takes u_i to u_{i+1} and d_i to d_{i+1}, and d_i − p_{i+1} = λ J u_i (p_{i+1}
+    # is on the normal of stick i at d_i), so d_{i+1} − d_i = λ J (u_{i+1} − u_i) (R commutes
+    # with J): the chords n_i n_{i+1} are parallel to the tractrix edges, as (18) asks. Read from
+    # the construction's stick directions, n carries their rounding only, where accumulating the
+    # edge angles (gauss_image.inscribed_parallel) drifted to 1e-11 over 12001 vertices.
+    del first_direction
+    if directions_hull is None:
+        raise ValueError("a construction needs its stick directions")
+    n_hull = stack_points(directions_hull[:, 1], -directions_hull[:, 0])
     window = slice(i_min - hull_start, i_max + 1 - hull_start + 1)
-    edges = tractrix_hull[1:] - tractrix_hull[:-1]
-    sizes = magnitude(tractrix_hull[:-1], tractrix_hull[1:])
-    ratios = ar.to_floats(sizes / ar.hypot(edges[:, 0], edges[:, 1]))
     return GaussImages(
         tractrix_gauss=n_hull[window],
         contact=gauss_image.contact_points(ar, p_extended),
@@ -174,7 +175,6 @@ def build(
         closed_gauss=closed_m,
         constructed=True,
         contact_edges_before=p_extended[:2],
-        conditioning=float(np.sum(ratios)),
     )
 
 

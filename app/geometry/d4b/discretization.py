@@ -39,9 +39,11 @@ from app.geometry.checks import (
     Statement,
     check_residuals,
     not_applicable,
+    point_distance,
     printed_residual,
     relative_difference,
     relative_point_difference,
+    relative_to,
 )
 from app.geometry.curve import EVERYTHING, Curve, DiscretizationInfo, Selection, require_range
 from app.geometry.d4b import (
@@ -233,6 +235,7 @@ class D4bPolygons:
             built.tractrix,
             (u0[0], u0[1]),
             built.centres[self.i_min - 1 - lo : self.i_max + 3 - lo],
+            built.directions,
         )
 
     @cached_property
@@ -555,13 +558,24 @@ def _closed_form(
     computed: Array,
     closed_form: Callable[[], Array],
     steps: int,
+    scale: Array | None = None,
 ) -> Check:
-    """Construction against closed form; the construction's rounding grows with its steps."""
+    """Construction against closed form; the construction's rounding grows with its steps.
+
+    ``scale`` (per vertex) replaces |closed form| as the magnitude the difference is measured
+    against where the vertex is a difference of larger terms: d_i = x_i + h·u_i is computed to
+    a few units of |x_i| + h, and its x-coordinate vanishes (|d_i| → 0) near β0 → 0 or π, where
+    a difference relative to |d_i| reported errors of 1e-7 for points right to 1e-16 (issue 15).
+    """
     tolerance = conditioning(ctx.h, ctx.d) * ctx.ar.tolerance(max(steps, LOCAL_STEPS))
     if not constructed:
         return not_applicable(statement, tolerance, NOT_CONSTRUCTED)
     closed = closed_form()
-    residuals = relative_point_difference(ctx.ar, computed[: ctx.n], closed[: ctx.n])
+    if scale is None:
+        residuals = relative_point_difference(ctx.ar, computed[: ctx.n], closed[: ctx.n])
+    else:
+        difference = point_distance(ctx.ar, computed[: ctx.n], closed[: ctx.n])
+        residuals = relative_to(ctx.ar, difference, scale[: ctx.n])
     return check_residuals(
         statement, ctx.ar, ctx.indices[: ctx.n], residuals, tolerance, ctx.detail
     )
@@ -617,6 +631,7 @@ _EVALUATORS: tuple[tuple[Statement, Callable[[_Context], Check]], ...] = (
             c.data.tractrix,
             lambda: c.data.closed_tractrix,
             c.steps,
+            abs(c.data.axis[:, 0]) + c.h,  # d_i = x_i + h u_i: the terms' magnitude
         ),
     ),
     (DARBOUX, _darboux),

@@ -1,0 +1,55 @@
+"""A residual that cannot be computed never passes a check (issue 15)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from app.geometry.checks import Statement, check_residuals
+from app.geometry.curvature import planarity
+from app.geometry.precision import Float64, MultiPrecision
+
+STATEMENT = Statement("example", "nowhere", "a claim")
+INDICES = np.arange(3)
+
+
+def test_finite_residuals_decide() -> None:
+    ar = Float64()
+    assert check_residuals(STATEMENT, ar, INDICES, np.array([0.0, 1e-17, 0.0]), 1e-15, False).holds
+    fails = check_residuals(STATEMENT, ar, INDICES, np.array([0.0, 1e-3, 0.0]), 1e-15, False)
+    assert fails.holds is False
+
+
+def test_an_uncomputable_residual_is_not_a_pass() -> None:
+    ar = Float64()
+    values = np.array([0.0, np.inf, np.nan])
+    check = check_residuals(STATEMENT, ar, INDICES, values, 1e-15, False)
+    assert check.holds is None
+    assert check.residual is None
+    assert "2 of 3 residuals could not be computed" in (check.note or "")
+
+
+def test_an_uncomputable_residual_beside_a_counterexample_fails() -> None:
+    values = np.array([1.0, np.inf, 0.0])
+    check = check_residuals(STATEMENT, Float64(), INDICES, values, 1e-15, False)
+    assert check.holds is False
+    assert check.residual == 1.0
+
+
+def _face(scale: float, lift: float) -> np.ndarray:
+    square = np.array([[0, 0, 0], [1, 0, 0], [1, 1, lift], [0, 1, 0]], dtype=np.float64)
+    return (scale * square)[None]
+
+
+def test_planarity_of_huge_faces_is_measured_not_overflowed() -> None:
+    ar = Float64()
+    for scale in (1.0, 1e120, 1e300):
+        assert planarity(ar, _face(scale, 0.0))[0] == 0.0
+        bent = planarity(ar, _face(scale, 0.5))[0]
+        assert np.isfinite(bent)
+        assert abs(bent - planarity(ar, _face(1.0, 0.5))[0]) < 1e-15
+    mp = MultiPrecision(30)
+    face = np.array(
+        [[[mp.scalar(v) * mp.scalar("1e400") for v in row] for row in _face(1.0, 0.5)[0]]],
+        dtype=object,
+    )
+    assert abs(float(planarity(mp, face)[0]) - planarity(ar, _face(1.0, 0.5))[0]) < 1e-15
