@@ -4,7 +4,7 @@ from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
 
 import anyio.to_thread
-from fastapi import FastAPI
+from fastapi import Depends, FastAPI
 from fastapi.middleware.cors import CORSMiddleware
 
 from app import __version__, errors
@@ -13,9 +13,11 @@ from app.routers import (
     convergence,
     discretizations,
     docs,
+    errata,
     explorer,
     figures,
     health,
+    problems,
     relations,
     smooth,
     surfaces,
@@ -51,7 +53,8 @@ TAGS = [
     {"name": "figures", "description": "The paper's figures, redrawn from computed data."},
     {"name": "surfaces", "description": "Catenoids, pseudosphere and Gauss images as meshes."},
     {"name": "smooth", "description": "Smooth references of Section 2: catenary and tractrix."},
-    {"name": "service", "description": "Health."},
+    {"name": "errata", "description": "The paper's printed formulas found wrong (docs/errata.md)."},
+    {"name": "service", "description": "Health, and the problem types of error responses."},
 ]
 
 
@@ -73,6 +76,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         openapi_tags=TAGS,
         docs_url=None,  # served by app.routers.docs with self-hosted scripts
         redoc_url=None,
+        dependencies=[Depends(errors.refuse_undeclared_query)],
     )
     app.state.settings = settings or get_settings()
     app.state.response_cache = ResponseCache(
@@ -83,11 +87,12 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.add_middleware(
         CORSMiddleware,
         allow_origins=app.state.settings.cors_origins,
-        allow_methods=["GET", "POST"],
+        allow_methods=["GET", "HEAD", "POST"],
         allow_headers=["Content-Type", "If-None-Match"],
         expose_headers=["ETag", "X-First-Index"],
     )
     app.add_middleware(SecurityHeaders)
+    app.add_middleware(errors.HeadAsGet)  # outermost: HEAD is GET everywhere inside
     errors.install(app)
     app.include_router(health.router)
     app.include_router(discretizations.router)
@@ -97,6 +102,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.include_router(relations.router)
     app.include_router(convergence.router)
     app.include_router(figures.router)
+    app.include_router(errata.router)
+    app.include_router(problems.router)
     explorer.install(app)
     docs.install(app)
     return app

@@ -174,8 +174,11 @@ def cached(
     (``app.response_cache``).
     """
     is_get = request.method == "GET"
-    if is_get:
-        answer = not_modified(etag_for(key), request.headers.get("if-none-match"), settings)
+    if_none_match = request.headers.get("if-none-match") if is_get else None
+    # `*` matches any current representation: only known once the answer is a 200
+    any_tag = if_none_match is not None and if_none_match.strip() == "*"
+    if if_none_match is not None and not any_tag:
+        answer = not_modified(etag_for(key), if_none_match, settings)
         if answer is not None:
             return answer.response()
     cache: ResponseCache = request.app.state.response_cache
@@ -190,6 +193,10 @@ def cached(
         cache.put(key, entry)
     if is_get and key in cache:
         cache.alias((request.url.path, request.scope["query_string"]), key)
+    if any_tag:
+        answer = not_modified(etag_for(key), if_none_match, settings)
+        if answer is not None:
+            return answer.response()
     accept = request.headers.get("accept-encoding")
     return reply(cache, key, entry, settings, is_get, accept).response()
 
