@@ -2,6 +2,7 @@
 
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
+from typing import Any
 
 import anyio.to_thread
 from fastapi import Depends, FastAPI
@@ -23,6 +24,7 @@ from app.routers import (
     surfaces,
     theorems,
 )
+from app.schemas.openapi_document import refine
 from app.security import SecurityHeaders
 from app.settings import Settings, get_settings
 
@@ -106,6 +108,14 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.include_router(problems.router)
     explorer.install(app)
     docs.install(app)
+    generate = app.openapi
+
+    def openapi() -> dict[str, Any]:
+        if app.openapi_schema is None:
+            app.openapi_schema = refine(generate(), app.state.settings)
+        return app.openapi_schema
+
+    app.openapi = openapi  # type: ignore[method-assign]
     return app
 
 

@@ -135,7 +135,7 @@ def errata() -> Errata:
     }
     entries: dict[str, ErratumEntry] = {}
     for line in re.findall(r"(?m)^\| \[E\d+\]\(#e\d+\) \|.*$", text):
-        link, where, what, checks = (_cells(line) + ["", "", ""])[:4]
+        link, where, what, checks = [*_cells(line), "", "", ""][:4]
         identifier = link[1 : link.index("]")]
         entries[identifier] = ErratumEntry(
             id=identifier,

@@ -6,6 +6,13 @@ from typing import Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator
 from pydantic_core import PydanticCustomError
+from typing_extensions import TypeAliasType
+
+JSONValue = TypeAliasType(
+    "JSONValue",
+    "bool | int | float | str | list[JSONValue] | dict[str, JSONValue] | None",
+)
+"""Any JSON value (typed, so that generated clients see JSON rather than `unknown`)."""
 
 #: Nonzero real parameters are at least this large in magnitude: the checks square coordinates,
 #: and squares of smaller numbers underflow float64 (subnormal inputs are refused, not garbled).
@@ -92,7 +99,7 @@ class ProblemParameterError(BaseModel):
 
     parameter: str = Field(description="Public name of the parameter, e.g. `d` or `i_max`.")
     constraint: str = Field(description="The condition it must satisfy, e.g. `0 < d < h`.")
-    value: Any = Field(None, description="The value received (as sent, or null if absent).")
+    value: JSONValue = Field(None, description="The value received (as sent, or null if absent).")
 
 
 class Problem(BaseModel):

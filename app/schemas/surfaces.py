@@ -2,12 +2,12 @@
 
 from __future__ import annotations
 
-from typing import Any, Literal
+from typing import Literal
 
 from pydantic import BaseModel, Field
 
 from app.schemas.common import StrictModel
-from app.schemas.curve import CheckModel, Coordinate, PrecisionInfo
+from app.schemas.curve import CheckModel, Coordinate, ParameterValue, PrecisionInfo
 
 SURFACES_DESCRIPTION = """\
 A discrete surface of revolution (eq. (15)): the meridian polygon of a discretization rotated
@@ -67,7 +67,7 @@ class SurfaceResponse(BaseModel):
     reference: str
     mesh: Literal["surface", "gauss_image"]
     discretization: str
-    parameters: dict[str, Any]
+    parameters: dict[str, ParameterValue]
     precision: PrecisionInfo
     layout: SurfaceLayout
     vertices: list[tuple[Coordinate, Coordinate, Coordinate]]

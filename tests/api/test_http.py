@@ -13,9 +13,7 @@ from app.openapi_export import document
 
 SPEC = json.loads(document())
 GET_PATHS = [
-    path
-    for path, operations in SPEC["paths"].items()
-    if "get" in operations and "{" not in path
+    path for path, operations in SPEC["paths"].items() if "get" in operations and "{" not in path
 ] + ["/discretizations/d4b", "/theorems/theorem-5", "/errata/E2", "/problems/not-found"]
 
 
@@ -100,9 +98,13 @@ def test_unknown_query_parameters_are_refused_everywhere(client: TestClient, url
 
 def test_if_none_match_star_does_not_hide_an_invalid_request(client: TestClient) -> None:
     assert client.get("/discretizations/d4b?d=5", headers={"if-none-match": "*"}).status_code == 422
-    assert client.get("/discretizations/d4b?d=0.2", headers={"if-none-match": "*"}).status_code == 304
+    assert (
+        client.get("/discretizations/d4b?d=0.2", headers={"if-none-match": "*"}).status_code == 304
+    )
     # a second time the answer comes from the cache's fast path: still 304
-    assert client.get("/discretizations/d4b?d=0.2", headers={"if-none-match": "*"}).status_code == 304
+    assert (
+        client.get("/discretizations/d4b?d=0.2", headers={"if-none-match": "*"}).status_code == 304
+    )
 
 
 def test_every_problem_type_resolves_with_one_title(client: TestClient) -> None:
