@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator
+from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator, model_validator
 from pydantic_core import PydanticCustomError
 from typing_extensions import TypeAliasType
 
@@ -90,7 +90,27 @@ def strict_body(model: type[CurveQuery]) -> type[CurveQuery]:
     """
     name = model.__name__.removesuffix("Query") + "Body"
     config = ConfigDict(**{**model.model_config, "strict": True})
-    namespace = {"model_config": config, "__doc__": model.__doc__, "__module__": model.__module__}
+    integers = frozenset(
+        field for field, info in model.model_fields.items() if info.annotation in (int, int | None)
+    )
+
+    def integral_floats(cls: type[BaseModel], data: Any) -> Any:
+        """JSON has one number type: 1.0 is the integer 1 (JSON Schema's `integer` says so)."""
+        if not isinstance(data, dict):
+            return data
+        return {
+            key: int(value)
+            if key in integers and isinstance(value, float) and value.is_integer()
+            else value
+            for key, value in data.items()
+        }
+
+    namespace = {
+        "model_config": config,
+        "__doc__": model.__doc__,
+        "__module__": model.__module__,
+        "_integral_floats": model_validator(mode="before")(classmethod(integral_floats)),  # type: ignore[arg-type]
+    }
     return type(name, (model,), namespace)
 
 

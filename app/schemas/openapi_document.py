@@ -12,6 +12,7 @@ FastAPI's document is adjusted in one pass, after generation:
   JSON numbers) and ``CurveResponseMP`` (decimal strings);
 - request bodies refuse unknown members (``additionalProperties: false``), as the server does;
 - array query parameters are comma-separated (``explode: false``), as the server reads them;
+- recursive JSON values (``JSONValue``) in a form TypeScript generators can express;
 - ``servers``, ``license``, ``contact``, and ``security: []`` (no authentication).
 """
 
@@ -33,6 +34,26 @@ UNKNOWN_PARAMETER_RESPONSE = {
 }
 
 
+_SCALARS: list[dict[str, Any]] = [
+    {"type": "boolean"},
+    {"type": "number"},
+    {"type": "string"},
+    {"type": "null"},
+]
+_OBJECT = {"type": "object", "additionalProperties": {"$ref": "#/components/schemas/JSONValue"}}
+#: Any JSON value, written so that TypeScript generators can express it: an array's items are a
+#: scalar, an object or an array of anything (a type that refers to itself through an array
+#: element is circular in TypeScript; through an object member it is not).
+JSON_VALUE: dict[str, Any] = {
+    "description": "Any JSON value.",
+    "anyOf": [
+        *_SCALARS,
+        {"type": "array", "items": {"anyOf": [*_SCALARS, _OBJECT, {"type": "array"}]}},
+        _OBJECT,
+    ],
+}
+
+
 def refine(spec: dict[str, Any], settings: Settings) -> dict[str, Any]:
     """``spec`` (FastAPI's document) adjusted as the module doc says; changed in place."""
     spec["servers"] = [{"url": "/", "description": "This service (paths are relative)."}]
@@ -41,6 +62,8 @@ def refine(spec: dict[str, Any], settings: Settings) -> dict[str, Any]:
     spec["info"]["contact"] = CONTACT
     schemas: dict[str, Any] = spec.setdefault("components", {}).setdefault("schemas", {})
     _add_mp_curve(schemas)
+    if "JSONValue" in schemas:
+        schemas["JSONValue"] = JSON_VALUE
     for operations in spec["paths"].values():
         for method, operation in operations.items():
             _problem_responses(operation)
