@@ -9,6 +9,7 @@ from fastapi import Depends, FastAPI
 from fastapi.middleware.cors import CORSMiddleware
 
 from app import __version__, errors
+from app.compression import Compress
 from app.response_cache import FastPath, ResponseCache
 from app.routers import (
     convergence,
@@ -86,6 +87,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     )
     # innermost: cached answers still pass CORS and the security headers
     app.add_middleware(FastPath, cache=app.state.response_cache, settings=app.state.settings)
+    app.add_middleware(Compress, settings=app.state.settings)  # what the cache did not compress
     app.add_middleware(
         CORSMiddleware,
         allow_origins=app.state.settings.cors_origins,

@@ -132,3 +132,48 @@ def test_every_problem_type_resolves_with_one_title(client: TestClient) -> None:
     listed = client.get("/problems").json()
     assert [p["type"] for p in listed] == [t.uri for t in PROBLEM_TYPES.values()]
     assert len({p["title"] for p in listed}) == len(listed)
+
+
+def test_documentation_bundles_are_fingerprinted_immutable_and_gzipped(client: TestClient) -> None:
+    import re
+
+    for page in ("/docs", "/redoc"):
+        sources = re.findall(r"""(?:src|href)=["'](/assets/[^"']+)["']""", client.get(page).text)
+        assert sources, page
+        for source in sources:
+            plain = client.get(source, headers={"accept-encoding": "identity"})
+            zipped = client.get(source, headers={"accept-encoding": "gzip"})
+            assert plain.status_code == zipped.status_code == 200
+            assert plain.headers["cache-control"] == "public, max-age=31536000, immutable"
+            assert zipped.content == plain.content  # httpx decodes the gzip body
+            if plain.headers["content-type"].startswith("text/"):
+                assert zipped.headers["content-encoding"] == "gzip"
+                assert int(zipped.headers["content-length"]) < len(plain.content) / 2
+            again = client.get(source, headers={"if-none-match": plain.headers["etag"]})
+            assert again.status_code == 304
+
+
+def test_openapi_document_has_an_etag_and_is_gzipped(client: TestClient) -> None:
+    plain = client.get("/openapi.json", headers={"accept-encoding": "identity"})
+    zipped = client.get("/openapi.json", headers={"accept-encoding": "gzip"})
+    assert plain.json() == zipped.json() == json.loads(document())
+    assert zipped.headers["content-encoding"] == "gzip"
+    assert int(zipped.headers["content-length"]) < len(plain.content) / 4
+    for response in (plain, zipped):
+        tag = response.headers["etag"]
+        assert client.get("/openapi.json", headers={"if-none-match": tag}).status_code == 304
+
+
+def test_catalogs_and_static_files_are_gzipped(client: TestClient) -> None:
+    theorems = client.get("/theorems", headers={"accept-encoding": "gzip"})
+    assert theorems.headers["content-encoding"] == "gzip"
+    assert int(theorems.headers["content-length"]) < len(theorems.content) / 4
+    script = client.get("/static/explorer/explorer.js", headers={"accept-encoding": "gzip"})
+    assert script.headers["content-encoding"] == "gzip"
+    assert script.headers["cache-control"] == "no-cache"
+    assert script.headers["etag"].endswith('-gzip"')
+    again = client.get(
+        "/static/explorer/explorer.js",
+        headers={"accept-encoding": "gzip", "if-none-match": script.headers["etag"]},
+    )
+    assert again.status_code == 304
