@@ -33,6 +33,7 @@ JSON_OPTIONS = orjson.OPT_SERIALIZE_NUMPY
 JSON_MEDIA_TYPE = "application/json"
 CSV_MEDIA_TYPE = "text/csv; charset=utf-8"
 NPY_MEDIA_TYPE = "application/x-npy"
+NPZ_MEDIA_TYPE = "application/x-npz"
 
 
 class JSONBytesResponse(Response):
@@ -160,6 +161,52 @@ def curve_npy(curve: Curve) -> tuple[bytes, int]:
     np.lib.format.write_array(buffer, points.astype("<f8", copy=False), allow_pickle=False)
     indices = curve.polygon.indices
     return buffer.getvalue(), int(indices[0]) if len(indices) else 0
+
+
+def curve_npz(curve: Curve) -> bytes:
+    """Every polyline of the curve (``p`` and each companion) with its indices, as one NumPy
+    .npz: ``<name>_indices`` (n,) int64 and ``<name>_vertices`` (n, 2) float64. float64 only."""
+    ensure_finite(curve)
+    arrays: dict[str, np.ndarray[Any, Any]] = {}
+    for name, polyline in [("p", curve.polygon), *curve.companions.items()]:
+        points = coordinates(curve.arithmetic, polyline.vertices)
+        if not isinstance(points, np.ndarray):
+            raise NotRepresentableError("format", "format=npz needs precision=float64", "npz")
+        arrays[f"{name}_indices"] = np.asarray(polyline.indices, dtype="<i8")
+        arrays[f"{name}_vertices"] = points.astype("<f8", copy=False)
+    buffer = io.BytesIO()
+    np.savez(buffer, allow_pickle=False, **arrays)
+    return buffer.getvalue()
+
+
+def checks_csv(checks: list[Check]) -> bytes:
+    """One row per check: id,reference,residual,tolerance,holds,erratum,printed_residual
+    (empty cells for null; references quoted)."""
+
+    def cell(value: Any) -> str:
+        if value is None:
+            return ""
+        if isinstance(value, bool):
+            return "true" if value else "false"
+        if isinstance(value, float):
+            return repr(value)
+        text = str(value)
+        return '"' + text.replace('"', '""') + '"' if any(c in text for c in ',"\n') else text
+
+    lines = ["id,reference,residual,tolerance,holds,erratum,printed_residual"]
+    for check in checks:
+        erratum = check.erratum
+        row = [
+            check.id,
+            check.reference,
+            check.residual,
+            check.tolerance,
+            check.holds,
+            None if erratum is None else erratum.id,
+            None if erratum is None else erratum.printed_residual,
+        ]
+        lines.append(",".join(cell(v) for v in row))
+    return ("\n".join(lines) + "\n").encode()
 
 
 def cached(

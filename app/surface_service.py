@@ -18,7 +18,7 @@ from app.geometry import gauss_image, rotational_surface
 from app.geometry.errors import DomainError, NotRepresentableError
 from app.geometry.precision import Arithmetic, MultiPrecision
 from app.limits import enforce_mesh, enforce_range, timed_arithmetic
-from app.mesh_formats import glb_bytes, obj_bytes, ply_bytes
+from app.mesh_formats import glb_bytes, obj_bytes, ply_bytes, vtu_bytes
 from app.registry import DISCRETIZATIONS
 from app.responses import JSONBytesResponse, check_document, encode_json
 from app.schemas.common import CurveQuery
@@ -75,6 +75,7 @@ MEDIA_TYPES = {
     "json": "application/json",
     "obj": "model/obj",
     "ply": "application/octet-stream",
+    "vtu": "application/xml",
     "glb": "model/gltf-binary",
 }
 
@@ -263,7 +264,7 @@ def _comments(result: SurfaceResult) -> list[str]:
 
 
 def file_response(result: SurfaceResult, file_format: str) -> Response:
-    """The surface in ``file_format`` (json, obj, ply, glb), with a download file name."""
+    """The surface in ``file_format`` (json, obj, ply, vtu, glb), with a download file name."""
     if file_format == "json":
         return JSONBytesResponse(encode_json(document(result)))
     built = result.surface
@@ -275,9 +276,10 @@ def file_response(result: SurfaceResult, file_format: str) -> Response:
     if file_format == "obj":
         shown = _strings(ar, vertices).tolist() if isinstance(ar, MultiPrecision) else vertices
         body = obj_bytes(shown, faces, _comments(result))
-    elif file_format == "ply":
+    elif file_format in ("ply", "vtu"):
         floats = {k: _floats(ar, v) for k, v in values.items()}
-        body = ply_bytes(_floats(ar, vertices), faces, floats, _comments(result))
+        write = ply_bytes if file_format == "ply" else vtu_bytes
+        body = write(_floats(ar, vertices), faces, floats, _comments(result))
     else:
         floats = {k: _floats(ar, v) for k, v in values.items() if k in ("K", "H")}
         extras = {"id": result.kind.id, "parameters": result.parameters}

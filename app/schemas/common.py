@@ -52,14 +52,17 @@ class CurveQuery(StrictModel):
         description="Significant digits for precision=mp (at most DCOSH_MAX_DIGITS, default "
         "1000; (digits + 200) × steps is bounded by DCOSH_MAX_MP_WORK). Ignored in float64.",
     )
-    format: Literal["json", "csv", "svg", "npy"] = Field(
+    format: Literal["json", "csv", "svg", "npy", "npz", "checks-csv"] = Field(
         "json",
         description="`json` (default), `csv` (columns curve,index,x,y: the polygon `p` "
         "followed by each companion), `svg` (a self-contained picture of `p` and its "
         "companions with axes and a legend, equal scales; at most DCOSH_MAX_SVG_VERTICES "
         "vertices per polygon) or `npy` (binary, for large curves: the vertices of `p` as one "
         "(n, 2) little-endian float64 array in NumPy's .npy format, row k holding index "
-        "`X-First-Index` + k; precision=float64 only; no companions or checks).",
+        "`X-First-Index` + k; precision=float64 only; no companions or checks), `npz` "
+        "(NumPy's .npz: for p and every companion `<name>_indices` (int64) and "
+        "`<name>_vertices` ((n, 2) float64); precision=float64 only) or `checks-csv` (one row "
+        "per check: id,reference,residual,tolerance,holds,erratum,printed_residual).",
     )
     detail: bool = Field(
         False, description="Fill each check's `per_index` with the residual at every index."
@@ -69,11 +72,12 @@ class CurveQuery(StrictModel):
     @classmethod
     def _binary_is_float64(cls, value: str, info: ValidationInfo) -> str:
         """format=npy holds float64 numbers; mp coordinates are decimal strings."""
-        if value == "npy" and info.data.get("precision") == "mp":
+        if value in ("npy", "npz") and info.data.get("precision") == "mp":
             raise PydanticCustomError(
                 "format_precision",
-                "format=npy needs precision=float64 (mp coordinates are decimal strings; "
+                "format={format} needs precision=float64 (mp coordinates are decimal strings; "
                 "use format=json or csv)",
+                {"format": value},
             )
         return value
 

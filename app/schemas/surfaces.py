@@ -49,7 +49,12 @@ class SurfaceQuery(StrictModel):
         description="Catenoid only: `auto` (the discretization's own Gauss image, else the "
         "circumscribed one) or `circumscribed`.",
     )
-    format: Literal["json", "obj", "ply", "glb"] = Field("json", description="Output format.")
+    format: Literal["json", "obj", "ply", "vtu", "glb"] = Field(
+        "json",
+        description="`json`; `obj` (quads, no per-face values); `ply` (ASCII, float64, K, H "
+        "and planarity as face properties: meshio, trimesh, plyfile); `vtu` (VTK XML, "
+        "ParaView: K, H and planarity as cell data); `glb` (glTF binary, float32, for viewers).",
+    )
 
 
 class SurfaceLayout(BaseModel):
