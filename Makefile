@@ -79,8 +79,8 @@ test: $(BIN)/.dev-installed $(VENDOR)/.built browser contract
 	DCOSH_CHROMIUM=$(CHROMIUM) timeout -k 30 $(TEST_TIME_LIMIT) $(BIN)/python -m pytest -n auto $(PYTEST_ARGS)
 
 lint: $(BIN)/.dev-installed
-	$(BIN)/ruff check app tests bench
-	$(BIN)/ruff format --check app tests bench
+	$(BIN)/ruff check app tests bench examples
+	$(BIN)/ruff format --check app tests bench examples
 	$(BIN)/mypy app
 
 openapi: $(BIN)/.runtime-installed
