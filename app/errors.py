@@ -334,6 +334,36 @@ def refuse_undeclared_query(request: Request) -> None:
     )
 
 
+async def enforce_digits_limit(request: Request) -> None:
+    """App-wide dependency: ``digits`` is at most ``DCOSH_MAX_DIGITS`` whatever the precision.
+
+    The OpenAPI document gives that maximum (app.schemas.openapi_document), so the server holds
+    it everywhere, also where float64 ignores the value; the same 422 as the mp check.
+    """
+    limit: int = request.app.state.settings.max_digits
+    values: list[Any] = [
+        value
+        for key, value in request.query_params.multi_items()
+        if key == "digits" or key.endswith(".digits")
+    ]
+    if request.method == "POST" and _is_json(request.headers.get("content-type")):
+        try:
+            body = await request.json()
+        except ValueError:
+            body = None
+        if isinstance(body, dict) and "digits" in body:
+            values.append(body["digits"])
+    for value in values:
+        try:
+            number = float(value)
+        except (TypeError, ValueError):
+            continue  # not a number: the request model names it
+        if isinstance(value, bool) or not math.isfinite(number):
+            continue
+        if number > limit:
+            raise LimitExceededError("digits", f"1 <= digits <= {limit}", json_safe(value))
+
+
 def _declares_query(dependant: Dependant) -> bool:
     return bool(dependant.query_params) or any(map(_declares_query, dependant.dependencies))
 

@@ -79,7 +79,10 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         openapi_tags=TAGS,
         docs_url=None,  # served by app.routers.docs with self-hosted scripts
         redoc_url=None,
-        dependencies=[Depends(errors.refuse_undeclared_query)],
+        dependencies=[
+            Depends(errors.refuse_undeclared_query),
+            Depends(errors.enforce_digits_limit),
+        ],
     )
     app.state.settings = settings or get_settings()
     app.state.response_cache = ResponseCache(

@@ -54,6 +54,12 @@ JSON_VALUE: dict[str, Any] = {
 }
 
 
+UNSUPPORTED_MEDIA_TYPE_RESPONSE = {
+    "description": "The body is not JSON (Content-Type must be application/json).",
+    "content": {PROBLEM_MEDIA_TYPE: {"schema": {"$ref": PROBLEM_REF}}},
+}
+
+
 def refine(spec: dict[str, Any], settings: Settings) -> dict[str, Any]:
     """``spec`` (FastAPI's document) adjusted as the module doc says; changed in place."""
     spec["servers"] = [{"url": "/", "description": "This service (paths are relative)."}]
@@ -75,6 +81,7 @@ def refine(spec: dict[str, Any], settings: Settings) -> dict[str, Any]:
             body = operation.get("requestBody", {}).get("content", {}).get("application/json")
             if method == "post" and body is not None:
                 _closed(body.get("schema", {}), schemas)
+                operation["responses"].setdefault("415", UNSUPPORTED_MEDIA_TYPE_RESPONSE)
     _limits(spec, settings)
     for operations in spec["paths"].values():
         for operation in operations.values():

@@ -160,3 +160,21 @@ def test_the_readme_embedding_snippet_is_the_type_checked_one() -> None:
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
     script = readme.split('<script type="module">\n', 1)[1].split("</script>", 1)[0]
     assert script == (ROOT / "tools" / "contract" / "embed.js").read_text(encoding="utf-8")
+
+
+def test_the_digits_maximum_holds_in_every_precision() -> None:
+    small = TestClient(create_app(Settings(max_digits=50)))
+    for response in (
+        small.get("/discretizations/d4b?digits=51"),
+        small.post("/discretizations/d4b", json={"digits": 51}),
+        small.get("/theorems/theorem-5?digits=51"),
+    ):
+        assert response.status_code == 422, response.text
+        assert response.json()["errors"][0]["constraint"] == "1 <= digits <= 50"
+    assert small.get("/discretizations/d4b?digits=50").status_code == 200
+
+
+def test_post_documents_415(client: TestClient) -> None:
+    responses = SPEC["paths"]["/discretizations/d4b"]["post"]["responses"]
+    assert "415" in responses
+    assert client.post("/discretizations/d4b", content=b"x").status_code == 415
