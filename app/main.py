@@ -33,13 +33,15 @@ DESCRIPTION = """\
 Every discretization of the hyperbolic cosine (and of the tractrix) from *Discretizations of the
 hyperbolic cosine*, computed from its definition, with the paper's claims checked on the result.
 Each curve response carries `checks`: for every statement, the residual, the tolerance that fits
-the precision, the verdict and, where the printed formula is wrong, the erratum
-(docs/errata.md).
+the precision, the verdict and, where the printed formula is wrong, the erratum (its page:
+GET /errata/{id}).
 
 Conventions: indices are the paper's; Δ²y_i = y_{i+2} − 2y_{i+1} + y_i; l_i = |p_{i+1} − p_i|;
 A_i is the signed trapezoid area under the edge p_i p_{i+1}. `precision=mp` computes with
 `digits` significant digits and returns coordinates as decimal strings. Errors are
-`application/problem+json` (RFC 9457) naming the parameter and its constraint.
+`application/problem+json` (RFC 9457) naming the parameter and its constraint; each problem's
+`type` is a page of this service (GET /problems). HEAD is answered wherever GET is. The
+representation is chosen by `format`; `Accept` is ignored except by the errata and problem pages.
 """
 
 TAGS = [

@@ -43,7 +43,10 @@ class ErratumModel(BaseModel):
     printed_residual: float | None = Field(
         description="The same residual for the printed formula (large: the print is wrong)."
     )
-    link: str = Field(description="Where the evidence is written down.")
+    link: str = Field(
+        description="The erratum's page on this service (GET /errata/{id}): the printed and "
+        "corrected forms with the evidence."
+    )
 
 
 class PerIndexModel(BaseModel):
