@@ -16,7 +16,7 @@ CHROMIUM ?= /usr/bin/chromium
 # root installs system packages directly; anyone else through sudo
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: run test lint openapi paper-map bench fuzz load install install-dev assets browser warm clean
+.PHONY: run test lint openapi paper-map contract bench fuzz load install install-dev assets browser warm clean
 
 # The runtime install: a virtual environment with every package pinned in requirements/runtime.txt.
 $(BIN)/.runtime-installed: requirements/runtime.txt pyproject.toml
@@ -53,6 +53,24 @@ $(VENDOR)/.built: package.json package-lock.json scripts/build-assets.mjs
 
 assets: $(VENDOR)/.built
 
+# The contract tools (tools/contract/package.json and its lock: Redocly CLI, openapi-typescript,
+# TypeScript), kept apart from the explorer's packages.
+CONTRACT := tools/contract
+NPM_QUIET := REDOCLY_TELEMETRY=off REDOCLY_SUPPRESS_UPDATE_NOTICE=true NO_UPDATE_NOTIFIER=1
+$(CONTRACT)/node_modules/.installed: $(CONTRACT)/package.json $(CONTRACT)/package-lock.json
+	command -v npm >/dev/null 2>&1 || { $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq nodejs npm; }
+	cd $(CONTRACT) && npm ci --no-audit --no-fund
+	touch $@
+
+# The OpenAPI document the app serves now: linted (no error allowed), turned into TypeScript
+# types, and the typed client and the README's embedding snippet compiled with tsc --strict.
+contract: $(BIN)/.runtime-installed $(CONTRACT)/node_modules/.installed
+	mkdir -p $(CONTRACT)/build
+	$(BIN)/python -m app.openapi_export $(CONTRACT)/build/openapi.json
+	cd $(CONTRACT) && $(NPM_QUIET) npm run --silent lint && $(NPM_QUIET) npm run --silent types \
+	  && npm run --silent tsc
+
 # The browser tests drive Debian's Chromium (never a browser download of a test tool).
 browser:
 	test -x $(CHROMIUM) || { $(SUDO) apt-get update -qq && \
@@ -69,12 +87,12 @@ SERVER_ENV := MALLOC_ARENA_MAX=2 MALLOC_MMAP_THRESHOLD_=33554432 MALLOC_TRIM_THR
 run: $(BIN)/.runtime-installed $(VENDOR)/.built warm
 	$(SERVER_ENV) $(BIN)/python -m uvicorn app.main:app --host $(HOST) --port $(PORT) --workers $(WORKERS)
 
-test: $(BIN)/.dev-installed $(VENDOR)/.built browser warm
+test: $(BIN)/.dev-installed $(VENDOR)/.built browser warm contract
 	DCOSH_CHROMIUM=$(CHROMIUM) timeout -k 30 $(TEST_TIME_LIMIT) $(BIN)/python -m pytest -n auto $(PYTEST_ARGS)
 
 lint: $(BIN)/.dev-installed
-	$(BIN)/ruff check app tests bench
-	$(BIN)/ruff format --check app tests bench
+	$(BIN)/ruff check app tests bench examples
+	$(BIN)/ruff format --check app tests bench examples
 	$(BIN)/mypy app
 
 openapi: $(BIN)/.runtime-installed

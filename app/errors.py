@@ -4,8 +4,12 @@
 - core ``GeometryError`` (domain, representability)        -> 422
 - ``LimitExceededError`` (work budget)                           -> 422
 - ``UnknownIdError``                                             -> 404 with the valid ids
+- a POST body that is not JSON                              -> 415
 - Starlette HTTP errors (unknown path, wrong method)        -> their status
 - anything else                                             -> 500 without internals
+
+Each problem's ``type`` is a path on this service (``/problems/{slug}``, served by
+app.routers.problems) naming one of ``PROBLEM_TYPES``; each type has one title.
 """
 
 from __future__ import annotations
@@ -17,9 +21,11 @@ from typing import Any
 
 import orjson
 from fastapi import FastAPI, Request, Response
+from fastapi.dependencies.models import Dependant
 from fastapi.exceptions import RequestValidationError
 from starlette.exceptions import HTTPException as StarletteHTTPException
 from starlette.routing import Match
+from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
 from app.geometry.errors import DomainError, GeometryError
 from app.geometry.precision import ExactReal
@@ -37,6 +43,79 @@ class UnknownIdError(LookupError):
         super().__init__(f"unknown {kind} {value!r}")
 
 
+class ProblemType:
+    """One kind of problem: its slug (the last part of its ``type`` URI), status and title."""
+
+    def __init__(self, slug: str, status: int, title: str, description: str) -> None:
+        self.slug, self.status, self.title, self.description = slug, status, title, description
+
+    @property
+    def uri(self) -> str:
+        """The ``type`` member: a path on this service, resolved against the request's URL."""
+        return f"{PROBLEMS_PATH}/{self.slug}"
+
+
+PROBLEMS_PATH = "/problems"
+
+PROBLEM_TYPES: dict[str, ProblemType] = {
+    t.slug: t
+    for t in (
+        ProblemType(
+            "invalid-parameters",
+            422,
+            "Invalid parameters",
+            "A query parameter or body field has the wrong type, breaks a bound of the "
+            "schema, is given twice, or is not a parameter of the endpoint; or the body is not "
+            "valid JSON. `errors` names each parameter with its constraint and the value sent.",
+        ),
+        ProblemType(
+            "outside-domain",
+            422,
+            "Outside the domain",
+            "The parameters are each valid but the construction is not defined for them (for "
+            "example d >= h), or the result is not representable in the chosen precision. "
+            "`errors` names the parameter and the condition it must satisfy.",
+        ),
+        ProblemType(
+            "over-limits",
+            422,
+            "Over the limits",
+            "The request would exceed a work limit of this deployment (vertices, digits, "
+            "mp work, samples, computation time). The limits are settings (DCOSH_MAX_…); the "
+            "constraint gives the bound in force.",
+        ),
+        ProblemType(
+            "unknown-id",
+            404,
+            "Unknown id",
+            "The path names a discretization, study, statement, figure, surface, erratum or "
+            "problem type that does not exist; `valid` lists those that do.",
+        ),
+        ProblemType("not-found", 404, "Not found", "No resource lives at this path."),
+        ProblemType(
+            "method-not-allowed",
+            405,
+            "Method not allowed",
+            "The resource exists but not with this method; the `Allow` header lists the ones "
+            "it has (HEAD wherever GET is served).",
+        ),
+        ProblemType(
+            "unsupported-media-type",
+            415,
+            "Unsupported media type",
+            "A POST body must be JSON: `Content-Type: application/json` (or a `+json` type).",
+        ),
+        ProblemType(
+            "internal-error",
+            500,
+            "Internal error",
+            "The service failed on this request. It was logged; no internals are shown.",
+        ),
+    )
+}
+_BY_TITLE = {t.title: t for t in PROBLEM_TYPES.values()}
+
+
 def problem(
     status: int,
     title: str,
@@ -44,9 +123,11 @@ def problem(
     errors: list[dict[str, Any]] | None = None,
     **extra: Any,
 ) -> Response:
-    """A problem+json response."""
+    """A problem+json response; ``type`` is the page of the problem type with this title
+    (``about:blank`` for a title that has none, as RFC 9457 allows)."""
+    kind = _BY_TITLE.get(title)
     body = {
-        "type": f"https://dcosh.example/problems/{status}",
+        "type": kind.uri if kind is not None and kind.status == status else "about:blank",
         "title": title,
         "status": status,
         "detail": detail,
@@ -105,12 +186,18 @@ def _constraint(error: dict[str, Any], parameter: str) -> str:
         return "required"
     if kind == "finite_number":
         return f"{parameter} is a finite number"
+    if kind == "json_invalid":
+        position = error.get("loc", ("body", "?"))[-1]
+        reason = (ctx.get("error") or "invalid JSON").rstrip(".")
+        return f"a JSON object (invalid JSON at character offset {position}: {reason})"
     if kind == "literal_error":
         return f"{parameter} is one of {ctx.get('expected', '?')}"
     return str(error.get("msg", "invalid"))
 
 
-def _parameter(loc: tuple[Any, ...] | list[Any]) -> str:
+def _parameter(loc: tuple[Any, ...] | list[Any], kind: str = "") -> str:
+    if kind == "json_invalid":  # loc is ("body", position): the body is at fault, not field "12"
+        return "body"
     parts = [str(p) or "(empty name)" for p in loc if p not in ("query", "body", "path", "header")]
     return ".".join(parts) if parts else "body"
 
@@ -119,12 +206,13 @@ def validation_errors(errors: list[Any]) -> list[dict[str, Any]]:
     """pydantic errors as ``{"parameter", "constraint", "value"}`` entries."""
     out = []
     for error in errors:
-        parameter = _parameter(error.get("loc", ()))
+        parameter = _parameter(error.get("loc", ()), error.get("type", ""))
+        value = None if error.get("type") == "json_invalid" else error.get("input")
         out.append(
             {
                 "parameter": parameter,
                 "constraint": _constraint(error, parameter),
-                "value": json_safe(error.get("input")),
+                "value": json_safe(value),
             }
         )
     return out
@@ -132,9 +220,27 @@ def validation_errors(errors: list[Any]) -> list[dict[str, Any]]:
 
 async def _validation_handler(request: Request, exc: Exception) -> Response:
     assert isinstance(exc, RequestValidationError)
+    if request.method == "POST" and not _is_json(request.headers.get("content-type")):
+        received = request.headers.get("content-type") or "none"
+        return problem(
+            415,
+            "Unsupported media type",
+            f"The body must be JSON (Content-Type: application/json), not {received}.",
+            [{"parameter": "Content-Type", "constraint": "application/json", "value": received}],
+        )
     errors = validation_errors(list(exc.errors()))
     names = ", ".join(e["parameter"] for e in errors) or "request"
     return problem(422, "Invalid parameters", f"Invalid value for: {names}.", errors)
+
+
+def _is_json(content_type: str | None) -> bool:
+    """Whether a Content-Type names JSON (``application/json`` or ``application/…+json``)."""
+    if not content_type:
+        return False
+    media = content_type.split(";", 1)[0].strip().lower()
+    return media == "application/json" or (
+        media.startswith("application/") and media.endswith("+json")
+    )
 
 
 async def _domain_handler(request: Request, exc: Exception) -> Response:
@@ -153,7 +259,7 @@ async def _unknown_id_handler(request: Request, exc: Exception) -> Response:
     assert isinstance(exc, UnknownIdError)
     return problem(
         404,
-        f"Unknown {exc.kind}",
+        "Unknown id",
         f"There is no {exc.kind} {exc.value!r}. Valid: {', '.join(exc.valid)}.",
         [{"parameter": "id", "constraint": f"one of {', '.join(exc.valid)}", "value": exc.value}],
         valid=exc.valid,
@@ -183,13 +289,34 @@ async def _http_handler(request: Request, exc: Exception) -> Response:
 
 
 def allowed_methods(request: Request) -> list[str]:
-    """The documented methods of every route at this path (GET and POST are separate routes)."""
+    """The methods of every route at this path (GET and POST are separate routes), with HEAD
+    wherever GET is served (``HeadAsGet``).
+
+    FastAPI 0.163 wraps each included router in one route without ``methods``; its effective
+    routes (``effective_candidates``) carry them, so the wrappers are walked.
+    """
     methods: set[str] = set()
-    for route in request.app.router.routes:
-        match, _ = route.matches(request.scope)
-        if match != Match.NONE:
-            methods.update(getattr(route, "methods", None) or ())
-    return sorted(methods - {"HEAD"})
+    path = request.scope["path"]
+
+    def visit(routes: Any) -> None:
+        for route in routes:
+            candidates = getattr(route, "effective_candidates", None)
+            if callable(candidates):
+                visit(candidates())
+                visit(route.effective_low_priority_routes())
+                continue
+            regex = getattr(route, "path_regex", None)
+            if regex is not None and regex.match(path):
+                methods.update(getattr(route, "methods", None) or ())
+            elif regex is None and hasattr(route, "matches"):
+                match, _ = route.matches(request.scope)
+                if match != Match.NONE:
+                    methods.update(getattr(route, "methods", None) or ())
+
+    visit(request.app.router.routes)
+    if "GET" in methods:
+        methods.add("HEAD")
+    return sorted(methods)
 
 
 async def _unexpected_handler(request: Request, exc: Exception) -> Response:
@@ -212,6 +339,85 @@ async def _numerical_handler(request: Request, exc: Exception) -> Response:
         "shorter range.",
         [entry],
     )
+
+
+def refuse_undeclared_query(request: Request) -> None:
+    """App-wide dependency: an endpoint that declares no query parameter refuses any.
+
+    Endpoints with parameters refuse unknown ones through their request models (``extra=
+    "forbid"``) or their own parsing; this covers the rest (catalogs, /health, /errata, …) the
+    same way: a 422 naming each parameter as "not a parameter of this endpoint".
+    """
+    if not request.query_params:
+        return
+    route = request.scope.get("route")
+    dependant = getattr(route, "dependant", None)
+    if dependant is None or not getattr(route, "include_in_schema", False):
+        return
+    if _declares_query(dependant) or "parameters" in (getattr(route, "openapi_extra", None) or {}):
+        return  # checked by the endpoint's model, or the route parses and documents its own
+    raise RequestValidationError(
+        [
+            {"type": "extra_forbidden", "loc": ("query", key), "msg": "unknown", "input": value}
+            for key, value in request.query_params.multi_items()
+        ]
+    )
+
+
+async def enforce_digits_limit(request: Request) -> None:
+    """App-wide dependency: ``digits`` is at most ``DCOSH_MAX_DIGITS`` whatever the precision.
+
+    The OpenAPI document gives that maximum (app.schemas.openapi_document), so the server holds
+    it everywhere, also where float64 ignores the value; the same 422 as the mp check.
+    """
+    limit: int = request.app.state.settings.max_digits
+    values: list[Any] = [
+        value
+        for key, value in request.query_params.multi_items()
+        if key == "digits" or key.endswith(".digits")
+    ]
+    if request.method == "POST" and _is_json(request.headers.get("content-type")):
+        try:
+            body = await request.json()
+        except ValueError:
+            body = None
+        if isinstance(body, dict) and "digits" in body:
+            values.append(body["digits"])
+    for value in values:
+        try:
+            number = float(value)
+        except (TypeError, ValueError):
+            continue  # not a number: the request model names it
+        if isinstance(value, bool) or not math.isfinite(number):
+            continue
+        if number > limit:
+            raise LimitExceededError("digits", f"1 <= digits <= {limit}", json_safe(value))
+
+
+def _declares_query(dependant: Dependant) -> bool:
+    return bool(dependant.query_params) or any(map(_declares_query, dependant.dependencies))
+
+
+class HeadAsGet:
+    """ASGI middleware: HEAD is answered as GET without the body (same status and headers,
+    Content-Length included), wherever GET is served."""
+
+    def __init__(self, app: ASGIApp) -> None:
+        self.app = app
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if scope["type"] != "http" or scope["method"] != "HEAD":
+            await self.app(scope, receive, send)
+            return
+
+        async def without_body(message: Message) -> None:
+            if message["type"] == "http.response.body":
+                if message.get("more_body", False):
+                    return
+                message = {"type": "http.response.body", "body": b"", "more_body": False}
+            await send(message)
+
+        await self.app({**scope, "method": "GET"}, receive, without_body)
 
 
 def install(app: FastAPI) -> None:

@@ -2,25 +2,30 @@
 
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
+from typing import Any
 
 import anyio.to_thread
-from fastapi import FastAPI
+from fastapi import Depends, FastAPI
 from fastapi.middleware.cors import CORSMiddleware
 
 from app import __version__, errors
+from app.compression import Compress
 from app.response_cache import FastPath, ResponseCache
 from app.routers import (
     convergence,
     discretizations,
     docs,
+    errata,
     explorer,
     figures,
     health,
+    problems,
     relations,
     smooth,
     surfaces,
     theorems,
 )
+from app.schemas.openapi_document import refine
 from app.security import SecurityHeaders
 from app.settings import Settings, get_settings
 
@@ -28,13 +33,15 @@ DESCRIPTION = """\
 Every discretization of the hyperbolic cosine (and of the tractrix) from *Discretizations of the
 hyperbolic cosine*, computed from its definition, with the paper's claims checked on the result.
 Each curve response carries `checks`: for every statement, the residual, the tolerance that fits
-the precision, the verdict and, where the printed formula is wrong, the erratum
-(docs/errata.md).
+the precision, the verdict and, where the printed formula is wrong, the erratum (its page:
+GET /errata/{id}).
 
 Conventions: indices are the paper's; Δ²y_i = y_{i+2} − 2y_{i+1} + y_i; l_i = |p_{i+1} − p_i|;
 A_i is the signed trapezoid area under the edge p_i p_{i+1}. `precision=mp` computes with
 `digits` significant digits and returns coordinates as decimal strings. Errors are
-`application/problem+json` (RFC 9457) naming the parameter and its constraint.
+`application/problem+json` (RFC 9457) naming the parameter and its constraint; each problem's
+`type` is a page of this service (GET /problems). HEAD is answered wherever GET is. The
+representation is chosen by `format`; `Accept` is ignored except by the errata and problem pages.
 """
 
 TAGS = [
@@ -51,7 +58,8 @@ TAGS = [
     {"name": "figures", "description": "The paper's figures, redrawn from computed data."},
     {"name": "surfaces", "description": "Catenoids, pseudosphere and Gauss images as meshes."},
     {"name": "smooth", "description": "Smooth references of Section 2: catenary and tractrix."},
-    {"name": "service", "description": "Health."},
+    {"name": "errata", "description": "The paper's printed formulas found wrong (docs/errata.md)."},
+    {"name": "service", "description": "Health, and the problem types of error responses."},
 ]
 
 
@@ -73,6 +81,10 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         openapi_tags=TAGS,
         docs_url=None,  # served by app.routers.docs with self-hosted scripts
         redoc_url=None,
+        dependencies=[
+            Depends(errors.refuse_undeclared_query),
+            Depends(errors.enforce_digits_limit),
+        ],
     )
     app.state.settings = settings or get_settings()
     app.state.response_cache = ResponseCache(
@@ -80,14 +92,16 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     )
     # innermost: cached answers still pass CORS and the security headers
     app.add_middleware(FastPath, cache=app.state.response_cache, settings=app.state.settings)
+    app.add_middleware(Compress, settings=app.state.settings)  # what the cache did not compress
     app.add_middleware(
         CORSMiddleware,
         allow_origins=app.state.settings.cors_origins,
-        allow_methods=["GET", "POST"],
+        allow_methods=["GET", "HEAD", "POST"],
         allow_headers=["Content-Type", "If-None-Match"],
         expose_headers=["ETag", "X-First-Index"],
     )
     app.add_middleware(SecurityHeaders)
+    app.add_middleware(errors.HeadAsGet)  # outermost: HEAD is GET everywhere inside
     errors.install(app)
     app.include_router(health.router)
     app.include_router(discretizations.router)
@@ -97,8 +111,18 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.include_router(relations.router)
     app.include_router(convergence.router)
     app.include_router(figures.router)
+    app.include_router(errata.router)
+    app.include_router(problems.router)
     explorer.install(app)
     docs.install(app)
+    generate = app.openapi
+
+    def openapi() -> dict[str, Any]:
+        if app.openapi_schema is None:
+            app.openapi_schema = refine(generate(), app.state.settings)
+        return app.openapi_schema
+
+    app.openapi = openapi  # type: ignore[method-assign]
     return app
 
 

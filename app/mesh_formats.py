@@ -1,9 +1,12 @@
-"""Mesh files written with numpy and struct only: OBJ, binary PLY and glTF 2.0 binary (GLB).
+"""Mesh files written with numpy and struct only: OBJ, PLY, VTU and glTF 2.0 binary (GLB).
 
 - **OBJ** (text): ``v x y z`` lines and ``f a b c d`` quads (1-based), the quads kept. OBJ has no
   per-face scalars, so K and H are not in it (they are in PLY, GLB and JSON).
-- **PLY** (binary_little_endian 1.0): vertex x, y, z as float64; face ``vertex_indices``
-  (uchar count, int32 indices) with float64 properties ``K``, ``H`` and ``planarity``.
+- **PLY** (ascii 1.0): vertex x, y, z as float64; face ``vertex_indices`` (uchar count, int
+  indices) with float64 properties ``K``, ``H`` and ``planarity`` (meshio, trimesh and plyfile
+  read them).
+- **VTU** (VTK XML UnstructuredGrid, ParaView's format): float64 points, quad cells, ``K``,
+  ``H`` and ``planarity`` as float64 cell data.
 - **GLB** (glTF 2.0 binary): triangles (each quad split along its diagonal v0 v2), float32.
   Every face has its own four vertices so that per-face values stay constant on it: attributes
   POSITION, NORMAL (the face's unit normal) and the custom attributes ``_K`` and ``_H`` (SCALAR
@@ -13,6 +16,7 @@
 
 from __future__ import annotations
 
+import base64
 import json
 import struct
 from typing import Any
@@ -53,8 +57,14 @@ def ply_bytes(
     face_values: dict[str, np.ndarray[Any, np.dtype[np.float64]]],
     comments: list[str],
 ) -> bytes:
-    """Binary little-endian PLY with float64 vertices and float64 per-face properties."""
-    header = ["ply", "format binary_little_endian 1.0"]
+    """ASCII PLY: float64 vertices, quad faces with float64 per-face properties (K, H, …).
+
+    ASCII rather than binary because meshio's binary PLY reader takes a face element's scalar
+    properties as stored after all of its lists (PLY stores them row by row), so it cannot read
+    K and H from a binary file; every reader (meshio, trimesh, plyfile) reads them from ASCII.
+    Numbers are written with ``repr``: they read back bit for bit.
+    """
+    header = ["ply", "format ascii 1.0"]
     header += [f"comment {c}" for c in comments]
     header += [
         f"element vertex {len(vertices)}",
@@ -66,16 +76,69 @@ def ply_bytes(
     ]
     header += [f"property double {name}" for name in face_values]
     header.append("end_header")
-    record = np.dtype(
-        [("count", "u1"), ("indices", "<i4", (4,))] + [(name, "<f8") for name in face_values]
+    lines = ["\n".join(header)]
+    points = np.asarray(vertices, dtype=np.float64).reshape(-1).tolist()
+    lines.append(("{!r} {!r} {!r}\n" * len(vertices)).format(*points).rstrip("\n"))
+    columns = [np.asarray(faces, dtype=np.int64).tolist()]
+    columns += [np.asarray(v, dtype=np.float64).tolist() for v in face_values.values()]
+    rows = []
+    for face, *scalars in zip(*columns, strict=True):
+        rows.append(" ".join(["4", *map(str, face), *map(repr, scalars)]))
+    lines.append("\n".join(rows))
+    return ("\n".join(line for line in lines if line) + "\n").encode("ascii")
+
+
+VTK_QUAD = 9
+
+
+def _vtu_array(name: str, data: np.ndarray[Any, Any], vtk_type: str, components: int) -> str:
+    """A binary DataArray: base64 of a UInt64 byte count, then the raw little-endian data."""
+    raw = np.ascontiguousarray(data).tobytes()
+    encoded = base64.b64encode(struct.pack("<Q", len(raw)) + raw).decode("ascii")
+    # scalars without NumberOfComponents: readers then give them as a flat (n,) array
+    components_attribute = f' NumberOfComponents="{components}"' if components > 1 else ""
+    return (
+        f'<DataArray type="{vtk_type}" Name="{name}"{components_attribute} '
+        f'format="binary">{encoded}</DataArray>'
     )
-    rows = np.empty(len(faces), dtype=record)
-    rows["count"] = 4
-    rows["indices"] = faces
-    for name, values in face_values.items():
-        rows[name] = values
-    body = np.ascontiguousarray(vertices, dtype="<f8").tobytes() + rows.tobytes()
-    return ("\n".join(header) + "\n").encode("ascii") + body
+
+
+def vtu_bytes(
+    vertices: np.ndarray[Any, np.dtype[np.float64]],
+    faces: np.ndarray[Any, np.dtype[np.int64]],
+    face_values: dict[str, np.ndarray[Any, np.dtype[np.float64]]],
+    comments: list[str],
+) -> bytes:
+    """VTK XML UnstructuredGrid (.vtu), ParaView's own format: float64 points, quad cells,
+    every face value (K, H, planarity) as float64 cell data. Binary arrays (base64 with a
+    UInt64 length header), no compression."""
+    count = len(faces)
+    connectivity = np.asarray(faces, dtype="<i8").reshape(-1)
+    offsets = 4 * np.arange(1, count + 1, dtype="<i8")
+    types = np.full(count, VTK_QUAD, dtype="u1")
+    cell_data = "".join(
+        _vtu_array(name, np.asarray(values, dtype="<f8"), "Float64", 1)
+        for name, values in face_values.items()
+    )
+    note = "".join(f"<!-- {c.replace('--', '-')} -->" for c in comments)
+    text = (
+        '<?xml version="1.0"?>'
+        f"{note}"
+        '<VTKFile type="UnstructuredGrid" version="1.0" byte_order="LittleEndian" '
+        'header_type="UInt64">'
+        "<UnstructuredGrid>"
+        f'<Piece NumberOfPoints="{len(vertices)}" NumberOfCells="{count}">'
+        "<Points>"
+        + _vtu_array("Points", np.asarray(vertices, dtype="<f8"), "Float64", 3)
+        + "</Points><Cells>"
+        + _vtu_array("connectivity", connectivity, "Int64", 1)
+        + _vtu_array("offsets", offsets, "Int64", 1)
+        + _vtu_array("types", types, "UInt8", 1)
+        + "</Cells>"
+        + f'<CellData Scalars="{next(iter(face_values), "")}">{cell_data}</CellData>'
+        + "</Piece></UnstructuredGrid></VTKFile>\n"
+    )
+    return text.encode("ascii")
 
 
 def _float32(name: str, values: np.ndarray[Any, np.dtype[np.float64]]) -> np.ndarray[Any, Any]:

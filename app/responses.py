@@ -33,6 +33,7 @@ JSON_OPTIONS = orjson.OPT_SERIALIZE_NUMPY
 JSON_MEDIA_TYPE = "application/json"
 CSV_MEDIA_TYPE = "text/csv; charset=utf-8"
 NPY_MEDIA_TYPE = "application/x-npy"
+NPZ_MEDIA_TYPE = "application/x-npz"
 
 
 class JSONBytesResponse(Response):
@@ -169,6 +170,52 @@ def curve_npy(curve: Curve) -> tuple[bytes, int]:
     return buffer.getvalue(), int(indices[0]) if len(indices) else 0
 
 
+def curve_npz(curve: Curve) -> bytes:
+    """Every polyline of the curve (``p`` and each companion) with its indices, as one NumPy
+    .npz: ``<name>_indices`` (n,) int64 and ``<name>_vertices`` (n, 2) float64. float64 only."""
+    ensure_finite(curve)
+    arrays: dict[str, np.ndarray[Any, Any]] = {}
+    for name, polyline in [("p", curve.polygon), *curve.companions.items()]:
+        points = coordinates(curve.arithmetic, polyline.vertices)
+        if not isinstance(points, np.ndarray):
+            raise NotRepresentableError("format", "format=npz needs precision=float64", "npz")
+        arrays[f"{name}_indices"] = np.asarray(polyline.indices, dtype="<i8")
+        arrays[f"{name}_vertices"] = points.astype("<f8", copy=False)
+    buffer = io.BytesIO()
+    np.savez(buffer, allow_pickle=False, **arrays)
+    return buffer.getvalue()
+
+
+def checks_csv(checks: list[Check]) -> bytes:
+    """One row per check: id,reference,residual,tolerance,holds,erratum,printed_residual
+    (empty cells for null; references quoted)."""
+
+    def cell(value: Any) -> str:
+        if value is None:
+            return ""
+        if isinstance(value, bool):
+            return "true" if value else "false"
+        if isinstance(value, float):
+            return repr(value)
+        text = str(value)
+        return '"' + text.replace('"', '""') + '"' if any(c in text for c in ',"\n') else text
+
+    lines = ["id,reference,residual,tolerance,holds,erratum,printed_residual"]
+    for check in checks:
+        erratum = check.erratum
+        row = [
+            check.id,
+            check.reference,
+            check.residual,
+            check.tolerance,
+            check.holds,
+            None if erratum is None else erratum.id,
+            None if erratum is None else erratum.printed_residual,
+        ]
+        lines.append(",".join(cell(v) for v in row))
+    return ("\n".join(lines) + "\n").encode()
+
+
 def cached(
     request: Request, key: str, settings: Settings, build: Callable[[], Response]
 ) -> Response:
@@ -181,8 +228,11 @@ def cached(
     (``app.response_cache``).
     """
     is_get = request.method == "GET"
-    if is_get:
-        answer = not_modified(etag_for(key), request.headers.get("if-none-match"), settings)
+    if_none_match = request.headers.get("if-none-match") if is_get else None
+    # `*` matches any current representation: only known once the answer is a 200
+    any_tag = if_none_match is not None and if_none_match.strip() == "*"
+    if if_none_match is not None and not any_tag:
+        answer = not_modified(etag_for(key), if_none_match, settings)
         if answer is not None:
             return answer.response()
     cache: ResponseCache = request.app.state.response_cache
@@ -197,6 +247,10 @@ def cached(
         cache.put(key, entry)
     if is_get and key in cache:
         cache.alias((request.url.path, request.scope["query_string"]), key)
+    if any_tag:
+        answer = not_modified(etag_for(key), if_none_match, settings)
+        if answer is not None:
+            return answer.response()
     accept = request.headers.get("accept-encoding")
     return reply(cache, key, entry, settings, is_get, accept).response()
 

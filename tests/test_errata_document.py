@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from app.geometry.checks import ERRATA_DOCUMENT, Check
+from app.geometry.checks import ERRATA_DOCUMENT, ERRATA_PAGE, Check
 from app.geometry.precision import Float64
 from app.registry import DISCRETIZATIONS, SMOOTH, STATEMENTS, STUDIES
 
@@ -118,5 +118,7 @@ def test_erratum_links_in_responses_resolve(client) -> None:  # type: ignore[no-
     links += [c["erratum"]["link"] for c in body["checks"] if c["erratum"]]
     assert links
     for link in links:
-        document, anchor = link.split("#")
-        assert document == ERRATA_DOCUMENT and anchor in anchors(), link
+        prefix, erratum_id = link.rsplit("/", 1)
+        assert prefix == ERRATA_PAGE and erratum_id.lower() in anchors(), link
+        page = client.get(link)
+        assert page.status_code == 200 and page.json()["id"] == erratum_id, link

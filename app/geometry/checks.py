@@ -16,6 +16,8 @@ import numpy as np
 from app.geometry.precision import Arithmetic, Array
 
 ERRATA_DOCUMENT = "docs/errata.md"
+#: Where the service serves each entry of ERRATA_DOCUMENT (GET /errata/{id}).
+ERRATA_PAGE = "/errata"
 
 
 @dataclass(frozen=True)
@@ -47,7 +49,7 @@ class Erratum:
 
     @property
     def link(self) -> str:
-        return f"{ERRATA_DOCUMENT}#{self.id.lower()}"
+        return f"{ERRATA_PAGE}/{self.id}"
 
 
 @dataclass(frozen=True)

@@ -21,10 +21,13 @@ from app.rendering.curves import SVG_MEDIA_TYPE, curve_svg
 from app.responses import (
     CSV_MEDIA_TYPE,
     NPY_MEDIA_TYPE,
+    NPZ_MEDIA_TYPE,
     JSONBytesResponse,
+    checks_csv,
     curve_csv,
     curve_document,
     curve_npy,
+    curve_npz,
     encode_json,
 )
 from app.schemas.common import PROBLEM_RESPONSES, CurveQuery
@@ -45,6 +48,7 @@ CURVE_RESPONSES: dict[int | str, dict[str, Any]] = {
             },
             "image/svg+xml": {"schema": {"type": "string"}},
             NPY_MEDIA_TYPE: {"schema": {"type": "string", "format": "binary"}},
+            NPZ_MEDIA_TYPE: {"schema": {"type": "string", "format": "binary"}},
         },
         "description": "The curve as JSON (default), CSV (`format=csv`), SVG (`format=svg`: p "
         "and its companions with axes, legend and equal scales) or NumPy .npy (`format=npy`: "
@@ -212,4 +216,8 @@ def curve_response(curve: Curve, response_format: str) -> Response:
         return Response(body, media_type=NPY_MEDIA_TYPE, headers={"X-First-Index": str(first)})
     if response_format == "svg":
         return Response(curve_svg(curve), media_type=SVG_MEDIA_TYPE, headers=SVG_HEADERS)
+    if response_format == "npz":
+        return Response(curve_npz(curve), media_type=NPZ_MEDIA_TYPE)
+    if response_format == "checks-csv":
+        return Response(checks_csv(curve.checks), media_type=CSV_MEDIA_TYPE)
     return JSONBytesResponse(encode_json(curve_document(curve)))

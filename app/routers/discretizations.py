@@ -35,7 +35,7 @@ def parameter_infos(model: type[StrictModel]) -> list[ParameterInfo]:
     for name, schema in properties.items():
         schema = dict(schema)
         description = schema.pop("description", "")
-        domain = schema.pop("domain", None)
+        domain = schema.pop("x-domain", None)
         schema.pop("title", None)
         infos.append(
             ParameterInfo(

@@ -44,7 +44,7 @@ def documented_parameters() -> list[dict[str, Any]]:
             schema = dict(schema)
             description = schema.pop("description", "")
             schema.pop("title", None)
-            schema.pop("domain", None)
+            schema.pop("x-domain", None)
             if owner != "surface":
                 description = f"Parameter of the discretization ({owner}: {description})"
             parameters.append(

@@ -2,11 +2,10 @@
 
 from __future__ import annotations
 
-from typing import Any
-
 from pydantic import BaseModel, Field
 
-from app.schemas.curve import CheckModel, PrecisionInfo
+from app.schemas.common import JSONValue
+from app.schemas.curve import CheckModel, ParameterValue, PrecisionInfo
 
 
 class ParameterInfo(BaseModel):
@@ -14,8 +13,10 @@ class ParameterInfo(BaseModel):
     description: str = Field(description="What it is, in the paper's notation.")
     kind: str = Field(description="`paper` (the paper's symbols and index range) or `common`.")
     domain: str | None = Field(None, description="The admissible values, e.g. `0 < d < h`.")
-    default: Any = Field(None, description="Default value.")
-    json_schema: dict[str, Any] = Field(description="JSON Schema of the value (type, bounds).")
+    default: JSONValue = Field(None, description="Default value.")
+    json_schema: dict[str, JSONValue] = Field(
+        description="JSON Schema of the value (type, bounds)."
+    )
     domain_tex: str | None = Field(None, description="`domain` as TeX, where it has a formula.")
 
 
@@ -116,7 +117,9 @@ class TheoremResponse(BaseModel):
     surface: str | None = Field(
         None, description="The surface whose meshes it was checked on (GET /surfaces/{id})."
     )
-    parameters: dict[str, Any] = Field(description="Effective parameters of that computation.")
+    parameters: dict[str, ParameterValue] = Field(
+        description="Effective parameters of that computation."
+    )
     precision: PrecisionInfo
     conditions: list[str] = Field(
         default_factory=list, description="Hypotheses the text leaves implicit (see /theorems)."

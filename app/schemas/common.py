@@ -13,10 +13,19 @@ from pydantic import (
     ValidationInfo,
     ValidatorFunctionWrapHandler,
     field_validator,
+    model_validator,
 )
 from pydantic_core import PydanticCustomError
+from typing_extensions import TypeAliasType
 
 from app.geometry.precision import ExactReal
+
+JSONValue = TypeAliasType(
+    "JSONValue",
+    "bool | int | float | str | list[JSONValue] | dict[str, JSONValue] | None",
+)
+"""Any JSON value (typed, so that generated clients see JSON rather than `unknown`)."""
+
 
 #: Nonzero real parameters are at least this large in magnitude: the checks square coordinates,
 #: and squares of smaller numbers underflow float64 (subnormal inputs are refused, not garbled).
@@ -152,14 +161,17 @@ class CurveQuery(StrictModel):
         description="Significant digits for precision=mp (at most DCOSH_MAX_DIGITS, default "
         "1000; (digits + 200) × steps is bounded by DCOSH_MAX_MP_WORK). Ignored in float64.",
     )
-    format: Literal["json", "csv", "svg", "npy"] = Field(
+    format: Literal["json", "csv", "svg", "npy", "npz", "checks-csv"] = Field(
         "json",
         description="`json` (default), `csv` (columns curve,index,x,y: the polygon `p` "
         "followed by each companion), `svg` (a self-contained picture of `p` and its "
         "companions with axes and a legend, equal scales; at most DCOSH_MAX_SVG_VERTICES "
         "vertices per polygon) or `npy` (binary, for large curves: the vertices of `p` as one "
         "(n, 2) little-endian float64 array in NumPy's .npy format, row k holding index "
-        "`X-First-Index` + k; precision=float64 only; no companions or checks).",
+        "`X-First-Index` + k; precision=float64 only; no companions or checks), `npz` "
+        "(NumPy's .npz: for p and every companion `<name>_indices` (int64) and "
+        "`<name>_vertices` ((n, 2) float64); precision=float64 only) or `checks-csv` (one row "
+        "per check: id,reference,residual,tolerance,holds,erratum,printed_residual).",
     )
     detail: bool = Field(
         False, description="Fill each check's `per_index` with the residual at every index."
@@ -181,11 +193,12 @@ class CurveQuery(StrictModel):
     @classmethod
     def _binary_is_float64(cls, value: str, info: ValidationInfo) -> str:
         """format=npy holds float64 numbers; mp coordinates are decimal strings."""
-        if value == "npy" and info.data.get("precision") == "mp":
+        if value in ("npy", "npz") and info.data.get("precision") == "mp":
             raise PydanticCustomError(
                 "format_precision",
-                "format=npy needs precision=float64 (mp coordinates are decimal strings; "
+                "format={format} needs precision=float64 (mp coordinates are decimal strings; "
                 "use format=json or csv)",
+                {"format": value},
             )
         return value
 
@@ -202,7 +215,27 @@ def strict_body(model: type[CurveQuery]) -> type[CurveQuery]:
     """
     name = model.__name__.removesuffix("Query") + "Body"
     config = ConfigDict(**{**model.model_config, "strict": True})
-    namespace = {"model_config": config, "__doc__": model.__doc__, "__module__": model.__module__}
+    integers = frozenset(
+        field for field, info in model.model_fields.items() if info.annotation in (int, int | None)
+    )
+
+    def integral_floats(cls: type[BaseModel], data: Any) -> Any:
+        """JSON has one number type: 1.0 is the integer 1 (JSON Schema's `integer` says so)."""
+        if not isinstance(data, dict):
+            return data
+        return {
+            key: int(value)
+            if key in integers and isinstance(value, float) and value.is_integer()
+            else value
+            for key, value in data.items()
+        }
+
+    namespace = {
+        "model_config": config,
+        "__doc__": model.__doc__,
+        "__module__": model.__module__,
+        "_integral_floats": model_validator(mode="before")(classmethod(integral_floats)),  # type: ignore[arg-type]
+    }
     return type(name, (model,), namespace)
 
 
@@ -211,7 +244,7 @@ class ProblemParameterError(BaseModel):
 
     parameter: str = Field(description="Public name of the parameter, e.g. `d` or `i_max`.")
     constraint: str = Field(description="The condition it must satisfy, e.g. `0 < d < h`.")
-    value: Any = Field(None, description="The value received (as sent, or null if absent).")
+    value: JSONValue = Field(None, description="The value received (as sent, or null if absent).")
 
 
 class Problem(BaseModel):

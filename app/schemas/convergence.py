@@ -8,7 +8,7 @@ from pydantic import BaseModel, Field
 
 from app.schemas.catalog import ParameterInfo
 from app.schemas.common import StrictModel
-from app.schemas.curve import CheckModel, PrecisionInfo
+from app.schemas.curve import CheckModel, ParameterValue, PrecisionInfo
 
 
 class StudyQuery(StrictModel):
@@ -45,21 +45,21 @@ class TractrixStudyQuery(StudyQuery):
         ge=1e-50,
         le=1e50,
         description="Stick length h (> 0): the limits are h cosh(x/h) and the tractrix of h.",
-        json_schema_extra={"domain": "h > 0"},
+        json_schema_extra={"x-domain": "h > 0"},
     )
     d0: float = Field(
         0.2,
         gt=0,
         le=1e50,
         description="Coarsest step: level k uses d = d0/2^k. 0 < d0 < h.",
-        json_schema_extra={"domain": "0 < d0 < h"},
+        json_schema_extra={"x-domain": "0 < d0 < h"},
     )
     levels: int = Field(
         8,
         ge=2,
         le=64,
         description="Number of refinement levels (at most DCOSH_MAX_CONVERGENCE_LEVELS).",
-        json_schema_extra={"domain": "2 <= levels"},
+        json_schema_extra={"x-domain": "2 <= levels"},
     )
     x_max: float = Field(
         2.0,
@@ -67,7 +67,7 @@ class TractrixStudyQuery(StudyQuery):
         le=1e52,
         description="The compact set is |x| <= x_max (x: the curves' parameter); "
         "d0 <= x_max <= 20h.",
-        json_schema_extra={"domain": "d0 <= x_max <= 20h"},
+        json_schema_extra={"x-domain": "d0 <= x_max <= 20h"},
     )
     samples: int = Field(
         401,
@@ -75,7 +75,7 @@ class TractrixStudyQuery(StudyQuery):
         le=10_000_000,
         description="Points of a uniform grid of [−x_max, x_max] where the smooth interpolating "
         "curve is measured, per level (at most DCOSH_MAX_CONVERGENCE_SAMPLES).",
-        json_schema_extra={"domain": "samples >= 2"},
+        json_schema_extra={"x-domain": "samples >= 2"},
     )
 
 
@@ -87,14 +87,14 @@ class CatenoidStudyQuery(StudyQuery):
         ge=1,
         le=1_000_000,
         description="Coarsest j: level k uses j = j0·2^k (s_i^j of Example 12 and Remark 13).",
-        json_schema_extra={"domain": "j0 >= 1"},
+        json_schema_extra={"x-domain": "j0 >= 1"},
     )
     levels: int = Field(
         7,
         ge=2,
         le=64,
         description="Number of refinement levels (at most DCOSH_MAX_CONVERGENCE_LEVELS).",
-        json_schema_extra={"domain": "2 <= levels"},
+        json_schema_extra={"x-domain": "2 <= levels"},
     )
     i_min: int = Field(
         -1,
@@ -102,14 +102,14 @@ class CatenoidStudyQuery(StudyQuery):
         le=1_000_000,
         description="Start of the compact set in indices of level 0: t = i/j from i_min/j0 "
         "(level k uses 2^k i_min). Example 12 uses its part i >= 0.",
-        json_schema_extra={"domain": "−j0/2 < i_min < i_max (Remark 13: i > −j/2)"},
+        json_schema_extra={"x-domain": "−j0/2 < i_min < i_max (Remark 13: i > −j/2)"},
     )
     i_max: int = Field(
         8,
         ge=-1_000_000,
         le=1_000_000,
         description="End of the compact set in indices of level 0: t = i/j up to i_max/j0.",
-        json_schema_extra={"domain": "i_max >= 1"},
+        json_schema_extra={"x-domain": "i_max >= 1"},
     )
 
 
@@ -148,7 +148,9 @@ class ConvergenceResponse(BaseModel):
     summary: str
     refinement: str = Field(description="How the levels refine and the compact set.")
     step_name: str = Field(description="The refinement parameter (the fit's abscissa).")
-    parameters: dict[str, Any] = Field(description="Effective parameters, defaults filled in.")
+    parameters: dict[str, ParameterValue] = Field(
+        description="Effective parameters, defaults filled in."
+    )
     precision: PrecisionInfo
     levels: list[LevelModel]
     measures: list[MeasureModel]

@@ -6,12 +6,15 @@ encodes responses directly with orjson (numpy arrays never pass through pydantic
 
 from __future__ import annotations
 
-from typing import Any, Literal
+from typing import Literal
 
 from pydantic import BaseModel, Field
 
 Coordinate = float | str
 """A JSON number in float64 mode, a decimal string with `digits` digits in mp mode."""
+
+ParameterValue = bool | int | float | str | list[int] | list[float] | list[str] | None
+"""An effective parameter as the response repeats it (numbers, ids, sequences)."""
 
 
 class PrecisionInfo(BaseModel):
@@ -20,9 +23,17 @@ class PrecisionInfo(BaseModel):
 
 
 class PolylineModel(BaseModel):
+    """A companion polygon in float64: coordinates are JSON numbers."""
+
     description: str = Field("", description="What this companion is.")
     indices: list[int] = Field(description="Paper indices i, aligned with `vertices`.")
-    vertices: list[tuple[Coordinate, Coordinate]] = Field(description="Points (x, y).")
+    vertices: list[tuple[float, float]] = Field(description="Points (x, y).")
+
+
+class PolylineModelMP(PolylineModel):
+    """A companion polygon in mp: coordinates are decimal strings."""
+
+    vertices: list[tuple[str, str]] = Field(description="Points (x, y), decimal strings.")  # type: ignore[assignment]
 
 
 class ErratumModel(BaseModel):
@@ -32,7 +43,10 @@ class ErratumModel(BaseModel):
     printed_residual: float | None = Field(
         description="The same residual for the printed formula (large: the print is wrong)."
     )
-    link: str = Field(description="Where the evidence is written down.")
+    link: str = Field(
+        description="The erratum's page on this service (GET /errata/{id}): the printed and "
+        "corrected forms with the evidence."
+    )
 
 
 class PerIndexModel(BaseModel):
@@ -53,15 +67,31 @@ class CheckModel(BaseModel):
 
 
 class CurveResponse(BaseModel):
-    """One discretization: `vertices` is always the discrete hyperbolic cosine p_i."""
+    """One discretization in float64 (`precision.mode` = `float64`): `vertices` is always the
+    discrete hyperbolic cosine p_i, coordinates and constants are JSON numbers."""
 
     id: str
     title: str
     reference: str
-    parameters: dict[str, Any] = Field(description="Effective parameters, defaults filled in.")
+    parameters: dict[str, ParameterValue] = Field(
+        description="Effective parameters, defaults filled in."
+    )
     precision: PrecisionInfo
     indices: list[int] = Field(description="Paper indices i of `vertices`.")
-    vertices: list[tuple[Coordinate, Coordinate]] = Field(description="p_i = (x, y).")
+    vertices: list[tuple[float, float]] = Field(description="p_i = (x, y).")
     companions: dict[str, PolylineModel] = Field(description="Polygons built alongside p.")
-    constants: dict[str, Coordinate] = Field(description="Fitted constants (c of D1, D3, (2)).")
+    constants: dict[str, float] = Field(description="Fitted constants (c of D1, D3, (2)).")
     checks: list[CheckModel] = Field(description="Every statement checked on this polygon.")
+
+
+class CurveResponseMP(CurveResponse):
+    """One discretization in mp (`precision.mode` = `mp`): as `CurveResponse`, with coordinates
+    and constants as decimal strings of `precision.digits` significant digits."""
+
+    vertices: list[tuple[str, str]] = Field(description="p_i = (x, y), decimal strings.")  # type: ignore[assignment]
+    companions: dict[str, PolylineModelMP] = Field(  # type: ignore[assignment]
+        description="Polygons built alongside p."
+    )
+    constants: dict[str, str] = Field(  # type: ignore[assignment]
+        description="Fitted constants (c of D1, D3, (2)), decimal strings."
+    )

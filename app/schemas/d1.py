@@ -41,28 +41,28 @@ class D1Query(CurveQuery):
         lt=1,
         description="The constant c of (D1), 0 < c < 1 (c = delta/(2T)·weight per length for "
         "sticks under horizontal tension T).",
-        json_schema_extra={"domain": "0 < c < 1"},
+        json_schema_extra={"x-domain": "0 < c < 1"},
     )
     delta: float = Field(
         0.2,
         gt=0,
         le=1e100,
         description="Constant x-spacing of the vertices, p_i^x = i·delta; delta > 0.",
-        json_schema_extra={"domain": "delta > 0"},
+        json_schema_extra={"x-domain": "delta > 0"},
     )
     y0: float = Field(
         1.0,
         ge=-1e100,
         le=1e100,
         description="Height of p_0 = (0, y0).",
-        json_schema_extra={"domain": "any real number"},
+        json_schema_extra={"x-domain": "any real number"},
     )
     y1: float = Field(
         1.0,
         ge=-1e100,
         le=1e100,
         description="Height of p_1 = (delta, y1).",
-        json_schema_extra={"domain": "any real number"},
+        json_schema_extra={"x-domain": "any real number"},
     )
     i_min: int = Field(-10, ge=-10_000_000, le=10_000_000, description="First index i (inclusive).")
     i_max: int = Field(

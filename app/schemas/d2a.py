@@ -59,7 +59,7 @@ ConformalStart = Annotated[
         gt=0,
         le=1e50,
         description="f_0, the conformal point of index 0 on the y-axis; 0 < f0 < f1.",
-        json_schema_extra={"domain": "0 < f0 < f1"},
+        json_schema_extra={"x-domain": "0 < f0 < f1"},
     ),
 ]
 ConformalNext = Annotated[
@@ -68,7 +68,7 @@ ConformalNext = Annotated[
         gt=0,
         le=1e50,
         description="f_1, the next conformal point; f_i = f_0 (f_1/f_0)^i. 0 < f0 < f1.",
-        json_schema_extra={"domain": "0 < f0 < f1"},
+        json_schema_extra={"x-domain": "0 < f0 < f1"},
     ),
 ]
 QuadStartHeight = Annotated[
@@ -78,7 +78,7 @@ QuadStartHeight = Annotated[
         le=1e100,
         description="Start height: p_0 = (0, r). Default (absent): r* = −f_1(1 + f_0²)/(2(f_1 − "
         "f_0)²), the only value for which Theorem 1 holds.",
-        json_schema_extra={"domain": "any real; Theorem 1 holds only at r*"},
+        json_schema_extra={"x-domain": "any real; Theorem 1 holds only at r*"},
     ),
 ]
 HexStart = Annotated[
@@ -87,7 +87,7 @@ HexStart = Annotated[
         gt=0,
         le=1e50,
         description="a = f_0, the even conformal point of index 0; 0 < a < b.",
-        json_schema_extra={"domain": "0 < a < b"},
+        json_schema_extra={"x-domain": "0 < a < b"},
     ),
 ]
 HexNext = Annotated[
@@ -96,7 +96,7 @@ HexNext = Annotated[
         gt=0,
         le=1e50,
         description="b = f_2; the even points are f_{2k} = a (b/a)^k. 0 < a < b.",
-        json_schema_extra={"domain": "0 < a < b"},
+        json_schema_extra={"x-domain": "0 < a < b"},
     ),
 ]
 HexWeight = Annotated[
@@ -106,7 +106,7 @@ HexWeight = Annotated[
         gt=0,
         lt=1,
         description="λ of the odd points f_i = λ f_{i+1} + (1 − λ) f_{i−1}; 0 < lambda < 1.",
-        json_schema_extra={"domain": "0 < lambda < 1"},
+        json_schema_extra={"x-domain": "0 < lambda < 1"},
     ),
 ]
 HexStartHeight = Annotated[
@@ -116,7 +116,7 @@ HexStartHeight = Annotated[
         le=1e100,
         description="Start height: p_0 = (0, r). Default (absent): r* of the proof of Theorem 2, "
         "the only value for which Theorem 2 holds.",
-        json_schema_extra={"domain": "any real; Theorem 2 holds only at r*"},
+        json_schema_extra={"x-domain": "any real; Theorem 2 holds only at r*"},
     ),
 ]
 

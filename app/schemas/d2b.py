@@ -46,7 +46,7 @@ SequenceName = Annotated[
     Field(
         description="`example-12`, `remark-13` (named sequences with refinement `j`) or `custom` "
         "(the numbers `s`).",
-        json_schema_extra={"domain": "example-12 | remark-13 | custom"},
+        json_schema_extra={"x-domain": "example-12 | remark-13 | custom"},
     ),
 ]
 Refinement = Annotated[int, Field(ge=1, le=100_000)]
@@ -60,14 +60,14 @@ class D2bQuery(CurveQuery):
     j: Refinement | None = Field(
         None,
         description=f"Refinement j of a named sequence (default {DEFAULT_J}); not with custom.",
-        json_schema_extra={"domain": "j >= 1"},
+        json_schema_extra={"x-domain": "j >= 1"},
     )
     s: Annotated[list[float] | None, BeforeValidator(_numbers)] = Field(
         None,
         max_length=MAX_SEQUENCE_LENGTH,
         description="sequence=custom only: s_{i_min}, s_{i_min+1}, …; strictly increasing, "
         "|s_i| < 1, s_0 = 0. Comma-separated in a GET query.",
-        json_schema_extra={"domain": "strictly increasing, |s_i| < 1, s_0 = 0"},
+        json_schema_extra={"x-domain": "strictly increasing, |s_i| < 1, s_0 = 0"},
     )
     i_min: int | None = Field(
         None,

@@ -41,27 +41,27 @@ class D3Query(CurveQuery):
         gt=0,
         le=1e100,
         description="The constant c of (D3): area under each edge = c · its length; c > 0.",
-        json_schema_extra={"domain": "c > 0"},
+        json_schema_extra={"x-domain": "c > 0"},
     )
     delta: float = Field(
         0.2,
         gt=0,
         le=1e100,
         description="Constant x-spacing of the vertices, p_i^x = i·delta; 0 < delta < 2c.",
-        json_schema_extra={"domain": "0 < delta < 2c"},
+        json_schema_extra={"x-domain": "0 < delta < 2c"},
     )
     y0: float = Field(
         1.0,
         ge=-1e100,
         le=1e100,
         description="Height of p_0 = (0, y0); at least √(c² − delta²/4).",
-        json_schema_extra={"domain": "y0 >= √(c² − delta²/4)"},
+        json_schema_extra={"x-domain": "y0 >= √(c² − delta²/4)"},
     )
     branch: Literal["up", "down"] = Field(
         "up",
         description="Which root of the first step's quadratic gives p_1: `up` the larger "
         "(the catenary's argument grows with i), `down` the smaller.",
-        json_schema_extra={"domain": "up or down"},
+        json_schema_extra={"x-domain": "up or down"},
     )
     i_min: int = Field(-10, ge=-10_000_000, le=10_000_000, description="First index i (inclusive).")
     i_max: int = Field(

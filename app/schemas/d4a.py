@@ -43,7 +43,7 @@ SauerStickLength = Annotated[
         gt=0,
         le=1e100,
         description="Stick length h (> 0).",
-        json_schema_extra={"domain": "h > 0"},
+        json_schema_extra={"x-domain": "h > 0"},
     ),
 ]
 SauerStep = Annotated[
@@ -52,7 +52,7 @@ SauerStep = Annotated[
         gt=0,
         le=1e100,
         description="Distance of consecutive tractrix points, |d_{i+1} − d_i| = s; 0 < s < h.",
-        json_schema_extra={"domain": "0 < s < h"},
+        json_schema_extra={"x-domain": "0 < s < h"},
     ),
 ]
 

@@ -35,7 +35,7 @@ StickLength = Annotated[
         gt=0,
         le=1e100,
         description="Stick length h (> 0); also p_1^y when beta0 = π/2.",
-        json_schema_extra={"domain": "h > 0"},
+        json_schema_extra={"x-domain": "h > 0"},
     ),
 ]
 HalfStep = Annotated[
@@ -45,7 +45,7 @@ HalfStep = Annotated[
         le=1e100,
         description="Half the step of the stick's end along the x-axis (x_i = (2di, 0)); "
         "0 < d < h.",
-        json_schema_extra={"domain": "0 < d < h"},
+        json_schema_extra={"x-domain": "0 < d < h"},
     ),
 ]
 StickAngle = Annotated[
@@ -56,7 +56,7 @@ StickAngle = Annotated[
         description="Angle of stick 0 with the positive x-axis, radians, 0 < beta0 < π. The "
         "default (the double nearest π/2) means exactly vertical, also in precision=mp (where "
         "a written angle is the decimal written).",
-        json_schema_extra={"domain": "0 < beta0 < π"},
+        json_schema_extra={"x-domain": "0 < beta0 < π"},
     ),
 ]
 Index = Annotated[int, Field(ge=-10_000_000, le=10_000_000)]

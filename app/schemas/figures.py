@@ -54,7 +54,7 @@ class Figure2Query(FigureQuery):
         le=50,
         description="Number of Nikolaides triangles (x, 0), p(x), d(x) drawn, at samples "
         "spread evenly over the range (the cusp x = 0 skipped).",
-        json_schema_extra={"domain": "0 <= triangles <= 50"},
+        json_schema_extra={"x-domain": "0 <= triangles <= 50"},
     )
 
     def vertex_range(self) -> tuple[int, int]:
@@ -97,7 +97,7 @@ class Figure5Query(FigureQuery):
         le=120,
         description="Quads drawn around the centre (default: as many as fit in one turn, at "
         "most 120). Their angle v is fixed by conformality: sin(v/2) = (f1 − f0)/(2√(f0·f1)).",
-        json_schema_extra={"domain": "1 <= columns <= 120"},
+        json_schema_extra={"x-domain": "1 <= columns <= 120"},
     )
 
 
@@ -117,7 +117,7 @@ class Figure6Query(FigureQuery):
         description="The mesh has 2m rays, π/m apart (every m gives hexagons of multi-ratio −1; "
         "the paper does not state it). Default: the m for which the hexagons are closest to "
         "regular, round(2√3·π/log(b/a)), within 2 .. 60.",
-        json_schema_extra={"domain": "2 <= m <= 60"},
+        json_schema_extra={"x-domain": "2 <= m <= 60"},
     )
 
     def rays(self) -> int:
@@ -152,7 +152,7 @@ class Figure8Query(FigureQuery):
     sequence: Literal["example-12", "remark-13"] = Field(
         "example-12",
         description="`example-12` (s_i = 4i²/(j² + 4i²)) or `remark-13` (s_i = i/(i + j)).",
-        json_schema_extra={"domain": "example-12 | remark-13"},
+        json_schema_extra={"x-domain": "example-12 | remark-13"},
     )
     j: Annotated[list[Annotated[Refinement, Field(le=1000)]], BeforeValidator(_integers)] = Field(
         [1, 2, 5],
@@ -161,14 +161,14 @@ class Figure8Query(FigureQuery):
         description="Refinements j drawn on the right, comma-separated (1 to 6 of them, each "
         "1 .. 1000); the left panels show the first. Each polygon has its default range, "
         "t = i/j from the start of the domain to 2.",
-        json_schema_extra={"domain": "1 to 6 integers, 1 <= j <= 1000"},
+        json_schema_extra={"x-domain": "1 to 6 integers, 1 <= j <= 1000"},
     )
     eps: float = Field(
         0.1,
         gt=0,
         lt=1,
         description="Half-width ε of the neighbourhood drawn around C = {(x, cosh x)}.",
-        json_schema_extra={"domain": "0 < eps < 1"},
+        json_schema_extra={"x-domain": "0 < eps < 1"},
     )
 
     def vertex_range(self) -> tuple[int, int]:

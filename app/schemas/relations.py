@@ -2,11 +2,9 @@
 
 from __future__ import annotations
 
-from typing import Any
-
 from pydantic import BaseModel, Field
 
-from app.schemas.curve import Coordinate, PrecisionInfo
+from app.schemas.curve import Coordinate, ParameterValue, PrecisionInfo
 
 RELATIONS_DESCRIPTION = """\
 Section 4 as a matrix. Rows: every discretization the service computes, at its default
@@ -65,7 +63,9 @@ class RowModel(BaseModel):
     id: str = Field(description="Discretization id.")
     title: str
     reference: str
-    parameters: dict[str, Any] = Field(description="Effective parameters of the polygon.")
+    parameters: dict[str, ParameterValue] = Field(
+        description="Effective parameters of the polygon."
+    )
     url: str = Field(description="The curve request with these parameters.")
     cells: list[CellModel] = Field(description="One per column, in column order.")
 

@@ -33,7 +33,7 @@ Scale = Annotated[
         gt=0,
         le=1e100,
         description="Scale h: the catenary h·cosh(x/h), the tractrix with stick length h.",
-        json_schema_extra={"domain": "h > 0"},
+        json_schema_extra={"x-domain": "h > 0"},
     ),
 ]
 SampleStart = Annotated[

@@ -7,7 +7,7 @@ from typing import Any, Literal
 from pydantic import BaseModel, Field, field_validator
 
 from app.schemas.common import StrictModel, normalized_selection
-from app.schemas.curve import CheckModel, Coordinate, PrecisionInfo
+from app.schemas.curve import CheckModel, Coordinate, ParameterValue, PrecisionInfo
 
 SURFACES_DESCRIPTION = """\
 A discrete surface of revolution (eq. (15)): the meridian polygon of a discretization rotated
@@ -49,7 +49,12 @@ class SurfaceQuery(StrictModel):
         description="Catenoid only: `auto` (the discretization's own Gauss image, else the "
         "circumscribed one) or `circumscribed`.",
     )
-    format: Literal["json", "obj", "ply", "glb"] = Field("json", description="Output format.")
+    format: Literal["json", "obj", "ply", "vtu", "glb"] = Field(
+        "json",
+        description="`json`; `obj` (quads, no per-face values); `ply` (ASCII, float64, K, H "
+        "and planarity as face properties: meshio, trimesh, plyfile); `vtu` (VTK XML, "
+        "ParaView: K, H and planarity as cell data); `glb` (glTF binary, float32, for viewers).",
+    )
     checks: str = Field(
         "all",
         max_length=4096,
@@ -82,7 +87,7 @@ class SurfaceResponse(BaseModel):
     reference: str
     mesh: Literal["surface", "gauss_image"]
     discretization: str
-    parameters: dict[str, Any]
+    parameters: dict[str, ParameterValue]
     precision: PrecisionInfo
     layout: SurfaceLayout
     vertices: list[tuple[Coordinate, Coordinate, Coordinate]]

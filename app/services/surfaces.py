@@ -21,7 +21,7 @@ from app.geometry.precision import Arithmetic, MultiPrecision
 from app.geometry.surfaces import rotational as rotational_surface
 from app.geometry.tolerances import LOCAL_STEPS
 from app.limits import enforce_mesh, enforce_range, timed_arithmetic
-from app.mesh_formats import glb_bytes, obj_bytes, ply_bytes
+from app.mesh_formats import glb_bytes, obj_bytes, ply_bytes, vtu_bytes
 from app.registry import DISCRETIZATIONS
 from app.responses import check_document, encode_json
 from app.schemas.common import CurveQuery
@@ -79,6 +79,7 @@ MEDIA_TYPES = {
     "json": "application/json",
     "obj": "model/obj",
     "ply": "application/octet-stream",
+    "vtu": "application/xml",
     "glb": "model/gltf-binary",
 }
 
@@ -275,7 +276,7 @@ def _comments(result: SurfaceResult) -> list[str]:
 
 
 def encoded(result: SurfaceResult, file_format: str) -> tuple[bytes, str, dict[str, str]]:
-    """(body, media type, headers) of the surface in ``file_format`` (json, obj, ply, glb);
+    """(body, media type, headers) of the surface in ``file_format`` (json, obj, ply, vtu, glb);
     files carry a download file name."""
     if file_format == "json":
         return encode_json(document(result)), "application/json", {}
@@ -288,9 +289,10 @@ def encoded(result: SurfaceResult, file_format: str) -> tuple[bytes, str, dict[s
     if file_format == "obj":
         shown = _strings(ar, vertices).tolist() if isinstance(ar, MultiPrecision) else vertices
         body = obj_bytes(shown, faces, _comments(result))
-    elif file_format == "ply":
+    elif file_format in ("ply", "vtu"):
         floats = {k: _floats(ar, v) for k, v in values.items()}
-        body = ply_bytes(_floats(ar, vertices), faces, floats, _comments(result))
+        write = ply_bytes if file_format == "ply" else vtu_bytes
+        body = write(_floats(ar, vertices), faces, floats, _comments(result))
     else:
         floats = {k: _floats(ar, v) for k, v in values.items() if k in ("K", "H")}
         extras = {"id": result.kind.id, "parameters": result.parameters}

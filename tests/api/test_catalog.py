@@ -52,7 +52,7 @@ def test_theorem_with_erratum_shows_printed_and_corrected(client: TestClient) ->
     erratum = body["check"]["erratum"]
     assert erratum["id"] == "E3"
     assert erratum["printed_residual"] > 1e6 * body["check"]["tolerance"]
-    assert erratum["link"] == "docs/errata.md#e3"
+    assert erratum["link"] == "/errata/E3"
     assert body["check"]["holds"] is True
 
 

@@ -49,7 +49,7 @@ def test_theorem_11_study_response(client: TestClient) -> None:
     assert orders["remark-13-domain"].observed_order == pytest.approx(0, abs=0.15)
     checks = {c.id: c for c in body.checks}
     assert checks["remark-13-uniform"].erratum is not None
-    assert checks["remark-13-uniform"].erratum.link == "docs/errata.md#e66"
+    assert checks["remark-13-uniform"].erratum.link == "/errata/E66"
     svg = client.get("/convergence/theorem-11", params={**params, "format": "svg"})
     assert svg.status_code == 200 and "log10 1/j" in svg.text
     csv = client.get("/convergence/theorem-11", params={**params, "format": "csv"})
@@ -104,7 +104,7 @@ def test_tractrix_orders_one_and_two(client: TestClient) -> None:
     assert orders["distance"] == pytest.approx(2, abs=0.01)
     checks = {c["id"]: c for c in body["checks"]}
     assert checks["theorem-15-proof-y"]["erratum"]["id"] == "E80"
-    assert checks["theorem-15-proof-x"]["erratum"]["link"] == "docs/errata.md#e81"
+    assert checks["theorem-15-proof-x"]["erratum"]["link"] == "/errata/E81"
 
 
 def test_mp_study_reports_numbers(client: TestClient) -> None:

@@ -1,0 +1,180 @@
+"""The OpenAPI document says what the server does: problem responses, typed curves, limits from
+the settings, closed POST bodies, examples that fit their schemas. (`make contract`, run by
+`make test`, lints the same document with Redocly CLI and compiles TypeScript against it.)"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import pytest
+from fastapi.testclient import TestClient
+
+from app.main import create_app
+from app.openapi_export import document
+from app.settings import Settings
+
+ROOT = Path(__file__).resolve().parents[2]
+SPEC = json.loads(document())
+SCHEMAS = SPEC["components"]["schemas"]
+
+
+def operations() -> list[tuple[str, str, dict[str, Any]]]:
+    return [(p, m, op) for p, ops in SPEC["paths"].items() for m, op in ops.items()]
+
+
+def test_every_error_response_is_a_problem_under_its_media_type() -> None:
+    for path, method, operation in operations():
+        responses = operation["responses"]
+        assert "422" in responses, (method, path)
+        for status, response in responses.items():
+            if status.startswith(("4", "5")):
+                assert response["content"] == {
+                    "application/problem+json": {"schema": {"$ref": "#/components/schemas/Problem"}}
+                }, (method, path, status)
+
+
+def test_no_non_standard_keywords() -> None:
+    text = json.dumps(SPEC)
+    assert '"domain": "' not in text
+    assert '"x-domain": "0 < d < h"' in text
+
+
+def test_servers_license_contact() -> None:
+    assert SPEC["servers"] and SPEC["info"]["license"]["identifier"] == "MIT"
+    assert SPEC["info"]["contact"]["name"]
+    assert SPEC["security"] == []
+
+
+def test_digits_maximum_is_the_setting_in_force() -> None:
+    def digits_maxima(spec: dict[str, Any]) -> set[int]:
+        found = set()
+        for _, _, operation in [
+            (p, m, op) for p, ops in spec["paths"].items() for m, op in ops.items()
+        ]:
+            for parameter in operation.get("parameters", []):
+                if parameter["name"] == "digits":
+                    found.add(parameter["schema"]["maximum"])
+        return found
+
+    assert digits_maxima(SPEC) == {Settings().max_digits}
+    assert SCHEMAS["D4bBody"]["properties"]["digits"]["maximum"] == Settings().max_digits
+    small = create_app(Settings(max_digits=50)).openapi()
+    assert digits_maxima(small) == {50}
+
+
+def test_float64_and_mp_curves_are_typed_apart() -> None:
+    ok = SPEC["paths"]["/discretizations/d4b"]["get"]["responses"]["200"]["content"]
+    refs = [s["$ref"].rsplit("/", 1)[1] for s in ok["application/json"]["schema"]["anyOf"]]
+    assert refs == ["CurveResponse", "CurveResponseMP"]
+    float64 = SCHEMAS["CurveResponse"]["properties"]["vertices"]["items"]["prefixItems"]
+    mp = SCHEMAS["CurveResponseMP"]["properties"]["vertices"]["items"]["prefixItems"]
+    assert [c["type"] for c in float64] == ["number", "number"]
+    assert [c["type"] for c in mp] == ["string", "string"]
+
+
+def test_post_bodies_are_closed_like_the_server() -> None:
+    for path, method, operation in operations():
+        if method != "post":
+            continue
+        schema = operation["requestBody"]["content"]["application/json"]["schema"]
+        if "$ref" in schema:
+            assert SCHEMAS[schema["$ref"].rsplit("/", 1)[1]]["additionalProperties"] is False, path
+
+
+def test_array_parameters_are_comma_separated_as_the_server_reads_them(
+    client: TestClient,
+) -> None:
+    parameters = SPEC["paths"]["/figures/figure-8.svg"]["get"]["parameters"]
+    j = next(p for p in parameters if p["name"] == "j")
+    assert (j["style"], j["explode"]) == ("form", False)
+    assert client.get("/figures/figure-8.svg?j=1,2,5").status_code == 200
+
+
+def test_an_integral_float_is_an_integer_in_a_json_body(client: TestClient) -> None:
+    float_digits = client.post("/discretizations/d4b", json={"precision": "mp", "digits": 20.0})
+    int_digits = client.post("/discretizations/d4b", json={"precision": "mp", "digits": 20})
+    assert float_digits.status_code == 200, float_digits.text
+    assert float_digits.json() == int_digits.json()
+    refused = client.post("/discretizations/d4b", json={"digits": 20.5})
+    assert refused.status_code == 422
+    assert client.post("/discretizations/d4b", json={"i_max": True}).status_code == 422
+
+
+def _validate(instance: Any, schema: dict[str, Any], where: str) -> None:
+    """A small JSON Schema check of the keywords the document uses."""
+    while "$ref" in schema:
+        schema = SCHEMAS[schema["$ref"].rsplit("/", 1)[1]]
+    options = schema.get("anyOf") or schema.get("oneOf")
+    if options:
+        errors = []
+        for option in options:
+            try:
+                _validate(instance, option, where)
+                return
+            except AssertionError as error:
+                errors.append(str(error))
+        raise AssertionError(f"{where}: no option fits: {errors[:2]}")
+    kind = schema.get("type")
+    checks = {
+        "object": lambda v: isinstance(v, dict),
+        "array": lambda v: isinstance(v, list),
+        "string": lambda v: isinstance(v, str),
+        "number": lambda v: isinstance(v, int | float) and not isinstance(v, bool),
+        "integer": lambda v: isinstance(v, int) and not isinstance(v, bool),
+        "boolean": lambda v: isinstance(v, bool),
+        "null": lambda v: v is None,
+    }
+    if kind is not None:
+        assert checks[kind](instance), f"{where}: {instance!r} is not {kind}"
+    if isinstance(instance, dict):
+        for name in schema.get("required", []):
+            assert name in instance, f"{where}: {name} missing"
+        extra = schema.get("additionalProperties")
+        for name, value in instance.items():
+            sub = schema.get("properties", {}).get(name, extra if isinstance(extra, dict) else None)
+            if sub is not None:
+                _validate(value, sub, f"{where}.{name}")
+    if isinstance(instance, list):
+        prefix = schema.get("prefixItems")
+        for k, value in enumerate(instance):
+            sub = prefix[k] if prefix and k < len(prefix) else schema.get("items")
+            if isinstance(sub, dict):
+                _validate(value, sub, f"{where}[{k}]")
+
+
+@pytest.mark.parametrize(
+    ("path", "method", "operation"),
+    [o for o in operations() if "example" in json.dumps(o[2])],
+    ids=lambda v: v if isinstance(v, str) else "",
+)
+def test_every_example_fits_its_schema(path: str, method: str, operation: dict[str, Any]) -> None:
+    for status, response in operation["responses"].items():
+        for media in response.get("content", {}).values():
+            if "example" in media:
+                _validate(media["example"], media["schema"], f"{method} {path} {status}")
+
+
+def test_the_readme_embedding_snippet_is_the_type_checked_one() -> None:
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    script = readme.split('<script type="module">\n', 1)[1].split("</script>", 1)[0]
+    assert script == (ROOT / "tools" / "contract" / "embed.js").read_text(encoding="utf-8")
+
+
+def test_the_digits_maximum_holds_in_every_precision() -> None:
+    small = TestClient(create_app(Settings(max_digits=50)))
+    for response in (
+        small.get("/discretizations/d4b?digits=51"),
+        small.post("/discretizations/d4b", json={"digits": 51}),
+        small.get("/theorems/theorem-5?digits=51"),
+    ):
+        assert response.status_code == 422, response.text
+        assert response.json()["errors"][0]["constraint"] == "1 <= digits <= 50"
+    assert small.get("/discretizations/d4b?digits=50").status_code == 200
+
+
+def test_post_documents_415(client: TestClient) -> None:
+    responses = SPEC["paths"]["/discretizations/d4b"]["post"]["responses"]
+    assert "415" in responses
+    assert client.post("/discretizations/d4b", content=b"x").status_code == 415
