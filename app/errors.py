@@ -3,6 +3,8 @@
 - request validation (types, bounds, unknown parameters)  -> 422, each parameter named
 - core ``GeometryError`` (domain, representability)        -> 422
 - ``LimitExceededError`` (work budget)                           -> 422
+- ``TimeLimitError``, ``HardStopError`` (the computation overran)      -> 422, type time-limit
+- ``OverloadedError`` (admission control, app/admission.py)      -> 503 with Retry-After
 - ``UnknownIdError``                                             -> 404 with the valid ids
 - Starlette HTTP errors (unknown path, wrong method)        -> their status
 - anything else                                             -> 500 without internals
@@ -20,7 +22,8 @@ from fastapi.exceptions import RequestValidationError
 from starlette.exceptions import HTTPException as StarletteHTTPException
 from starlette.routing import Match
 
-from app.geometry.errors import DomainError, GeometryError
+from app.admission import HardStopError, OverloadedError, current, overloaded_headers
+from app.geometry.errors import DomainError, GeometryError, TimeLimitError
 from app.limits import LimitExceededError
 
 PROBLEM_MEDIA_TYPE = "application/problem+json"
@@ -40,11 +43,12 @@ def problem(
     title: str,
     detail: str,
     errors: list[dict[str, Any]] | None = None,
+    kind: str | None = None,
     **extra: Any,
 ) -> Response:
-    """A problem+json response."""
+    """A problem+json response (``kind``: the type's last segment, default the status)."""
     body = {
-        "type": f"https://dcosh.example/problems/{status}",
+        "type": f"https://dcosh.example/problems/{kind or status}",
         "title": title,
         "status": status,
         "detail": detail,
@@ -54,21 +58,44 @@ def problem(
     return Response(orjson.dumps(body), status_code=status, media_type=PROBLEM_MEDIA_TYPE)
 
 
-def json_safe(value: Any) -> Any:
-    """A received value as it can appear in JSON (non-finite floats as strings, bytes decoded)."""
+#: An error echoes at most this many characters of a received string, and this many items of a
+#: received list or object (the rest is cut off and counted), so a large input never comes back.
+ECHO_CHARS = 200
+ECHO_ITEMS = 20
+
+
+def _short(text: str) -> str:
+    if len(text) <= ECHO_CHARS:
+        return text
+    return f"{text[:ECHO_CHARS]}… ({len(text)} characters)"
+
+
+def json_safe(value: Any, depth: int = 0) -> Any:
+    """A received value as it can appear in JSON (non-finite floats as strings, bytes decoded),
+    cut to ``ECHO_CHARS`` characters and ``ECHO_ITEMS`` items per level, 4 levels deep."""
     if isinstance(value, float) and not math.isfinite(value):
         return str(value)
     if isinstance(value, bytes):
-        return value.decode("utf-8", "replace")
+        return _short(value[: 4 * ECHO_CHARS].decode("utf-8", "replace"))
     if isinstance(value, int) and not isinstance(value, bool) and not -(2**63) <= value < 2**63:
-        return str(value)  # JSON encoders stop at 64 bits
-    if isinstance(value, str | int | float | bool) or value is None:
+        return _short(str(value))  # JSON encoders stop at 64 bits
+    if isinstance(value, str):
+        return _short(value)
+    if isinstance(value, int | float | bool) or value is None:
         return value
+    if depth >= 4:
+        return _short(str(type(value).__name__))
     if isinstance(value, list | tuple):
-        return [json_safe(v) for v in value]
+        items = [json_safe(v, depth + 1) for v in value[:ECHO_ITEMS]]
+        if len(value) > ECHO_ITEMS:
+            items.append(f"… ({len(value)} items)")
+        return items
     if isinstance(value, dict):
-        return {str(k): json_safe(v) for k, v in value.items()}
-    return str(value)
+        out = {_short(str(k)): json_safe(v, depth + 1) for k, v in list(value.items())[:ECHO_ITEMS]}
+        if len(value) > ECHO_ITEMS:
+            out["…"] = f"({len(value)} items)"
+        return out
+    return _short(str(value))
 
 
 _BOUNDS = {
@@ -125,6 +152,9 @@ async def _validation_handler(request: Request, exc: Exception) -> Response:
 
 
 async def _domain_handler(request: Request, exc: Exception) -> Response:
+    if isinstance(exc, TimeLimitError):
+        entry = {"parameter": exc.parameter, "constraint": exc.constraint, "value": None}
+        return problem(422, "Over the time limit", str(exc), [entry], kind="time-limit")
     if isinstance(exc, DomainError | LimitExceededError):
         entry = {
             "parameter": exc.parameter,
@@ -134,6 +164,35 @@ async def _domain_handler(request: Request, exc: Exception) -> Response:
         title = "Over the limits" if isinstance(exc, LimitExceededError) else "Outside the domain"
         return problem(422, title, str(exc), [entry])
     return problem(422, "Outside the domain", str(exc))
+
+
+async def _overloaded_handler(request: Request, exc: Exception) -> Response:
+    assert isinstance(exc, OverloadedError)
+    response = problem(
+        503, "Overloaded", f"Not admitted now: {exc.reason}; retry later.", kind="overloaded"
+    )
+    for key, value in overloaded_headers(exc.retry_after):
+        response.headers[key.decode()] = value.decode()
+    return response
+
+
+async def _hard_stop_handler(request: Request, exc: Exception) -> Response:
+    limit = request.app.state.settings.time_limit
+    constraint = f"the computation finishes within {limit:g} s (DCOSH_TIME_LIMIT)"
+    ticket = current()
+    return problem(
+        422,
+        "Over the time limit",
+        f"The computation was stopped past its deadline: {constraint}.",
+        [
+            {
+                "parameter": "request" if ticket is None else ticket.parameter,
+                "constraint": constraint,
+                "value": None,
+            }
+        ],
+        kind="time-limit",
+    )
 
 
 async def _unknown_id_handler(request: Request, exc: Exception) -> Response:
@@ -190,5 +249,7 @@ def install(app: FastAPI) -> None:
     app.add_exception_handler(GeometryError, _domain_handler)
     app.add_exception_handler(LimitExceededError, _domain_handler)
     app.add_exception_handler(UnknownIdError, _unknown_id_handler)
+    app.add_exception_handler(OverloadedError, _overloaded_handler)
+    app.add_exception_handler(HardStopError, _hard_stop_handler)
     app.add_exception_handler(StarletteHTTPException, _http_handler)
     app.add_exception_handler(Exception, _unexpected_handler)

@@ -8,6 +8,7 @@ from fastapi import FastAPI
 from fastapi.middleware.cors import CORSMiddleware
 
 from app import __version__, errors
+from app.admission import SPARE_THREADS, Admission, AdmissionGate, BoundedIO, drain_on_sigterm
 from app.response_cache import FastPath, ResponseCache
 from app.routers import (
     convergence,
@@ -51,15 +52,18 @@ TAGS = [
     {"name": "figures", "description": "The paper's figures, redrawn from computed data."},
     {"name": "surfaces", "description": "Catenoids, pseudosphere and Gauss images as meshes."},
     {"name": "smooth", "description": "Smooth references of Section 2: catenary and tractrix."},
-    {"name": "service", "description": "Health."},
+    {"name": "service", "description": "Liveness and readiness."},
 ]
 
 
 @asynccontextmanager
 async def lifespan(app: FastAPI) -> AsyncIterator[None]:
-    """Bound the threads that run computations (FastAPI runs sync endpoints in a thread pool)."""
+    """Bound the threads that run computations (FastAPI runs sync endpoints in a thread pool;
+    a few spare threads keep catalogs answering while every compute thread is busy), and turn
+    /ready to 503 on SIGTERM."""
     limiter = anyio.to_thread.current_default_thread_limiter()
-    limiter.total_tokens = app.state.settings.compute_threads
+    limiter.total_tokens = app.state.settings.compute_threads + SPARE_THREADS
+    drain_on_sigterm(app.state.admission)
     yield
 
 
@@ -78,7 +82,10 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.state.response_cache = ResponseCache(
         app.state.settings.response_cache_bytes, app.state.settings.response_cache_entry_bytes
     )
-    # innermost: cached answers still pass CORS and the security headers
+    app.state.admission = Admission(app.state.settings)
+    # innermost: the gate bounds the computational requests that the cache does not answer
+    app.add_middleware(AdmissionGate, admission=app.state.admission)
+    # cached answers still pass CORS and the security headers
     app.add_middleware(FastPath, cache=app.state.response_cache, settings=app.state.settings)
     app.add_middleware(
         CORSMiddleware,
@@ -88,6 +95,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         expose_headers=["ETag", "X-First-Index"],
     )
     app.add_middleware(SecurityHeaders)
+    # outermost: deadlines from arrival, capped bodies, body and send timeouts
+    app.add_middleware(BoundedIO, admission=app.state.admission)
     errors.install(app)
     app.include_router(health.router)
     app.include_router(discretizations.router)

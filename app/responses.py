@@ -14,6 +14,7 @@ import numpy as np
 import orjson
 from fastapi import Request, Response
 
+from app.admission import computing
 from app.geometry.checks import Check
 from app.geometry.convergence import Study
 from app.geometry.curve import Curve, Polyline
@@ -181,7 +182,8 @@ def cached(
     cache: ResponseCache = request.app.state.response_cache
     entry = cache.get(key)
     if entry is None:
-        response = build()
+        with computing():  # the watchdog may stop it past its deadline (app/admission.py)
+            response = build()
         entry = entry_of(response)
         if entry is None:  # not a plain 200 body: serve it as built
             if is_get:
