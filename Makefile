@@ -54,8 +54,10 @@ browser:
 # of returning and faulting them back block by block (docs/performance.md).
 SERVER_ENV := MALLOC_ARENA_MAX=2 MALLOC_MMAP_THRESHOLD_=131072 MALLOC_TRIM_THRESHOLD_=8388608
 
+# app/server.py adds uvicorn's limits: h11 with a 64 KiB header block, 5 s keep-alive, a 25 s
+# graceful shutdown, at most 1024 connections per worker (docs/reliability.md).
 run: $(BIN)/.runtime-installed $(VENDOR)/.built
-	$(SERVER_ENV) $(BIN)/python -m uvicorn app.main:app --host $(HOST) --port $(PORT) --workers $(WORKERS)
+	$(SERVER_ENV) $(BIN)/python -m app.server --host $(HOST) --port $(PORT) --workers $(WORKERS)
 
 test: $(BIN)/.dev-installed $(VENDOR)/.built browser
 	DCOSH_CHROMIUM=$(CHROMIUM) timeout -k 30 $(TEST_TIME_LIMIT) $(BIN)/python -m pytest -n auto $(PYTEST_ARGS)

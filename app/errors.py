@@ -146,9 +146,13 @@ def validation_errors(errors: list[Any]) -> list[dict[str, Any]]:
 
 async def _validation_handler(request: Request, exc: Exception) -> Response:
     assert isinstance(exc, RequestValidationError)
-    errors = validation_errors(list(exc.errors()))
+    found = list(exc.errors())
+    errors = validation_errors(found[:ECHO_ITEMS])  # the first few: never a huge answer
     names = ", ".join(e["parameter"] for e in errors) or "request"
-    return problem(422, "Invalid parameters", f"Invalid value for: {names}.", errors)
+    more = (
+        f" ({len(found)} errors, the first {ECHO_ITEMS} listed)" if len(found) > ECHO_ITEMS else ""
+    )
+    return problem(422, "Invalid parameters", f"Invalid value for: {names}.{more}", errors)
 
 
 async def _domain_handler(request: Request, exc: Exception) -> Response:

@@ -13,23 +13,21 @@ import sys
 
 #: The heaviest requests the default limits admit, one or two per endpoint and precision.
 HEAVIEST = [
-    "/discretizations/d4b?d=0.001&i_min=-1999999&i_max=0&format=npy",
-    "/discretizations/d4b?method=closed-form&i_min=-500000&i_max=500000&format=npy",
-    "/discretizations/d4b?method=closed-form&i_min=-500000&i_max=500000",
-    "/discretizations/d1?i_min=-500000&i_max=500000&format=npy",
-    "/discretizations/d2a-quad?i_min=-500000&i_max=500000&format=npy",
-    "/discretizations/d4b?precision=mp&digits=50&i_min=-2000&i_max=2000",
+    "/discretizations/d4b?d=0.0001&i_min=-1726000&i_max=-726000&format=npy",
+    "/discretizations/d4b?d=0.0001&method=closed-form&i_min=-500000&i_max=500000",
+    "/discretizations/d1?c=0.0001&delta=0.001&i_min=-500000&i_max=500000&format=npy",
+    "/discretizations/d2b?i_min=0&i_max=1000000&format=npy",
+    "/discretizations/d4b?precision=mp&digits=1&i_min=-2000&i_max=2000",
+    "/discretizations/d2b?precision=mp&digits=1&i_min=0&i_max=4000",
     "/discretizations/d4b?precision=mp&digits=1000&i_min=-400&i_max=400",
-    "/discretizations/d2a-quad?precision=mp&digits=50&i_min=-2000&i_max=2000",
-    "/discretizations/d1?precision=mp&digits=50&i_min=-2000&i_max=2000",
-    "/surfaces/catenoid?discretization=d4b&i_min=-2500&i_max=2500&m=100&format=glb",
-    "/surfaces/catenoid?discretization=d4b&i_min=-2500&i_max=2500&m=100",
-    "/surfaces/catenoid?discretization=d4b&precision=mp&digits=1&i_min=-50&i_max=50&m=100",
-    "/relations?d4b.i_max=100000&d1.i_max=100000",
-    "/relations?precision=mp&digits=50",
-    "/convergence/theorem-14?levels=16",
-    "/convergence/theorem-14?precision=mp&digits=50&levels=6",
-    "/smooth/catenary?samples=100001",
+    "/discretizations/d2a-quad?precision=mp&digits=50&i_min=-1999&i_max=2000",
+    "/surfaces/catenoid?discretization=d4b&d=0.001&i_min=-2500&i_max=-2000&m=500&format=glb",
+    "/surfaces/catenoid?discretization=d4b&precision=mp&digits=1&i_min=-20&i_max=20&m=40",
+    "/surfaces/catenoid?discretization=d4b&precision=mp&digits=1&i_min=-2486&i_max=2486&m=100",
+    "/relations?d4b.i_max=50000&d1.i_max=50000&d4b.i_min=-50000&d1.i_min=-50000",
+    "/relations?precision=mp&digits=1000",
+    "/convergence/theorem-14?levels=15",
+    "/convergence/theorem-11?precision=mp&digits=50",
     "/figures/figure-2.svg",
 ]
 
@@ -76,11 +74,11 @@ def measure(url: str) -> dict[str, object]:
 
 def main() -> None:
     urls = sys.argv[1:] or HEAVIEST
-    print(f"{'request':70} {'st':>3} {'wall s':>7} {'est s':>7} {'peak MB':>8} {'est MB':>7}")
+    print(f"{'request':70} {'st':>3} {'wall s':>7} {'cpu s':>7} {'est s':>7} {'peak MB':>8} {'est MB':>7}")
     for url in urls:
         m = measure(url)
         print(
-            f"{url[:70]:70} {m['status']:>3} {m['wall']:7.2f} {m['est_s']:7.2f} "
+            f"{url[:70]:70} {m['status']:>3} {m['wall']:7.2f} {m['cpu']:7.2f} {m['est_s']:7.2f} "
             f"{int(m['peak']) / 2**20:8.0f} {int(m['est_b']) / 2**20:7.0f}"  # type: ignore[call-overload]
             + (f"  {m['detail']}" if m["detail"] else "")
         )
