@@ -14,7 +14,7 @@ CHROMIUM ?= /usr/bin/chromium
 # root installs system packages directly; anyone else through sudo
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: run test lint openapi bench fuzz load install install-dev assets browser clean
+.PHONY: run test lint openapi bench fuzz load install install-dev assets browser nginx clean
 
 # The runtime install: a virtual environment with every package pinned in requirements/runtime.txt.
 $(BIN)/.runtime-installed: requirements/runtime.txt pyproject.toml
@@ -48,6 +48,11 @@ browser:
 	test -x $(CHROMIUM) || { $(SUDO) apt-get update -qq && \
 	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq chromium; }
 
+# The deployment tests put Debian's nginx in front of two instances (tests/deploy/test_nginx.py).
+nginx:
+	command -v nginx >/dev/null 2>&1 || test -x /usr/sbin/nginx || { $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq nginx; }
+
 # glibc malloc: few arenas and a fixed mmap threshold, so that the large numpy buffers of big
 # responses go back to the system after each request (bench/load.py measures it); a trim
 # threshold of 8 MiB keeps the 64 KiB block temporaries of the numpy kernels on the heap instead
@@ -59,7 +64,7 @@ SERVER_ENV := MALLOC_ARENA_MAX=2 MALLOC_MMAP_THRESHOLD_=131072 MALLOC_TRIM_THRES
 run: $(BIN)/.runtime-installed $(VENDOR)/.built
 	$(SERVER_ENV) $(BIN)/python -m app.server --host $(HOST) --port $(PORT) --workers $(WORKERS)
 
-test: $(BIN)/.dev-installed $(VENDOR)/.built browser
+test: $(BIN)/.dev-installed $(VENDOR)/.built browser nginx
 	DCOSH_CHROMIUM=$(CHROMIUM) timeout -k 30 $(TEST_TIME_LIMIT) $(BIN)/python -m pytest -n auto $(PYTEST_ARGS)
 
 lint: $(BIN)/.dev-installed
