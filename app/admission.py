@@ -22,6 +22,11 @@ passes the cap), bounds the time to receive a body (``DCOSH_BODY_TIMEOUT``: 408)
 one send may wait for a client that does not read (``DCOSH_SEND_TIMEOUT``: the connection is
 dropped).
 
+Estimates are CPU seconds on a free core; ``Admission.slowdown`` learns how much longer the
+host takes now (wall over estimated seconds of computations that ran alone on the worker, at
+least 1) and scales every estimate by it, so a loaded host refuses sooner instead of missing
+deadlines.
+
 A computation that overruns its deadline is stopped: the core checks the clock in its loops and
 mp functions (``Arithmetic.check_time``), and a watchdog thread raises ``HardStopError`` inside a
 computing thread that is still running ``DCOSH_HARD_STOP_GRACE`` seconds past its deadline
@@ -60,6 +65,12 @@ COMPUTING_PREFIXES = (
     "/figures/",
     "/smooth/",
 )
+
+#: The slowdown (``Admission.slowdown``) learns from computations estimated at this many seconds
+#: or more, with this weight each, and never exceeds MAX_SLOWDOWN.
+MIN_OBSERVED = 0.05
+SLOWDOWN_WEIGHT = 0.2
+MAX_SLOWDOWN = 8.0
 
 #: Threads kept for requests that do not compute (catalogs, pages) beyond DCOSH_COMPUTE_THREADS.
 SPARE_THREADS = 4
@@ -108,6 +119,11 @@ class Admission:
     """Computational requests past the gate and not yet answered."""
     draining: bool = False
     refused: int = 0
+    generation: int = 0
+    """Requests admitted so far (to tell whether a computation ran alone)."""
+    slowdown: float = 1.0
+    """Wall seconds per estimated second of recent computations (≥ 1): the host's load, which
+    the estimates (CPU seconds on a free core) do not know."""
     _lock: threading.Lock = field(default_factory=threading.Lock)
 
     def retry_after(self) -> int:
@@ -121,17 +137,17 @@ class Admission:
             if self.draining:
                 self.refused += 1
                 raise OverloadedError("the worker is shutting down", 1)
-            if time.monotonic() + seconds > ticket.deadline:
+            if time.monotonic() + seconds * self.slowdown > ticket.deadline:
                 self.refused += 1
                 raise OverloadedError(
                     f"the request cannot finish within {settings.time_limit:g} s of its arrival "
-                    f"(it needs about {seconds:.3g} s and has waited "
+                    f"(it needs about {seconds * self.slowdown:.3g} s now and has waited "
                     f"{time.monotonic() - ticket.arrival:.3g} s)",
                     self.retry_after(),
                 )
             first = ticket.seconds == 0 and ticket.bytes == 0
             others = self.admitted - (0 if first else 1)
-            over_time = self.seconds + seconds > settings.admission_seconds
+            over_time = (self.seconds + seconds) * self.slowdown > settings.admission_seconds
             over_memory = self.bytes + nbytes > settings.admission_bytes
             if others > 0 and (over_time or over_memory):
                 self.refused += 1
@@ -142,11 +158,20 @@ class Admission:
                 )
             if first:
                 self.admitted += 1
+                self.generation += 1
             seconds = max(seconds, 1e-6)
             ticket.seconds += seconds
             ticket.bytes += nbytes
             self.seconds += seconds
             self.bytes += nbytes
+
+    def observe(self, estimated: float, wall: float) -> None:
+        """Learn the slowdown from one finished computation (estimated CPU s, wall s)."""
+        if estimated < MIN_OBSERVED:
+            return
+        ratio = min(max(wall / estimated, 1.0), MAX_SLOWDOWN)
+        with self._lock:
+            self.slowdown += SLOWDOWN_WEIGHT * (ratio - self.slowdown)
 
     def release(self, ticket: Ticket) -> None:
         """Give back what ``ticket`` was admitted with (at the end of its response)."""
@@ -172,6 +197,7 @@ class Admission:
             "admitted": self.admitted,
             "in_flight": self.in_flight,
             "seconds": round(self.seconds, 3),
+            "slowdown": round(self.slowdown, 2),
             "bytes": self.bytes,
             "refused": self.refused,
         }
@@ -270,10 +296,18 @@ def computing(grace: float | None = None) -> Iterator[None]:
         grace = admission.settings.hard_stop_grace
     ticket.thread = threading.get_ident()
     WATCHDOG.watch(ticket, ticket.deadline + grace)
+    start = time.monotonic()
+    charged = bool(ticket.seconds or ticket.bytes)
+    others = admission.admitted - charged
+    generation = admission.generation
     try:
         yield
     finally:
         ticket.thread = None
+        # only a computation that ran alone on this worker measures the host, not the GIL
+        new = admission.generation - generation - (not charged and bool(ticket.seconds))
+        if others == 0 and new == 0:
+            admission.observe(ticket.seconds, time.monotonic() - start)
 
 
 # --- the middlewares ------------------------------------------------------------------------

@@ -40,10 +40,10 @@ MP_MESH_VERTEX_BYTES = 12_000
 #: refinement studies, per construction step of their work: float64 and mp.
 F64_STUDY_STEP_SECONDS = 2e-6
 F64_STUDY_STEP_BYTES = 400
-MP_STUDY_STEP_SECONDS = 1e-3
+MP_STUDY_STEP_SECONDS = 1e-4
 MP_STUDY_STEP_BYTES = 4_000
 #: Every request: parsing, encoding, the interpreter's bookkeeping.
-BASE_SECONDS = 1e-3
+BASE_SECONDS = 3e-3
 BASE_BYTES = 256 * 1024
 
 

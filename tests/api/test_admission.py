@@ -117,3 +117,23 @@ def test_work_over_the_budget_is_a_503_problem_before_any_computation(
     admission.release(other)
     assert client.get(CURVE, params={"i_max": 5000, "d": 0.001}).status_code == 200
     assert admission.admitted == 0 and admission.seconds == 0  # released after the answer
+
+
+def test_a_slow_host_scales_the_estimates() -> None:
+    admission = Admission(Settings())
+    for _ in range(20):
+        admission.observe(1.0, 4.0)  # computations alone took 4× their estimate
+    assert admission.slowdown == pytest.approx(4.0, rel=0.05)
+    admission.observe(0.001, 100.0)  # too small to tell anything
+    assert admission.slowdown == pytest.approx(4.0, rel=0.05)
+    with pytest.raises(OverloadedError, match="cannot finish within 20 s"):
+        admission.charge(_ticket(), 6.0, 0)  # 6 s of CPU take about 24 s now
+    admission.charge(_ticket(), 4.0, 0)
+
+
+def test_a_computation_alone_teaches_the_slowdown(client: TestClient) -> None:
+    admission: Admission = client.app.state.admission  # type: ignore[attr-defined]
+    before = admission.generation
+    assert client.get(CURVE, params={"i_max": 2000, "d": 0.01}).status_code == 200
+    assert admission.generation == before + 1
+    assert admission.slowdown >= 1.0
