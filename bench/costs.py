@@ -74,7 +74,10 @@ def measure(url: str) -> dict[str, object]:
 
 def main() -> None:
     urls = sys.argv[1:] or HEAVIEST
-    print(f"{'request':70} {'st':>3} {'wall s':>7} {'cpu s':>7} {'est s':>7} {'peak MB':>8} {'est MB':>7}")
+    print(
+        f"{'request':70} {'st':>3} {'wall s':>7} {'cpu s':>7} {'est s':>7} "
+        f"{'peak MB':>8} {'est MB':>7}"
+    )
     for url in urls:
         m = measure(url)
         print(
