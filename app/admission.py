@@ -72,6 +72,10 @@ MIN_OBSERVED = 0.05
 SLOWDOWN_WEIGHT = 0.2
 MAX_SLOWDOWN = 8.0
 
+#: Seconds a thread holds the GIL before another may take it (Python's default is 0.005): the
+#: event loop answers /health and refusals between the computations' slices.
+SWITCH_INTERVAL = 0.001
+
 #: Threads kept for requests that do not compute (catalogs, pages) beyond DCOSH_COMPUTE_THREADS.
 SPARE_THREADS = 4
 

@@ -30,10 +30,12 @@ F64_STEP_SECONDS = 4e-6
 F64_MESH_VERTEX_SECONDS = 4e-6
 F64_MESH_VERTEX_BYTES = 2000
 #: mp: seconds and bytes per step at few digits; both grow like (1 + digits / MP_DIGITS_SCALE).
-#: (D2b) and (D4b) with every check, the dearest, take about 2 ms a step at 1 digit.
-MP_STEP_SECONDS = 2.2e-3
+#: (D2b) and (D4b) with every check, the dearest, take about 3.3 ms a step at 50 digits
+#: (answer encoded); the others a fraction of that (MP_STEP_SHARE).
+MP_STEP_SECONDS = 3.5e-3
 MP_STEP_BYTES = 24_000
-MP_DIGITS_SCALE = 300
+MP_DIGITS_SCALE = 400
+MP_STEP_SHARE = {"d1": 0.25, "d2a-quad": 0.45, "d2a-hex": 0.45, "d3": 0.35}
 #: mp surfaces: per mesh vertex (the mesh, its normals and per-face curvatures in mpmath).
 MP_MESH_VERTEX_SECONDS = 2.2e-3
 MP_MESH_VERTEX_BYTES = 12_000
@@ -74,10 +76,13 @@ def admit(settings: Settings, seconds: float, nbytes: float, parameter: str, val
     admission.charge(seconds, nbytes, parameter)
 
 
-def curve_cost(vertices: int, steps: int, precision: str, digits: int) -> tuple[float, float]:
-    """(seconds, bytes) of one polygon: ``vertices`` answered, ``steps`` computed."""
+def curve_cost(
+    vertices: int, steps: int, precision: str, digits: int, kind: str | None = None
+) -> tuple[float, float]:
+    """(seconds, bytes) of one polygon: ``vertices`` answered, ``steps`` computed; ``kind`` is
+    the discretization's id (None: priced as the dearest)."""
     if precision == "mp":
-        factor = mp_factor(digits)
+        factor = mp_factor(digits) * MP_STEP_SHARE.get(kind or "", 1.0)
         work = max(vertices, steps)
         return MP_STEP_SECONDS * factor * work, MP_STEP_BYTES * factor * work
     constructed = steps if steps > vertices else 0
@@ -123,8 +128,10 @@ def enforce_range(
     method: str,
     precision: str,
     digits: int,
+    kind: str | None = None,
 ) -> None:
-    """Refuse oversize index ranges, long constructions and expensive mp requests.
+    """Refuse oversize index ranges, long constructions and expensive mp requests, then charge
+    the request's estimated cost (``kind``: the discretization's id, for its mp price).
 
     The order i_min <= i_max is the core's to check (a domain error); here an empty range
     simply costs nothing.
@@ -154,7 +161,7 @@ def enforce_range(
                 f"precision=mp (this range needs {steps} steps)",
                 digits,
             )
-    seconds, nbytes = curve_cost(vertices, steps, precision, digits)
+    seconds, nbytes = curve_cost(vertices, steps, precision, digits, kind)
     driver = ("digits", digits) if precision == "mp" else ("i_max", i_max)
     admit(settings, seconds, nbytes, *driver)
 

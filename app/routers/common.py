@@ -161,6 +161,7 @@ def compute(entry: Discretization, query: CurveQuery, settings: Settings) -> Cur
         arguments.get("method", "construction"),
         query.precision,
         query.digits,
+        kind=entry.info.id,
     )
     if query.format == "svg":
         enforce_drawing(settings, arguments["i_min"], arguments["i_max"])

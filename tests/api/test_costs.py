@@ -36,7 +36,9 @@ REQUESTS = [
 
 @pytest.fixture(scope="module")
 def client() -> Iterator[TestClient]:
-    with TestClient(create_app(Settings(response_cache_bytes=0))) as client:
+    # a generous time limit: this test compares costs, whatever the load of the machine
+    settings = Settings(response_cache_bytes=0, time_limit=300, admission_seconds=120)
+    with TestClient(create_app(settings)) as client:
         client.get("/discretizations/d4b?i_max=3")
         client.get("/surfaces/catenoid?i_max=3&m=4")
         yield client
