@@ -99,7 +99,7 @@ class Settings(BaseSettings):
         "one gets a 503 at once (never an unbounded queue).",
     )
     hard_stop_grace: float = Field(
-        2.0,
+        0.5,
         gt=0,
         description="Seconds past its deadline after which a computation still running is "
         "stopped from outside (an exception raised in its thread).",
