@@ -48,6 +48,7 @@ from contextlib import contextmanager
 from dataclasses import dataclass, field
 from typing import Any
 
+import anyio
 import orjson
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
@@ -373,8 +374,6 @@ class BoundedIO:
         if scope["type"] != "http":
             await self.app(scope, receive, send)
             return
-        import anyio
-
         now = time.monotonic()
         ticket = Ticket(arrival=now, deadline=now + self.settings.time_limit)
         token = CURRENT.set(ticket)
@@ -421,8 +420,6 @@ class BoundedIO:
             _ADMISSION.reset(token_admission)
 
     async def _read_body(self, receive: Receive) -> bytes:
-        import anyio
-
         settings = self.settings
         chunks: list[bytes] = []
         size = 0
