@@ -35,7 +35,7 @@ F64_MESH_VERTEX_BYTES = 2000
 MP_STEP_SECONDS = 3.5e-3
 MP_STEP_BYTES = 24_000
 MP_DIGITS_SCALE = 400
-MP_STEP_SHARE = {"d1": 0.25, "d2a-quad": 0.45, "d2a-hex": 0.45, "d3": 0.35}
+MP_STEP_SHARE = {"d1": 0.25, "d2a-quad": 0.45, "d2a-hex": 0.45, "d3": 0.35, "smooth": 0.15}
 #: mp surfaces: per mesh vertex (the mesh, its normals and per-face curvatures in mpmath).
 MP_MESH_VERTEX_SECONDS = 2.2e-3
 MP_MESH_VERTEX_BYTES = 12_000

@@ -27,6 +27,8 @@ REQUESTS = [
     "/surfaces/catenoid?discretization=d4b&d=0.01&i_min=-200&i_max=200&m=100&format=glb",
     "/surfaces/pseudosphere?discretization=d4b&i_min=0&i_max=100&m=60",
     "/surfaces/catenoid?discretization=d4b&precision=mp&digits=5&i_min=-4&i_max=4&m=8",
+    "/smooth/tractrix?count=200000",
+    "/smooth/tractrix?precision=mp&digits=50&count=400",
     "/relations",
     "/relations?precision=mp&digits=20",
     "/convergence/theorem-14?levels=12",
