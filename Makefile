@@ -16,7 +16,7 @@ CHROMIUM ?= /usr/bin/chromium
 # root installs system packages directly; anyone else through sudo
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: run test lint openapi paper-map contract bench fuzz load install install-dev assets browser warm clean
+.PHONY: run test lint openapi paper-map contract bench fuzz load install install-dev assets browser warm nginx clean
 
 # The runtime install: a virtual environment with every package pinned in requirements/runtime.txt.
 $(BIN)/.runtime-installed: requirements/runtime.txt pyproject.toml
@@ -76,6 +76,11 @@ browser:
 	test -x $(CHROMIUM) || { $(SUDO) apt-get update -qq && \
 	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq chromium; }
 
+# The deployment tests put Debian's nginx in front of two instances (tests/deploy/test_nginx.py).
+nginx:
+	command -v nginx >/dev/null 2>&1 || test -x /usr/sbin/nginx || { $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq nginx; }
+
 # glibc malloc: few arenas; buffers up to 32 MiB from the heap (a 10^6-vertex (n, 2) array is
 # 16 MB) and up to 64 MiB of free heap kept between requests, so that temporaries do not fault
 # their pages in again on every request; larger buffers are mmaps, returned to the system when
@@ -84,10 +89,12 @@ browser:
 # request; docs/performance.md).
 SERVER_ENV := MALLOC_ARENA_MAX=2 MALLOC_MMAP_THRESHOLD_=33554432 MALLOC_TRIM_THRESHOLD_=67108864
 
+# app/server.py adds uvicorn's limits: h11 with a 64 KiB header block, 5 s keep-alive, a 25 s
+# graceful shutdown, at most 1024 connections per worker (docs/reliability.md).
 run: $(BIN)/.runtime-installed $(VENDOR)/.built warm
-	$(SERVER_ENV) $(BIN)/python -m uvicorn app.main:app --host $(HOST) --port $(PORT) --workers $(WORKERS)
+	$(SERVER_ENV) $(BIN)/python -m app.server --host $(HOST) --port $(PORT) --workers $(WORKERS)
 
-test: $(BIN)/.dev-installed $(VENDOR)/.built browser warm contract
+test: $(BIN)/.dev-installed $(VENDOR)/.built browser warm contract nginx
 	DCOSH_CHROMIUM=$(CHROMIUM) timeout -k 30 $(TEST_TIME_LIMIT) $(BIN)/python -m pytest -n auto $(PYTEST_ARGS)
 
 lint: $(BIN)/.dev-installed

@@ -3,6 +3,8 @@
 - request validation (types, bounds, unknown parameters)  -> 422, each parameter named
 - core ``GeometryError`` (domain, representability)        -> 422
 - ``LimitExceededError`` (work budget)                           -> 422
+- ``TimeLimitError``, ``HardStopError`` (the computation overran)      -> 422, type time-limit
+- ``OverloadedError`` (admission control, app/admission.py)      -> 503 with Retry-After
 - ``UnknownIdError``                                             -> 404 with the valid ids
 - a POST body that is not JSON                              -> 415
 - Starlette HTTP errors (unknown path, wrong method)        -> their status
@@ -27,7 +29,8 @@ from starlette.exceptions import HTTPException as StarletteHTTPException
 from starlette.routing import Match
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
-from app.geometry.errors import DomainError, GeometryError
+from app.admission import HardStopError, OverloadedError, current, overloaded_headers
+from app.geometry.errors import DomainError, GeometryError, TimeLimitError
 from app.geometry.precision import ExactReal
 from app.limits import LimitExceededError
 
@@ -106,6 +109,40 @@ PROBLEM_TYPES: dict[str, ProblemType] = {
             "A POST body must be JSON: `Content-Type: application/json` (or a `+json` type).",
         ),
         ProblemType(
+            "bad-request",
+            400,
+            "Bad request",
+            "The request could not be read to its end (the client went away).",
+        ),
+        ProblemType(
+            "request-timeout",
+            408,
+            "Request timeout",
+            "The request body did not arrive within DCOSH_BODY_TIMEOUT seconds.",
+        ),
+        ProblemType(
+            "content-too-large",
+            413,
+            "Content too large",
+            "The request body is larger than DCOSH_MAX_BODY_BYTES (declared or, chunked, as it "
+            "arrives); nothing of it is kept.",
+        ),
+        ProblemType(
+            "time-limit",
+            422,
+            "Over the time limit",
+            "The computation could not finish within DCOSH_TIME_LIMIT seconds from the request's "
+            "arrival (waiting counts) and was stopped; ask for a shorter range or fewer digits.",
+        ),
+        ProblemType(
+            "overloaded",
+            503,
+            "Overloaded",
+            "The worker admits no more work now (its budget of concurrent work is spent, the "
+            "request could not finish by its deadline, or the worker is shutting down); retry "
+            "after the `Retry-After` seconds, on this or another replica.",
+        ),
+        ProblemType(
             "internal-error",
             500,
             "Internal error",
@@ -121,13 +158,14 @@ def problem(
     title: str,
     detail: str,
     errors: list[dict[str, Any]] | None = None,
+    kind: str | None = None,
     **extra: Any,
 ) -> Response:
-    """A problem+json response; ``type`` is the page of the problem type with this title
-    (``about:blank`` for a title that has none, as RFC 9457 allows)."""
-    kind = _BY_TITLE.get(title)
+    """A problem+json response; ``type`` is the page of the problem type ``kind`` (its slug), or
+    of the type with this title (``about:blank`` for a title that has none, as RFC 9457 allows)."""
+    known = PROBLEM_TYPES.get(kind) if kind is not None else _BY_TITLE.get(title)
     body = {
-        "type": kind.uri if kind is not None and kind.status == status else "about:blank",
+        "type": known.uri if known is not None and known.status == status else "about:blank",
         "title": title,
         "status": status,
         "detail": detail,
@@ -148,21 +186,44 @@ def _exact_number(value: Any) -> Any:
     raise TypeError(f"{type(value).__name__} is not JSON serializable")
 
 
-def json_safe(value: Any) -> Any:
-    """A received value as it can appear in JSON (non-finite floats as strings, bytes decoded)."""
+#: An error echoes at most this many characters of a received string, and this many items of a
+#: received list or object (the rest is cut off and counted), so a large input never comes back.
+ECHO_CHARS = 200
+ECHO_ITEMS = 20
+
+
+def _short(text: str) -> str:
+    if len(text) <= ECHO_CHARS:
+        return text
+    return f"{text[:ECHO_CHARS]}… ({len(text)} characters)"
+
+
+def json_safe(value: Any, depth: int = 0) -> Any:
+    """A received value as it can appear in JSON (non-finite floats as strings, bytes decoded),
+    cut to ``ECHO_CHARS`` characters and ``ECHO_ITEMS`` items per level, 4 levels deep."""
     if isinstance(value, float) and not math.isfinite(value):
         return str(value)
     if isinstance(value, bytes):
-        return value.decode("utf-8", "replace")
+        return _short(value[: 4 * ECHO_CHARS].decode("utf-8", "replace"))
     if isinstance(value, int) and not isinstance(value, bool) and not -(2**63) <= value < 2**63:
-        return str(value)  # JSON encoders stop at 64 bits
-    if isinstance(value, str | int | float | bool) or value is None:
+        return _short(str(value))  # JSON encoders stop at 64 bits
+    if isinstance(value, str):
+        return _short(value)
+    if isinstance(value, int | float | bool) or value is None:
         return value
+    if depth >= 4:
+        return _short(str(type(value).__name__))
     if isinstance(value, list | tuple):
-        return [json_safe(v) for v in value]
+        items = [json_safe(v, depth + 1) for v in value[:ECHO_ITEMS]]
+        if len(value) > ECHO_ITEMS:
+            items.append(f"… ({len(value)} items)")
+        return items
     if isinstance(value, dict):
-        return {str(k): json_safe(v) for k, v in value.items()}
-    return str(value)
+        out = {_short(str(k)): json_safe(v, depth + 1) for k, v in list(value.items())[:ECHO_ITEMS]}
+        if len(value) > ECHO_ITEMS:
+            out["…"] = f"({len(value)} items)"
+        return out
+    return _short(str(value))
 
 
 _BOUNDS = {
@@ -228,9 +289,13 @@ async def _validation_handler(request: Request, exc: Exception) -> Response:
             f"The body must be JSON (Content-Type: application/json), not {received}.",
             [{"parameter": "Content-Type", "constraint": "application/json", "value": received}],
         )
-    errors = validation_errors(list(exc.errors()))
+    found = list(exc.errors())
+    errors = validation_errors(found[:ECHO_ITEMS])  # the first few: never a huge answer
     names = ", ".join(e["parameter"] for e in errors) or "request"
-    return problem(422, "Invalid parameters", f"Invalid value for: {names}.", errors)
+    more = (
+        f" ({len(found)} errors, the first {ECHO_ITEMS} listed)" if len(found) > ECHO_ITEMS else ""
+    )
+    return problem(422, "Invalid parameters", f"Invalid value for: {names}.{more}", errors)
 
 
 def _is_json(content_type: str | None) -> bool:
@@ -244,6 +309,9 @@ def _is_json(content_type: str | None) -> bool:
 
 
 async def _domain_handler(request: Request, exc: Exception) -> Response:
+    if isinstance(exc, TimeLimitError):
+        entry = {"parameter": exc.parameter, "constraint": exc.constraint, "value": None}
+        return problem(422, "Over the time limit", str(exc), [entry], kind="time-limit")
     if isinstance(exc, DomainError | LimitExceededError):
         entry = {
             "parameter": exc.parameter,
@@ -253,6 +321,35 @@ async def _domain_handler(request: Request, exc: Exception) -> Response:
         title = "Over the limits" if isinstance(exc, LimitExceededError) else "Outside the domain"
         return problem(422, title, str(exc), [entry])
     return problem(422, "Outside the domain", str(exc))
+
+
+async def _overloaded_handler(request: Request, exc: Exception) -> Response:
+    assert isinstance(exc, OverloadedError)
+    response = problem(
+        503, "Overloaded", f"Not admitted now: {exc.reason}; retry later.", kind="overloaded"
+    )
+    for key, value in overloaded_headers(exc.retry_after):
+        response.headers[key.decode()] = value.decode()
+    return response
+
+
+async def _hard_stop_handler(request: Request, exc: Exception) -> Response:
+    limit = request.app.state.settings.time_limit
+    constraint = f"the computation finishes within {limit:g} s (DCOSH_TIME_LIMIT)"
+    ticket = current()
+    return problem(
+        422,
+        "Over the time limit",
+        f"The computation was stopped past its deadline: {constraint}.",
+        [
+            {
+                "parameter": "request" if ticket is None else ticket.parameter,
+                "constraint": constraint,
+                "value": None,
+            }
+        ],
+        kind="time-limit",
+    )
 
 
 async def _unknown_id_handler(request: Request, exc: Exception) -> Response:
@@ -429,5 +526,7 @@ def install(app: FastAPI) -> None:
     app.add_exception_handler(GeometryError, _domain_handler)
     app.add_exception_handler(LimitExceededError, _domain_handler)
     app.add_exception_handler(UnknownIdError, _unknown_id_handler)
+    app.add_exception_handler(OverloadedError, _overloaded_handler)
+    app.add_exception_handler(HardStopError, _hard_stop_handler)
     app.add_exception_handler(StarletteHTTPException, _http_handler)
     app.add_exception_handler(Exception, _unexpected_handler)

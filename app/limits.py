@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from app import admission
 from app.geometry.precision import Arithmetic, arithmetic
 from app.settings import Settings
 
@@ -11,6 +12,103 @@ from app.settings import Settings
 #: D4b they take about 1.7–2.1 s at 50 digits, 2.8 s at 500 and 5.7 s at 1000
 #: (bench/mp.py, docs/performance.md), so the fixed part now weighs like ~800 digits.
 MP_OVERHEAD_DIGITS = 200
+
+
+# --- estimated cost -------------------------------------------------------------------------
+# Seconds are CPU seconds on one free core of the 2-core development machine, bytes the peak
+# working memory of one request (arrays, companions, checks and the encoded answer), both
+# measured with bench/costs.py and rounded up (docs/reliability.md). Time is linear in the
+# vertices and steps in float64; in mp every step costs a few mpmath calls whose price grows
+# with the digits.
+
+#: float64: seconds and bytes per vertex of a polygon (computed, checked and encoded as JSON).
+F64_VERTEX_SECONDS = 4e-6
+F64_VERTEX_BYTES = 800
+#: float64: seconds per sequential construction step (from index 0 to i_min and i_max).
+F64_STEP_SECONDS = 4e-6
+#: float64 surfaces: seconds and bytes per mesh vertex (GLB or JSON with per-face K and H).
+F64_MESH_VERTEX_SECONDS = 4e-6
+F64_MESH_VERTEX_BYTES = 2000
+#: mp: seconds and bytes per step at few digits; both grow like (1 + digits / MP_DIGITS_SCALE).
+#: (D2b) and (D4b) with every check, the dearest, take about 3.3 ms a step at 50 digits
+#: (answer encoded); the others a fraction of that (MP_STEP_SHARE).
+MP_STEP_SECONDS = 3.5e-3
+MP_STEP_BYTES = 24_000
+MP_DIGITS_SCALE = 400
+MP_STEP_SHARE = {"d1": 0.25, "d2a-quad": 0.45, "d2a-hex": 0.45, "d3": 0.35, "smooth": 0.15}
+#: mp surfaces: per mesh vertex (the mesh, its normals and per-face curvatures in mpmath).
+MP_MESH_VERTEX_SECONDS = 2.2e-3
+MP_MESH_VERTEX_BYTES = 12_000
+#: refinement studies, per construction step of their work: float64 and mp.
+F64_STUDY_STEP_SECONDS = 2e-6
+F64_STUDY_STEP_BYTES = 400
+MP_STUDY_STEP_SECONDS = 1e-4
+MP_STUDY_STEP_BYTES = 4_000
+#: Every request: parsing, encoding, the interpreter's bookkeeping.
+BASE_SECONDS = 3e-3
+BASE_BYTES = 256 * 1024
+
+
+def mp_factor(digits: int) -> float:
+    """How much dearer an mp step is at ``digits`` than at a few digits."""
+    return 1 + digits / MP_DIGITS_SCALE
+
+
+def admit(settings: Settings, seconds: float, nbytes: float, parameter: str, value: object) -> None:
+    """Refuse work that could never be admitted (422 naming ``parameter``), else charge the
+    request's admission ticket (a 503 when the worker's budget is taken, app/admission.py)."""
+    seconds += BASE_SECONDS
+    nbytes = int(nbytes + BASE_BYTES)
+    if seconds > settings.admission_seconds:
+        raise LimitExceededError(
+            parameter,
+            f"estimated time <= {settings.admission_seconds:g} s (DCOSH_ADMISSION_SECONDS; "
+            f"this request needs about {seconds:.3g} s)",
+            value,
+        )
+    if nbytes > settings.admission_bytes:
+        raise LimitExceededError(
+            parameter,
+            f"estimated memory <= {settings.admission_bytes // 2**20} MiB "
+            f"(DCOSH_ADMISSION_BYTES; this request needs about {nbytes / 2**20:.0f} MiB)",
+            value,
+        )
+    admission.charge(seconds, nbytes, parameter)
+
+
+def curve_cost(
+    vertices: int, steps: int, precision: str, digits: int, kind: str | None = None
+) -> tuple[float, float]:
+    """(seconds, bytes) of one polygon: ``vertices`` answered, ``steps`` computed; ``kind`` is
+    the discretization's id (None: priced as the dearest)."""
+    if precision == "mp":
+        factor = mp_factor(digits) * MP_STEP_SHARE.get(kind or "", 1.0)
+        work = max(vertices, steps)
+        return MP_STEP_SECONDS * factor * work, MP_STEP_BYTES * factor * work
+    constructed = steps if steps > vertices else 0
+    return (
+        F64_VERTEX_SECONDS * vertices + F64_STEP_SECONDS * constructed,
+        F64_VERTEX_BYTES * max(vertices, constructed),
+    )
+
+
+def mesh_cost(vertices: int, precision: str, digits: int) -> tuple[float, float]:
+    """(seconds, bytes) of a surface mesh of ``vertices`` vertices (its meridian apart)."""
+    if precision == "mp":
+        factor = mp_factor(digits)
+        return (
+            MP_MESH_VERTEX_SECONDS * factor * vertices,
+            MP_MESH_VERTEX_BYTES * factor * vertices,
+        )
+    return F64_MESH_VERTEX_SECONDS * vertices, F64_MESH_VERTEX_BYTES * vertices
+
+
+def study_cost(work: int, precision: str, digits: int) -> tuple[float, float]:
+    """(seconds, bytes) of a refinement study of ``work`` construction steps."""
+    if precision == "mp":
+        factor = mp_factor(digits)
+        return MP_STUDY_STEP_SECONDS * factor * work, MP_STUDY_STEP_BYTES * factor * work
+    return F64_STUDY_STEP_SECONDS * work, F64_STUDY_STEP_BYTES * work
 
 
 class LimitExceededError(ValueError):
@@ -30,8 +128,10 @@ def enforce_range(
     method: str,
     precision: str,
     digits: int,
+    kind: str | None = None,
 ) -> None:
-    """Refuse oversize index ranges, long constructions and expensive mp requests.
+    """Refuse oversize index ranges, long constructions and expensive mp requests, then charge
+    the request's estimated cost (``kind``: the discretization's id, for its mp price).
 
     The order i_min <= i_max is the core's to check (a domain error); here an empty range
     simply costs nothing.
@@ -61,6 +161,9 @@ def enforce_range(
                 f"precision=mp (this range needs {steps} steps)",
                 digits,
             )
+    seconds, nbytes = curve_cost(vertices, steps, precision, digits, kind)
+    driver = ("digits", digits) if precision == "mp" else ("i_max", i_max)
+    admit(settings, seconds, nbytes, *driver)
 
 
 def enforce_digits(settings: Settings, digits: int) -> None:
@@ -86,6 +189,8 @@ def enforce_mesh(settings: Settings, rows: int, columns: int, precision: str, di
             f"(this mesh has {vertices} vertices)",
             digits,
         )
+    seconds, nbytes = mesh_cost(vertices, precision, digits)
+    admit(settings, seconds, nbytes, "m", vertices)
 
 
 def enforce_drawing(settings: Settings, i_min: int, i_max: int) -> None:
@@ -139,6 +244,8 @@ def enforce_study(
                 "levels or samples)",
                 digits,
             )
+    seconds, nbytes = study_cost(max(mp_work, built), precision, digits)
+    admit(settings, seconds, nbytes, "levels", levels)
 
 
 def enforce_relation_row(settings: Settings, parameter: str, i_min: int, i_max: int) -> None:
@@ -157,4 +264,7 @@ def timed_arithmetic(settings: Settings, precision: str, digits: int) -> Arithme
     the limit stops with a 422 naming what drives its cost (digits in mp, else the range)."""
     ar = arithmetic(precision, digits)  # type: ignore[arg-type]
     ar.start_clock(settings.time_limit, "digits" if precision == "mp" else "i_max")
+    deadline = admission.deadline()
+    if deadline is not None:  # the clock runs from the request's arrival: waiting counts
+        ar.deadline = deadline
     return ar

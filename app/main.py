@@ -1,5 +1,6 @@
 """The FastAPI application: ``create_app()`` and the module-level ``app``."""
 
+import sys
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
 from typing import Any
@@ -9,6 +10,14 @@ from fastapi import Depends, FastAPI
 from fastapi.middleware.cors import CORSMiddleware
 
 from app import __version__, errors
+from app.admission import (
+    SPARE_THREADS,
+    SWITCH_INTERVAL,
+    Admission,
+    AdmissionGate,
+    BoundedIO,
+    drain_on_sigterm,
+)
 from app.compression import Compress
 from app.response_cache import FastPath, ResponseCache
 from app.routers import (
@@ -59,15 +68,24 @@ TAGS = [
     {"name": "surfaces", "description": "Catenoids, pseudosphere and Gauss images as meshes."},
     {"name": "smooth", "description": "Smooth references of Section 2: catenary and tractrix."},
     {"name": "errata", "description": "The paper's printed formulas found wrong (docs/errata.md)."},
-    {"name": "service", "description": "Health, and the problem types of error responses."},
+    {
+        "name": "service",
+        "description": "Liveness, readiness, and the problem types of error responses.",
+    },
 ]
 
 
 @asynccontextmanager
 async def lifespan(app: FastAPI) -> AsyncIterator[None]:
-    """Bound the threads that run computations (FastAPI runs sync endpoints in a thread pool)."""
+    """Bound the threads that run computations (FastAPI runs sync endpoints in a thread pool;
+    a few spare threads keep catalogs answering while every compute thread is busy), and turn
+    /ready to 503 on SIGTERM."""
     limiter = anyio.to_thread.current_default_thread_limiter()
-    limiter.total_tokens = app.state.settings.compute_threads
+    limiter.total_tokens = app.state.settings.compute_threads + SPARE_THREADS
+    # the event loop (parsing, /health, refusals) needs the GIL between computations' bytecodes:
+    # a shorter switch interval than the default 5 ms gives it back sooner
+    sys.setswitchinterval(SWITCH_INTERVAL)
+    drain_on_sigterm(app.state.admission)
     yield
 
 
@@ -90,7 +108,10 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.state.response_cache = ResponseCache(
         app.state.settings.response_cache_bytes, app.state.settings.response_cache_entry_bytes
     )
-    # innermost: cached answers still pass CORS and the security headers
+    app.state.admission = Admission(app.state.settings)
+    # innermost: the gate bounds the computational requests that the cache does not answer
+    app.add_middleware(AdmissionGate, admission=app.state.admission)
+    # cached answers still pass CORS and the security headers
     app.add_middleware(FastPath, cache=app.state.response_cache, settings=app.state.settings)
     app.add_middleware(Compress, settings=app.state.settings)  # what the cache did not compress
     app.add_middleware(
@@ -101,7 +122,9 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         expose_headers=["ETag", "X-First-Index"],
     )
     app.add_middleware(SecurityHeaders)
-    app.add_middleware(errors.HeadAsGet)  # outermost: HEAD is GET everywhere inside
+    app.add_middleware(errors.HeadAsGet)  # HEAD is GET everywhere inside
+    # outermost: deadlines from arrival, capped bodies, body and send timeouts
+    app.add_middleware(BoundedIO, admission=app.state.admission)
     errors.install(app)
     app.include_router(health.router)
     app.include_router(discretizations.router)

@@ -73,9 +73,53 @@ class Settings(BaseSettings):
     time_limit: float = Field(
         20.0,
         gt=0,
-        description="Seconds a computation may run: the sequential constructions and the mp "
-        "operations check the clock and stop past it with a 422 (the work budget above keeps "
-        "requests well below it; this is the backstop).",
+        description="Seconds from a request's arrival to its answer: waiting counts; a request "
+        "that cannot finish in time is refused before it starts (503), and a computation "
+        "that overruns stops with a 422 (the time-limit problem type).",
+    )
+    admission_seconds: float = Field(
+        12.0,
+        gt=0,
+        description="Estimated seconds of computation one worker admits at once (the sum over "
+        "the requests it is computing); beyond it a request gets a 503 with Retry-After. A "
+        "single request estimated above it is refused with a 422 (it could never be admitted).",
+    )
+    admission_bytes: int = Field(
+        1536 * 2**20,
+        ge=2**20,
+        description="Estimated bytes of working memory one worker admits at once (default sized "
+        "for 2 workers on a 4 GiB host: 2 × (1.5 GiB + the response cache + ~100 MiB of "
+        "interpreter) ≈ 3.7 GiB); "
+        "a single request estimated above it is refused with a 422.",
+    )
+    admission_queue: int = Field(
+        8,
+        ge=0,
+        description="Computational requests a worker lets wait for a compute thread; the next "
+        "one gets a 503 at once (never an unbounded queue).",
+    )
+    hard_stop_grace: float = Field(
+        0.5,
+        gt=0,
+        description="Seconds past its deadline after which a computation still running is "
+        "stopped from outside (an exception raised in its thread).",
+    )
+    max_body_bytes: int = Field(
+        8 * 2**20,
+        ge=1024,
+        description="Largest request body (declared or chunked): a 413 before it is read, or as "
+        "soon as a chunked body passes it.",
+    )
+    body_timeout: float = Field(
+        10.0,
+        gt=0,
+        description="Seconds a request body may take to arrive (slow clients get a 408).",
+    )
+    send_timeout: float = Field(
+        30.0,
+        gt=0,
+        description="Seconds one write of a response may wait for a client that does not read "
+        "before the connection is dropped.",
     )
     cors_origins: list[str] = Field(
         default_factory=lambda: ["*"],

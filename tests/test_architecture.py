@@ -79,3 +79,23 @@ def test_nothing_from_a_request_is_evaluated_or_written() -> None:
         assert "subprocess" not in {m.split(".")[0] for m in imported_modules(path)}, path.name
         writes = methods & {"write_text", "write_bytes"}
         assert not writes or path.name == "openapi_export.py", f"{path.name} writes files"
+
+
+APP = CORE.parent
+WEB_MODULES = {"main.py", "errors.py"}
+"""Besides the routers, only these import FastAPI (the app factory and the error handlers)."""
+HTTP_PLUMBING = {"admission.py", "compression.py", "response_cache.py", "security.py"}
+"""ASGI middlewares: they speak HTTP through Starlette's types, never FastAPI's."""
+
+
+def test_only_routers_main_and_errors_import_fastapi() -> None:
+    for path in sorted(APP.rglob("*.py")):
+        relative = path.relative_to(APP)
+        tops = {name.split(".")[0] for name in imported_modules(path)}
+        if relative.parts[0] == "routers" or relative.name in WEB_MODULES:
+            continue
+        assert "fastapi" not in tops, f"{relative} imports fastapi"
+        if relative.parts[0] in ("geometry", "services", "rendering", "schemas"):
+            assert "starlette" not in tops, f"{relative} imports starlette"
+        elif "starlette" in tops:
+            assert relative.name in HTTP_PLUMBING, f"{relative} imports starlette"

@@ -22,7 +22,6 @@ from app.responses import (
     CSV_MEDIA_TYPE,
     NPY_MEDIA_TYPE,
     NPZ_MEDIA_TYPE,
-    JSONBytesResponse,
     checks_csv,
     curve_csv,
     curve_document,
@@ -30,6 +29,7 @@ from app.responses import (
     curve_npz,
     encode_json,
 )
+from app.routers.caching import JSONBytesResponse
 from app.schemas.common import PROBLEM_RESPONSES, CurveQuery
 from app.schemas.convergence import StudyQuery
 from app.services.selection import selection
@@ -201,6 +201,7 @@ def compute(entry: Discretization, query: CurveQuery, settings: Settings) -> Cur
         arguments.get("method", "construction"),
         query.precision,
         query.digits,
+        kind=entry.info.id,
     )
     if query.format == "svg":
         enforce_drawing(settings, arguments["i_min"], arguments["i_max"])

@@ -8,15 +8,8 @@ from app.errors import UnknownIdError
 from app.registry import STUDIES, ConvergenceStudy
 from app.rendering.convergence import study_svg
 from app.rendering.curves import SVG_MEDIA_TYPE
-from app.responses import (
-    CSV_MEDIA_TYPE,
-    JSONBytesResponse,
-    cached,
-    canonical_key,
-    encode_json,
-    study_csv,
-    study_document,
-)
+from app.responses import CSV_MEDIA_TYPE, canonical_key, encode_json, study_csv, study_document
+from app.routers.caching import JSONBytesResponse, cached
 from app.routers.common import SVG_HEADERS, prepare_study, reject_repeated_parameters, settings_of
 from app.routers.discretizations import parameter_infos
 from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES

@@ -8,7 +8,8 @@ from app.errors import UnknownIdError
 from app.geometry.precision import Float64
 from app.geometry.statement_tex import CONSTANT_TEX, PARAMETER_TEX
 from app.registry import DISCRETIZATIONS, Discretization
-from app.responses import cached, canonical_key
+from app.responses import canonical_key
+from app.routers.caching import cached
 from app.routers.common import (
     CURVE_RESPONSES,
     ExactJSONRoute,

@@ -20,7 +20,8 @@ from markdown_it.token import Token
 from pydantic import BaseModel, Field
 
 from app.errors import UnknownIdError
-from app.responses import JSONBytesResponse, encode_json
+from app.responses import encode_json
+from app.routers.caching import JSONBytesResponse
 from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES, StrictModel
 
 ROOT = FilePath(__file__).resolve().parents[2]

@@ -7,7 +7,8 @@ from fastapi import APIRouter, Depends, Query, Request, Response
 from app.errors import UnknownIdError
 from app.limits import enforce_drawing
 from app.rendering.curves import SVG_MEDIA_TYPE
-from app.responses import cached, canonical_key
+from app.responses import canonical_key
+from app.routers.caching import cached
 from app.routers.common import SVG_HEADERS, reject_repeated_parameters, settings_of
 from app.routers.discretizations import parameter_infos
 from app.schemas.catalog import FigureEntry

@@ -15,7 +15,8 @@ from app.geometry.errors import DomainError
 from app.limits import LimitExceededError, enforce_digits, enforce_relation_row
 from app.registry import DISCRETIZATIONS, Discretization
 from app.rendering.tables import Table, TableCell, table_html, table_svg
-from app.responses import JSONBytesResponse, cached, canonical_key, encode_json, number
+from app.responses import canonical_key, encode_json, number
+from app.routers.caching import JSONBytesResponse, cached
 from app.routers.common import (
     SVG_HEADERS,
     compute,

@@ -8,9 +8,17 @@ from fastapi import APIRouter, Depends, Query, Request, Response
 from app.errors import UnknownIdError
 from app.geometry.curve import Curve
 from app.geometry.precision import Float64
-from app.limits import MP_OVERHEAD_DIGITS, LimitExceededError, enforce_digits, timed_arithmetic
+from app.limits import (
+    MP_OVERHEAD_DIGITS,
+    LimitExceededError,
+    admit,
+    curve_cost,
+    enforce_digits,
+    timed_arithmetic,
+)
 from app.registry import SMOOTH
-from app.responses import cached, canonical_key
+from app.responses import canonical_key
+from app.routers.caching import cached
 from app.routers.common import (
     CURVE_RESPONSES,
     curve_response,
@@ -50,6 +58,8 @@ def enforce_samples(settings: Settings, query: SmoothQuery) -> None:
                 "precision=mp",
                 query.digits,
             )
+    seconds, nbytes = curve_cost(query.count, query.count, query.precision, query.digits, "smooth")
+    admit(settings, seconds, nbytes, "count", query.count)
 
 
 def _register(name: str, compute: Callable[..., Curve], title: str, description: str) -> None:

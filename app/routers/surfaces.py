@@ -5,7 +5,8 @@ from typing import Annotated, Any
 from fastapi import APIRouter, Body, Depends, Path, Request, Response
 
 from app.registry import DISCRETIZATIONS
-from app.responses import cached, canonical_key
+from app.responses import canonical_key
+from app.routers.caching import cached
 from app.routers.common import (
     discretization,
     parse_query,

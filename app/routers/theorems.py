@@ -9,8 +9,9 @@ from app.geometry.checks import Check
 from app.geometry.precision import arithmetic
 from app.geometry.statement_tex import CLAIM_TEX, ERRATUM_TEX
 from app.registry import SMOOTH, STATEMENTS
-from app.responses import JSONBytesResponse, cached, canonical_key, encode_json
+from app.responses import canonical_key, encode_json
 from app.routers import surfaces
+from app.routers.caching import JSONBytesResponse, cached
 from app.routers.common import (
     compute,
     discretization,

@@ -264,7 +264,22 @@ PROBLEM_RESPONSES: dict[int | str, dict[str, Any]] = {
     422: {
         "model": Problem,
         "content": {"application/problem+json": {}},
-        "description": "Invalid, out-of-domain or oversize input (names the parameter).",
+        "description": "Invalid, out-of-domain or oversize input (names the parameter), or a "
+        "computation stopped at the time limit (type `…/problems/time-limit`).",
+    },
+    503: {
+        "model": Problem,
+        "content": {"application/problem+json": {}},
+        "description": "Overloaded (type `…/problems/overloaded`): this worker does not admit the "
+        "request now (its admitted work is at its budget, its queue is full, the request could "
+        "not finish within the time limit of its arrival, or it is shutting down). Retry after "
+        "`Retry-After` seconds.",
+        "headers": {
+            "Retry-After": {
+                "description": "Seconds after which a retry is likely admitted.",
+                "schema": {"type": "integer"},
+            }
+        },
     },
 }
 NOT_FOUND_RESPONSE: dict[int | str, dict[str, Any]] = {

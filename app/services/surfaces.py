@@ -133,6 +133,7 @@ def compute(
         method,
         curve_query.precision,
         curve_query.digits,
+        kind=entry.info.id,
     )
     if kind.meridian == "tractrix" and not {"tractrix", "tractrix_gauss_image"} <= set(
         entry.info.companions

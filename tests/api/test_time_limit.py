@@ -1,33 +1,84 @@
-"""The time limit: sequential constructions and mp operations stop past DCOSH_TIME_LIMIT."""
+"""The time limit runs from arrival: a request that cannot finish in time is refused before it
+starts (503); one that overruns is stopped by the core's clock checks or, failing those, from
+outside by the watchdog, and answered with the time-limit problem type."""
 
 from __future__ import annotations
 
 import pytest
 from fastapi.testclient import TestClient
 
+from app import limits
 from app.geometry.d4b import discretization as d4b
 from app.geometry.errors import TimeLimitError
-from app.geometry.precision import Float64, MultiPrecision
+from app.geometry.precision import Arithmetic, Float64, MultiPrecision
 from app.main import create_app
 from app.settings import Settings
 
+TIME_LIMIT_TYPE = "/problems/time-limit"
 
-def test_a_long_construction_stops_with_a_422_naming_the_range() -> None:
+
+@pytest.fixture
+def free_estimates(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Estimates of zero cost, so that admission lets an overrunning request start."""
+    for name in ("BASE_SECONDS", "F64_STEP_SECONDS", "F64_VERTEX_SECONDS", "MP_STEP_SECONDS"):
+        monkeypatch.setattr(limits, name, 0.0)
+    monkeypatch.setattr(limits, "MP_MESH_VERTEX_SECONDS", 0.0)
+
+
+def warm(client: TestClient) -> TestClient:
+    """The first request of an app pays for lazy set-up; later ones only for themselves."""
+    client.get("/discretizations/d4b", params={"i_max": 3})
+    return client
+
+
+def test_a_request_that_cannot_finish_in_time_is_refused_before_it_starts() -> None:
     client = TestClient(create_app(Settings(time_limit=0.001)))
-    response = client.get("/discretizations/d4b", params={"d": 1e-4, "i_min": 0, "i_max": 200000})
+    response = client.get("/discretizations/d4b", params={"d": 1e-4, "i_max": 200000})
+    assert response.status_code == 503
+    assert response.json()["type"] == "/problems/overloaded"
+    assert "cannot finish within 0.001 s" in response.json()["detail"]
+    assert int(response.headers["retry-after"]) >= 1
+
+
+@pytest.mark.usefixtures("free_estimates")
+def test_a_long_construction_stops_with_the_time_limit_problem_naming_the_range() -> None:
+    client = warm(TestClient(create_app(Settings(time_limit=0.5))))
+    response = client.get("/discretizations/d4b", params={"d": 1e-4, "i_min": 0, "i_max": 999_999})
     assert response.status_code == 422
-    (error,) = response.json()["errors"]
+    body = response.json()
+    assert body["type"] == TIME_LIMIT_TYPE and body["title"] == "Over the time limit"
+    (error,) = body["errors"]
     assert error["parameter"] == "i_max"
-    assert "within 0.001 s (DCOSH_TIME_LIMIT)" in error["constraint"]
+    assert "within 0.5 s (DCOSH_TIME_LIMIT)" in error["constraint"]
 
 
-def test_an_mp_computation_stops_with_a_422_naming_digits() -> None:
-    client = TestClient(create_app(Settings(time_limit=0.001)))
+@pytest.mark.usefixtures("free_estimates")
+def test_an_mp_computation_stops_with_the_time_limit_problem_naming_digits() -> None:
+    client = warm(TestClient(create_app(Settings(time_limit=0.5))))
     response = client.get(
-        "/discretizations/d2a-quad", params={"precision": "mp", "digits": 300, "i_max": 200}
+        "/discretizations/d2a-quad", params={"precision": "mp", "digits": 300, "i_max": 1900}
     )
     assert response.status_code == 422
+    assert response.json()["type"] == TIME_LIMIT_TYPE
     assert response.json()["errors"][0]["parameter"] == "digits"
+
+
+@pytest.mark.usefixtures("free_estimates")
+def test_a_computation_without_clock_checks_is_stopped_from_outside(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # mp arithmetic on object arrays (a * b) never reaches check_time; here no check does
+    monkeypatch.setattr(Arithmetic, "check_time", lambda self: None)
+    client = warm(TestClient(create_app(Settings(time_limit=1.0, hard_stop_grace=0.2))))
+    response = client.get(  # minutes of work unstopped
+        "/surfaces/catenoid",
+        params={"discretization": "d4b", "precision": "mp", "digits": 20, "i_max": 100, "m": 200},
+    )
+    assert response.status_code == 422
+    assert response.json()["type"] == TIME_LIMIT_TYPE
+    assert "stopped past its deadline" in response.json()["detail"]
+    # the worker thread survives and serves the next request
+    assert client.get("/discretizations/d4b", params={"i_max": 10}).status_code == 200
 
 
 def test_within_the_limit_nothing_changes() -> None:

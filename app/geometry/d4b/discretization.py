@@ -1,22 +1,21 @@
 """(D4b) Wunderlich's discrete hyperbolic cosine, with Theorems 4–8 checked on it.
 
-The polygon comes from the construction (``kinematic_tractrix``) by default, or from the closed
-forms (``kinematic_closed_forms``) with ``method="closed-form"``; the checks compare the two and
-test the properties that Section 4.2 proves. The Gauss images of Section 5 and Theorems 7, 8 are
-assembled in ``d4b_curvature``.
+The polygon comes from the construction (``construction``) by default, or from the closed forms
+(``closed_forms``) with ``method="closed-form"``; the checks (``checks``) compare the two and test
+the properties that Section 4.2 proves. The Gauss images of Section 5 and Theorems 7, 8 are built
+and checked in ``curvature``. Every polygon is computed on demand (``D4bPolygons``).
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import replace
 from functools import cached_property
 from typing import Any, Literal
 
 import numpy as np
 
-from app.geometry import conditions, darboux, nikolaides
+from app.geometry import darboux
 from app.geometry.catalog.section3 import (
     D4B_DARBOUX as DARBOUX,
     D4B_DARBOUX_DISTANCE as DARBOUX_DISTANCE,
@@ -34,30 +33,19 @@ from app.geometry.catalog.section4 import (
     D4B_TWO_STEP as TWO_STEP,
 )
 from app.geometry.checks import (
-    Check,
-    Erratum,
     Statement,
-    check_residuals,
-    not_applicable,
-    point_distance,
-    printed_residual,
-    relative_difference,
-    relative_point_difference,
-    relative_to,
 )
 from app.geometry.curve import EVERYTHING, Curve, DiscretizationInfo, Selection, require_range
 from app.geometry.d4b import (
     closed_forms as kinematic_closed_forms,
     curvature as d4b_curvature,
-    residual_kernels,
 )
+from app.geometry.d4b.checks import conditioning, evaluate, tolerances
 from app.geometry.d4b.construction import KinematicTractrix, construct, validate
 from app.geometry.errors import NotRepresentableError
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 from app.geometry.tolerances import (
     FLOAT64_COORDINATE_LIMIT,
-    LOCAL_STEPS,
-    NOT_CONSTRUCTED,
     RESOLUTION_MARGIN,
 )
 
@@ -107,25 +95,6 @@ INFO = DiscretizationInfo(
     statements=STATEMENTS,
 )
 
-ERRATUM_ANGLE = (
-    "E1",
-    "α_i is the angle at p_i between the lines to (x_i, 0) and (x_{i+1}, 0)",
-    "α_i is the angle at p_i between the lines to x_{i−1} and x_i (Theorem 5's indexing, "
-    "p_i^x = (2i−1)d)",
-)
-ERRATUM_RATIO = (
-    "E2",
-    "Δ²p_i^{y2}/(l_i + l_{i+1}) = Δ²p_{i+1}^{y2}/(l_{i+1} + l_{i+2}) with the proof's "
-    "l_i = √(4d² + (p_i^y − p_{i−1}^y)²)",
-    "Δ²p_i^y/(l_i + l_{i+1}) = Δ²p_{i+1}^y/(l_{i+1} + l_{i+2}) with l_i = |p_{i+1} − p_i| as in "
-    "(D1)",
-)
-ERRATUM_TWO_STEP = (
-    "E3",
-    "d⁴(2p_i^{y3} + 2p_{i−1}^y + 3p_i^y) in the numerator of p_{i+2}^y",
-    "d⁴(2p_{i−1}^y + 3p_i^y)",
-)
-
 
 class D4bPolygons:
     """The polygons of one (D4b) computation, ``(n + 1, 2)`` each, on i_min .. i_max + 1.
@@ -152,7 +121,7 @@ class D4bPolygons:
         self.ar, self.beta0, self.i_min, self.i_max = ar, beta0, i_min, i_max
         self.parameters = (h, d)
         self.h, self.d = ar.scalar(h), ar.scalar(d)
-        self.constructed = method == "construction"
+        self.constructed: bool = method == "construction"
 
     def replaced(self, **polygons: Any) -> D4bPolygons:
         """A copy with the given polygons (``p=…``, ``gauss=…``) in place of the computed ones."""
@@ -270,74 +239,6 @@ def polygons(
     return D4bPolygons(ar, h, d, beta0, i_min, i_max, method)
 
 
-def conditioning(h: float, d: float) -> float:
-    """κ = h²/(h² − d²): how much one step of (D4b) amplifies rounding.
-
-    Both the construction (h − d·cos β cancels for a steep stick) and the recursion (13) (its
-    denominator p_{i−1}^y p_i^y − d² can be as small as h² − d²) lose log10(κ) digits as d → h;
-    the local tolerances are multiplied by κ (1.01 for d = h/10, 50 for d = 0.99h).
-    """
-    ratio = float(d) / float(h)
-    return 1 / ((1 - ratio) * (1 + ratio))
-
-
-def evaluate(
-    ar: Arithmetic,
-    h: float,
-    d: float,
-    data: D4bPolygons,
-    detail: bool = False,
-    beta0: float | None = None,
-    selection: Selection = EVERYTHING,
-) -> tuple[dict[str, Scalar], list[Check]]:
-    """Fitted constants and the selected checks of ``STATEMENTS`` on the given polygons.
-
-    Each check computes only the polygons and shared quantities it needs (``_Context``); the
-    constants of (D1), (D3) and (2) come with the checks (none for ``checks=none``).
-    """
-    ctx = _Context(ar, ar.scalar(h), ar.scalar(d), data, detail)
-    checks = [
-        evaluator(ctx)
-        for statement, evaluator in _EVALUATORS
-        if selection.wants_check(statement.id)
-    ]
-    if any(selection.wants_check(s.id) for s in d4b_curvature.STATEMENTS):
-        n = ctx.n
-        shift = kinematic_closed_forms.tilt_shift(ar, ctx.h, ctx.d, beta0)
-        checks += d4b_curvature.evaluate(
-            ar,
-            ctx.h,
-            data.p,
-            data.tractrix,
-            data.gauss,
-            d4b_curvature.printed_forms(ar, ctx.h, ctx.d, shift, data.i_min, data.i_min + n - 1),
-            ctx.indices,
-            n,
-            ctx.tolerance,
-            ctx.construction_tolerance,
-            detail,
-        )
-    constants: dict[str, Scalar] = {}
-    if not selection.no_checks:
-        constants = {k: f.constant for k, f in ctx.fits.items() if f.constant is not None}
-    return constants, checks
-
-
-def tolerances(ar: Arithmetic, h: float, d: float, data: D4bPolygons) -> tuple[float, float, int]:
-    """(local tolerance, construction tolerance, construction steps) of one computation.
-
-    Local: a check on a few neighbouring vertices, times the conditioning κ (and the closed
-    forms' own rounding when the polygons are the closed forms). Construction: comparisons
-    along the whole recursion from stick 0.
-    """
-    n = data.vertices - 1
-    rounding = 4 * math.ceil(data.exponent)  # steps' worth of the closed forms' own rounding
-    kappa = conditioning(h, d)
-    local = kappa * ar.tolerance(LOCAL_STEPS + (0 if data.constructed else rounding))
-    steps = max(abs(data.i_min - 1), abs(data.i_min + n)) + 1 + rounding
-    return local, ar.tolerance(max(steps, LOCAL_STEPS)), steps
-
-
 def compute(
     ar: Arithmetic,
     h: float = 1.0,
@@ -396,250 +297,6 @@ COMPANIONS: dict[str, Callable[[D4bPolygons], Array]] = {
 }
 
 
-class _Context:
-    """What the checks of one computation share, each part computed when first needed."""
-
-    def __init__(
-        self, ar: Arithmetic, h: Scalar, d: Scalar, data: D4bPolygons, detail: bool
-    ) -> None:
-        self.ar, self.h, self.d, self.data, self.detail = ar, h, d, data, detail
-        self.n = data.vertices - 1
-        self.indices = np.arange(data.i_min, data.i_min + self.n + 1, dtype=np.int64)
-
-    @cached_property
-    def _tolerances(self) -> tuple[float, float, int]:
-        return tolerances(self.ar, self.h, self.d, self.data)
-
-    @property
-    def tolerance(self) -> float:
-        """The local tolerance: a check on a few neighbouring vertices."""
-        return self._tolerances[0]
-
-    @property
-    def construction_tolerance(self) -> float:
-        """Comparisons along the whole recursion from stick 0."""
-        return self._tolerances[1]
-
-    @property
-    def steps(self) -> int:
-        """Construction steps from stick 0 to the farthest index (plus the closed forms')."""
-        return self._tolerances[2]
-
-    @cached_property
-    def fits(self) -> dict[str, conditions.ConditionFit]:
-        """Least-squares fits of (D1), (D3) and (2) on p_{i_min} .. p_{i_max}."""
-        p = self.data.p[: self.n]
-        return {
-            "d1": conditions.d1(self.ar, p),
-            "d3": conditions.d3(self.ar, p),
-            "eq2": conditions.equation_2(self.ar, p),
-        }
-
-    def check(
-        self,
-        statement: Statement,
-        first: int,
-        residuals: Array,
-        erratum: Erratum | None = None,
-        factor: int = 1,
-    ) -> Check:
-        """A check whose k-th residual belongs to index ``indices[first + k]``.
-
-        ``factor`` widens the local tolerance for formulas with several times the usual number
-        of operations and vertices.
-        """
-        idx = self.indices[first : first + len(residuals)]
-        tolerance = self.tolerance * factor
-        return check_residuals(statement, self.ar, idx, residuals, tolerance, self.detail, erratum)
-
-
-def _hypothesis(ctx: _Context, p: Array) -> Check:
-    y = p[: ctx.n, 1]
-    d2 = ctx.d * ctx.d
-    products = y[:-1] * y[1:]
-    violation = np.maximum(d2 - products, ctx.ar.scalar(0)) / d2
-    check = ctx.check(HYPOTHESIS, 1, violation)
-    if len(products):
-        smallest = ctx.ar.to_float(np.min(products / d2))
-        return replace(check, note=f"smallest p_(i-1)^y p_i^y / d² = {smallest:.6g}")
-    return check
-
-
-def _fitted(
-    ctx: _Context,
-    statement: Statement,
-    fit: conditions.ConditionFit,
-    erratum: Erratum | None = None,
-) -> Check:
-    check = ctx.check(statement, 0, fit.residuals, erratum)
-    if fit.constant is not None and not fit.constant > 0 and check.holds:
-        return replace(check, holds=False, note="the fitted constant is not > 0")
-    return check
-
-
-def _equation_2(ctx: _Context, fits: dict[str, conditions.ConditionFit], p: Array) -> Check:
-    """(2) with the fitted c and with c = c_(D1)/c_(D3), both residuals measured alike.
-
-    Comparing the constants themselves would ask more than the data resolve: a constant fitted
-    to second differences is known only to eps·|y|/|Δ²y| relative, about eps·(h/d)², while the
-    equation's residual stays relative to the magnitude of the numbers it is computed from.
-    """
-    c, c1, c2 = (fits[k].constant for k in ("eq2", "d1", "d3"))
-    residuals = fits["eq2"].residuals
-    if c1 is not None and c2 is not None and c2 != 0 and len(residuals):
-        residuals = np.maximum(residuals, conditions.equation_2_misfit(ctx.ar, p, c1 / c2))
-    return _fitted(ctx, THEOREM_4_III, conditions.ConditionFit(c, residuals))
-
-
-def _ratio_erratum(ctx: _Context, p: Array) -> Erratum | None:
-    """The proof's ratio with its own l_i = |p_i − p_{i−1}|: not constant along the polygon."""
-    y = p[:, 1]
-    ar = ctx.ar
-    lengths = ar.hypot(p[1:, 0] - p[:-1, 0], y[1:] - y[:-1])  # lengths[k] = |p_{k+1} − p_k|
-    # printed: Δ²p_i^y / (l'_i + l'_{i+1}) with l'_i = |p_i − p_{i−1}|, for i with p_{i−1} known
-    ratio = (y[3:] - 2 * y[2:-1] + y[1:-2]) / (lengths[:-2] + lengths[1:-1])
-    if len(ratio) < 2:
-        return Erratum(*ERRATUM_RATIO, printed_residual=None)
-    spread = relative_difference(ar, ratio, np.full_like(ratio, np.sum(ratio) / len(ratio)))
-    return Erratum(*ERRATUM_RATIO, printed_residual=printed_residual(ar, spread))
-
-
-def _rotation_angle(ctx: _Context, p: Array, axis: Array) -> Check:
-    ar, n = ctx.ar, ctx.n
-    a = axis[: n - 1] - p[1:n]  # x_{i−1} − p_i
-    b = axis[1:n] - p[1:n]  # x_i − p_i
-    angle = _signed_angle(ar, a, b)
-    formula = 2 * ar.atan2(ctx.d, p[1:n, 1])
-    # printed indexing: the angle at p_i between x_i and x_{i+1}
-    printed = _signed_angle(ar, axis[1:n] - p[1:n], axis[2 : n + 1] - p[1:n])
-    erratum = Erratum(*ERRATUM_ANGLE, printed_residual=printed_residual(ar, abs(printed - formula)))
-    return ctx.check(ROTATION_ANGLE, 1, abs(angle - formula), erratum)
-
-
-def _signed_angle(ar: Arithmetic, a: Array, b: Array) -> Array:
-    """The angle turning vector a_k into b_k, in (−π, π]; ``(n, 2) -> (n,)``."""
-    cross = a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]
-    return ar.atan2(cross, a[:, 0] * b[:, 0] + a[:, 1] * b[:, 1])
-
-
-def _recursion(ctx: _Context, p: Array) -> Check:
-    y = p[:, 1]
-    if ctx.ar.mode == "float64":  # the same residuals in one compiled pass
-        return ctx.check(RECURSION_13, 1, residual_kernels.recursion_residuals(ctx.d, y)[0])
-    predicted = kinematic_closed_forms.recursion_13(ctx.d, y[:-2], y[1:-1])
-    return ctx.check(RECURSION_13, 1, relative_difference(ctx.ar, y[2:], predicted))
-
-
-def _two_step(ctx: _Context, p: Array) -> Check:
-    y = p[:, 1]
-    ar = ctx.ar
-    erratum = None
-    if ar.mode == "mp" or float(np.max(abs(y))) < 1e60:  # the printed form has 7th powers
-        printed = kinematic_closed_forms.two_step_printed(ctx.d, y[:-3], y[1:-2])
-        erratum = Erratum(
-            *ERRATUM_TWO_STEP,
-            printed_residual=printed_residual(ar, relative_difference(ar, y[3:], printed)),
-        )
-    else:
-        erratum = Erratum(*ERRATUM_TWO_STEP, printed_residual=None)
-    # (13) twice: three vertices and about three times the operations of a local check
-    if ar.mode == "float64":  # the same residuals in one compiled pass
-        residuals = residual_kernels.recursion_residuals(ctx.d, y)[1]
-    else:
-        corrected = kinematic_closed_forms.two_step(ctx.d, y[:-3], y[1:-2])
-        residuals = relative_difference(ar, y[3:], corrected)
-    return ctx.check(TWO_STEP, 1, residuals, erratum, factor=3)
-
-
-def _closed_form(
-    ctx: _Context,
-    statement: Statement,
-    constructed: bool,
-    computed: Array,
-    closed_form: Callable[[], Array],
-    steps: int,
-    scale: Array | None = None,
-) -> Check:
-    """Construction against closed form; the construction's rounding grows with its steps.
-
-    ``scale`` (per vertex) replaces |closed form| as the magnitude the difference is measured
-    against where the vertex is a difference of larger terms: d_i = x_i + h·u_i is computed to
-    a few units of |x_i| + h, and its x-coordinate vanishes (|d_i| → 0) near β0 → 0 or π, where
-    a difference relative to |d_i| reported errors of 1e-7 for points right to 1e-16 (issue 15).
-    """
-    tolerance = conditioning(ctx.h, ctx.d) * ctx.ar.tolerance(max(steps, LOCAL_STEPS))
-    if not constructed:
-        return not_applicable(statement, tolerance, NOT_CONSTRUCTED)
-    closed = closed_form()
-    if scale is None:
-        residuals = relative_point_difference(ctx.ar, computed[: ctx.n], closed[: ctx.n])
-    else:
-        difference = point_distance(ctx.ar, computed[: ctx.n], closed[: ctx.n])
-        residuals = relative_to(ctx.ar, difference, scale[: ctx.n])
-    return check_residuals(
-        statement, ctx.ar, ctx.indices[: ctx.n], residuals, tolerance, ctx.detail
-    )
-
-
-def _nikolaides(ctx: _Context, p: Array, tractrix: Array, axis: Array) -> Check:
-    n = ctx.n
-    if ctx.ar.mode == "float64":  # the same residuals in one compiled pass
-        return ctx.check(
-            NIKOLAIDES, 0, residual_kernels.right_angle_residuals(tractrix, axis, p, n)
-        )
-    at_p = nikolaides.right_angle_residuals(tractrix[:n], axis[:n], p[:n])
-    at_next = nikolaides.right_angle_residuals(tractrix[:n], axis[:n], p[1 : n + 1])
-    return ctx.check(NIKOLAIDES, 0, np.maximum(at_p, at_next))
-
-
-def _darboux(ctx: _Context) -> Check:
-    n, axis, e = ctx.n, ctx.data.axis, ctx.data.darboux
-    return ctx.check(DARBOUX, 0, darboux.edge_length_residuals(ctx.ar, axis[:n], e[:n]))
-
-
-def _darboux_distance(ctx: _Context) -> Check:
-    n, axis, e = ctx.n, ctx.data.axis, ctx.data.darboux
-    residuals = darboux.distance_residuals(ctx.ar, axis[:n], e[:n], 2 * ctx.h)
-    return ctx.check(DARBOUX_DISTANCE, 0, residuals)
-
-
-#: Each statement of Section 3 and 4.2 about (D4b) and the function that evaluates it, in the
-#: order of the response; each reads only the polygons and fits it needs.
-_EVALUATORS: tuple[tuple[Statement, Callable[[_Context], Check]], ...] = (
-    (HYPOTHESIS, lambda c: _hypothesis(c, c.data.p)),
-    (
-        THEOREM_4_I,
-        lambda c: _fitted(c, THEOREM_4_I, c.fits["d1"], _ratio_erratum(c, c.data.p)),
-    ),
-    (THEOREM_4_II, lambda c: _fitted(c, THEOREM_4_II, c.fits["d3"])),
-    (THEOREM_4_III, lambda c: _equation_2(c, c.fits, c.data.p[: c.n])),
-    (ROTATION_ANGLE, lambda c: _rotation_angle(c, c.data.p, c.data.axis)),
-    (RECURSION_13, lambda c: _recursion(c, c.data.p)),
-    (TWO_STEP, lambda c: _two_step(c, c.data.p)),
-    (
-        THEOREM_5,
-        lambda c: _closed_form(
-            c, THEOREM_5, c.data.constructed, c.data.p, lambda: c.data.closed_p, c.steps
-        ),
-    ),
-    (
-        THEOREM_6,
-        lambda c: _closed_form(
-            c,
-            THEOREM_6,
-            c.data.constructed,
-            c.data.tractrix,
-            lambda: c.data.closed_tractrix,
-            c.steps,
-            abs(c.data.axis[:, 0]) + c.h,  # d_i = x_i + h u_i: the terms' magnitude
-        ),
-    ),
-    (DARBOUX, _darboux),
-    (DARBOUX_DISTANCE, _darboux_distance),
-    (NIKOLAIDES, lambda c: _nikolaides(c, c.data.p, c.data.tractrix, c.data.axis)),
-)
-
-
 def _require_resolvable(ar: Arithmetic, h: float, d: float) -> None:
     """Refuse steps so small that Δ²p^y vanishes in the working precision."""
     smallest = RESOLUTION_MARGIN * math.sqrt(ar.working_eps)
@@ -682,3 +339,15 @@ def _require_float64_representable(
                 value,
                 f"beyond it p_i^y exceeds {FLOAT64_COORDINATE_LIMIT:g}; use precision=mp",
             )
+
+
+__all__ = [
+    "INFO",
+    "STATEMENTS",
+    "D4bPolygons",
+    "compute",
+    "conditioning",
+    "evaluate",
+    "polygons",
+    "tolerances",
+]

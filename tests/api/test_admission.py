@@ -1,0 +1,139 @@
+"""Admission control: a bounded queue, a cost budget per worker, deadlines from arrival, /ready."""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Iterator
+
+import pytest
+from fastapi.testclient import TestClient
+
+from app.admission import Admission, OverloadedError, Ticket
+from app.main import create_app
+from app.settings import Settings
+
+CURVE = "/discretizations/d4b"
+
+
+def _ticket(seconds: float = 20.0) -> Ticket:
+    now = time.monotonic()
+    return Ticket(arrival=now, deadline=now + seconds)
+
+
+def test_a_worker_with_nothing_admitted_admits_one_request() -> None:
+    admission = Admission(Settings(admission_seconds=1.0))
+    admission.charge(_ticket(), 0.9, 10)
+    assert admission.admitted == 1 and admission.seconds == pytest.approx(0.9)
+
+
+def test_work_beyond_the_budget_is_refused_with_a_retry_after() -> None:
+    admission = Admission(Settings(admission_seconds=1.0))
+    first = _ticket()
+    admission.charge(first, 0.9, 10)
+    with pytest.raises(OverloadedError, match="time budget") as refused:
+        admission.charge(_ticket(), 0.2, 10)
+    assert refused.value.retry_after >= 1
+    admission.release(first)
+    assert admission.admitted == 0 and admission.seconds == 0
+    admission.charge(_ticket(), 0.2, 10)  # room again
+
+
+def test_memory_beyond_the_budget_is_refused() -> None:
+    admission = Admission(Settings(admission_bytes=2**20))
+    admission.charge(_ticket(), 0.01, 2**19)
+    with pytest.raises(OverloadedError, match="memory budget"):
+        admission.charge(_ticket(), 0.01, 2**19 + 1)
+
+
+def test_one_request_may_charge_several_times() -> None:
+    admission = Admission(Settings(admission_seconds=1.0))
+    ticket = _ticket()
+    admission.charge(ticket, 0.6, 0)
+    admission.charge(ticket, 0.6, 0)  # its own earlier charge does not count as another's
+    assert admission.admitted == 1 and ticket.seconds == pytest.approx(1.2)
+
+
+def test_a_request_that_cannot_finish_before_its_deadline_is_refused_before_it_starts() -> None:
+    admission = Admission(Settings())
+    with pytest.raises(OverloadedError, match="cannot finish within"):
+        admission.charge(_ticket(seconds=0.5), 1.0, 0)
+
+
+@pytest.fixture
+def client() -> Iterator[TestClient]:
+    with TestClient(create_app(Settings(response_cache_bytes=2**24))) as client:
+        yield client
+
+
+def test_ready_says_whether_the_worker_admits_work(client: TestClient) -> None:
+    ok = client.get("/ready")
+    assert ok.status_code == 200 and ok.json() == {"status": "ready"}
+    admission: Admission = client.app.state.admission  # type: ignore[attr-defined]
+    admission.draining = True
+    refused = client.get("/ready")
+    assert refused.status_code == 503
+    assert refused.headers["content-type"] == "application/problem+json"
+    assert int(refused.headers["retry-after"]) >= 1
+    assert "shutting down" in refused.json()["detail"]
+    assert client.get("/health").status_code == 200  # liveness is not readiness
+    busy = client.get(CURVE, params={"i_max": 10})
+    assert busy.status_code == 503 and busy.json()["type"].endswith("/overloaded")
+
+
+def test_a_full_queue_is_an_immediate_503_and_cheap_requests_still_pass(
+    client: TestClient,
+) -> None:
+    assert client.get(CURVE, params={"i_max": 10}).status_code == 200
+    admission: Admission = client.app.state.admission  # type: ignore[attr-defined]
+    settings = admission.settings
+    admission.in_flight = settings.compute_threads + settings.admission_queue
+    refused = client.get(CURVE, params={"i_max": 11})
+    assert refused.status_code == 503
+    assert refused.headers["content-type"] == "application/problem+json"
+    assert int(refused.headers["retry-after"]) >= 1
+    assert refused.json()["status"] == 503
+    assert "queue" in refused.json()["detail"]
+    assert client.get("/health").status_code == 200
+    assert client.get("/discretizations").status_code == 200
+    assert client.get("/ready").status_code == 503
+    cached = client.get(CURVE, params={"i_max": 10})  # answered by the response cache
+    assert cached.status_code == 200
+    admission.in_flight = 0
+
+
+def test_work_over_the_budget_is_a_503_problem_before_any_computation(
+    client: TestClient,
+) -> None:
+    admission: Admission = client.app.state.admission  # type: ignore[attr-defined]
+    other = _ticket()
+    admission.charge(other, admission.settings.admission_seconds, 0)  # another request's work
+    refused = client.get(CURVE, params={"i_max": 5000, "d": 0.001})
+    assert refused.status_code == 503
+    body = refused.json()
+    assert body["type"] == "/problems/overloaded"
+    assert "budget" in body["detail"]
+    assert refused.headers["cache-control"] == "no-store"
+    assert "etag" not in refused.headers
+    admission.release(other)
+    assert client.get(CURVE, params={"i_max": 5000, "d": 0.001}).status_code == 200
+    assert admission.admitted == 0 and admission.seconds == 0  # released after the answer
+
+
+def test_a_slow_host_scales_the_estimates() -> None:
+    admission = Admission(Settings())
+    for _ in range(20):
+        admission.observe(1.0, 4.0)  # computations alone took 4× their estimate
+    assert admission.slowdown == pytest.approx(4.0, rel=0.05)
+    admission.observe(0.001, 100.0)  # too small to tell anything
+    assert admission.slowdown == pytest.approx(4.0, rel=0.05)
+    with pytest.raises(OverloadedError, match="cannot finish within 20 s"):
+        admission.charge(_ticket(), 6.0, 0)  # 6 s of CPU take about 24 s now
+    admission.charge(_ticket(), 4.0, 0)
+
+
+def test_a_computation_alone_teaches_the_slowdown(client: TestClient) -> None:
+    admission: Admission = client.app.state.admission  # type: ignore[attr-defined]
+    before = admission.generation
+    assert client.get(CURVE, params={"i_max": 2000, "d": 0.01}).status_code == 200
+    assert admission.generation == before + 1
+    assert admission.slowdown >= 1.0

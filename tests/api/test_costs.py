@@ -1,0 +1,82 @@
+"""Estimated against measured cost (app/limits.py): for a request of every computational
+endpoint in both precisions, the estimate charged before any work is within an order of magnitude
+of the CPU time and the peak traced memory it then takes. Sizes are small (the whole test takes
+seconds); the model is linear in them, and bench/costs.py runs the heaviest admitted requests."""
+
+from __future__ import annotations
+
+import time
+import tracemalloc
+from collections.abc import Iterator
+
+import pytest
+from fastapi.testclient import TestClient
+
+from app import admission
+from app.main import create_app
+from app.settings import Settings
+
+REQUESTS = [
+    "/discretizations/d4b?d=0.0001&i_min=-100000&i_max=-50000&format=npy",
+    "/discretizations/d4b?d=0.0001&method=closed-form&i_min=-50000&i_max=50000",
+    "/discretizations/d1?c=0.0001&delta=0.001&i_min=-30000&i_max=30000&format=csv",
+    "/discretizations/d2b?i_min=0&i_max=100000",
+    "/discretizations/d4b?precision=mp&digits=30&i_max=100",
+    "/discretizations/d2a-quad?precision=mp&digits=300&i_max=60",
+    "/discretizations/d2b?precision=mp&digits=10&i_min=0&i_max=80",
+    "/surfaces/catenoid?discretization=d4b&d=0.01&i_min=-200&i_max=200&m=100&format=glb",
+    "/surfaces/pseudosphere?discretization=d4b&i_min=0&i_max=100&m=60",
+    "/surfaces/catenoid?discretization=d4b&precision=mp&digits=5&i_min=-4&i_max=4&m=8",
+    "/smooth/tractrix?count=200000",
+    "/smooth/tractrix?precision=mp&digits=50&count=400",
+    "/relations",
+    "/relations?precision=mp&digits=20",
+    "/convergence/theorem-14?levels=12",
+    "/convergence/theorem-11?precision=mp&digits=20&levels=3",
+]
+
+
+@pytest.fixture(scope="module")
+def client() -> Iterator[TestClient]:
+    # a generous time limit: this test compares costs, whatever the load of the machine
+    settings = Settings(response_cache_bytes=0, time_limit=300, admission_seconds=120)
+    with TestClient(create_app(settings)) as client:
+        client.get("/discretizations/d4b?i_max=3")
+        client.get("/surfaces/catenoid?i_max=3&m=4")
+        yield client
+
+
+@pytest.fixture
+def charges(monkeypatch: pytest.MonkeyPatch) -> list[tuple[float, int]]:
+    seen: list[tuple[float, int]] = []
+    original = admission.Admission.charge
+
+    def spy(self: admission.Admission, ticket: admission.Ticket, s: float, b: int) -> None:
+        seen.append((s, b))
+        original(self, ticket, s, b)
+
+    monkeypatch.setattr(admission.Admission, "charge", spy)
+    return seen
+
+
+@pytest.mark.parametrize("url", REQUESTS)
+def test_the_estimate_is_within_an_order_of_magnitude_of_the_cost(
+    client: TestClient, charges: list[tuple[float, int]], url: str
+) -> None:
+    start = time.process_time()
+    assert client.get(url).status_code == 200
+    cpu = time.process_time() - start
+    seconds = sum(s for s, _ in charges)
+    charges.clear()
+    tracemalloc.start()
+    try:
+        assert client.get(url).status_code == 200
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    nbytes = sum(b for _, b in charges)
+    # never an underestimate by more than 3×, never an overestimate by more than 30×
+    assert cpu <= 3 * seconds, (cpu, seconds)
+    assert seconds <= 30 * max(cpu, 0.01), (cpu, seconds)
+    assert peak <= 3 * nbytes, (peak, nbytes)
+    assert nbytes <= 30 * max(peak, 2**20), (peak, nbytes)
