@@ -40,8 +40,8 @@ import orjson
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from app.geometry import smooth  # noqa: E402
 from app.geometry.precision import Float64  # noqa: E402
+from app.geometry.smooth import curves as smooth  # noqa: E402
 from bench.common import sample  # noqa: E402
 from bench.load import SERVER_ENV, free_port  # noqa: E402
 
