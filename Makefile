@@ -81,13 +81,12 @@ nginx:
 	command -v nginx >/dev/null 2>&1 || test -x /usr/sbin/nginx || { $(SUDO) apt-get update -qq && \
 	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq nginx; }
 
-# glibc malloc: few arenas; buffers up to 32 MiB from the heap (a 10^6-vertex (n, 2) array is
-# 16 MB) and up to 64 MiB of free heap kept between requests, so that temporaries do not fault
-# their pages in again on every request; larger buffers are mmaps, returned to the system when
-# freed. Chosen by bench/malloc.py against the fixed 128 KiB threshold before (D4b with every
-# check 4× faster at 10^5 vertices, D2a-quad 5.5×, the same resident memory after a 10^6-vertex
-# request; docs/performance.md).
-SERVER_ENV := MALLOC_ARENA_MAX=2 MALLOC_MMAP_THRESHOLD_=33554432 MALLOC_TRIM_THRESHOLD_=67108864
+# glibc malloc: few arenas and a fixed 128 KiB mmap threshold, so that the large numpy buffers
+# of big requests go back to the system after each request; a trim threshold of 8 MiB keeps the
+# 64 KiB block temporaries on the heap. Measured against larger thresholds (bench/malloc.py,
+# make load; docs/performance.md): a 32 MiB mmap threshold is 1.5-5.5x faster on 10^5-vertex
+# checks but keeps about 2x the memory under make load's concurrent traffic, so it is not used.
+SERVER_ENV := MALLOC_ARENA_MAX=2 MALLOC_MMAP_THRESHOLD_=131072 MALLOC_TRIM_THRESHOLD_=8388608
 
 # app/server.py adds uvicorn's limits: h11 with a 64 KiB header block, 5 s keep-alive, a 25 s
 # graceful shutdown, at most 1024 connections per worker (docs/reliability.md).

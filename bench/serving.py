@@ -40,8 +40,8 @@ import orjson
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from app.geometry import smooth
 from app.geometry.precision import Float64
+from app.geometry.smooth import curves as smooth
 from bench.common import sample
 from bench.load import SERVER_ENV, free_port
 
