@@ -8,7 +8,8 @@ import orjson
 from fastapi import APIRouter, Request, Response
 
 from app import __version__
-from app.schemas.catalog import Health
+from app.schemas.catalog import Health, Readiness
+from app.schemas.common import Problem
 
 router = APIRouter(tags=["service"])
 
@@ -35,9 +36,11 @@ READY_BODY = orjson.dumps({"status": "ready"})
     "problem+json with Retry-After while its admitted work is at its budget or once it is "
     "shutting down (SIGTERM). A load balancer sends work elsewhere on 503; `/health` stays "
     "200 as long as the process serves.",
+    response_model=Readiness,
     responses={
         200: {"content": {"application/json": {"example": {"status": "ready"}}}},
         503: {
+            "model": Problem,
             "description": "Not admitting work now.",
             "content": {"application/problem+json": {}},
             "headers": {
@@ -54,7 +57,7 @@ async def ready(request: Request) -> Response:
     body = orjson.dumps(
         {
             "type": "/problems/overloaded",
-            "title": "Not ready",
+            "title": "Overloaded",
             "status": 503,
             "detail": f"This worker does not admit work now ({reason}).",
             "errors": [],

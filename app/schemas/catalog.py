@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Literal
+
 from pydantic import BaseModel, Field
 
 from app.schemas.common import JSONValue
@@ -125,6 +127,10 @@ class TheoremResponse(BaseModel):
         default_factory=list, description="Hypotheses the text leaves implicit (see /theorems)."
     )
     check: CheckModel
+
+
+class Readiness(BaseModel):
+    status: Literal["ready"] = Field(description="`ready` while this worker admits new work.")
 
 
 class Health(BaseModel):
