@@ -84,7 +84,8 @@ async function convergence(curve, getJSON) {
   if (!LEVELS.has(sequence)) {
     const polygons = [];
     for (const j of levels) {
-      const body = await getJSON(`/discretizations/d2b?sequence=${sequence}&j=${j}`);
+      // only the polygon is drawn: no checks, no companions computed (issue 12's selection)
+      const body = await getJSON(`/discretizations/d2b?sequence=${sequence}&j=${j}&checks=none&companions=none`);
       polygons.push([j, num(body.vertices)]);
     }
     LEVELS.set(sequence, polygons);

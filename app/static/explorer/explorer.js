@@ -561,7 +561,8 @@ async function loadCompare(curve) {
     let best = null;
     for (const query of queries) {
       try {
-        const body = await getJSON(`/discretizations/${id}?${query}`);
+        // an overlay draws the polygon alone: nothing else is computed for it (issue 12)
+        const body = await getJSON(`/discretizations/${id}?${query}&checks=none&companions=none`);
         const points = numbers(body.vertices).map(([x, y]) => [x + (matched ? matched.shift : 0), y]);
         const gap = distance(points, numbers(curve.vertices));
         if (!best || gap < best.gap) best = { points, gap, query };
