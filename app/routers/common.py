@@ -121,8 +121,10 @@ def settings_of(request: Request) -> Settings:
     return settings
 
 
-def reject_repeated_parameters(request: Request) -> None:
-    """A parameter given twice is ambiguous: 422 instead of silently taking one."""
+async def reject_repeated_parameters(request: Request) -> None:
+    """A parameter given twice is ambiguous: 422 instead of silently taking one.
+
+    Asynchronous (it never waits) so that FastAPI does not hop to a thread to run it."""
     seen: set[str] = set()
     for key, value in request.query_params.multi_items():
         if key in seen:
