@@ -178,6 +178,11 @@ class _Context:
         return self._tolerances[2]
 
     @cached_property
+    def compiled_recursion(self) -> tuple[Array, Array]:
+        """Float64 residuals of (13) and of its two-step form, both from one compiled pass."""
+        return residual_kernels.recursion_residuals(self.d, self.data.p[:, 1])
+
+    @cached_property
     def fits(self) -> dict[str, conditions.ConditionFit]:
         """Least-squares fits of (D1), (D3) and (2) on p_{i_min} .. p_{i_max}."""
         p = self.data.p[: self.n]
@@ -276,8 +281,8 @@ def _signed_angle(ar: Arithmetic, a: Array, b: Array) -> Array:
 
 def _recursion(ctx: _Context, p: Array) -> Check:
     y = p[:, 1]
-    if ctx.ar.mode == "float64":  # the same residuals in one compiled pass
-        return ctx.check(RECURSION_13, 1, residual_kernels.recursion_residuals(ctx.d, y)[0])
+    if ctx.ar.mode == "float64" and p is ctx.data.p:  # the same residuals, compiled
+        return ctx.check(RECURSION_13, 1, ctx.compiled_recursion[0])
     predicted = kinematic_closed_forms.recursion_13(ctx.d, y[:-2], y[1:-1])
     return ctx.check(RECURSION_13, 1, relative_difference(ctx.ar, y[2:], predicted))
 
@@ -285,7 +290,6 @@ def _recursion(ctx: _Context, p: Array) -> Check:
 def _two_step(ctx: _Context, p: Array) -> Check:
     y = p[:, 1]
     ar = ctx.ar
-    erratum = None
     if ar.mode == "mp" or float(np.max(abs(y))) < 1e60:  # the printed form has 7th powers
         printed = kinematic_closed_forms.two_step_printed(ctx.d, y[:-3], y[1:-2])
         erratum = Erratum(
@@ -295,8 +299,8 @@ def _two_step(ctx: _Context, p: Array) -> Check:
     else:
         erratum = Erratum(*ERRATUM_TWO_STEP, printed_residual=None)
     # (13) twice: three vertices and about three times the operations of a local check
-    if ar.mode == "float64":  # the same residuals in one compiled pass
-        residuals = residual_kernels.recursion_residuals(ctx.d, y)[1]
+    if ar.mode == "float64" and p is ctx.data.p:  # the same residuals, compiled
+        residuals = ctx.compiled_recursion[1]
     else:
         corrected = kinematic_closed_forms.two_step(ctx.d, y[:-3], y[1:-2])
         residuals = relative_difference(ar, y[3:], corrected)

@@ -15,6 +15,7 @@ from app.geometry.catalog.section6 import (
 from app.geometry.checks import (
     Check,
     point_distance,
+    relative_difference,
     relative_point_difference,
 )
 from app.geometry.d4b.construction import construct
@@ -31,16 +32,15 @@ from app.geometry.studies.common import (
 )
 from app.geometry.studies.tractrix import (
     Builder,
-    _finish,
-    _Identity,
-    _power_steps,
-    _printable,
-    _relative,
-    _samples,
-    _sup,
-    _unit_power_steps,
+    Identity,
+    finish,
     index_range,
+    largest,
+    power_steps,
+    printable,
+    sample_points,
     steps,
+    unit_power_steps,
     validate,
 )
 from app.geometry.tolerances import LOCAL_STEPS
@@ -109,17 +109,17 @@ def theorem_14(
     """
     validate(h, d0, levels, x_max, samples)
     hh = ar.scalar(h)
-    x = _samples(ar, x_max, samples)
+    x = sample_points(ar, x_max, samples)
     nonzero = np.asarray(x != 0, dtype=bool)
     result: list[Level] = []
-    interpolation, rearrangement, substitution = _Identity(), _Identity(), _Identity()
+    interpolation, rearrangement, substitution = Identity(), Identity(), Identity()
     for d in steps(d0, levels):
         dd = ar.scalar(d)
         i_min, i_max = index_range(d, x_max)
         built = build(ar, h, d, None, i_min, i_max)
         p = built.centres
         size = max(abs(i_min), abs(i_max)) + 1
-        powers = _power_steps(ar, hh, dd, x_max)
+        powers = power_steps(ar, hh, dd, x_max)
         c = lc.theorem_14_curve(ar, hh, dd, x)
         smooth = lc.catenary(ar, hh, x)
         at_vertices = lc.catenary(ar, hh, p[:, 0])
@@ -132,18 +132,18 @@ def theorem_14(
                 vertices=len(p),
                 samples=samples,
                 errors={
-                    "parametric": _sup(ar, point_distance(ar, c, smooth)),
-                    "distance": _sup(ar, distance_to_catenary(ar, hh, c)),
-                    "vertices": _sup(ar, point_distance(ar, p, at_vertices)),
-                    "vertices-distance": _sup(ar, distance_to_catenary(ar, hh, p)),
-                    "equation-21": _sup(ar, abs(power - lc.limit_21(ar, hh, x))),
+                    "parametric": largest(ar, point_distance(ar, c, smooth)),
+                    "distance": largest(ar, distance_to_catenary(ar, hh, c)),
+                    "vertices": largest(ar, point_distance(ar, p, at_vertices)),
+                    "vertices-distance": largest(ar, distance_to_catenary(ar, hh, p)),
+                    "equation-21": largest(ar, abs(power - lc.limit_21(ar, hh, x))),
                 },
                 resolution={
                     "parametric": ar.tolerance(LOCAL_STEPS) * scale,
                     "distance": ar.tolerance(LOCAL_STEPS) * scale,
                     "vertices": noise,
                     "vertices-distance": noise,
-                    "equation-21": ar.tolerance(_unit_power_steps(ar, hh, dd, x_max)),
+                    "equation-21": ar.tolerance(unit_power_steps(ar, hh, dd, x_max)),
                 },
             )
         )
@@ -156,23 +156,25 @@ def theorem_14(
                     relative_point_difference(ar, lc.theorem_14_curve(ar, hh, dd, p[:, 0]), p),
                 ),
                 2 * size + powers,
-                keep=_printable(ar, hh, dd, p[:, 0], 0.5),
+                keep=printable(ar, hh, dd, p[:, 0], 0.5),
             )
             rearrangement.add(
                 ar,
-                _relative(
+                relative_difference(
                     ar,
                     lc.theorem_14_curve_rearranged(ar, hh, dd, x)[:, 1],
                     lc.theorem_14_curve_printed(ar, hh, dd, x)[:, 1],
                 ),
                 powers,
-                keep=_printable(ar, hh, dd, x, 0.5),
+                keep=printable(ar, hh, dd, x, 0.5),
             )
             xs = x[nonzero]
             substitution.add(
                 ar,
-                _relative(ar, lc.power_21_substituted(ar, hh, dd, xs), lc.power_21(ar, hh, dd, xs)),
-                _unit_power_steps(ar, hh, dd, x_max),
+                relative_difference(
+                    ar, lc.power_21_substituted(ar, hh, dd, xs), lc.power_21(ar, hh, dd, xs)
+                ),
+                unit_power_steps(ar, hh, dd, x_max),
             )
     parameters = {"h": h, "d0": d0, "levels": levels, "x_max": x_max, "samples": samples}
 
@@ -185,4 +187,4 @@ def theorem_14(
             converges(EQUATION_21, result, ("equation-21",), fits),
         ]
 
-    return _finish(THEOREM_14_INFO, ar, parameters, result, checks)
+    return finish(THEOREM_14_INFO, ar, parameters, result, checks)

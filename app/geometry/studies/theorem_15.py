@@ -15,6 +15,7 @@ from app.geometry.catalog.section6 import (
 from app.geometry.checks import (
     Check,
     point_distance,
+    relative_difference,
     relative_point_difference,
 )
 from app.geometry.d4b.construction import construct
@@ -31,16 +32,15 @@ from app.geometry.studies.common import (
 )
 from app.geometry.studies.tractrix import (
     Builder,
-    _finish,
-    _Identity,
-    _power_steps,
-    _printable,
-    _relative,
-    _samples,
-    _sup,
-    _unit_power_steps,
+    Identity,
+    finish,
     index_range,
+    largest,
+    power_steps,
+    printable,
+    sample_points,
     steps,
+    unit_power_steps,
     validate,
 )
 from app.geometry.tolerances import LOCAL_STEPS
@@ -134,16 +134,16 @@ def theorem_15(
     """
     validate(h, d0, levels, x_max, samples)
     hh = ar.scalar(h)
-    x = _samples(ar, x_max, samples)
+    x = sample_points(ar, x_max, samples)
     result: list[Level] = []
-    interpolation, proof_y, proof_x = _Identity(), _Identity(), _Identity()
+    interpolation, proof_y, proof_x = Identity(), Identity(), Identity()
     for d in steps(d0, levels):
         dd = ar.scalar(d)
         i_min, i_max = index_range(d, x_max)
         built = build(ar, h, d, None, i_min, i_max)
         tip, parameter = built.tractrix, built.centres[:, 0]  # (2i − 1)d
         size = max(abs(i_min), abs(i_max)) + 1
-        powers = _power_steps(ar, hh, dd, x_max)
+        powers = power_steps(ar, hh, dd, x_max)
         c = lc.theorem_15_curve(ar, hh, dd, x)
         f_y, g_y = lc.substitution_15_y(ar, hh, dd, x)
         f_x, g_x = lc.substitution_15_x(ar, hh, dd, x)
@@ -157,15 +157,19 @@ def theorem_15(
                 vertices=len(tip),
                 samples=samples,
                 errors={
-                    "parametric": _sup(ar, point_distance(ar, c, lc.tractrix(ar, hh, x))),
-                    "distance": _sup(ar, distance_to_tractrix(ar, hh, c)),
-                    "vertices": _sup(ar, point_distance(ar, tip, lc.tractrix(ar, hh, parameter))),
-                    "vertices-distance": _sup(ar, distance_to_tractrix(ar, hh, tip)),
-                    "natural": _sup(
+                    "parametric": largest(ar, point_distance(ar, c, lc.tractrix(ar, hh, x))),
+                    "distance": largest(ar, distance_to_tractrix(ar, hh, c)),
+                    "vertices": largest(
+                        ar, point_distance(ar, tip, lc.tractrix(ar, hh, parameter))
+                    ),
+                    "vertices-distance": largest(ar, distance_to_tractrix(ar, hh, tip)),
+                    "natural": largest(
                         ar, point_distance(ar, tip, lc.tractrix(ar, hh, built.axis_points[:, 0]))
                     ),
-                    "inequality-22-y": _sup(ar, abs(1 / (f_y + g_y) - 1 / (f + g))),
-                    "inequality-22-x": _sup(ar, abs((f_x - g_x) / (f_x + g_x) - (f - g) / (f + g))),
+                    "inequality-22-y": largest(ar, abs(1 / (f_y + g_y) - 1 / (f + g))),
+                    "inequality-22-x": largest(
+                        ar, abs((f_x - g_x) / (f_x + g_x) - (f - g) / (f + g))
+                    ),
                 },
                 resolution={
                     "parametric": local,
@@ -173,8 +177,8 @@ def theorem_15(
                     "vertices": noise,
                     "vertices-distance": noise,
                     "natural": noise,
-                    "inequality-22-y": ar.tolerance(_unit_power_steps(ar, hh, dd, x_max)),
-                    "inequality-22-x": ar.tolerance(_unit_power_steps(ar, hh, dd, x_max)),
+                    "inequality-22-y": ar.tolerance(unit_power_steps(ar, hh, dd, x_max)),
+                    "inequality-22-x": ar.tolerance(unit_power_steps(ar, hh, dd, x_max)),
                 },
             )
         )
@@ -187,16 +191,16 @@ def theorem_15(
                     relative_point_difference(ar, lc.theorem_15_curve(ar, hh, dd, parameter), tip),
                 ),
                 2 * size + powers,
-                keep=_printable(ar, hh, dd, parameter, 1.0),
+                keep=printable(ar, hh, dd, parameter, 1.0),
             )
             curve = lc.theorem_15_curve_printed(ar, hh, dd, x)
-            keep = _printable(ar, hh, dd, x, 1.0)
+            keep = printable(ar, hh, dd, x, 1.0)
             pf, pg = lc.substitution_15_y(ar, hh, dd, x, printed=True)
             proof_y.add(
                 ar,
-                _relative(ar, 2 * hh / (f_y + g_y), curve[:, 1]),
+                relative_difference(ar, 2 * hh / (f_y + g_y), curve[:, 1]),
                 powers,
-                _relative(ar, 2 * hh / (pf + pg), curve[:, 1]),
+                relative_difference(ar, 2 * hh / (pf + pg), curve[:, 1]),
                 keep,
             )
             fraction = (x + dd - curve[:, 0]) / hh
@@ -219,4 +223,4 @@ def theorem_15(
             converges(INEQUALITY_22, result, ("inequality-22-y", "inequality-22-x"), fits),
         ]
 
-    return _finish(THEOREM_15_INFO, ar, parameters, result, checks)
+    return finish(THEOREM_15_INFO, ar, parameters, result, checks)

@@ -113,7 +113,7 @@ def mp_work(h: float, d0: float, levels: int, x_max: float, samples: int) -> int
 
 
 @dataclass
-class _Identity:
+class Identity:
     """Residuals of an identity collected over the levels (float64 overflow points dropped)."""
 
     residuals: list[float] = field(default_factory=list)
@@ -166,20 +166,20 @@ class _Identity:
         )
 
 
-def _samples(ar: Arithmetic, x_max: float, samples: int) -> Array:
+def sample_points(ar: Arithmetic, x_max: float, samples: int) -> Array:
     """x_j = x_max (2j/(samples − 1) − 1), j = 0 .. samples − 1: uniform on [−x_max, x_max]."""
     j = ar.indices(0, samples - 1)
     return ar.scalar(x_max) * (2 * j / (samples - 1) - 1)
 
 
-def _power_steps(ar: Arithmetic, h: Scalar, d: Scalar, x_max: float) -> int:
+def power_steps(ar: Arithmetic, h: Scalar, d: Scalar, x_max: float) -> int:
     """Rounding steps of a printed power (h ± d)^t: its exponent t ~ x/d times (1 + |ln(h ± d)|)."""
     exponent = (x_max + ar.to_float(d)) / ar.to_float(d)
     logs = max(abs(math.log(ar.to_float(h + d))), abs(math.log(ar.to_float(h - d))))
     return LOCAL_STEPS + math.ceil(2 * exponent * (1 + logs))
 
 
-def _unit_power_steps(ar: Arithmetic, h: Scalar, d: Scalar, x_max: float) -> int:
+def unit_power_steps(ar: Arithmetic, h: Scalar, d: Scalar, x_max: float) -> int:
     """Rounding steps of a power (1 ± d/h)^t with t ~ x/d (the proofs' dimensionless forms)."""
     return LOCAL_STEPS + math.ceil(2 * (x_max + ar.to_float(d)) / ar.to_float(d))
 
@@ -189,7 +189,7 @@ def _unit_power_steps(ar: Arithmetic, h: Scalar, d: Scalar, x_max: float) -> int
 FLOAT64_LOG_LIMIT = 700
 
 
-def _printable(
+def printable(
     ar: Arithmetic, h: Scalar, d: Scalar, x: Array, per_step: float
 ) -> np.ndarray[Any, np.dtype[np.bool_]]:
     """The points where every printed power (h ± d)^t, |t| <= per_step·(|x| + d)/d, and its
@@ -202,25 +202,21 @@ def _printable(
     return np.asarray(logs * (exponent + 2) < FLOAT64_LOG_LIMIT, dtype=bool)
 
 
-def _sup(ar: Arithmetic, values: Array) -> float | None:
+def largest(ar: Arithmetic, values: Array) -> float | None:
+    """The sup of ``values`` as a float (``None`` when there are none or it is not finite)."""
     if not len(values):
         return None
     worst = float(np.max(ar.to_floats(values)))
     return worst if math.isfinite(worst) else None
 
 
-def _relative(ar: Arithmetic, computed: Array, expected: Array) -> Array:
-    tiny = ar.scalar(np.finfo(np.float64).tiny)
-    scale = np.where(abs(expected) > tiny, abs(expected), tiny)
-    return abs(computed - expected) / scale
-
-
-def _finish(
+def finish(
     info: StudyInfo,
     ar: Arithmetic,
     parameters: dict[str, Any],
     levels: list[Level],
     checks: Callable[[dict[str, OrderFit]], list[Check]],
 ) -> Study:
+    """The study of ``levels``: an observed order per measure, then its checks on those fits."""
     fits = {m.id: observed_order(levels, m.id) for m in info.measures}
     return Study(info, parameters, ar, levels, fits, checks(fits))
