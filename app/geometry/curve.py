@@ -2,14 +2,23 @@
 
 from __future__ import annotations
 
+import copy
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
-from typing import Any, Protocol
+from functools import cached_property
+from typing import Any, Protocol, Self, TypeVar
 
 import numpy as np
 
 from app.geometry.checks import Check, Statement
 from app.geometry.errors import DomainError
 from app.geometry.precision import Arithmetic, Array, Scalar
+
+C = TypeVar("C")
+
+#: Each statement of a discretization with the function that checks it on a context, in the
+#: order of the response (``Selection.evaluate``).
+Evaluators = Sequence[tuple[Statement, Callable[[C], Check]]]
 
 
 @dataclass(frozen=True)
@@ -85,6 +94,53 @@ class Selection:
         kept = [c for c in checks if self.wants_check(c.id)]
         return [c for c in kept if c.holds is False] if self.failed_only else kept
 
+    def evaluate(self, context: C, evaluators: Evaluators[C]) -> list[Check]:
+        """The checks of the selected statements, each evaluator run on ``context``.
+
+        ``evaluators`` pairs each statement with the function that checks it, in the order of the
+        response; an evaluator reads the shared quantities it needs from the context
+        (``OnDemand``), so what no selected statement reads is never computed.
+        """
+        return [
+            evaluate(context)
+            for statement, evaluate in evaluators
+            if self.wants_check(statement.id)
+        ]
+
+
+class OnDemand:
+    """Base of what one computation shares: each quantity a ``functools.cached_property``.
+
+    A quantity is computed when a selected check (or companion) first reads it, and at most
+    once; ``computed`` tells which were (the constants reported are those), and ``replaced``
+    gives a copy with some quantities swapped (the tests perturb polygons to see checks fail).
+    """
+
+    def computed(self, name: str) -> bool:
+        """Whether the quantity ``name`` has been computed (or given)."""
+        return name in self.__dict__
+
+    def replaced(self, **values: Any) -> Self:
+        """A copy with ``values`` in place of the given or computed ones.
+
+        Cached quantities that are not given are dropped from the copy (they may derive from a
+        replaced one) and computed again when read.
+        """
+        clone = copy.copy(self)
+        for name in _cached_names(type(self)):
+            clone.__dict__.pop(name, None)
+        clone.__dict__.update(values)
+        return clone
+
+
+def _cached_names(cls: type) -> set[str]:
+    return {
+        name
+        for klass in cls.__mro__
+        for name, value in vars(klass).items()
+        if isinstance(value, cached_property)
+    }
+
 
 EVERYTHING = Selection()
 """Every check and every companion (the default of every endpoint)."""
@@ -114,15 +170,16 @@ class DiscretizationInfo:
         ar: Arithmetic,
         parameters: dict[str, Any],
         polygon: Array,
-        companions: dict[str, Array] | None = None,
+        companions: Mapping[str, Array | Callable[[], Array]] | None = None,
         selection: Selection = EVERYTHING,
         **fields: Any,
     ) -> Curve:
         """This discretization's ``Curve`` on ``parameters["i_min"] .. parameters["i_max"]``.
 
         ``polygon`` and each companion are ``(m, 2)`` arrays starting at i_min (m may exceed the
-        range: extra rows that fed the checks are cut); ``fields`` are further ``Curve`` fields.
-        Companions and checks outside ``selection`` are left out.
+        range: extra rows that fed the checks are cut), a companion possibly as a function that
+        computes it; ``fields`` are further ``Curve`` fields. Companions and checks outside
+        ``selection`` are left out (a companion given as a function is then not computed).
         """
         if "checks" in fields:
             fields["checks"] = selection.keep(fields["checks"])
@@ -136,7 +193,9 @@ class DiscretizationInfo:
             arithmetic=ar,
             polygon=Polyline(indices, polygon[:n]),
             companions={
-                name: Polyline(indices, points[:n], self.companions[name])
+                name: Polyline(
+                    indices, (points() if callable(points) else points)[:n], self.companions[name]
+                )
                 for name, points in (companions or {}).items()
                 if selection.wants_companion(name)
             },

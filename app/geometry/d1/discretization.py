@@ -10,16 +10,29 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Any, Literal
 
 import numpy as np
 
 from app.geometry import properties
 from app.geometry.catalog.section3 import (
+    D1,
     D1_CLOSED_FORM as CLOSED_FORM,
+    D3,
+    HANGING_STICKS,
 )
+from app.geometry.catalog.section4 import EQUATION_2
 from app.geometry.checks import Check, Statement, check_residuals, not_applicable, point_distance
-from app.geometry.curve import EVERYTHING, Curve, DiscretizationInfo, Selection, require_range
+from app.geometry.curve import (
+    EVERYTHING,
+    Curve,
+    DiscretizationInfo,
+    Evaluators,
+    OnDemand,
+    Selection,
+    require_range,
+)
 from app.geometry.d1 import closed_forms
 from app.geometry.d1.construction import construct, validate
 from app.geometry.errors import NotRepresentableError
@@ -27,7 +40,6 @@ from app.geometry.precision import Arithmetic, Array, Scalar
 from app.geometry.tolerances import FLOAT64_COORDINATE_LIMIT, LOCAL_STEPS, NOT_CONSTRUCTED
 
 Method = Literal["construction", "closed-form"]
-
 
 STATEMENTS: tuple[Statement, ...] = (*properties.PROPERTIES, CLOSED_FORM)
 
@@ -57,15 +69,37 @@ INFO = DiscretizationInfo(
 
 
 @dataclass(frozen=True)
-class D1Polygons:
-    """One (D1) computation on i_min .. i_max: the polygon and its closed form, ``(n, 2)``."""
+class D1Polygons(OnDemand):
+    """One (D1) computation on i_min .. i_max: the polygon ``(n, 2)``, and its closed form when
+    first read."""
 
+    ar: Arithmetic
+    parameters: tuple[float, float, float, float]
+    """c, delta, y0, y1."""
     i_min: int
     p: Array
-    closed: Array
-    closed_size: Array
-    """|iδ| + |y_0| + |2a sinh(iE/2) sinh(u_0 + (i − 1)E/2)| per vertex (the terms)."""
     constructed: bool
+
+    @cached_property
+    def _closed(self) -> tuple[Array, Array]:
+        return _explicit(self.ar, self.parameters, self.i_min, self.i_min + len(self.p) - 1)
+
+    @property
+    def closed(self) -> Array:
+        """The closed form p_i of (D1) (Section 3)."""
+        return self._closed[0]
+
+    @property
+    def closed_size(self) -> Array:
+        """|iδ| + |y_0| + |2a sinh(iE/2) sinh(u_0 + (i − 1)E/2)| per vertex (the terms)."""
+        return self._closed[1]
+
+
+def _explicit(
+    ar: Arithmetic, parameters: tuple[float, float, float, float], i_min: int, i_max: int
+) -> tuple[Array, Array]:
+    c, delta, y0, y1 = (ar.scalar(v) for v in parameters)
+    return closed_forms.hyperbolic_cosine(ar, c, delta, y0, y1, ar.indices(i_min, i_max))
 
 
 def polygons(
@@ -78,45 +112,50 @@ def polygons(
     i_max: int,
     method: Method = "construction",
 ) -> D1Polygons:
-    """The construction (Section 3) and the closed form on i_min .. i_max."""
+    """The construction (Section 3), or the closed form, on i_min .. i_max."""
     validate(c, delta, y0, y1)
-    i = ar.indices(i_min, i_max)
-    closed, size = closed_forms.hyperbolic_cosine(
-        ar, ar.scalar(c), ar.scalar(delta), ar.scalar(y0), ar.scalar(y1), i
-    )
+    parameters = (c, delta, y0, y1)
     if method == "construction":
         p = construct(ar, c, delta, y0, y1, i_min, i_max).vertices
-    else:
-        p = closed
-    return D1Polygons(i_min, p, closed, size, constructed=method == "construction")
+        return D1Polygons(ar, parameters, i_min, p, constructed=True)
+    closed = _explicit(ar, parameters, i_min, i_max)
+    data = D1Polygons(ar, parameters, i_min, closed[0], constructed=False)
+    data.__dict__["_closed"] = closed
+    return data
+
+
+class _Context(properties.Context):
+    """What the checks of one (D1) computation share, each part computed when first needed."""
+
+    def __init__(self, ar: Arithmetic, data: D1Polygons, detail: bool) -> None:
+        indices = np.arange(data.i_min, data.i_min + len(data.p), dtype=np.int64)
+        super().__init__(ar, indices, detail, data.p)
+        self.data = data
+        self.c, self.delta, self.y0, self.y1 = data.parameters
+
+    @cached_property
+    def offset(self) -> float:
+        """C = y0 − a cosh(u_0 − E/2), the closed form's offset."""
+        ar = self.ar
+        c, delta, y0, y1 = (ar.scalar(v) for v in self.data.parameters)
+        k = closed_forms.parameters(ar, c, delta, y0, y1)
+        return ar.to_float(k.offset)
 
 
 def evaluate(
     ar: Arithmetic,
-    c: float,
-    delta: float,
-    y0: float,
-    y1: float,
     data: D1Polygons,
     detail: bool = False,
+    selection: Selection = EVERYTHING,
 ) -> tuple[dict[str, Scalar], list[Check]]:
-    """Fitted constants and every check of ``STATEMENTS`` on the given polygons."""
-    n = len(data.p)
-    ctx = properties.Context(ar, np.arange(data.i_min, data.i_min + n, dtype=np.int64), detail)
-    found = properties.fits(ar, data.p)
-    k = closed_forms.parameters(ar, ar.scalar(c), ar.scalar(delta), ar.scalar(y0), ar.scalar(y1))
-    offset = ar.to_float(k.offset)
-    expected = {
-        "d1": f"(D1) holds with c = {c!r}",
-        "d3": f"(D3) holds exactly when the offset C = y0 − a cosh(u_0 − E/2) is 0; here "
-        f"C = {offset:.12g}",
-        "equation-2": f"eq. (2) holds exactly when C = 0; here C = {offset:.12g}",
-        "hanging-sticks": f"constant x-spacing: holds with c/delta = {c / delta:.12g}",
-    }
-    checks = properties.checks(ctx, found, expected)
-    steps = max(abs(data.i_min), abs(data.i_min + n - 1)) + 1
-    checks.append(_closed_form(ctx, data, steps))
-    return properties.constants(found), checks
+    """Fitted constants and the selected checks of ``STATEMENTS`` on the given polygons.
+
+    Each check computes only the fits and closed forms it needs; the constants are those of the
+    fits computed.
+    """
+    ctx = _Context(ar, data, detail)
+    checks = selection.evaluate(ctx, _EVALUATORS)
+    return ctx.fits.constants() if ctx.computed("fits") else {}, checks
 
 
 def compute(
@@ -137,7 +176,7 @@ def compute(
     if ar.mode == "float64":
         _require_float64_representable(c, delta, y0, y1, i_min, i_max)
     data = polygons(ar, c, delta, y0, y1, i_min, i_max, method)
-    constants, checks = evaluate(ar, c, delta, y0, y1, data, detail)
+    constants, checks = evaluate(ar, data, detail, selection)
     parameters: dict[str, Any] = {
         "c": c,
         "delta": delta,
@@ -152,9 +191,10 @@ def compute(
     )
 
 
-def _closed_form(ctx: properties.Context, data: D1Polygons, steps: int) -> Check:
+def _closed_form(ctx: _Context) -> Check:
     """Construction against closed form; the construction's rounding grows with its steps."""
-    ar = ctx.ar
+    ar, data = ctx.ar, ctx.data
+    steps = max(abs(data.i_min), abs(data.i_min + len(data.p) - 1)) + 1
     tolerance = ar.tolerance(max(steps, LOCAL_STEPS))
     if not data.constructed:
         return not_applicable(CLOSED_FORM, tolerance, NOT_CONSTRUCTED)
@@ -162,6 +202,33 @@ def _closed_form(ctx: properties.Context, data: D1Polygons, steps: int) -> Check
     size = np.where(data.closed_size > tiny, data.closed_size, tiny)  # p_0 = (0, 0): absolute
     residuals = point_distance(ar, data.p, data.closed) / size
     return check_residuals(CLOSED_FORM, ar, ctx.indices, residuals, tolerance, ctx.detail)
+
+
+#: Each statement about (D1) and the function that checks it, in the order of the response.
+_EVALUATORS: Evaluators[_Context] = (
+    (D1, lambda x: x.property_check(D1, f"(D1) holds with c = {x.c!r}")),
+    (
+        D3,
+        lambda x: x.property_check(
+            D3,
+            f"(D3) holds exactly when the offset C = y0 − a cosh(u_0 − E/2) is 0; here "
+            f"C = {x.offset:.12g}",
+        ),
+    ),
+    (
+        EQUATION_2,
+        lambda x: x.property_check(
+            EQUATION_2, f"eq. (2) holds exactly when C = 0; here C = {x.offset:.12g}"
+        ),
+    ),
+    (
+        HANGING_STICKS,
+        lambda x: x.property_check(
+            HANGING_STICKS, f"constant x-spacing: holds with c/delta = {x.c / x.delta:.12g}"
+        ),
+    ),
+    (CLOSED_FORM, _closed_form),
+)
 
 
 def _require_float64_representable(

@@ -11,15 +11,19 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Any, Literal
 
 import numpy as np
 
 from app.geometry import properties
-from app.geometry.catalog import section3, section4
 from app.geometry.catalog.section3 import (
+    D1,
+    D3,
     D3_CLOSED_FORM as CLOSED_FORM,
+    HANGING_STICKS,
 )
+from app.geometry.catalog.section4 import EQUATION_2
 from app.geometry.checks import (
     Check,
     Statement,
@@ -27,7 +31,15 @@ from app.geometry.checks import (
     not_applicable,
     relative_point_difference,
 )
-from app.geometry.curve import EVERYTHING, Curve, DiscretizationInfo, Selection, require_range
+from app.geometry.curve import (
+    EVERYTHING,
+    Curve,
+    DiscretizationInfo,
+    Evaluators,
+    OnDemand,
+    Selection,
+    require_range,
+)
 from app.geometry.d3 import closed_forms
 from app.geometry.d3.construction import Branch, construct, validate
 from app.geometry.errors import NotRepresentableError
@@ -38,10 +50,10 @@ Method = Literal["construction", "closed-form"]
 
 
 STATEMENTS: tuple[Statement, ...] = (
-    section3.D3,
-    section3.D1,
-    section4.EQUATION_2,
-    section3.HANGING_STICKS,
+    D3,
+    D1,
+    EQUATION_2,
+    HANGING_STICKS,
     CLOSED_FORM,
 )
 
@@ -69,16 +81,36 @@ INFO = DiscretizationInfo(
 
 
 @dataclass(frozen=True)
-class D3Polygons:
-    """One (D3) computation on i_min .. i_max: the polygon and its closed form, ``(n, 2)``."""
+class D3Polygons(OnDemand):
+    """One (D3) computation on i_min .. i_max: the polygon ``(n, 2)``, and its closed form when
+    first read."""
 
+    ar: Arithmetic
+    parameters: tuple[float, float, float, Branch]
+    """c, delta, y0, branch: the walk (and the closed form's arcosh(y0/a)) starts at y0 even
+    when index 0 is not in the range shown."""
     i_min: int
     p: Array
-    closed: Array
     constructed: bool
-    start: float = math.inf
-    """y0: the walk (and the closed form's arcosh(y0/a)) starts there even when index 0 is not
-    in the range shown."""
+
+    @property
+    def start(self) -> float:
+        """y0."""
+        return self.parameters[2]
+
+    @cached_property
+    def closed(self) -> Array:
+        """The closed form p_i of (D3) (Section 3)."""
+        return _explicit(self.ar, *self.parameters, self.i_min, self.i_min + len(self.p) - 1)
+
+
+def _explicit(
+    ar: Arithmetic, c: float, delta: float, y0: float, branch: Branch, i_min: int, i_max: int
+) -> Array:
+    i = ar.indices(i_min, i_max)
+    return closed_forms.hyperbolic_cosine(
+        ar, ar.scalar(c), ar.scalar(delta), ar.scalar(y0), branch == "up", i
+    )
 
 
 def polygons(
@@ -91,41 +123,40 @@ def polygons(
     i_max: int,
     method: Method = "construction",
 ) -> D3Polygons:
-    """The construction (Section 3) and the closed form on i_min .. i_max."""
+    """The construction (Section 3), or the closed form, on i_min .. i_max."""
     validate(c, delta, y0, branch)
-    i = ar.indices(i_min, i_max)
-    closed = closed_forms.hyperbolic_cosine(
-        ar, ar.scalar(c), ar.scalar(delta), ar.scalar(y0), branch == "up", i
-    )
+    parameters = (c, delta, y0, branch)
     if method == "construction":
         p = construct(ar, c, delta, y0, branch, i_min, i_max).vertices
     else:
-        p = closed
-    return D3Polygons(i_min, p, closed, constructed=method == "construction", start=y0)
+        p = _explicit(ar, *parameters, i_min, i_max)
+    return D3Polygons(ar, parameters, i_min, p, constructed=method == "construction")
+
+
+class _Context(properties.Context):
+    """What the checks of one (D3) computation share, each part computed when first needed."""
+
+    def __init__(self, ar: Arithmetic, data: D3Polygons, detail: bool) -> None:
+        indices = np.arange(data.i_min, data.i_min + len(data.p), dtype=np.int64)
+        super().__init__(ar, indices, detail, data.p)
+        self.data = data
+        self.c, self.delta = data.parameters[:2]
 
 
 def evaluate(
     ar: Arithmetic,
-    c: float,
-    delta: float,
     data: D3Polygons,
     detail: bool = False,
+    selection: Selection = EVERYTHING,
 ) -> tuple[dict[str, Scalar], list[Check]]:
-    """Fitted constants and every check of ``STATEMENTS`` on the given polygons."""
-    n = len(data.p)
-    ctx = properties.Context(ar, np.arange(data.i_min, data.i_min + n, dtype=np.int64), detail)
-    found = properties.fits(ar, data.p)
-    expected = {
-        "d3": f"(D3) holds with c = {c!r}",
-        "d1": f"(D3) implies (D1) here, with delta/(2c) = {delta / (2 * c):.12g}",
-        "equation-2": f"holds with delta/(2c²) = {delta / (2 * c * c):.12g}",
-        "hanging-sticks": f"constant x-spacing: holds with 1/(2c) = {1 / (2 * c):.12g}",
-    }
-    by_id = {check.id: check for check in properties.checks(ctx, found, expected)}
-    checks = [by_id[statement.id] for statement in STATEMENTS if statement.id in by_id]
-    steps = max(abs(data.i_min), abs(data.i_min + n - 1)) + 1
-    checks.append(_closed_form(ctx, c, delta, data, steps))
-    return properties.constants(found), checks
+    """Fitted constants and the selected checks of ``STATEMENTS`` on the given polygons.
+
+    Each check computes only the fits and closed forms it needs; the constants are those of the
+    fits computed.
+    """
+    ctx = _Context(ar, data, detail)
+    checks = selection.evaluate(ctx, _EVALUATORS)
+    return ctx.fits.constants() if ctx.computed("fits") else {}, checks
 
 
 def compute(
@@ -146,7 +177,7 @@ def compute(
     if ar.mode == "float64":
         _require_float64_representable(c, delta, y0, i_min, i_max)
     data = polygons(ar, c, delta, y0, branch, i_min, i_max, method)
-    constants, checks = evaluate(ar, c, delta, data, detail)
+    constants, checks = evaluate(ar, data, detail, selection)
     parameters: dict[str, Any] = {
         "c": c,
         "delta": delta,
@@ -161,9 +192,7 @@ def compute(
     )
 
 
-def _closed_form(
-    ctx: properties.Context, c: float, delta: float, data: D3Polygons, steps: int
-) -> Check:
+def _closed_form(ctx: _Context) -> Check:
     """Construction against closed form.
 
     Rounding grows along the construction (``steps``), and where the polygon passes close to
@@ -171,8 +200,9 @@ def _closed_form(
     arcosh(y_0/a) turn a rounding error into about 1/v of them: the tolerance allows
     steps · max(1, 1/v_min), v_min = arcosh(min(y_0, min y_i) / a) (at least √eps).
     """
-    ar = ctx.ar
-    a = closed_forms.amplitude(ar, ar.scalar(c), ar.scalar(delta))
+    ar, data = ctx.ar, ctx.data
+    steps = max(abs(data.i_min), abs(data.i_min + len(data.p) - 1)) + 1
+    a = closed_forms.amplitude(ar, ar.scalar(ctx.c), ar.scalar(ctx.delta))
     ratio = min(np.min(data.p[:, 1]), ar.scalar(data.start)) / a
     v_min = ar.to_float(ar.acosh(ratio)) if ratio > 1 else 0.0
     amplification = math.ceil(1 / max(v_min, math.sqrt(ar.eps), 1e-300))
@@ -190,6 +220,31 @@ def _closed_form(
     return check_residuals(
         CLOSED_FORM, ar, ctx.indices, residuals, tolerance, ctx.detail, note=note
     )
+
+
+#: Each statement about (D3) and the function that checks it, in the order of the response.
+_EVALUATORS: Evaluators[_Context] = (
+    (D3, lambda x: x.property_check(D3, f"(D3) holds with c = {x.c!r}")),
+    (
+        D1,
+        lambda x: x.property_check(
+            D1, f"(D3) implies (D1) here, with delta/(2c) = {x.delta / (2 * x.c):.12g}"
+        ),
+    ),
+    (
+        EQUATION_2,
+        lambda x: x.property_check(
+            EQUATION_2, f"holds with delta/(2c²) = {x.delta / (2 * x.c * x.c):.12g}"
+        ),
+    ),
+    (
+        HANGING_STICKS,
+        lambda x: x.property_check(
+            HANGING_STICKS, f"constant x-spacing: holds with 1/(2c) = {1 / (2 * x.c):.12g}"
+        ),
+    ),
+    (CLOSED_FORM, _closed_form),
+)
 
 
 def _require_float64_representable(

@@ -11,7 +11,9 @@ much it misses.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Any, Literal
 
 import numpy as np
@@ -36,8 +38,18 @@ from app.geometry.checks import (
     printed_residual,
     relative_point_difference,
 )
-from app.geometry.curve import EVERYTHING, Curve, DiscretizationInfo, Selection, require_range
+from app.geometry.curve import (
+    EVERYTHING,
+    Curve,
+    DiscretizationInfo,
+    Evaluators,
+    OnDemand,
+    Selection,
+    require_range,
+)
 from app.geometry.d4a import closed_forms as sauer_closed_forms, construction as sauer_tractrix
+from app.geometry.d4a.closed_forms import ExplicitTractrix
+from app.geometry.d4a.construction import SauerSticks
 from app.geometry.errors import NotRepresentableError
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array, Scalar
@@ -106,26 +118,79 @@ ERRATUM_DARBOUX = (
 
 
 @dataclass(frozen=True)
-class D4aPolygons:
+class D4aPolygons(OnDemand):
     """The polygons of one (D4a) computation, ``(n + 1, 2)`` each, on i_min .. i_max + 1.
 
     The extra last index only feeds checks (p_i needs stick i+1); responses show i_min .. i_max.
-    ``carried_far`` is the far end of the tractrix edge on each stick (d_{i+1} or d_{i−1}).
+    p, the tractrix, the axis points and the sides come with the construction (or the explicit
+    form); the Darboux transform, the explicit form and what only the checks read are computed
+    when first read. ``replaced`` gives a copy with some polygons swapped.
     """
 
+    ar: Arithmetic
+    parameters: tuple[float, float, float | None]
+    """h, s, beta0."""
     i_min: int
     p: Array
     tractrix: Array
     axis: Array
-    darboux: Array
     side: np.ndarray[Any, np.dtype[np.int64]]
-    carried_far: Array
-    printed_darboux: Array
-    """d_i + d_{i+1} − x_i, the reflection the paper prints, on i_min .. i_max + 1."""
-    explicit_p: Array
-    explicit_tractrix: Array
-    cusp: int
+    sticks: SauerSticks | ExplicitTractrix
+    """Every stick lo .. hi (lo = min(0, i_min − 1), hi = max(0, i_max + 3)): the construction
+    or, for ``method="closed-form"``, the explicit form."""
+    lo: int
+    hull_side: np.ndarray[Any, np.dtype[np.int64]]
     constructed: bool
+
+    def window(self, points: Array, first: int) -> Array:
+        """i_min .. i_max + 1 of a hull array whose entry 0 belongs to stick lo + first."""
+        start = self.i_min - self.lo - first
+        return points[start : start + len(self.p)]
+
+    @cached_property
+    def darboux(self) -> Array:
+        """e_i, the reflection of x_i in the midpoint of the tractrix edge on stick i."""
+        if isinstance(self.sticks, ExplicitTractrix):
+            return self.window(self.sticks.darboux, 0)
+        return self.window(sauer_tractrix.darboux(self.sticks), 1)
+
+    @cached_property
+    def carried_far(self) -> Array:
+        """The far end of the tractrix edge on each stick (d_{i+1} or d_{i−1})."""
+        tractrix = self.sticks.tractrix
+        before = (self.hull_side < sauer_tractrix.CUSP)[1:-1, None]
+        far = np.where(before, tractrix[:-2], tractrix[2:])  # sticks lo + 1 .. hi − 1
+        return self.window(far, 1)
+
+    @cached_property
+    def printed_darboux(self) -> Array:
+        """d_i + d_{i+1} − x_i, the reflection the paper prints, on i_min .. i_max + 1."""
+        tractrix, axis = self.sticks.tractrix, self.sticks.axis_points
+        return self.window(tractrix[:-1] + tractrix[1:] - axis[:-1], 0)
+
+    @cached_property
+    def explicit(self) -> ExplicitTractrix:
+        """The explicit form on the sticks lo .. hi."""
+        if isinstance(self.sticks, ExplicitTractrix):
+            return self.sticks
+        ar, (h, s, beta0) = self.ar, self.parameters
+        hi = self.lo + len(self.hull_side) - 1
+        return sauer_closed_forms.tractrix(ar, ar.scalar(h), ar.scalar(s), beta0, self.lo, hi)
+
+    @property
+    def explicit_p(self) -> Array:
+        """p_i of the explicit form on i_min .. i_max + 1."""
+        return self.window(self.explicit.hyperbolic_cosine, 0)
+
+    @property
+    def explicit_tractrix(self) -> Array:
+        """d_i of the explicit form on i_min .. i_max + 1."""
+        return self.window(self.explicit.tractrix, 0)
+
+    @property
+    def cusp(self) -> int:
+        """The cusp stick c."""
+        return self.explicit.cusp.index
 
 
 def polygons(
@@ -137,73 +202,66 @@ def polygons(
     i_max: int,
     method: Method = "construction",
 ) -> D4aPolygons:
-    """Construction (Section 3) and explicit form on i_min .. i_max + 1."""
+    """Construction (Section 3) or explicit form on i_min .. i_max + 1."""
     sauer_tractrix.validate(h, s, beta0)
     hh, ss = ar.scalar(h), ar.scalar(s)
     lo, hi = min(0, i_min - 1), max(0, i_max + 3)
-
-    def window(points: Array, first: int) -> Array:
-        """i_min .. i_max + 1 of an array whose entry 0 belongs to stick lo + first."""
-        start = i_min - lo - first
-        return points[start : start + i_max - i_min + 2]
-
-    explicit = sauer_closed_forms.tractrix(ar, hh, ss, beta0, lo, hi)
-    cusp = explicit.cusp.index
+    sticks: SauerSticks | ExplicitTractrix
     if method == "construction":
         sticks = sauer_tractrix.construct_sticks(ar, h, s, beta0, lo, hi)
-        side, tractrix, axis = sticks.side, sticks.tractrix, sticks.axis_points
-        p = window(sauer_tractrix.hyperbolic_cosine(ar, sticks), 1)
-        e = window(sauer_tractrix.darboux(sticks), 1)
+        side, p, first = sticks.side, sauer_tractrix.hyperbolic_cosine(ar, sticks), 1
     else:
+        sticks = sauer_closed_forms.tractrix(ar, hh, ss, beta0, lo, hi)
+        cusp = sticks.cusp.index
         # the cusp may lie ~10^(digits/2) sticks away: only its side of the range matters
         side = np.sign(np.arange(lo, hi + 1) - min(max(cusp, lo - 1), hi + 1)).astype(np.int64)
-        tractrix, axis = explicit.tractrix, explicit.axis_points
-        p = window(explicit.hyperbolic_cosine, 0)
-        e = window(explicit.darboux, 0)
-    before = (side < sauer_tractrix.CUSP)[1:-1, None]
-    far = np.where(before, tractrix[:-2], tractrix[2:])  # sticks lo + 1 .. hi − 1
-    printed = tractrix[:-1] + tractrix[1:] - axis[:-1]  # sticks lo .. hi − 1
+        p, first = sticks.hyperbolic_cosine, 0
+    start = i_min - lo
+    count = i_max - i_min + 2
     return D4aPolygons(
+        ar=ar,
+        parameters=(h, s, beta0),
         i_min=i_min,
-        p=p,
-        tractrix=window(tractrix, 0),
-        axis=window(axis, 0),
-        darboux=e,
-        side=window(side, 0),
-        carried_far=window(far, 1),
-        printed_darboux=window(printed, 0),
-        explicit_p=window(explicit.hyperbolic_cosine, 0),
-        explicit_tractrix=window(explicit.tractrix, 0),
-        cusp=cusp,
+        p=p[start - first : start - first + count],
+        tractrix=sticks.tractrix[start : start + count],
+        axis=sticks.axis_points[start : start + count],
+        side=side[start : start + count],
+        sticks=sticks,
+        lo=lo,
+        hull_side=side,
         constructed=method == "construction",
     )
 
 
+class _Context(properties.Context):
+    """What the checks of one (D4a) computation share, each part computed when first needed.
+
+    p_i is where nearly parallel lines meet: resolved to about h/s + (sticks walked) units of
+    rounding (docs/checks.md); every check that reads p allows that (``p_tolerance``).
+    """
+
+    def __init__(self, ar: Arithmetic, data: D4aPolygons, detail: bool) -> None:
+        h, s, _ = data.parameters
+        n = len(data.p) - 1
+        indices = np.arange(data.i_min, data.i_min + n + 1, dtype=np.int64)
+        steps = max(abs(data.i_min - 1), abs(data.i_min + n + 2)) + 1
+        self.p_tolerance = ar.tolerance(LOCAL_STEPS + steps + math.ceil(h / s))
+        super().__init__(ar, indices, detail, data.p[:n], self.p_tolerance)
+        self.data, self.n = data, n
+        self.h, self.s = ar.scalar(h), ar.scalar(s)
+
+
 def evaluate(
-    ar: Arithmetic, h: float, s: float, data: D4aPolygons, detail: bool = False
+    ar: Arithmetic, data: D4aPolygons, detail: bool = False, selection: Selection = EVERYTHING
 ) -> tuple[dict[str, Scalar], list[Check]]:
-    """Fitted constants and every check of ``STATEMENTS`` on the given polygons."""
-    hh, ss = ar.scalar(h), ar.scalar(s)
-    n = len(data.p) - 1
-    ctx = properties.Context(ar, np.arange(data.i_min, data.i_min + n + 1, dtype=np.int64), detail)
-    p, d, x = data.p, data.tractrix, data.axis
-    found = properties.fits(ar, p[:n])
-    steps = max(abs(data.i_min - 1), abs(data.i_min + n + 2)) + 1
-    # p_i is where nearly parallel lines meet: resolved to about h/s + (sticks walked) units of
-    # rounding (docs/checks.md); every check that reads p allows that
-    p_tolerance = ar.tolerance(LOCAL_STEPS + steps + math.ceil(h / s))
-    property_checks = properties.checks(ctx, found, None, p_tolerance)
-    checks = [
-        _sticks(ctx, hh, ss, data),
-        ctx.check(ARC_LENGTH, 0, _arc_length_residuals(ar, ss, d)),
-        _darboux_edges(ctx, data),
-        _darboux_distance(ctx, data, 2 * hh - ss),
-        ctx.check(ROTATION, 0, _rotation_residuals(ar, p[:n], x, d), tolerance=p_tolerance),
-        ctx.check(NIKOLAIDES, 0, _nikolaides_residuals(p[:n], x), tolerance=p_tolerance),
-        _closed_form(ctx, data, p_tolerance),
-        *property_checks,
-    ]
-    return properties.constants(found), checks
+    """Fitted constants and the selected checks of ``STATEMENTS`` on the given polygons.
+
+    Each check computes only the polygons and fits it needs; the constants are those of the
+    fits computed.
+    """
+    ctx = _Context(ar, data, detail)
+    checks = selection.evaluate(ctx, _EVALUATORS)
+    return ctx.fits.constants() if ctx.computed("fits") else {}, checks
 
 
 def compute(
@@ -231,7 +289,7 @@ def compute(
             "p is resolved to about h/s units of rounding; use more digits",
         )
     data = polygons(ar, h, s, beta0, i_min, i_max, method)
-    constants, checks = evaluate(ar, h, s, data, detail)
+    constants, checks = evaluate(ar, data, detail, selection)
     parameters: dict[str, Any] = {
         "h": h,
         "s": s,
@@ -240,17 +298,19 @@ def compute(
         "i_max": i_max,
         "method": method,
     }
-
-    companions = {"tractrix": data.tractrix, "axis_points": data.axis, "darboux": data.darboux}
+    companions: dict[str, Array | Callable[[], Array]] = {
+        "tractrix": data.tractrix,
+        "axis_points": data.axis,
+        "darboux": lambda: data.darboux,
+    }
     return INFO.curve(
         ar, parameters, data.p, companions, constants=constants, checks=checks, selection=selection
     )
 
 
-def _sticks(ctx: properties.Context, h: Scalar, s: Scalar, data: D4aPolygons) -> Check:
+def _sticks(ctx: _Context) -> Check:
     """Stick lengths, axis ends, and the carried tractrix point at distance h − s."""
-    ar = ctx.ar
-    n = len(data.p) - 1
+    ar, data, h, s, n = ctx.ar, ctx.data, ctx.h, ctx.s, ctx.n
     x, d, far = data.axis, data.tractrix, data.carried_far
     length = point_distance(ar, d, x)
     carried = x + (h - s) * (d - x) / length[:, None]  # the point s below d on the stick
@@ -268,17 +328,17 @@ def _arc_length_residuals(ar: Arithmetic, s: Scalar, d: Array) -> Array:
     return abs(point_distance(ar, d[1:], d[:-1]) - s) / magnitude(d[1:], d[:-1])
 
 
-def _darboux_edges(ctx: properties.Context, data: D4aPolygons) -> Check:
-    ar = ctx.ar
+def _darboux_edges(ctx: _Context) -> Check:
+    ar, data = ctx.ar, ctx.data
     residuals = darboux.edge_length_residuals(ar, data.axis, data.darboux)
     printed = darboux.edge_length_residuals(ar, data.axis, data.printed_darboux)
     erratum = Erratum(*ERRATUM_DARBOUX, printed_residual=printed_residual(ar, printed))
     return ctx.check(DARBOUX, 0, residuals, erratum)
 
 
-def _darboux_distance(ctx: properties.Context, data: D4aPolygons, expected: Scalar) -> Check:
-    ar = ctx.ar
-    n = len(data.p) - 1
+def _darboux_distance(ctx: _Context) -> Check:
+    ar, data, n = ctx.ar, ctx.data, ctx.n
+    expected = 2 * ctx.h - ctx.s
     x = data.axis[:n]
     residuals = darboux.distance_residuals(ar, x, data.darboux[:n], expected)
     printed = darboux.distance_residuals(ar, x, data.printed_darboux[:n], expected)
@@ -307,16 +367,15 @@ def _nikolaides_residuals(p: Array, x: Array) -> Array:
     return abs(p[:, 0] - (x0[:, 0] + x1[:, 0]) / 2) / magnitude(p, x0, x1)
 
 
-def _closed_form(ctx: properties.Context, data: D4aPolygons, tolerance: float) -> Check:
+def _closed_form(ctx: _Context) -> Check:
     """Construction against the explicit form, with the tolerance of p's resolution.
 
     p_i is compared relative to its size, d_i relative to the magnitude of d_i and x_i (d_i^x
     is a difference x_i + h cos β_i that may nearly cancel).
     """
-    ar = ctx.ar
+    ar, data, n, tolerance = ctx.ar, ctx.data, ctx.n, ctx.p_tolerance
     if not data.constructed:
         return not_applicable(CLOSED_FORM, tolerance, NOT_CONSTRUCTED)
-    n = len(data.p) - 1
     ends = data.explicit_tractrix[:n]
     residuals = np.maximum(
         relative_point_difference(ar, data.p[:n], data.explicit_p[:n]),
@@ -331,6 +390,38 @@ def _closed_form(ctx: properties.Context, data: D4aPolygons, tolerance: float) -
         ctx.detail,
         note=f"cusp stick c = {data.cusp}",
     )
+
+
+#: Each statement about (D4a) and the function that checks it, in the order of the response.
+_EVALUATORS: Evaluators[_Context] = (
+    (STICKS, _sticks),
+    (
+        ARC_LENGTH,
+        lambda x: x.check(ARC_LENGTH, 0, _arc_length_residuals(x.ar, x.s, x.data.tractrix)),
+    ),
+    (DARBOUX, _darboux_edges),
+    (DARBOUX_DISTANCE, _darboux_distance),
+    (
+        ROTATION,
+        lambda x: x.check(
+            ROTATION,
+            0,
+            _rotation_residuals(x.ar, x.data.p[: x.n], x.data.axis, x.data.tractrix),
+            tolerance=x.p_tolerance,
+        ),
+    ),
+    (
+        NIKOLAIDES,
+        lambda x: x.check(
+            NIKOLAIDES,
+            0,
+            _nikolaides_residuals(x.data.p[: x.n], x.data.axis),
+            tolerance=x.p_tolerance,
+        ),
+    ),
+    (CLOSED_FORM, _closed_form),
+    *properties.EVALUATORS,
+)
 
 
 def _require_float64_representable(

@@ -142,8 +142,8 @@ def _perturbed(data: d1.D1Polygons, index: int, factor: float) -> d1.D1Polygons:
 def test_each_check_fails_on_a_perturbed_polygon(float64: Float64) -> None:
     args = (0.1, 0.2, 1.0, 1.0)
     data = d1.polygons(float64, *args, -10, 10)
-    assert all(verdicts(d1.evaluate(float64, *args, data)[1]).values())
-    results = verdicts(d1.evaluate(float64, *args, _perturbed(data, 12, 1 + 1e-7))[1])
+    assert all(verdicts(d1.evaluate(float64, data)[1]).values())
+    results = verdicts(d1.evaluate(float64, _perturbed(data, 12, 1 + 1e-7))[1])
     assert results == dict.fromkeys(results, False)
 
 

@@ -115,10 +115,10 @@ def test_every_check_holds_at_40_digits_far_below_tolerance(mp40: MultiPrecision
 
 def test_each_check_fails_on_a_perturbed_polygon(float64: Float64) -> None:
     data = d3.polygons(float64, 1.0, 0.3, 1.2, "down", -10, 10)
-    assert all(verdicts(d3.evaluate(float64, 1.0, 0.3, data)[1]).values())
+    assert all(verdicts(d3.evaluate(float64, data)[1]).values())
     p = data.p.copy()
     p[12, 1] *= 1 + 1e-7
-    results = verdicts(d3.evaluate(float64, 1.0, 0.3, replace(data, p=p))[1])
+    results = verdicts(d3.evaluate(float64, replace(data, p=p))[1])
     assert results == dict.fromkeys(results, False)
 
 
@@ -127,7 +127,7 @@ def test_a_zig_zag_satisfies_d3_but_not_d1(float64: Float64) -> None:
     data = d3.polygons(float64, 1.0, 0.3, 1.2, "up", 0, 6)
     p = data.p.copy()
     p[2::2, 1], p[3::2, 1] = p[0, 1], p[1, 1]
-    results = verdicts(d3.evaluate(float64, 1.0, 0.3, replace(data, p=p))[1])
+    results = verdicts(d3.evaluate(float64, replace(data, p=p))[1])
     assert results["d3"] is True
     assert results["d1"] is False and results["d3-closed-form"] is False
 
@@ -190,9 +190,7 @@ def test_closed_form_tolerance_allows_the_conditioning_next_to_the_lowest_point(
     data = d3.polygons(float64, c, delta, a * (1 + 4e-12), "up", 0, 5)
     p = data.p.copy()
     p[3, 1] *= 1 + 1e-7
-    bad = next(
-        ch for ch in d3.evaluate(float64, c, delta, replace(data, p=p))[1] if ch.id == check.id
-    )
+    bad = next(ch for ch in d3.evaluate(float64, replace(data, p=p))[1] if ch.id == check.id)
     assert bad.holds is False
     generic = next(
         ch for ch in d3.compute(float64, 2.0, 1.0, 5.0, "up", 0, 5).checks if ch.id == check.id

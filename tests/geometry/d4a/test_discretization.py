@@ -184,10 +184,10 @@ PERTURBED = {
 @pytest.mark.parametrize("field", list(PERTURBED))
 def test_checks_fail_on_a_perturbed_polygon(float64: Float64, field: str) -> None:
     data = d4a.polygons(float64, 1.0, 0.3, 2.0, -10, 10)
-    truth = verdicts(d4a.evaluate(float64, 1.0, 0.3, data)[1])
+    truth = verdicts(d4a.evaluate(float64, data)[1])
     points = getattr(data, field).copy()
     points[12] = points[12] * (1 + 1e-7) + 1e-7
-    results = verdicts(d4a.evaluate(float64, 1.0, 0.3, replace(data, **{field: points}))[1])
+    results = verdicts(d4a.evaluate(float64, data.replaced(**{field: points}))[1])
     flipped = {k for k in results if truth[k] is True and results[k] is False}
     # the property checks fail on D4a anyway: the next test perturbs a polygon satisfying them
     assert flipped == PERTURBED[field] - {"d1", "d3", "equation-2", "hanging-sticks"}
@@ -200,11 +200,11 @@ def test_property_checks_fail_on_a_perturbed_polygon_that_satisfies_them(float64
     i = np.arange(-10, 12)
     L = 2 * math.atanh(0.1)
     chain = np.column_stack([0.2 * i, math.sqrt(0.99) * np.cosh((i - 0.5) * L)])
-    good = verdicts(d4a.evaluate(float64, 1.0, 0.3, replace(data, p=chain))[1])
+    good = verdicts(d4a.evaluate(float64, replace(data, p=chain))[1])
     names = ("d1", "d3", "equation-2", "hanging-sticks")
     assert all(good[k] is True for k in names)
     chain[12, 1] *= 1 + 1e-7
-    bad = verdicts(d4a.evaluate(float64, 1.0, 0.3, replace(data, p=chain))[1])
+    bad = verdicts(d4a.evaluate(float64, replace(data, p=chain))[1])
     assert all(bad[k] is False for k in names)
 
 
