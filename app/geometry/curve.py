@@ -20,6 +20,10 @@ C = TypeVar("C")
 #: order of the response (``Selection.evaluate``).
 Evaluators = Sequence[tuple[Statement, Callable[[C], Check]]]
 
+#: Each constant of a discretization: its name, the statements it comes with, and how it is read
+#: from a context (``Selection.constants``).
+Constants = Sequence[tuple[str, tuple[Statement, ...], Callable[[C], Scalar | None]]]
+
 
 @dataclass(frozen=True)
 class Polyline:
@@ -106,6 +110,21 @@ class Selection:
             for statement, evaluate in evaluators
             if self.wants_check(statement.id)
         ]
+
+    def constants(self, context: C, constants: Constants[C]) -> dict[str, Scalar]:
+        """The constants that come with the selected statements, each read from ``context``.
+
+        ``constants`` names each constant, the statements it comes with and how it is read (the
+        same shared quantity a check of those statements reads); an undetermined one (``None``)
+        is left out.
+        """
+        found: dict[str, Scalar] = {}
+        for name, statements, read in constants:
+            if any(self.wants_check(statement.id) for statement in statements):
+                value = read(context)
+                if value is not None:
+                    found[name] = value
+        return found
 
 
 class OnDemand:

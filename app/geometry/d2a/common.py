@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import replace
 from typing import Any
 
@@ -19,6 +20,7 @@ from app.geometry.checks import (
     not_applicable,
     printed_residual,
 )
+from app.geometry.curve import OnDemand
 from app.geometry.errors import NotRepresentableError
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
@@ -50,8 +52,8 @@ def local_tolerance(ar: Arithmetic, gap: Scalar) -> float:
     return ar.tolerance(LOCAL_STEPS) * max(1.0, 1 / ar.to_float(gap))
 
 
-class Context:
-    """What every check of one computation shares."""
+class Context(OnDemand):
+    """What every check of one computation shares; the discretizations add their quantities."""
 
     def __init__(
         self,
@@ -95,9 +97,10 @@ class Context:
         return Erratum(*entry, printed_residual=printed_residual(self.ar, residuals))
 
 
-def companions(ar: Arithmetic, f: Array, gauss: Array) -> dict[str, Array]:
-    """The conformal points f_i (on the x-axis) and their stereographic images φ_i, eq. (S2)."""
-    return {"conformal": stack_points(f, ar.zeros(len(f))), "gauss_image": gauss}
+def companions(ar: Arithmetic, f: Array, gauss: Array) -> dict[str, Callable[[], Array]]:
+    """The conformal points f_i (on the x-axis) and their stereographic images φ_i, eq. (S2),
+    each when selected."""
+    return {"conformal": lambda: stack_points(f, ar.zeros(len(f))), "gauss_image": lambda: gauss}
 
 
 def scaled_difference(ar: Arithmetic, computed: Array, expected: Array, size: Array) -> Array:

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Any, cast
 
 import numpy as np
@@ -23,7 +24,15 @@ from app.geometry.catalog.section4 import (
     HEX_THEOREM_3_ODD as THEOREM_3_ODD,
 )
 from app.geometry.checks import Check, Statement, not_applicable, relative_to
-from app.geometry.curve import EVERYTHING, Curve, DiscretizationInfo, Selection, require_range
+from app.geometry.curve import (
+    EVERYTHING,
+    Constants,
+    Curve,
+    DiscretizationInfo,
+    Evaluators,
+    Selection,
+    require_range,
+)
 from app.geometry.d2a import closed_forms as cf, construction as christoffel
 from app.geometry.d2a.common import (
     FLOAT64_MIN_GAP,
@@ -140,67 +149,55 @@ def polygons(
     )
 
 
+class _Context(Context):
+    """What the checks of one hexagonal computation share, each part computed when first
+    needed."""
+
+    def __init__(self, ar: Arithmetic, data: HexPolygons, detail: bool) -> None:
+        n = len(data.p)
+        indices = np.arange(data.i_min, data.i_min + n, dtype=np.int64)
+        steps = max(abs(data.i_min), abs(data.i_min + n - 1)) + 1
+        super().__init__(ar, indices, steps, detail, smallest_gap(data.a, data.b, data.lam))
+        self.data = data
+
+    @cached_property
+    def c11(self) -> tuple[Scalar, Scalar]:
+        """c_1, c_2 of eq. (11)."""
+        return cf.theorem_2_constants(self.data.a, self.data.b, self.data.lam)
+
+    @cached_property
+    def r_star(self) -> Scalar:
+        """r*, the start height for which Theorem 2 holds."""
+        return cf.theorem_2_radius(self.data.a, self.data.b, self.data.lam)
+
+    @cached_property
+    def fit(self) -> conditions.TwoConstantFit:
+        """Eq. (7) fitted on p (two constants)."""
+        return conditions.equation_7(self.ar, self.data.p, self.data.i_min)
+
+    @cached_property
+    def fit_2(self) -> conditions.ConditionFit:
+        """Eq. (2) fitted on p (one constant)."""
+        return conditions.equation_2(self.ar, self.data.p)
+
+    @cached_property
+    def x_steps(self) -> tuple[Scalar, Scalar]:
+        """p_{i+1}^x − p_i^x for even and odd i, from Theorem 3 (p_0^x = 0)."""
+        ar, a, b, lam = self.ar, self.data.a, self.data.b, self.data.lam
+        x1 = cf.theorem_3_x(a, b, lam, ar.array([1]), odd=True)[0]  # p_1^x
+        x2 = cf.theorem_3_x(a, b, lam, ar.array([2]), odd=False)[0]
+        return x1, x2 - x1
+
+
 def evaluate(
-    ar: Arithmetic, data: HexPolygons, detail: bool = False
+    ar: Arithmetic, data: HexPolygons, detail: bool = False, selection: Selection = EVERYTHING
 ) -> tuple[dict[str, Scalar], list[Check]]:
-    """Constants and every check of ``STATEMENTS`` on the given polygons."""
-    n = len(data.p)
-    indices = np.arange(data.i_min, data.i_min + n, dtype=np.int64)
-    steps = max(abs(data.i_min), abs(data.i_min + n - 1)) + 1
-    a, b, lam = data.a, data.b, data.lam
-    ctx = Context(ar, indices, steps, detail, smallest_gap(a, b, lam))
-    c11 = cf.theorem_2_constants(a, b, lam)
-    r_star = cf.theorem_2_radius(a, b, lam)
-    fit = conditions.equation_7(ar, data.p, data.i_min)
-    constants: dict[str, Scalar] = {}
-    if fit.constants is not None:
-        constants = {"c1": fit.constants[0], "c2": fit.constants[1]}
-    x1 = cf.theorem_3_x(a, b, lam, ar.array([1]), odd=True)[0]  # p_1^x (p_0^x = 0)
-    x2 = cf.theorem_3_x(a, b, lam, ar.array([2]), odd=False)[0]
-    constants.update(
-        {
-            "c1_eq11": c11[0],
-            "c2_eq11": c11[1],
-            "r_theorem_2": r_star,
-            "x_step_even": x1,
-            "x_step_odd": x2 - x1,
-        }
-    )
-    special = bool(abs(data.r - r_star) <= 4 * ar.eps * abs(r_star))
-    note = None
-    if not special:
-        note = (
-            f"holds only for r = r* = {ar.to_float(r_star):.17g}; this polygon starts at "
-            f"r = {ar.to_float(data.r):.17g}"
-        )
-    checks = [
-        _theorem_2(ctx, data, fit, c11, note),
-        _start_height(ctx, data, c11, r_star),
-        _equation_10(ctx, data, c11),
-        *_theorem_3(ctx, data),
-        fitted_condition(
-            ctx,
-            SHARED_EQUATION_2,
-            conditions.equation_2(ar, data.p),
-            "(2) holds",
-            "(2) with one constant fails; Theorem 2 replaces it by (7)",
-        ),
-        fitted_condition(
-            ctx,
-            SHARED_D1,
-            conditions.d1(ar, data.p),
-            "(D1) holds",
-            "(D1) fails: the (D2a) hexagonal polygon is not a (D1) polygon",
-        ),
-        fitted_condition(
-            ctx,
-            SHARED_D3,
-            conditions.d3(ar, data.p),
-            "(D3) holds",
-            "(D3) fails: the (D2a) hexagonal polygon is not a (D3) polygon",
-        ),
-    ]
-    return constants, checks
+    """Constants and the selected checks of ``STATEMENTS`` on the given polygons.
+
+    Each check computes only what it needs; a constant comes with the statements it belongs to.
+    """
+    ctx = _Context(ar, data, detail)
+    return selection.constants(ctx, _CONSTANTS), selection.evaluate(ctx, _EVALUATORS)
 
 
 def compute(
@@ -225,7 +222,7 @@ def compute(
             ar, "lambda", "λ(b − a)/f_1 and (1 − λ)(b − a)/b", lam, float(smallest_gap(a, b, lam))
         )
     data = polygons(ar, a, b, lam, r, i_min, i_max)
-    constants, checks = evaluate(ar, data, detail)
+    constants, checks = evaluate(ar, data, detail, selection)
     parameters: dict[str, Any] = {
         "a": a,
         "b": b,
@@ -259,34 +256,34 @@ def equation_7_residuals(ar: Arithmetic, p: Array, i_min: int, c1: Scalar, c2: S
     return relative_to(ar, lhs - first * areas[:-1] - second * areas[1:], scale)
 
 
-def _theorem_2(
-    ctx: Context,
-    data: HexPolygons,
-    fit: conditions.TwoConstantFit,
-    c11: tuple[Scalar, Scalar],
-    note: str | None,
-) -> Check:
+def _theorem_2(ctx: _Context) -> Check:
+    ar, data, fit = ctx.ar, ctx.data, ctx.fit
     if fit.constants is None:
         return not_applicable(THEOREM_2, ctx.summed, "needs five vertices (two equations)")
-    with_11 = equation_7_residuals(ctx.ar, data.p, data.i_min, *c11)
-    one_constant = conditions.equation_2(ctx.ar, data.p).residuals  # what Section 4.1 says
-    erratum = ctx.erratum(ERRATUM_EQUATION_2, one_constant)
+    with_11 = equation_7_residuals(ar, data.p, data.i_min, *ctx.c11)
+    erratum = ctx.erratum(ERRATUM_EQUATION_2, ctx.fit_2.residuals)  # what Section 4.1 says
+    note = None
+    if not abs(data.r - ctx.r_star) <= 4 * ar.eps * abs(ctx.r_star):
+        note = (
+            f"holds only for r = r* = {ar.to_float(ctx.r_star):.17g}; this polygon starts at "
+            f"r = {ar.to_float(data.r):.17g}"
+        )
     return ctx.check(THEOREM_2, 0, np.maximum(fit.residuals, with_11), erratum, note=note)
 
 
-def _start_height(
-    ctx: Context, data: HexPolygons, c11: tuple[Scalar, Scalar], r_star: Scalar
-) -> Check:
+def _start_height(ctx: _Context) -> Check:
+    ar, data = ctx.ar, ctx.data
     if len(data.p) < 3:
         return not_enough(ctx, START_HEIGHT, "three vertices")
-    ar = ctx.ar
-    residuals = equation_7_residuals(ar, shifted(data.p, r_star - data.r), data.i_min, *c11)
+    moved = shifted(data.p, ctx.r_star - data.r)
+    residuals = equation_7_residuals(ar, moved, data.i_min, *ctx.c11)
     printed_r = cf.theorem_2_radius_printed(data.a, data.b, data.lam)
-    printed = equation_7_residuals(ar, shifted(data.p, printed_r - data.r), data.i_min, *c11)
+    printed = equation_7_residuals(ar, shifted(data.p, printed_r - data.r), data.i_min, *ctx.c11)
     return ctx.check(START_HEIGHT, 0, residuals, ctx.erratum(ERRATUM_START_HEIGHT, printed))
 
 
-def _equation_10(ctx: Context, data: HexPolygons, c11: tuple[Scalar, Scalar]) -> Check:
+def _equation_10(ctx: _Context) -> Check:
+    data = ctx.data
     if len(data.p) < 4:
         return not_enough(ctx, EQUATION_10, "four vertices")
     p = data.p
@@ -295,41 +292,95 @@ def _equation_10(ctx: Context, data: HexPolygons, c11: tuple[Scalar, Scalar]) ->
     third = y[3:] - 3 * y[2:-1] + 3 * y[1:-2] - y[:-3]
     areas, sizes = signed_areas(p), area_magnitude(p)
     even = (np.arange(data.i_min, data.i_min + len(third)) % 2) == 0
-    c = cast(Array, np.where(even, c11[0], c11[1]))
+    c = cast(Array, np.where(even, ctx.c11[0], ctx.c11[1]))
     scale = a[3:] + 3 * a[2:-1] + 3 * a[1:-2] + a[:-3] + abs(c) * (sizes[2:] + sizes[:-2])
     residuals = relative_to(ctx.ar, third - c * (areas[2:] - areas[:-2]), scale)
     return ctx.check(EQUATION_10, 0, residuals)
 
 
-def _theorem_3(ctx: Context, data: HexPolygons) -> list[Check]:
-    ar, p = ctx.ar, data.p
-    a, b, lam, r = data.a, data.b, data.lam, data.r
-    odd = (ctx.indices % 2) == 1
-    checks = []
-    for statement, mask in ((THEOREM_3_EVEN, ~odd), (THEOREM_3_ODD, odd)):
-        at = ctx.indices[mask]
-        if len(at) == 0:
-            checks.append(not_enough(ctx, statement, "an index of this parity"))
-            continue
-        i = ar.array(at)
-        is_odd = statement is THEOREM_3_ODD
-        x = cf.theorem_3_x(a, b, lam, i, odd=is_odd)
-        if is_odd:
-            y = cf.theorem_3_y_odd(ar, a, b, lam, r, i)
-        else:
-            y = cf.theorem_3_y_even(ar, a, b, lam, r, i)
-        zero = ar.zeros(len(at))
-        residuals = scaled_point_difference(ar, p[mask], stack_points(x, y), zero)
-        erratum = None
-        if not is_odd:
-            # the literal powers may overflow in float64: the printed residual is then not a
-            # number, and the erratum says so (printed_residual None)
-            with np.errstate(all="ignore"):
-                printed_y = cf.theorem_3_y_even_printed(a, b, lam, r, i)
-                printed = scaled_point_difference(ar, p[mask], stack_points(x, printed_y), zero)
-            erratum = ctx.erratum(ERRATUM_EVEN, printed)
-        checks.append(ctx.check(statement, 0, residuals, erratum, summed=True, at=at))
-    return checks
+def _theorem_3(ctx: _Context, statement: Statement) -> Check:
+    """Theorem 3's explicit p_i at the even (``THEOREM_3_EVEN``) or odd indices."""
+    ar, p = ctx.ar, ctx.data.p
+    a, b, lam, r = ctx.data.a, ctx.data.b, ctx.data.lam, ctx.data.r
+    is_odd = statement is THEOREM_3_ODD
+    mask = (ctx.indices % 2) == (1 if is_odd else 0)
+    at = ctx.indices[mask]
+    if len(at) == 0:
+        return not_enough(ctx, statement, "an index of this parity")
+    i = ar.array(at)
+    x = cf.theorem_3_x(a, b, lam, i, odd=is_odd)
+    if is_odd:
+        y = cf.theorem_3_y_odd(ar, a, b, lam, r, i)
+    else:
+        y = cf.theorem_3_y_even(ar, a, b, lam, r, i)
+    zero = ar.zeros(len(at))
+    residuals = scaled_point_difference(ar, p[mask], stack_points(x, y), zero)
+    erratum = None
+    if not is_odd:
+        # the literal powers may overflow in float64: the printed residual is then not a
+        # number, and the erratum says so (printed_residual None)
+        with np.errstate(all="ignore"):
+            printed_y = cf.theorem_3_y_even_printed(a, b, lam, r, i)
+            printed = scaled_point_difference(ar, p[mask], stack_points(x, printed_y), zero)
+        erratum = ctx.erratum(ERRATUM_EVEN, printed)
+    return ctx.check(statement, 0, residuals, erratum, summed=True, at=at)
+
+
+#: Each statement about the (D2a) hexagonal polygon and the function that checks it, in the
+#: order of the response.
+_EVALUATORS: Evaluators[_Context] = (
+    (THEOREM_2, _theorem_2),
+    (START_HEIGHT, _start_height),
+    (EQUATION_10, _equation_10),
+    (THEOREM_3_EVEN, lambda x: _theorem_3(x, THEOREM_3_EVEN)),
+    (THEOREM_3_ODD, lambda x: _theorem_3(x, THEOREM_3_ODD)),
+    (
+        SHARED_EQUATION_2,
+        lambda x: fitted_condition(
+            x,
+            SHARED_EQUATION_2,
+            x.fit_2,
+            "(2) holds",
+            "(2) with one constant fails; Theorem 2 replaces it by (7)",
+        ),
+    ),
+    (
+        SHARED_D1,
+        lambda x: fitted_condition(
+            x,
+            SHARED_D1,
+            conditions.d1(x.ar, x.data.p),
+            "(D1) holds",
+            "(D1) fails: the (D2a) hexagonal polygon is not a (D1) polygon",
+        ),
+    ),
+    (
+        SHARED_D3,
+        lambda x: fitted_condition(
+            x,
+            SHARED_D3,
+            conditions.d3(x.ar, x.data.p),
+            "(D3) holds",
+            "(D3) fails: the (D2a) hexagonal polygon is not a (D3) polygon",
+        ),
+    ),
+)
+
+
+def _fitted(x: _Context, k: int) -> Scalar | None:
+    return None if x.fit.constants is None else x.fit.constants[k]
+
+
+#: The constants and the statements they come with.
+_CONSTANTS: Constants[_Context] = (
+    ("c1", (THEOREM_2,), lambda x: _fitted(x, 0)),
+    ("c2", (THEOREM_2,), lambda x: _fitted(x, 1)),
+    ("c1_eq11", (THEOREM_2, START_HEIGHT, EQUATION_10), lambda x: x.c11[0]),
+    ("c2_eq11", (THEOREM_2, START_HEIGHT, EQUATION_10), lambda x: x.c11[1]),
+    ("r_theorem_2", (THEOREM_2, START_HEIGHT), lambda x: x.r_star),
+    ("x_step_even", (THEOREM_3_EVEN, THEOREM_3_ODD), lambda x: x.x_steps[0]),
+    ("x_step_odd", (THEOREM_3_EVEN, THEOREM_3_ODD), lambda x: x.x_steps[1]),
+)
 
 
 def smallest_gap(a: Scalar, b: Scalar, lam: Scalar) -> Scalar:

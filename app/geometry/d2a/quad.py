@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Any
 
 import numpy as np
@@ -28,7 +29,15 @@ from app.geometry.catalog.section4 import (
     QUAD_X_STEP as X_STEP,
 )
 from app.geometry.checks import Check, Statement, relative_to
-from app.geometry.curve import EVERYTHING, Curve, DiscretizationInfo, Selection, require_range
+from app.geometry.curve import (
+    EVERYTHING,
+    Constants,
+    Curve,
+    DiscretizationInfo,
+    Evaluators,
+    Selection,
+    require_range,
+)
 from app.geometry.d2a import closed_forms as cf, construction as christoffel
 from app.geometry.d2a.common import (
     FLOAT64_MIN_GAP,
@@ -139,50 +148,55 @@ def polygons(
     )
 
 
+class _Context(Context):
+    """What the checks of one quad computation share, each part computed when first needed."""
+
+    def __init__(self, ar: Arithmetic, data: QuadPolygons, detail: bool) -> None:
+        n = len(data.p)
+        indices = np.arange(data.i_min, data.i_min + n, dtype=np.int64)
+        steps = max(abs(data.i_min), abs(data.i_min + n - 1)) + 1
+        super().__init__(ar, indices, steps, detail, (data.f1 - data.f0) / data.f1)
+        self.data = data
+
+    @cached_property
+    def c_proof(self) -> Scalar:
+        """c = 4(f_1 − f_0)³/(f_0 + f_1)³ of Theorem 1 (sign corrected)."""
+        return cf.theorem_1_constant(self.data.f0, self.data.f1)
+
+    @cached_property
+    def r_star(self) -> Scalar:
+        """r*, the start height for which Theorem 1 holds."""
+        return cf.theorem_1_radius(self.data.f0, self.data.f1)
+
+    @cached_property
+    def x_step(self) -> Scalar:
+        """d = (f_0 + f_1)/(2(f_1 − f_0)), the constant x-step the proof names d."""
+        return cf.quad_x_step(self.data.f0, self.data.f1)
+
+    @cached_property
+    def fit(self) -> conditions.ConditionFit:
+        """Eq. (2) fitted on p."""
+        return conditions.equation_2(self.ar, self.data.p)
+
+    @cached_property
+    def special_note(self) -> str | None:
+        """Why a check that holds only for r = r* fails here (``None`` when r = r*)."""
+        ar, r = self.ar, self.data.r
+        if abs(r - self.r_star) <= 4 * ar.eps * abs(self.r_star):
+            return None
+        r_star, start = ar.to_float(self.r_star), ar.to_float(r)
+        return f"holds only for r = r* = {r_star:.17g}; this polygon starts at r = {start:.17g}"
+
+
 def evaluate(
-    ar: Arithmetic, data: QuadPolygons, detail: bool = False
+    ar: Arithmetic, data: QuadPolygons, detail: bool = False, selection: Selection = EVERYTHING
 ) -> tuple[dict[str, Scalar], list[Check]]:
-    """Constants and every check of ``STATEMENTS`` on the given polygons."""
-    n = len(data.p)
-    indices = np.arange(data.i_min, data.i_min + n, dtype=np.int64)
-    steps = max(abs(data.i_min), abs(data.i_min + n - 1)) + 1
-    ctx = Context(ar, indices, steps, detail, (data.f1 - data.f0) / data.f1)
-    c_proof = cf.theorem_1_constant(data.f0, data.f1)
-    r_star = cf.theorem_1_radius(data.f0, data.f1)
-    fit = conditions.equation_2(ar, data.p)
-    constants: dict[str, Scalar] = {
-        "c_theorem_1": c_proof,
-        "r_theorem_1": r_star,
-        "x_step": cf.quad_x_step(data.f0, data.f1),
-    }
-    if fit.constant is not None:
-        constants = {"eq2": fit.constant, **constants}
-    special = _is_special(ar, data.r, r_star)
-    checks = [
-        _theorem_1(ctx, data, fit, c_proof, special),
-        _start_height(ctx, data, c_proof, r_star),
-        *_gauss_checks(ctx, data),
-        _dual_edge(ctx, data),
-        _x_step(ctx, data),
-        _second_difference(ctx, data),
-        *_heights(ctx, data, special),
-        _area_sum(ctx, data, special),
-        fitted_condition(
-            ctx,
-            SHARED_D1,
-            conditions.d1(ar, data.p),
-            "(D1) holds",
-            "(D1) fails: the (D2a) quad polygon is not a (D1) polygon",
-        ),
-        fitted_condition(
-            ctx,
-            SHARED_D3,
-            conditions.d3(ar, data.p),
-            "(D3) holds",
-            "(D3) fails: the (D2a) quad polygon is not a (D3) polygon",
-        ),
-    ]
-    return constants, checks
+    """Constants and the selected checks of ``STATEMENTS`` on the given polygons.
+
+    Each check computes only what it needs; a constant comes with the statements it belongs to.
+    """
+    ctx = _Context(ar, data, detail)
+    return selection.constants(ctx, _CONSTANTS), selection.evaluate(ctx, _EVALUATORS)
 
 
 def compute(
@@ -203,7 +217,7 @@ def compute(
     else:
         require_mp_gap(ar, "f1", "(f1 − f0)/f1", f1, (f1 - f0) / f1)
     data = polygons(ar, f0, f1, r, i_min, i_max)
-    constants, checks = evaluate(ar, data, detail)
+    constants, checks = evaluate(ar, data, detail, selection)
     parameters: dict[str, Any] = {
         "f0": f0,
         "f1": f1,
@@ -223,38 +237,24 @@ def compute(
     )
 
 
-def _is_special(ar: Arithmetic, r: Scalar, r_star: Scalar) -> bool:
-    """Whether the start height is r* (to the precision's resolution)."""
-    return bool(abs(r - r_star) <= 4 * ar.eps * abs(r_star))
-
-
-def _special_note(ar: Arithmetic, data: QuadPolygons, special: bool) -> str | None:
-    if special:
-        return None
-    r_star = ar.to_float(cf.theorem_1_radius(data.f0, data.f1))
-    r = ar.to_float(data.r)
-    return f"holds only for r = r* = {r_star:.17g}; this polygon starts at r = {r:.17g}"
-
-
-def _theorem_1(
-    ctx: Context, data: QuadPolygons, fit: conditions.ConditionFit, c_proof: Scalar, special: bool
-) -> Check:
+def _theorem_1(ctx: _Context) -> Check:
     """(2) with a fitted c; it must also hold with the proof's c (so a short range cannot fit)."""
-    ar = ctx.ar
+    ar, data = ctx.ar, ctx.data
     if len(data.p) < 3:
         return not_enough(ctx, THEOREM_1, "three vertices")
-    residuals = np.maximum(fit.residuals, _equation_2_residuals(ar, data.p, c_proof))
+    residuals = np.maximum(ctx.fit.residuals, _equation_2_residuals(ar, data.p, ctx.c_proof))
     printed_c = cf.theorem_1_constant_printed(data.f0, data.f1)
-    printed = np.maximum(fit.residuals, _equation_2_residuals(ar, data.p, printed_c))
+    printed = np.maximum(ctx.fit.residuals, _equation_2_residuals(ar, data.p, printed_c))
     erratum = ctx.erratum(ERRATUM_CONSTANT, printed)
-    return ctx.check(THEOREM_1, 0, residuals, erratum, note=_special_note(ar, data, special))
+    return ctx.check(THEOREM_1, 0, residuals, erratum, note=ctx.special_note)
 
 
-def _start_height(ctx: Context, data: QuadPolygons, c_proof: Scalar, r_star: Scalar) -> Check:
+def _start_height(ctx: _Context) -> Check:
+    data = ctx.data
     if len(data.p) < 3:
         return not_enough(ctx, START_HEIGHT, "three vertices")
-    moved = shifted(data.p, r_star - data.r)
-    residuals = _equation_2_residuals(ctx.ar, moved, c_proof)
+    moved = shifted(data.p, ctx.r_star - data.r)
+    residuals = _equation_2_residuals(ctx.ar, moved, ctx.c_proof)
     return ctx.check(START_HEIGHT, 0, residuals)
 
 
@@ -269,24 +269,29 @@ def _equation_2_residuals(ar: Arithmetic, p: Array, c: Scalar) -> Array:
     return relative_to(ar, lhs - c * (areas[:-1] + areas[1:]), scale)
 
 
-def _gauss_checks(ctx: Context, data: QuadPolygons) -> list[Check]:
+def _gauss_edge(ctx: _Context) -> Check:
+    data = ctx.data
     if len(data.f) < 2:
-        return [
-            not_enough(ctx, GAUSS_EDGE, "two vertices"),
-            not_enough(ctx, GAUSS_NORM, "two vertices"),
-        ]
-    ar = ctx.ar
-    f_prev, f_cur = data.f[:-1], data.f[1:]
+        return not_enough(ctx, GAUSS_EDGE, "two vertices")
+    formula = cf.quad_gauss_edge(data.f[:-1], data.f[1:])
+    zero = ctx.ar.zeros(len(data.f) - 1)
+    residuals = scaled_point_difference(ctx.ar, data.gauss_edges, formula, zero)
+    return ctx.check(GAUSS_EDGE, 1, residuals)
+
+
+def _gauss_norm(ctx: _Context) -> Check:
+    data = ctx.data
+    if len(data.f) < 2:
+        return not_enough(ctx, GAUSS_NORM, "two vertices")
     edges = data.gauss_edges
-    formula = cf.quad_gauss_edge(f_prev, f_cur)
-    zero = ar.zeros(len(f_cur))
-    edge = ctx.check(GAUSS_EDGE, 1, scaled_point_difference(ar, edges, formula, zero))
     norm = edges[:, 0] * edges[:, 0] + edges[:, 1] * edges[:, 1]
-    expected = cf.quad_gauss_edge_norm_squared(f_prev, f_cur)
-    return [edge, ctx.check(GAUSS_NORM, 1, scaled_difference(ar, norm, expected, zero))]
+    expected = cf.quad_gauss_edge_norm_squared(data.f[:-1], data.f[1:])
+    zero = ctx.ar.zeros(len(data.f) - 1)
+    return ctx.check(GAUSS_NORM, 1, scaled_difference(ctx.ar, norm, expected, zero))
 
 
-def _dual_edge(ctx: Context, data: QuadPolygons) -> Check:
+def _dual_edge(ctx: _Context) -> Check:
+    data = ctx.data
     if len(data.p) < 2:
         return not_enough(ctx, DUAL_EDGE, "two vertices")
     p = data.p
@@ -297,24 +302,25 @@ def _dual_edge(ctx: Context, data: QuadPolygons) -> Check:
     return ctx.check(DUAL_EDGE, 1, residuals)
 
 
-def _x_step(ctx: Context, data: QuadPolygons) -> Check:
+def _x_step(ctx: _Context) -> Check:
+    data = ctx.data
     if len(data.p) < 2:
         return not_enough(ctx, X_STEP, "two vertices")
     ar, p = ctx.ar, data.p
     steps = p[1:, 0] - p[:-1, 0]
     size = vertex_magnitude(p[:-1], p[1:])
     f_prev, f_cur = data.f[:-1], data.f[1:]
-    d = cf.quad_x_step(data.f0, data.f1)  # the constant the proof names d
     per_edge = cf.quad_x_step(f_prev, f_cur)
     residuals = np.maximum(
         scaled_difference(ar, steps, per_edge, size),
-        scaled_difference(ar, steps, np.full_like(steps, d), size),
+        scaled_difference(ar, steps, np.full_like(steps, ctx.x_step), size),
     )
     printed = scaled_difference(ar, steps, cf.quad_x_step_printed(f_prev, f_cur), size)
     return ctx.check(X_STEP, 1, residuals, ctx.erratum(ERRATUM_X_STEP, printed))
 
 
-def _second_difference(ctx: Context, data: QuadPolygons) -> Check:
+def _second_difference(ctx: _Context) -> Check:
+    data = ctx.data
     if len(data.p) < 3:
         return not_enough(ctx, SECOND_DIFFERENCE, "three vertices")
     ar, p = ctx.ar, data.p
@@ -327,39 +333,80 @@ def _second_difference(ctx: Context, data: QuadPolygons) -> Check:
     return ctx.check(SECOND_DIFFERENCE, 1, residuals, erratum)
 
 
-def _heights(ctx: Context, data: QuadPolygons, special: bool) -> list[Check]:
-    ar, y, f = ctx.ar, data.p[:, 1], data.f
-    note = _special_note(ar, data, special)
+def _equation_5(ctx: _Context) -> Check:
+    ar, y, f = ctx.ar, ctx.data.p[:, 1], ctx.data.f
     if len(f) < 2:
-        five = not_enough(ctx, EQUATION_5, "two vertices")
-    else:
-        # (5) names p_{i−1}^y; residual k belongs to the vertex i_min + k
-        expected = cf.quad_equation_5(f[:-1], f[1:])
-        five = ctx.check(
-            EQUATION_5,
-            0,
-            scaled_difference(ar, y[:-1], expected, 0 * expected),
-            summed=True,
-            note=note,
-        )
+        return not_enough(ctx, EQUATION_5, "two vertices")
+    # (5) names p_{i−1}^y; residual k belongs to the vertex i_min + k
+    expected = cf.quad_equation_5(f[:-1], f[1:])
+    residuals = scaled_difference(ar, y[:-1], expected, 0 * expected)
+    return ctx.check(EQUATION_5, 0, residuals, summed=True, note=ctx.special_note)
+
+
+def _heights(ctx: _Context) -> Check:
+    ar, y, f = ctx.ar, ctx.data.p[:, 1], ctx.data.f
     if len(f) < 3:
-        return [five, not_enough(ctx, HEIGHTS, "three vertices")]
+        return not_enough(ctx, HEIGHTS, "three vertices")
     f_prev, f_cur = f[:-2], f[1:-1]
     current = scaled_difference(ar, y[1:-1], cf.quad_height_next(f_prev, f_cur), 0 * f_cur)
     after = scaled_difference(ar, y[2:], cf.quad_height_after(f_prev, f_cur), 0 * f_cur)
-    heights = ctx.check(HEIGHTS, 1, np.maximum(current, after), summed=True, note=note)
-    return [five, heights]
+    residuals = np.maximum(current, after)
+    return ctx.check(HEIGHTS, 1, residuals, summed=True, note=ctx.special_note)
 
 
-def _area_sum(ctx: Context, data: QuadPolygons, special: bool) -> Check:
-    if len(data.p) < 3:
+def _area_sum(ctx: _Context) -> Check:
+    if len(ctx.data.p) < 3:
         return not_enough(ctx, AREA_SUM, "three vertices")
-    ar, p, f = ctx.ar, data.p, data.f
+    ar, p, f = ctx.ar, ctx.data.p, ctx.data.f
     areas = signed_areas(p)
     sizes = area_magnitude(p)
     expected = cf.quad_area_sum(f[:-2], f[1:-1])
     residuals = scaled_difference(ar, areas[:-1] + areas[1:], expected, sizes[:-1] + sizes[1:])
-    return ctx.check(AREA_SUM, 1, residuals, summed=True, note=_special_note(ar, data, special))
+    return ctx.check(AREA_SUM, 1, residuals, summed=True, note=ctx.special_note)
+
+
+#: Each statement about the (D2a) quad polygon and the function that checks it, in the order of
+#: the response.
+_EVALUATORS: Evaluators[_Context] = (
+    (THEOREM_1, _theorem_1),
+    (START_HEIGHT, _start_height),
+    (GAUSS_EDGE, _gauss_edge),
+    (GAUSS_NORM, _gauss_norm),
+    (DUAL_EDGE, _dual_edge),
+    (X_STEP, _x_step),
+    (SECOND_DIFFERENCE, _second_difference),
+    (EQUATION_5, _equation_5),
+    (HEIGHTS, _heights),
+    (AREA_SUM, _area_sum),
+    (
+        SHARED_D1,
+        lambda x: fitted_condition(
+            x,
+            SHARED_D1,
+            conditions.d1(x.ar, x.data.p),
+            "(D1) holds",
+            "(D1) fails: the (D2a) quad polygon is not a (D1) polygon",
+        ),
+    ),
+    (
+        SHARED_D3,
+        lambda x: fitted_condition(
+            x,
+            SHARED_D3,
+            conditions.d3(x.ar, x.data.p),
+            "(D3) holds",
+            "(D3) fails: the (D2a) quad polygon is not a (D3) polygon",
+        ),
+    ),
+)
+
+#: The constants and the statements they come with.
+_CONSTANTS: Constants[_Context] = (
+    ("eq2", (THEOREM_1,), lambda x: x.fit.constant),
+    ("c_theorem_1", (THEOREM_1, START_HEIGHT), lambda x: x.c_proof),
+    ("r_theorem_1", (THEOREM_1, START_HEIGHT), lambda x: x.r_star),
+    ("x_step", (X_STEP,), lambda x: x.x_step),
+)
 
 
 def _require_float64_representable(f0: float, f1: float, i_min: int, i_max: int) -> None:
