@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
+from functools import cached_property
 from typing import Any
 
 import numpy as np
@@ -38,7 +39,15 @@ from app.geometry.checks import (
     relative_difference,
     relative_point_difference,
 )
-from app.geometry.curve import EVERYTHING, Curve, DiscretizationInfo, Selection
+from app.geometry.curvature import FaceCurvatures
+from app.geometry.curve import (
+    EVERYTHING,
+    Curve,
+    DiscretizationInfo,
+    Evaluators,
+    OnDemand,
+    Selection,
+)
 from app.geometry.d2b import (
     closed_forms as catenoid_convergence,
     construction as vanishing_mean_curvature,
@@ -124,9 +133,10 @@ def resolve_range(
 
 
 @dataclass(frozen=True)
-class D2bPolygons:
+class D2bPolygons(OnDemand):
     """One (D2b) computation on the hull of 0 and i_min .. i_max; ``first`` is i_min's entry."""
 
+    ar: Arithmetic
     sequence_name: SequenceName
     j: int | None
     sequence: GaussSequence
@@ -134,8 +144,19 @@ class D2bPolygons:
     p: Array
     first: int
     count: int
-    refined: tuple[GaussSequence, Array, Array] | None
-    """The same family at 2j on 2i_min .. 2i_max (hull of 0): sequence, n, p; named only."""
+
+    @cached_property
+    def refined(self) -> tuple[GaussSequence, Array, Array] | None:
+        """The same family at 2j on 2i_min .. 2i_max (hull of 0): sequence, n, p; named only,
+        computed when first read (Theorem 11's convergence)."""
+        if self.sequence_name == "custom" or self.j is None:
+            return None
+        i_min = self.sequence.i_min + self.first
+        i_max = i_min + self.count - 1
+        fine = vanishing_mean_curvature.named_sequence(
+            self.ar, self.sequence_name, 2 * self.j, min(0, 2 * i_min), max(0, 2 * i_max)
+        )
+        return (fine, *_build(self.ar, fine))
 
 
 def _build(ar: Arithmetic, sequence: GaussSequence) -> tuple[Array, Array]:
@@ -152,8 +173,7 @@ def polygons(
     i_min: int,
     i_max: int,
 ) -> D2bPolygons:
-    """Gauss image and meridian (the definition), plus the refinement at 2j for named ones."""
-    refined = None
+    """Gauss image and meridian (the definition); the refinement at 2j when first read."""
     if sequence == "custom":
         if s is None:
             raise DomainError("s", "required for sequence=custom", None)
@@ -173,13 +193,9 @@ def polygons(
         data = vanishing_mean_curvature.named_sequence(
             ar, sequence, j, min(0, i_min), max(0, i_max)
         )
-        fine = vanishing_mean_curvature.named_sequence(
-            ar, sequence, 2 * j, min(0, 2 * i_min), max(0, 2 * i_max)
-        )
-        refined = (fine, *_build(ar, fine))
         name_j = j
     n, p = _build(ar, data)
-    return D2bPolygons(sequence, name_j, data, n, p, i_min - data.i_min, i_max - i_min + 1, refined)
+    return D2bPolygons(ar, sequence, name_j, data, n, p, i_min - data.i_min, i_max - i_min + 1)
 
 
 def construction_tolerance(ar: Arithmetic, data: D2bPolygons) -> float:
@@ -205,31 +221,60 @@ def _lemma_10_note(check: Check) -> Check:
     )
 
 
-def evaluate(ar: Arithmetic, data: D2bPolygons, detail: bool = False) -> list[Check]:
-    """Every check of ``STATEMENTS`` on the given polygons (shown range i_min .. i_max)."""
-    window = slice(data.first, data.first + data.count)
-    p, n = data.p[window], data.n[window]
-    i_min = data.sequence.i_min + data.first
-    indices = np.arange(i_min, i_min + data.count, dtype=np.int64)
-    tolerance = construction_tolerance(ar, data)
-    local = ar.tolerance(LOCAL_STEPS)
+class _Context(OnDemand):
+    """What the checks of one (D2b) computation share, each part computed when first needed."""
+
+    def __init__(self, ar: Arithmetic, data: D2bPolygons, detail: bool) -> None:
+        self.ar, self.data, self.detail = ar, data, detail
+        self.window = slice(data.first, data.first + data.count)
+        self.p, self.n = data.p[self.window], data.n[self.window]
+        i_min = data.sequence.i_min + data.first
+        self.indices = np.arange(i_min, i_min + data.count, dtype=np.int64)
+        self.tolerance = construction_tolerance(ar, data)
+        self.local = ar.tolerance(LOCAL_STEPS)
 
     def check(
-        statement: Statement,
-        first: int,
-        residuals: Array,
-        tol: float = tolerance,
-        erratum: Erratum | None = None,
+        self, statement: Statement, first: int, residuals: Array, erratum: Erratum | None = None
     ) -> Check:
-        idx = indices[first : first + len(residuals)]
-        return check_residuals(statement, ar, idx, residuals, tol, detail, erratum)
+        """A check on p (construction tolerance) whose k-th residual is at indices[first + k]."""
+        idx = self.indices[first : first + len(residuals)]
+        return check_residuals(
+            statement, self.ar, idx, residuals, self.tolerance, self.detail, erratum
+        )
 
-    ring = ring_curvatures(ar, p, n) if data.count > 1 else None
-    radii = catenoid_convergence.radii(ar, n[:, 1])
+    @cached_property
+    def ring(self) -> FaceCurvatures | None:
+        """The mixed-area curvatures of the faces (Section 5), ``None`` without a face."""
+        return ring_curvatures(self.ar, self.p, self.n) if self.data.count > 1 else None
+
+
+def evaluate(
+    ar: Arithmetic, data: D2bPolygons, detail: bool = False, selection: Selection = EVERYTHING
+) -> list[Check]:
+    """The selected checks of ``STATEMENTS`` on the given polygons (shown range i_min .. i_max);
+    each computes only what it needs."""
+    return selection.evaluate(_Context(ar, data, detail), _EVALUATORS)
+
+
+def _equation_17(ctx: _Context) -> Check:
+    if ctx.ring is None:
+        return not_applicable(EQUATION_17, ctx.tolerance, "a face needs two vertices")
+    return equation_17_check(
+        ctx.ar, ctx.indices, [(ctx.p, ctx.n)], ctx.tolerance, ctx.detail, [ctx.ring]
+    )
+
+
+def _recursion(ctx: _Context) -> Check:
+    p, n = ctx.p, ctx.n
     size = (abs(p[1:, 0]) + abs(p[:-1, 0])) * (abs(n[1:, 1]) + abs(n[:-1, 1])) + (
         abs(p[1:, 1]) + abs(p[:-1, 1])
     ) * (abs(n[1:, 0]) + abs(n[:-1, 0]))
     recursion = abs(catenoid_convergence.recursion_x_defect(p, n)) / size
+    return ctx.check(RECURSION, 1, recursion)
+
+
+def _lemma_10(ctx: _Context) -> Check:
+    ar, data = ctx.ar, ctx.data
     full = data.sequence
     zero = -full.i_min
     closed = catenoid_convergence.lemma_10(ar, full.s, full.one_minus_s2, zero)
@@ -247,24 +292,42 @@ def evaluate(ar: Arithmetic, data: D2bPolygons, detail: bool = False) -> list[Ch
         if bool(np.any(keep & (shown <= zero)))
         else None,
     )
-    checks = [
-        check(MEAN_CURVATURE, 0, minimal_residuals(ring) if ring else ar.zeros(0)),
-        check(PARALLEL, 0, edge_parallel_residuals(p, n)),
-        equation_17_check(ar, indices, [(p, n)], tolerance, detail, [ring])
-        if ring is not None
-        else not_applicable(EQUATION_17, tolerance, "a face needs two vertices"),
-        check(RADII, 0, relative_difference(ar, p[:, 1], radii)),
-        check(RECURSION, 1, recursion),
-        _lemma_10_note(
-            check(
-                LEMMA_10, 0, relative_point_difference(ar, p, closed[window]), erratum=lemma_erratum
-            )
+    residuals = relative_point_difference(ar, ctx.p, closed[ctx.window])
+    return _lemma_10_note(ctx.check(LEMMA_10, 0, residuals, erratum=lemma_erratum))
+
+
+#: Each statement about (D2b) and the function that checks it, in the order of the response.
+_EVALUATORS: Evaluators[_Context] = (
+    (
+        MEAN_CURVATURE,
+        lambda x: x.check(
+            MEAN_CURVATURE, 0, minimal_residuals(x.ring) if x.ring else x.ar.zeros(0)
         ),
-        _convergence(ar, data, p, indices, local),
-        _example(ar, data, EXAMPLE_12, "example-12", n, indices, local, detail),
-        _example(ar, data, REMARK_13, "remark-13", n, indices, local, detail),
-    ]
-    return checks
+    ),
+    (PARALLEL, lambda x: x.check(PARALLEL, 0, edge_parallel_residuals(x.p, x.n))),
+    (EQUATION_17, _equation_17),
+    (
+        RADII,
+        lambda x: x.check(
+            RADII,
+            0,
+            relative_difference(x.ar, x.p[:, 1], catenoid_convergence.radii(x.ar, x.n[:, 1])),
+        ),
+    ),
+    (RECURSION, _recursion),
+    (LEMMA_10, _lemma_10),
+    (THEOREM_11, lambda x: _convergence(x.ar, x.data, x.p, x.indices, x.local)),
+    (
+        EXAMPLE_12,
+        lambda x: _example(
+            x.ar, x.data, EXAMPLE_12, "example-12", x.n, x.indices, x.local, x.detail
+        ),
+    ),
+    (
+        REMARK_13,
+        lambda x: _example(x.ar, x.data, REMARK_13, "remark-13", x.n, x.indices, x.local, x.detail),
+    ),
+)
 
 
 def _limit_points(ar: Arithmetic, name: SequenceName, j: int, i: Array) -> Array:
@@ -388,7 +451,7 @@ def compute(
         j = DEFAULT_J
     first, last = resolve_range(sequence, j, s, i_min, i_max)
     data = polygons(ar, sequence, j, s, first, last)
-    checks = evaluate(ar, data, detail)
+    checks = evaluate(ar, data, detail, selection)
     window = slice(data.first, data.first + data.count)
     parameters: dict[str, Any] = {"sequence": sequence, "i_min": first, "i_max": last}
     if sequence == "custom":

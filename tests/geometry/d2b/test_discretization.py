@@ -173,7 +173,7 @@ def test_convergence_check_fails_when_the_refinement_does_not_get_closer(float64
     data = d2b.polygons(float64, "example-12", 4, None, 0, 8)
     assert verdicts(d2b.evaluate(float64, data))["theorem-11"] is True
     fine_sequence, fine_n, fine_p = data.refined  # type: ignore[misc]
-    bad = replace(data, refined=(fine_sequence, fine_n, fine_p + np.array([0.1, 0.0])))
+    bad = data.replaced(refined=(fine_sequence, fine_n, fine_p + np.array([0.1, 0.0])))
     assert verdicts(d2b.evaluate(float64, bad))["theorem-11"] is False
 
 
