@@ -2,27 +2,16 @@
 
 from __future__ import annotations
 
-import copy
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, replace
-from functools import cached_property
-from typing import Any, Protocol, Self, TypeVar
+from typing import Any, Protocol
 
 import numpy as np
 
 from app.geometry.checks import Check, Statement
 from app.geometry.errors import DomainError
+from app.geometry.on_demand import C, Constants, Evaluators
 from app.geometry.precision import Arithmetic, Array, Scalar
-
-C = TypeVar("C")
-
-#: Each statement of a discretization with the function that checks it on a context, in the
-#: order of the response (``Selection.evaluate``).
-Evaluators = Sequence[tuple[Statement, Callable[[C], Check]]]
-
-#: Each constant of a discretization: its name, the statements it comes with, and how it is read
-#: from a context (``Selection.constants``).
-Constants = Sequence[tuple[str, tuple[Statement, ...], Callable[[C], Scalar | None]]]
 
 
 @dataclass(frozen=True)
@@ -125,40 +114,6 @@ class Selection:
                 if value is not None:
                     found[name] = value
         return found
-
-
-class OnDemand:
-    """Base of what one computation shares: each quantity a ``functools.cached_property``.
-
-    A quantity is computed when a selected check (or companion) first reads it, and at most
-    once; ``computed`` tells which were (the constants reported are those), and ``replaced``
-    gives a copy with some quantities swapped (the tests perturb polygons to see checks fail).
-    """
-
-    def computed(self, name: str) -> bool:
-        """Whether the quantity ``name`` has been computed (or given)."""
-        return name in self.__dict__
-
-    def replaced(self, **values: Any) -> Self:
-        """A copy with ``values`` in place of the given or computed ones.
-
-        Cached quantities that are not given are dropped from the copy (they may derive from a
-        replaced one) and computed again when read.
-        """
-        clone = copy.copy(self)
-        for name in _cached_names(type(self)):
-            clone.__dict__.pop(name, None)
-        clone.__dict__.update(values)
-        return clone
-
-
-def _cached_names(cls: type) -> set[str]:
-    return {
-        name
-        for klass in cls.__mro__
-        for name, value in vars(klass).items()
-        if isinstance(value, cached_property)
-    }
 
 
 EVERYTHING = Selection()

@@ -27,7 +27,7 @@ from app.geometry.catalog.section4 import (
     EQUATION_2,
 )
 from app.geometry.checks import Check, Erratum, Statement, check_residuals
-from app.geometry.curve import Evaluators, OnDemand
+from app.geometry.on_demand import Evaluators, OnDemand
 from app.geometry.precision import Arithmetic, Array, Scalar
 from app.geometry.tolerances import LOCAL_STEPS
 

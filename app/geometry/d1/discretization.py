@@ -24,18 +24,11 @@ from app.geometry.catalog.section3 import (
 )
 from app.geometry.catalog.section4 import EQUATION_2
 from app.geometry.checks import Check, Statement, check_residuals, not_applicable, point_distance
-from app.geometry.curve import (
-    EVERYTHING,
-    Curve,
-    DiscretizationInfo,
-    Evaluators,
-    OnDemand,
-    Selection,
-    require_range,
-)
+from app.geometry.curve import EVERYTHING, Curve, DiscretizationInfo, Selection, require_range
 from app.geometry.d1 import closed_forms
 from app.geometry.d1.construction import construct, validate
 from app.geometry.errors import NotRepresentableError
+from app.geometry.on_demand import Evaluators, OnDemand
 from app.geometry.precision import Arithmetic, Array, Scalar
 from app.geometry.tolerances import FLOAT64_COORDINATE_LIMIT, LOCAL_STEPS, NOT_CONSTRUCTED
 

@@ -20,8 +20,8 @@ from app.geometry.checks import (
     not_applicable,
     printed_residual,
 )
-from app.geometry.curve import OnDemand
 from app.geometry.errors import NotRepresentableError
+from app.geometry.on_demand import OnDemand
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 from app.geometry.tolerances import LOCAL_STEPS

@@ -24,15 +24,7 @@ from app.geometry.catalog.section4 import (
     HEX_THEOREM_3_ODD as THEOREM_3_ODD,
 )
 from app.geometry.checks import Check, Statement, not_applicable, relative_to
-from app.geometry.curve import (
-    EVERYTHING,
-    Constants,
-    Curve,
-    DiscretizationInfo,
-    Evaluators,
-    Selection,
-    require_range,
-)
+from app.geometry.curve import EVERYTHING, Curve, DiscretizationInfo, Selection, require_range
 from app.geometry.d2a import closed_forms as cf, construction as christoffel
 from app.geometry.d2a.common import (
     FLOAT64_MIN_GAP,
@@ -50,6 +42,7 @@ from app.geometry.d2a.common import (
     shifted,
 )
 from app.geometry.errors import NotRepresentableError
+from app.geometry.on_demand import Constants, Evaluators
 from app.geometry.polygon import area_magnitude, second_difference, signed_areas
 from app.geometry.precision import Arithmetic, Array, ExactReal, Scalar, stack_points
 

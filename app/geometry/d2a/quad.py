@@ -29,15 +29,7 @@ from app.geometry.catalog.section4 import (
     QUAD_X_STEP as X_STEP,
 )
 from app.geometry.checks import Check, Statement, relative_to
-from app.geometry.curve import (
-    EVERYTHING,
-    Constants,
-    Curve,
-    DiscretizationInfo,
-    Evaluators,
-    Selection,
-    require_range,
-)
+from app.geometry.curve import EVERYTHING, Curve, DiscretizationInfo, Selection, require_range
 from app.geometry.d2a import closed_forms as cf, construction as christoffel
 from app.geometry.d2a.common import (
     FLOAT64_MIN_GAP,
@@ -56,6 +48,7 @@ from app.geometry.d2a.common import (
     vertex_magnitude,
 )
 from app.geometry.errors import NotRepresentableError
+from app.geometry.on_demand import Constants, Evaluators
 from app.geometry.polygon import area_magnitude, second_difference, signed_areas
 from app.geometry.precision import Arithmetic, Array, ExactReal, Scalar
 

@@ -40,20 +40,14 @@ from app.geometry.checks import (
     relative_point_difference,
 )
 from app.geometry.curvature import FaceCurvatures
-from app.geometry.curve import (
-    EVERYTHING,
-    Curve,
-    DiscretizationInfo,
-    Evaluators,
-    OnDemand,
-    Selection,
-)
+from app.geometry.curve import EVERYTHING, Curve, DiscretizationInfo, Selection
 from app.geometry.d2b import (
     closed_forms as catenoid_convergence,
     construction as vanishing_mean_curvature,
 )
 from app.geometry.d2b.construction import GaussSequence, SequenceName
 from app.geometry.errors import DomainError
+from app.geometry.on_demand import Evaluators, OnDemand
 from app.geometry.precision import Arithmetic, Array
 from app.geometry.surfaces.ring_curvature import (
     edge_parallel_residuals,

@@ -31,18 +31,11 @@ from app.geometry.checks import (
     not_applicable,
     relative_point_difference,
 )
-from app.geometry.curve import (
-    EVERYTHING,
-    Curve,
-    DiscretizationInfo,
-    Evaluators,
-    OnDemand,
-    Selection,
-    require_range,
-)
+from app.geometry.curve import EVERYTHING, Curve, DiscretizationInfo, Selection, require_range
 from app.geometry.d3 import closed_forms
 from app.geometry.d3.construction import Branch, construct, validate
 from app.geometry.errors import NotRepresentableError
+from app.geometry.on_demand import Evaluators, OnDemand
 from app.geometry.precision import Arithmetic, Array, Scalar
 from app.geometry.tolerances import FLOAT64_COORDINATE_LIMIT, LOCAL_STEPS, NOT_CONSTRUCTED
 

@@ -38,19 +38,12 @@ from app.geometry.checks import (
     printed_residual,
     relative_point_difference,
 )
-from app.geometry.curve import (
-    EVERYTHING,
-    Curve,
-    DiscretizationInfo,
-    Evaluators,
-    OnDemand,
-    Selection,
-    require_range,
-)
+from app.geometry.curve import EVERYTHING, Curve, DiscretizationInfo, Selection, require_range
 from app.geometry.d4a import closed_forms as sauer_closed_forms, construction as sauer_tractrix
 from app.geometry.d4a.closed_forms import ExplicitTractrix
 from app.geometry.d4a.construction import SauerSticks
 from app.geometry.errors import NotRepresentableError
+from app.geometry.on_demand import Evaluators, OnDemand
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array, Scalar
 from app.geometry.tolerances import FLOAT64_COORDINATE_LIMIT, LOCAL_STEPS, NOT_CONSTRUCTED
