@@ -147,10 +147,21 @@ def curve_npy(curve: Curve) -> tuple[bytes, int]:
     points = coordinates(curve.arithmetic, curve.polygon.vertices)
     if not isinstance(points, np.ndarray):
         raise NotRepresentableError("format", "format=npy needs precision=float64", "npy")
-    buffer = io.BytesIO()
-    np.lib.format.write_array(buffer, points.astype("<f8", copy=False), allow_pickle=False)
     indices = curve.polygon.indices
-    return buffer.getvalue(), int(indices[0]) if len(indices) else 0
+    return npy_bytes(points), int(indices[0]) if len(indices) else 0
+
+
+def npy_bytes(array: np.ndarray[Any, Any]) -> bytes:
+    """``array`` as a NumPy .npy file (``<f8``, version 1.0 header), copied once.
+
+    The header is written on its own, and ``bytes.join`` copies it and the array's buffer into
+    the one bytes object that is returned (``np.save`` into a ``BytesIO`` copied the data twice
+    and over-allocated while the buffer grew).
+    """
+    data = np.ascontiguousarray(array, dtype="<f8")
+    header = io.BytesIO()
+    np.lib.format.write_array_header_1_0(header, np.lib.format.header_data_from_array_1_0(data))
+    return b"".join((header.getvalue(), data.reshape(-1).view(np.uint8).data))
 
 
 def curve_npz(curve: Curve) -> bytes:

@@ -139,6 +139,7 @@ def peak_memory(port: int, pid: int) -> None:
         ("construction, JSON", "&checks=none&companions=none"),
         ("closed form, JSON", "&method=closed-form&checks=none&companions=none"),
         ("construction, npy", "&format=npy"),
+        ("closed form, npy", "&method=closed-form&format=npy"),
         ("construction, every check (before)", ""),
     ):
         with open(f"/proc/{pid}/clear_refs", "w") as handle:
