@@ -29,6 +29,14 @@ from xml.sax.saxutils import escape, quoteattr
 
 import numpy as np
 
+from app.rendering.svg_scale import (
+    Transform,
+    fmt,
+    nice_step,
+    points_attribute,
+    tick_label,
+    ticks,
+)
 from app.rendering.text_width import text_width, wrap
 
 #: Colour-blind-safe palette (Okabe–Ito), in the order series are added without a colour.
@@ -46,8 +54,6 @@ PALETTE = (
 #: Series with more vertices than this are drawn without a marker per vertex.
 MAX_MARKERS = 400
 
-#: Pixel coordinates are written with this many decimals (1/1000 px).
-DECIMALS = 3
 
 SeriesKind = Literal["line", "points", "segments", "area"]
 
@@ -191,70 +197,11 @@ class Panels:
         return "\n".join(parts) + "\n"
 
 
-@dataclass(frozen=True)
-class Transform:
-    """Data -> picture coordinates: ``X = ax + bx·x``, ``Y = ay − by·y``."""
-
-    ax: float
-    bx: float
-    ay: float
-    by: float
-
-    def apply(self, points: np.ndarray) -> np.ndarray:
-        out = np.empty_like(points)
-        out[:, 0] = self.ax + self.bx * points[:, 0]
-        out[:, 1] = self.ay - self.by * points[:, 1]
-        return out
-
-
-def nice_step(span: float, target: int) -> float:
-    """A tick step of the form 1, 2 or 5 × 10^k giving about ``target`` ticks over ``span``."""
-    raw = span / max(target, 1)
-    magnitude = 10 ** math.floor(math.log10(raw))
-    for factor in (1, 2, 5, 10):
-        if factor * magnitude >= raw:
-            return float(factor * magnitude)
-    return float(10 * magnitude)  # pragma: no cover (10 always qualifies)
-
-
-def ticks(low: float, high: float, target: int) -> list[float]:
-    """Tick values covering [low, high] at a nice step."""
-    step = nice_step(high - low, target)
-    first = math.ceil(low / step - 1e-9)
-    last = math.floor(high / step + 1e-9)
-    return [k * step for k in range(first, last + 1)]
-
-
-def tick_label(value: float, step: float) -> str:
-    """A tick value with as many decimals as the step needs; a real minus sign."""
-    decimals = max(0, -math.floor(math.log10(step) + 1e-9))
-    if abs(value) < step * 1e-6:
-        value = 0.0
-    text = f"{value:.{decimals}f}"
-    if abs(value) >= 1e6 or (value != 0 and abs(value) < 1e-4):
-        text = f"{value:.3g}"
-    return text.replace("-", "\u2212")
-
-
-def parse_tick_label(text: str) -> float:
-    """The inverse of ``tick_label``."""
-    return float(text.replace("\u2212", "-"))
-
-
 def _text(attributes: str, lines: list[str], x: float, y: float, step: float) -> str:
     """One ``<text>`` element; further lines as ``<tspan>`` at the same ``x``, ``step`` lower."""
     first, rest = lines[0], lines[1:]
     spans = "".join(f'<tspan x="{x:g}" dy="{step:g}">{escape(line)}</tspan>' for line in rest)
     return f'<text {attributes} x="{x:g}" y="{y:g}">{escape(first)}{spans}</text>'
-
-
-def _fmt(value: float) -> str:
-    text = f"{value:.{DECIMALS}f}".rstrip("0").rstrip(".")
-    return "0" if text in ("-0", "") else text
-
-
-def _points_attribute(points: np.ndarray) -> str:
-    return " ".join(f"{_fmt(x)},{_fmt(y)}" for x, y in points.tolist())
 
 
 def _data_range(values: np.ndarray) -> tuple[float, float]:
@@ -415,18 +362,18 @@ class _Renderer:
             f'height="{bottom - top}" fill="none" stroke="#999999"/>',
         ]
         for value, label in self._x_ticks():
-            X = _fmt(t.ax + t.bx * value)
+            X = fmt(t.ax + t.bx * value)
             # a label at either end stays inside the picture (the tick line keeps its place)
             half = text_width(label, 12) / 2
             at = min(max(t.ax + t.bx * value, half + 2), self.plot.width - half - 2)
             out.append(
                 f'<g class="tick x"><line x1="{X}" y1="{top}" x2="{X}" y2="{bottom}" '
                 f'stroke="#eeeeee"/><line x1="{X}" y1="{bottom}" x2="{X}" y2="{bottom + 5}"/>'
-                f'<text x="{_fmt(at)}" y="{bottom + 18}" text-anchor="middle" stroke="none">'
+                f'<text x="{fmt(at)}" y="{bottom + 18}" text-anchor="middle" stroke="none">'
                 f"{label}</text></g>"
             )
         for value, label in self._y_ticks():
-            Y = _fmt(t.ay - t.by * value)
+            Y = fmt(t.ay - t.by * value)
             out.append(
                 f'<g class="tick y"><line x1="{left}" y1="{Y}" x2="{right}" y2="{Y}" '
                 f'stroke="#eeeeee"/><line x1="{left - 5}" y1="{Y}" x2="{left}" y2="{Y}"/>'
@@ -435,13 +382,13 @@ class _Renderer:
             )
         # the coordinate axes themselves, where they cross the plot
         if self.y_range[0] <= 0 <= self.y_range[1]:
-            Y = _fmt(t.ay)
+            Y = fmt(t.ay)
             out.append(
                 f'<line class="axis x" x1="{left}" y1="{Y}" x2="{right}" y2="{Y}" '
                 'stroke="#777777"/>'
             )
         if self.x_range[0] <= 0 <= self.x_range[1]:
-            X = _fmt(t.ax)
+            X = fmt(t.ax)
             out.append(
                 f'<line class="axis y" x1="{X}" y1="{top}" x2="{X}" y2="{bottom}" '
                 'stroke="#777777"/>'
@@ -470,20 +417,19 @@ class _Renderer:
         body: list[str] = [head]
         if s.kind == "area" and len(pixels) >= 3:
             body.append(
-                f'<polygon points="{_points_attribute(pixels)}" fill="{s.color}" '
+                f'<polygon points="{points_attribute(pixels)}" fill="{s.color}" '
                 f'fill-opacity="0.18" stroke="{s.color}" stroke-opacity="0.5" '
                 f'stroke-width="{s.width:g}"{dash}/>'
             )
         elif s.kind == "line" and len(pixels) >= 2:
             body.append(
-                f'<polyline points="{_points_attribute(pixels)}" fill="none" stroke="{s.color}" '
+                f'<polyline points="{points_attribute(pixels)}" fill="none" stroke="{s.color}" '
                 f'stroke-width="{s.width:g}" stroke-linejoin="round"{dash}/>'
             )
         elif s.kind == "segments":
             pairs = pixels.reshape(-1, 2, 2)
             d = " ".join(
-                f"M {_fmt(a[0])} {_fmt(a[1])} L {_fmt(b[0])} {_fmt(b[1])}"
-                for a, b in pairs.tolist()
+                f"M {fmt(a[0])} {fmt(a[1])} L {fmt(b[0])} {fmt(b[1])}" for a, b in pairs.tolist()
             )
             body.append(
                 f'<path d="{d}" fill="none" stroke="{s.color}" stroke-width="{s.width:g}"{dash}/>'
@@ -492,13 +438,13 @@ class _Renderer:
         if draw_markers and len(pixels) <= MAX_MARKERS:
             r = 3.0 if s.kind == "points" else 2.2
             body.extend(
-                f'<circle cx="{_fmt(x)}" cy="{_fmt(y)}" r="{r:g}" fill="{s.color}"/>'
+                f'<circle cx="{fmt(x)}" cy="{fmt(y)}" r="{r:g}" fill="{s.color}"/>'
                 for x, y in pixels.tolist()
             )
         elif s.kind == "points":
             # too many to mark one by one: a polyline of zero-length dashes keeps them visible
             body.append(
-                f'<polyline points="{_points_attribute(pixels)}" fill="none" stroke="{s.color}" '
+                f'<polyline points="{points_attribute(pixels)}" fill="none" stroke="{s.color}" '
                 'stroke-width="3" stroke-linecap="round" stroke-dasharray="0 1e9"/>'
             )
         body.append("</g>")

@@ -7,17 +7,8 @@ import re
 import numpy as np
 import pytest
 
-from app.rendering.svg import (
-    MAX_MARKERS,
-    Panels,
-    Plot,
-    Series,
-    nice_step,
-    parse_tick_label,
-    segments,
-    tick_label,
-    ticks,
-)
+from app.rendering.svg import MAX_MARKERS, Panels, Plot, Series, segments
+from app.rendering.svg_scale import nice_step, parse_tick_label, tick_label, ticks
 from app.rendering.text_width import text_width, wrap
 from tests.svg_reading import (
     circle_pixels,
