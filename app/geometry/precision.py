@@ -11,6 +11,9 @@ Conventions:
 - literal constants in geometry code are integers or exact binary fractions (``2``, ``0.5``),
   so that they mean the same number in both precisions;
 - tolerances come from ``Arithmetic.tolerance`` and nowhere else.
+
+A parameter written by the client is an ``ExactReal`` (``app.geometry.exact``); mpmath's
+functions apply to object arrays through ``app.geometry.mp_elementwise``.
 """
 
 from __future__ import annotations
@@ -26,6 +29,8 @@ import mpmath
 import numpy as np
 
 from app.geometry.errors import DomainError, TimeLimitError
+from app.geometry.exact import ExactReal as ExactReal
+from app.geometry.mp_elementwise import array_aware_npconvert, elementwise
 
 Array = np.ndarray[Any, np.dtype[Any]]
 """``(n,)`` float64 array in float64 mode, ``(n,)`` object array of ``mpf`` in mp mode."""
@@ -51,27 +56,6 @@ GUARD_DIGITS = 10
 #: numpy passes costs k passes over the cache instead of k passes over memory, each into a fresh
 #: allocation (about 2× faster at 10^6 vertices; bench/kernels.py, docs/performance.md).
 BLOCK_SIZE = 8192
-
-
-class ExactReal(float):
-    """A real parameter as the client wrote it: a float (its nearest double) with the exact text.
-
-    Validation, comparisons and float64 use the double; ``MultiPrecision.scalar`` reads
-    ``text``, so precision=mp computes with the decimal the client wrote, carried at the
-    working precision (``d=0.12345678901234567890123`` is not rounded to 17 digits first).
-    ``text`` is a plain decimal (``[-]digits[.digits][E[+-]digits]``, as ``decimal.Decimal``
-    prints it), which is also a valid JSON number: responses echo it as written.
-    """
-
-    text: str
-
-    def __new__(cls, text: str) -> ExactReal:
-        value = super().__new__(cls, text)
-        value.text = text
-        return value
-
-    def __reduce__(self) -> tuple[Any, ...]:
-        return (ExactReal, (self.text,))
 
 
 Kernel = Callable[..., Any]
@@ -283,8 +267,8 @@ class MultiPrecision(Arithmetic):
         self.ctx = mpmath.MPContext()
         self.ctx.dps = digits + GUARD_DIGITS
         ctx = self.ctx
-        ctx.npconvert = _array_aware_npconvert(ctx.npconvert)
-        self._elementwise = partial(_elementwise, clock=self.check_time)
+        ctx.npconvert = array_aware_npconvert(ctx.npconvert)
+        self._elementwise = partial(elementwise, clock=self.check_time)
         self.exp = self._elementwise(ctx.exp)
         self.expm1 = self._elementwise(ctx.expm1)
         self.log = self._elementwise(ctx.log)
@@ -337,41 +321,6 @@ class MultiPrecision(Arithmetic):
         nstr = self.ctx.nstr
         digits = self.digits
         return [nstr(v, digits) for v in values]
-
-
-def _array_aware_npconvert(convert: Callable[[Any], Any]) -> Callable[[Any], Any]:
-    """mpmath's numpy conversion, refusing arrays at once.
-
-    ``mpf * array`` asks mpmath to convert the array first; mpmath refuses with a TypeError whose
-    message holds the repr of the whole array (formatting every entry) before numpy takes over
-    elementwise. Refusing without the repr keeps ``scalar * array`` O(n) arithmetic only.
-    """
-
-    def npconvert(x: Any) -> Any:
-        if isinstance(x, np.ndarray) and x.ndim > 0:
-            raise TypeError("cannot create mpf from an array")
-        return convert(x)
-
-    return npconvert
-
-
-def _elementwise(
-    function: Callable[..., Any], arity: int = 1, clock: Callable[[], None] | None = None
-) -> Callable[..., Any]:
-    """Apply an mpmath function to scalars or, entry by entry, to object arrays.
-
-    ``clock`` (the arithmetic's ``check_time``) runs before every array operation.
-    """
-    ufunc = np.frompyfunc(function, arity, 1)
-
-    def apply(*args: Any) -> Any:
-        if any(isinstance(a, np.ndarray) for a in args):
-            if clock is not None:
-                clock()
-            return ufunc(*args)
-        return function(*args)
-
-    return apply
 
 
 def arithmetic(mode: PrecisionMode, digits: int | None = None) -> Arithmetic:
