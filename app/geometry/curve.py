@@ -61,8 +61,10 @@ class Selection:
     """What a request asks for: which checks (statement ids) and which companions.
 
     ``None`` means all of them. A discretization computes a companion or a check only when it is
-    selected (or when a selected one needs it); ``failed_only`` keeps, of the checks computed,
-    those whose verdict is ``holds: false``.
+    selected (or when a selected one needs it: ``app.geometry.on_demand``), and reports the
+    constants that come with the selected checks (a fitted constant with the statement it fits,
+    a closed form's constant with the statements that use it; none for ``checks=none``);
+    ``failed_only`` keeps, of the checks computed, those whose verdict is ``holds: false``.
     """
 
     checks: frozenset[str] | None = None
