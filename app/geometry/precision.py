@@ -24,6 +24,7 @@ from typing import Any, Literal
 import flint
 import mpmath
 import numpy as np
+from mpmath.libmp import from_man_exp, to_str
 
 from app.geometry.errors import DomainError, TimeLimitError
 
@@ -161,6 +162,18 @@ class Arithmetic:
     def all_finite(self, values: Array) -> bool:
         """Whether every entry is a finite number."""
         raise NotImplementedError
+
+    certified: bool = False
+    """Whether numbers are rigorous balls (``Ball``): then ``to_floats`` of a residual is an
+    upper bound of its absolute value and ``lower_floats`` a lower bound."""
+
+    def lower_floats(self, values: Array) -> np.ndarray[Any, np.dtype[np.float64]]:
+        """Lower bounds of ``|values|`` as float64 (here: the values themselves)."""
+        return np.abs(self.to_floats(values))
+
+    def maximum(self, a: Any, b: Any) -> Any:
+        """The larger of a and b entry by entry (for balls: a ball holding the exact maximum)."""
+        return np.maximum(a, b)
 
     deadline: float | None = None
     """``time.monotonic()`` after which ``check_time`` stops the computation (None: no limit)."""
@@ -395,10 +408,12 @@ BITS_PER_DIGIT = math.log2(10)
 def _ball_function(name: str, clock: Callable[[], None] | None = None) -> Callable[..., Any]:
     """An arb method (``cos``, ``log1p``, …) on a ball or, entry by entry, on an object array."""
 
-    def scalar(x: Any) -> Any:
-        return getattr(x, name)()
+    method = getattr(flint.arb, name)
 
-    ufunc = np.frompyfunc(scalar, 1, 1)
+    def scalar(x: Any) -> Any:
+        return method(x if type(x) is flint.arb else flint.arb(x))
+
+    ufunc = np.frompyfunc(method, 1, 1)  # object arrays of Ball hold arb numbers only
 
     def apply(x: Any) -> Any:
         if isinstance(x, np.ndarray):
@@ -414,11 +429,11 @@ class Ball(Arithmetic):
     """Rigorous ball arithmetic (python-flint's ``arb``): every number is a midpoint and a radius
     that contains the exact value of the formula on the exact inputs.
 
-    A prototype of issue 15's precision=mp (``app.geometry.d4b.certified``): the same geometry
-    code runs on object arrays of balls, residuals are read as rigorous upper bounds
-    (``upper``) and printed-formula residuals as rigorous lower bounds (``lower``). flint's
-    working precision is process-global (``flint.ctx.prec``): ``enter`` sets it for one
-    computation, so a server running balls must serialize computations of different digits.
+    precision=mp of the discretizations served on balls (``app.geometry.balls``): the same
+    geometry code runs on object arrays of balls; ``to_floats`` of a residual is a rigorous upper
+    bound of its absolute value and ``lower_floats`` a rigorous lower bound (``checks``). flint's
+    working precision is process-wide (``flint.ctx.prec``) and this class does not set it:
+    compute inside ``balls.working_precision(ar.bits)``, which serializes computations.
     """
 
     mode: PrecisionMode = "mp"
@@ -433,7 +448,9 @@ class Ball(Arithmetic):
         self.extra_digits = extra_digits
         """Digits carried beyond ``digits`` and the guard digits, for radii that grow."""
         self.bits = math.ceil((digits + GUARD_DIGITS + extra_digits) * BITS_PER_DIGIT)
-        self.enter()
+        self.certificate: Any = None
+        """What the served curve's balls guarantee (``balls.Certificate``), set by
+        ``balls.serve``."""
         for name in (
             "exp",
             "expm1",
@@ -453,12 +470,8 @@ class Ball(Arithmetic):
         atan2 = np.frompyfunc(flint.arb.atan2, 2, 1)
         self.atan2 = lambda y, x: atan2(y, x)
         # a ball around 0 squared reaches below 0: keep the part >= 0 (it holds the exact value)
-        nonnegative = np.frompyfunc(lambda v: v.nonnegative_part(), 1, 1)
-        self.hypot = lambda x, y: self.sqrt(nonnegative(x * x + y * y))
-
-    def enter(self) -> None:
-        """Make this arithmetic's precision flint's working precision."""
-        flint.ctx.prec = self.bits
+        hypot = np.frompyfunc(_ball_hypot, 2, 1)
+        self.hypot = lambda x, y: hypot(x, y)
 
     def scalar(self, value: Any) -> Any:
         kind = type(value)
@@ -469,7 +482,7 @@ class Ball(Arithmetic):
         if isinstance(value, ExactReal):
             return flint.arb(value.text)  # the ball of the decimal written
         if isinstance(value, float):
-            return flint.arb(repr(value))
+            return flint.arb(repr(float(value)))  # numpy floats print their type in repr
         return flint.arb(value)
 
     def array(self, values: Iterable[Any]) -> Array:
@@ -496,19 +509,57 @@ class Ball(Arithmetic):
     def pi(self) -> Any:
         return flint.arb.pi()
 
+    certified = True
+
     def to_float(self, value: Any) -> float:
-        return float(value.mid())
+        """The float farthest from 0 in the ball, rounded outward: for a residual (>= 0), a
+        rigorous upper bound; for anything else the midpoint to within the radius."""
+        if type(value) is not flint.arb:
+            return float(value)
+        return float(self.to_floats(np.array([value], dtype=object))[0])
 
     def to_floats(self, values: Array) -> np.ndarray[Any, np.dtype[np.float64]]:
-        return np.fromiter((float(v.mid()) for v in values), dtype=np.float64, count=len(values))
+        """Entry by entry ``to_float``: ``|result| >= |v|`` for every v in each ball, with the
+        sign of the midpoint, so residuals converted here are upper bounds (float arrays, e.g.
+        residuals converted already, pass through)."""
+        if values.dtype != object:
+            return np.asarray(values, dtype=np.float64)
+        n = len(values)
+        flat = values.reshape(-1)
+        mids = np.fromiter((float(v) for v in flat), dtype=np.float64, count=n)
+        uppers = np.fromiter((float(v.abs_upper()) for v in flat), dtype=np.float64, count=n)
+        with np.errstate(invalid="ignore"):
+            bounds = np.nextafter(uppers, np.inf)  # float() rounds to nearest
+        for k in np.flatnonzero(uppers == 0):  # exact zeros stay 0
+            if flat[k].is_zero():
+                bounds[k] = 0.0
+        with np.errstate(invalid="ignore"):
+            uppers = bounds
+            return np.where(mids < 0, -uppers, uppers)
+
+    def lower_floats(self, values: Array) -> np.ndarray[Any, np.dtype[np.float64]]:
+        """Rigorous lower bounds of ``|v|`` (0 where a ball holds 0, or for float entries)."""
+        if values.dtype != object:
+            return np.zeros(len(values), dtype=np.float64)
+        lowers = np.fromiter(
+            (float(v.abs_lower()) for v in values), dtype=np.float64, count=len(values)
+        )
+        with np.errstate(invalid="ignore"):
+            return np.maximum(np.nextafter(lowers, -np.inf), 0.0)
+
+    def maximum(self, a: Any, b: Any) -> Any:
+        """A ball holding max(a, b) entry by entry (numpy's maximum picks one of two overlapping
+        balls, which may not contain the maximum)."""
+        return _ball_maximum(a, b)
 
     def all_finite(self, values: Array) -> bool:
         return all(v.is_finite() for v in values.reshape(-1))
 
     def to_strings(self, values: Array) -> list[str]:
-        """The midpoints as decimals with ``digits`` significant digits."""
+        """The midpoints as decimals with ``digits`` significant digits, printed as mpmath
+        prints them (``nstr``): the exact binary midpoint, correctly rounded."""
         digits = self.digits
-        return [v.mid().str(digits, radius=False) for v in values]
+        return [_decimal(v, digits) for v in values]
 
     def largest_radius(self, values: Array) -> float:
         """The largest radius of the balls, rounded up to a float."""
@@ -525,6 +576,23 @@ class Ball(Arithmetic):
         lower bound of the largest |value| (positive: the values certainly are not all 0)."""
         bounds = [abs(v).lower() for v in values.reshape(-1)]
         return lower_float(max(bounds, default=flint.arb(0)))
+
+
+def _decimal(value: Any, digits: int) -> str:
+    """A ball's midpoint (exact in binary) with ``digits`` significant digits, as mpmath's
+    ``nstr`` prints it."""
+    if not value.is_finite():
+        return "nan"  # refused before encoding (``all_finite``)
+    mantissa, exponent = value.mid().man_exp()
+    return to_str(from_man_exp(int(mantissa), int(exponent)), digits)
+
+
+def _ball_hypot(x: Any, y: Any) -> Any:
+    """sqrt(x² + y²) on balls; the sum's part >= 0 (a ball around 0 squared reaches below 0)."""
+    return (x * x + y * y).nonnegative_part().sqrt()
+
+
+_ball_maximum = np.frompyfunc(lambda a, b: flint.arb(a).max(b), 2, 1)
 
 
 def upper_float(value: Any) -> float:

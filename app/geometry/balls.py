@@ -1,0 +1,156 @@
+"""precision=mp on rigorous balls: every served mp curve is computed with python-flint's ``arb``.
+
+A discretization's ``compute`` runs unchanged on ``precision.Ball``: every number is a midpoint
+and a radius that contains the exact value for the exact inputs (the decimals the client wrote,
+``ExactReal``). What that certifies (``checks.check_residuals``, ``checks.printed_residual``):
+
+- a statement's residual is a rigorous *upper* bound, so ``holds: true`` proves it to that
+  tolerance on the exact polygon; ``holds: false`` needs a rigorous lower bound above the
+  tolerance, and between the two the verdict is ``null`` with the note "undecided";
+- an erratum's printed residual is a rigorous *lower* bound: positive certifies that the printed
+  formula is false on this polygon (the response says ``"certified": "false"``);
+- coordinates are the midpoints with ``digits`` significant digits; ``radius`` is the largest
+  radius of any returned coordinate (``Certificate``).
+
+Radii grow along a recursion (the dependency problem of interval arithmetic; for (D4b) about
+e^{2|i|L}·ulp while the values shrink like e^{−|i|L}). ``serve`` carries extra digits (a
+discretization's estimate, ``EXTRA_DIGITS``) and, while some returned coordinate's radius
+exceeds 10^−(digits+1) of the point's size, doubles them and computes again: never a guess.
+
+flint's working precision is one process-wide setting (``flint.ctx.prec``; python-flint 0.9 has
+no per-call precision for ``arb`` arithmetic). ``serve`` sets it for one computation and
+restores it afterwards, holding ``LOCK`` meanwhile, so two concurrent mp requests at different
+digits (the server runs requests in a thread pool) never compute with each other's precision.
+The computations hold the GIL anyway (python-flint does not release it), so the lock costs no
+parallelism; a request waiting for it spends its time limit.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Callable, Iterator, Mapping
+from contextlib import contextmanager
+from dataclasses import dataclass
+from typing import Any
+
+import flint
+import numpy as np
+
+from app.geometry.curve import Curve
+from app.geometry.d4b import certified as d4b_certified
+from app.geometry.precision import GUARD_DIGITS, Arithmetic, Array, Ball
+
+#: Serializes ball computations: flint's working precision is process-wide (see above).
+LOCK = threading.RLock()
+
+#: Raise the precision at most this many times (each doubles the extra digits); past that the
+#: curve is served with the radius reached, which ``Certificate.resolved`` reports.
+MAX_RAISES = 6
+
+#: The extra digits tried first when a discretization has no estimate.
+DEFAULT_EXTRA_DIGITS = 4
+
+
+@dataclass(frozen=True)
+class Certificate:
+    """What the balls of one served curve guarantee (the response's ``certified`` object)."""
+
+    radius: float
+    """Largest radius of a returned coordinate (rounded up): each exact coordinate lies within
+    ``radius`` of its midpoint, and the decimal shown within half a unit of its last digit of
+    the midpoint."""
+    working_digits: int
+    """Decimal digits the balls were computed with (``digits`` + guard + extra digits)."""
+    resolved: bool
+    """Whether every returned coordinate's radius is below 10^−(digits+1) of its point's size."""
+
+    def document(self) -> dict[str, Any]:
+        return {
+            "radius": self.radius,
+            "working_digits": self.working_digits,
+            "resolved": self.resolved,
+        }
+
+
+@contextmanager
+def working_precision(bits: int) -> Iterator[None]:
+    """flint computes with ``bits`` inside; the previous precision is restored afterwards."""
+    with LOCK:
+        saved = flint.ctx.prec
+        flint.ctx.prec = bits
+        try:
+            yield
+        finally:
+            flint.ctx.prec = saved
+
+
+#: id -> extra digits a discretization's balls lose over ``arguments`` (an estimate; ``serve``
+#: raises further if it is short). The discretizations served on balls; the others keep
+#: mpmath numbers (``MultiPrecision``) for now.
+EXTRA_DIGITS: dict[str, Callable[[Mapping[str, Any]], int]] = {
+    "d4b": d4b_certified.extra_digits,
+}
+
+
+def serves(identifier: str) -> bool:
+    """Whether precision=mp of this discretization is computed on balls."""
+    return identifier in EXTRA_DIGITS
+
+
+def serve(
+    identifier: str,
+    ar: Arithmetic,
+    compute: Callable[[Arithmetic], Curve],
+    arguments: Mapping[str, Any],
+) -> Curve:
+    """``compute`` on balls for an mp request of a discretization served on balls; otherwise
+    (float64, or a discretization still on mpmath) ``compute(ar)`` itself."""
+    if ar.mode != "mp" or ar.certified or not serves(identifier):
+        return compute(ar)
+    extra = max(0, EXTRA_DIGITS[identifier](arguments))
+    for attempt in range(MAX_RAISES + 1):
+        balls = Ball(ar.digits, extra)
+        balls.deadline, balls.limit = ar.deadline, ar.limit
+        with working_precision(balls.bits):
+            curve = compute(balls)
+        radius, resolved = _radii(curve, ar.digits)
+        if resolved or attempt == MAX_RAISES:
+            working = ar.digits + GUARD_DIGITS + extra
+            balls.certificate = Certificate(radius, working, resolved)
+            return curve
+        extra = max(2 * extra, DEFAULT_EXTRA_DIGITS)
+    raise AssertionError("unreachable")  # pragma: no cover
+
+
+def _radii(curve: Curve, digits: int) -> tuple[float, bool]:
+    """(largest radius of a returned coordinate, whether every point is resolved)."""
+    limit = 10.0 ** (-digits - 1)
+    largest, resolved = 0.0, True
+    for polyline in (curve.polygon, *curve.companions.values()):
+        points = polyline.vertices
+        if len(points) == 0:
+            continue
+        radii, sizes = _radius_and_size(points)
+        largest = max(largest, float(np.max(radii)))
+        with np.errstate(invalid="ignore", over="ignore"):
+            ok = (radii == 0) | (radii <= limit * sizes)
+        resolved = resolved and bool(np.all(ok))
+    return largest, resolved
+
+
+def _radius_and_size(points: Array) -> tuple[np.ndarray[Any, Any], np.ndarray[Any, Any]]:
+    """Per point: the larger radius of its two coordinates (rounded up) and max(|x|, |y|)."""
+    flat = points.reshape(-1)
+    n = len(flat)
+    radii = np.fromiter((float(v.rad()) for v in flat), dtype=np.float64, count=n)
+    mids = np.fromiter((float(v) for v in flat), dtype=np.float64, count=n)
+    radii = np.nextafter(radii, np.inf, where=radii > 0, out=radii.copy())
+    radii = np.max(radii.reshape(-1, 2), axis=1)
+    sizes = np.max(np.abs(mids).reshape(-1, 2), axis=1)
+    return radii, sizes
+
+
+def certificate(ar: Arithmetic) -> Certificate | None:
+    """The certificate of a curve's arithmetic (``None``: not computed on balls)."""
+    found = getattr(ar, "certificate", None)
+    return found if isinstance(found, Certificate) else None
