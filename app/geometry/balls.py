@@ -38,7 +38,8 @@ import numpy as np
 
 from app.geometry.curve import Curve
 from app.geometry.d4b import certified as d4b_certified
-from app.geometry.precision import GUARD_DIGITS, Arithmetic, Array, Ball
+from app.geometry.errors import NotRepresentableError
+from app.geometry.precision import GUARD_DIGITS, Arithmetic, Array, Ball, UndecidedError
 
 #: Serializes ball computations: flint's working precision is process-wide (see above).
 LOCK = threading.RLock()
@@ -84,11 +85,27 @@ def working_precision(bits: int) -> Iterator[None]:
             flint.ctx.prec = saved
 
 
+@contextmanager
+def session(ar: Arithmetic) -> Iterator[None]:
+    """Compute more with a served curve's arithmetic (e.g. GET /relations' cells): on balls,
+    inside its working precision (``working_precision``); otherwise as is."""
+    if isinstance(ar, Ball):
+        with working_precision(ar.bits):
+            yield
+    else:
+        yield
+
+
 #: id -> extra digits a discretization's balls lose over ``arguments`` (an estimate; ``serve``
-#: raises further if it is short). The discretizations served on balls; the others keep
-#: mpmath numbers (``MultiPrecision``) for now.
+#: raises further if it is short). Every discretization's curve endpoint is served on balls.
 EXTRA_DIGITS: dict[str, Callable[[Mapping[str, Any]], int]] = {
     "d4b": d4b_certified.extra_digits,
+    # the others start with a few digits and raise them as needed: their radii grow slowly
+    # (D1, D3, D4a: about one digit per 20 vertices at worst; bench/mp.py)
+    **{
+        identifier: lambda arguments: DEFAULT_EXTRA_DIGITS
+        for identifier in ("d1", "d3", "d4a", "d2a-quad", "d2a-hex", "d2b")
+    },
 }
 
 
@@ -111,8 +128,21 @@ def serve(
     for attempt in range(MAX_RAISES + 1):
         balls = Ball(ar.digits, extra)
         balls.deadline, balls.limit = ar.deadline, ar.limit
-        with working_precision(balls.bits):
-            curve = compute(balls)
+        try:
+            with working_precision(balls.bits):
+                curve = compute(balls)
+        except UndecidedError as undecided:
+            if attempt == MAX_RAISES:
+                raise NotRepresentableError(
+                    undecided.parameter,
+                    f"a value for which balls of {ar.digits + GUARD_DIGITS + extra} digits decide "
+                    f"{undecided.what}",
+                    arguments.get(undecided.parameter),
+                    f"undecided: {undecided.what} is closer to a tie than the precision resolves; "
+                    "change the parameter or ask for more digits",
+                ) from None
+            extra = max(2 * extra, DEFAULT_EXTRA_DIGITS)
+            continue
         radius, resolved = _radii(curve, ar.digits)
         if resolved or attempt == MAX_RAISES:
             working = ar.digits + GUARD_DIGITS + extra

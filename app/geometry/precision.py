@@ -75,6 +75,15 @@ class ExactReal(float):
         return (ExactReal, (self.text,))
 
 
+class UndecidedError(ArithmeticError):
+    """A comparison that the balls cannot decide (``Arithmetic.exceeds``): the exact values are
+    closer than the radii. ``balls.serve`` computes again with more digits."""
+
+    def __init__(self, parameter: str, what: str) -> None:
+        super().__init__(f"{what}: undecided at this precision")
+        self.parameter, self.what = parameter, what
+
+
 Kernel = Callable[..., Any]
 """An elementwise formula: arrays aligned entry by entry in, an array (or a pair) out."""
 
@@ -174,6 +183,27 @@ class Arithmetic:
     def maximum(self, a: Any, b: Any) -> Any:
         """The larger of a and b entry by entry (for balls: a ball holding the exact maximum)."""
         return np.maximum(a, b)
+
+    def exceeds(self, a: Scalar, b: Scalar, parameter: str, what: str) -> bool:
+        """Whether a > b, for a discrete choice of a construction (which branch, which side).
+
+        Balls answer only what they prove; an undecided comparison raises ``UndecidedError``
+        (naming ``parameter`` and ``what`` is chosen) so that the computation is redone with
+        more digits, never guessed.
+        """
+        return bool(a > b)
+
+    def at_least_or(self, x: Scalar, y: Scalar, a: Scalar, b: Scalar) -> Scalar:
+        """``a`` if x >= y else ``b`` (for balls, undecided: a ball holding both)."""
+        return a if x >= y else b
+
+    def nonnegative(self, x: Scalar) -> Scalar:
+        """x where it is >= 0, else 0 (a value >= 0 in exact arithmetic, below by rounding)."""
+        return x if not x < 0 else self.scalar(0)
+
+    def truncate(self, x: Scalar) -> int:
+        """x truncated to an integer (a starting guess of a search that decides exactly)."""
+        return int(x)
 
     deadline: float | None = None
     """``time.monotonic()`` after which ``check_time`` stops the computation (None: no limit)."""
@@ -444,7 +474,8 @@ class Ball(Arithmetic):
             raise DomainError("digits", "digits >= 1", digits)
         self.digits = digits
         self.eps = 10.0 ** (-digits)
-        self.working_eps = 10.0 ** (-digits - GUARD_DIGITS - extra_digits)
+        # the refusals that read it (a step below the resolution) mean the requested digits
+        self.working_eps = 10.0 ** (-digits - GUARD_DIGITS)
         self.extra_digits = extra_digits
         """Digits carried beyond ``digits`` and the guard digits, for radii that grow."""
         self.bits = math.ceil((digits + GUARD_DIGITS + extra_digits) * BITS_PER_DIGIT)
@@ -479,6 +510,8 @@ class Ball(Arithmetic):
             return value
         if kind is int:
             return flint.arb(value)
+        if isinstance(value, np.integer):
+            return flint.arb(int(value))
         if isinstance(value, ExactReal):
             return flint.arb(value.text)  # the ball of the decimal written
         if isinstance(value, float):
@@ -551,6 +584,28 @@ class Ball(Arithmetic):
         """A ball holding max(a, b) entry by entry (numpy's maximum picks one of two overlapping
         balls, which may not contain the maximum)."""
         return _ball_maximum(a, b)
+
+    def exceeds(self, a: Scalar, b: Scalar, parameter: str, what: str) -> bool:
+        if a > b:
+            return True
+        if a <= b:
+            return False
+        raise UndecidedError(parameter, what)
+
+    def at_least_or(self, x: Scalar, y: Scalar, a: Scalar, b: Scalar) -> Scalar:
+        if x >= y:
+            return a
+        if x < y:
+            return b
+        return a.union(b)  # the exact choice is one of the two: a ball holding both
+
+    def nonnegative(self, x: Scalar) -> Scalar:
+        return x.nonnegative_part()
+
+    def truncate(self, x: Scalar) -> int:
+        """The midpoint truncated (a guess only: the search that uses it decides exactly)."""
+        mid = x.mid()  # exact, so its floor and ceiling are exact integers
+        return int((mid.floor() if mid > 0 else mid.ceil()).unique_fmpz())
 
     def all_finite(self, values: Array) -> bool:
         return all(v.is_finite() for v in values.reshape(-1))

@@ -48,7 +48,8 @@ class ErratumModel(BaseModel):
         description="precision=mp on rigorous balls (the response's `certified` is set): "
         "`printed_residual` is then a rigorous lower bound, and `false` certifies that the "
         "printed formula is false on this polygon (the bound is > 0); `undecided` when the "
-        "ball still holds 0. null in float64 and where mp is not computed on balls.",
+        "ball still holds 0. null in float64 and where mp is not computed on balls (surfaces, "
+        "GET /theorems/{id} on smooth references).",
     )
     link: str = Field(
         description="The erratum's page on this service (GET /errata/{id}): the printed and "
@@ -114,9 +115,9 @@ class CurveResponse(BaseModel):
     checks: list[CheckModel] = Field(description="Every statement checked on this polygon.")
     certified: CertificateModel | None = Field(
         None,
-        description="Set when precision=mp is computed on rigorous balls (D4b): residuals are "
-        "rigorous bounds and `radius` bounds every coordinate; null in float64 and for the "
-        "discretizations whose mp path still uses mpmath numbers.",
+        description="Set when precision=mp is computed on rigorous balls (every discretization "
+        "of /discretizations): residuals are rigorous bounds and `radius` bounds every "
+        "coordinate; null in float64.",
     )
 
 

@@ -128,7 +128,7 @@ def test_the_working_precision_is_restored_and_not_shared() -> None:
         assert results[digits] == alone.arithmetic.to_strings(alone.polygon.vertices[:, 1])
 
 
-def test_float64_and_discretizations_on_mpmath_are_untouched() -> None:
+def test_float64_and_ids_not_on_balls_are_untouched() -> None:
     calls: list[object] = []
 
     def compute(ar: Any) -> Any:
