@@ -34,12 +34,11 @@ from dataclasses import dataclass
 from typing import Any
 
 import flint
-import numpy as np
 
 from app.geometry.curve import Curve
 from app.geometry.d4b import certified as d4b_certified
 from app.geometry.errors import NotRepresentableError
-from app.geometry.precision import GUARD_DIGITS, Arithmetic, Array, Ball, UndecidedError
+from app.geometry.precision import GUARD_DIGITS, Arithmetic, Ball, UndecidedError
 
 #: Serializes ball computations: flint's working precision is process-wide (see above).
 LOCK = threading.RLock()
@@ -56,10 +55,12 @@ DEFAULT_EXTRA_DIGITS = 4
 class Certificate:
     """What the balls of one served curve guarantee (the response's ``certified`` object)."""
 
-    radius: float
-    """Largest radius of a returned coordinate (rounded up): each exact coordinate lies within
-    ``radius`` of its midpoint, and the decimal shown within half a unit of its last digit of
-    the midpoint."""
+    radius: str
+    """Largest radius of a returned coordinate, a decimal rounded up (a string: radii of long
+    ranges leave the float range): each exact coordinate lies within it of its midpoint."""
+    relative_radius: str
+    """Largest radius of a point's coordinates over the point's size max(|x|, |y|), rounded
+    up; below 10^−(digits+1) when ``resolved``."""
     working_digits: int
     """Decimal digits the balls were computed with (``digits`` + guard + extra digits)."""
     resolved: bool
@@ -68,6 +69,7 @@ class Certificate:
     def document(self) -> dict[str, Any]:
         return {
             "radius": self.radius,
+            "relative_radius": self.relative_radius,
             "working_digits": self.working_digits,
             "resolved": self.resolved,
         }
@@ -143,41 +145,39 @@ def serve(
                 ) from None
             extra = max(2 * extra, DEFAULT_EXTRA_DIGITS)
             continue
-        radius, resolved = _radii(curve, ar.digits)
+        with working_precision(balls.bits):
+            radius, relative, resolved = _radii(curve, ar.digits)
         if resolved or attempt == MAX_RAISES:
             working = ar.digits + GUARD_DIGITS + extra
-            balls.certificate = Certificate(radius, working, resolved)
+            balls.certificate = Certificate(radius, relative, working, resolved)
             return curve
         extra = max(2 * extra, DEFAULT_EXTRA_DIGITS)
     raise AssertionError("unreachable")  # pragma: no cover
 
 
-def _radii(curve: Curve, digits: int) -> tuple[float, bool]:
-    """(largest radius of a returned coordinate, whether every point is resolved)."""
-    limit = 10.0 ** (-digits - 1)
-    largest, resolved = 0.0, True
+def _radii(curve: Curve, digits: int) -> tuple[str, str, bool]:
+    """(largest radius, largest relative radius, whether every point is resolved), the radii
+    as decimals rounded up; compared as exact arb numbers (radii underflow floats)."""
+    limit = flint.arb(10) ** (-digits - 1)
+    largest, relative = flint.arb(0), flint.arb(0)
     for polyline in (curve.polygon, *curve.companions.values()):
-        points = polyline.vertices
-        if len(points) == 0:
-            continue
-        radii, sizes = _radius_and_size(points)
-        largest = max(largest, float(np.max(radii)))
-        with np.errstate(invalid="ignore", over="ignore"):
-            ok = (radii == 0) | (radii <= limit * sizes)
-        resolved = resolved and bool(np.all(ok))
-    return largest, resolved
+        for x, y in polyline.vertices:
+            radius = x.rad().max(y.rad())
+            if radius.is_zero():
+                continue
+            size = abs(x).lower().max(abs(y).lower())
+            largest = largest.max(radius)
+            relative = relative.max((radius / size).upper() if size > 0 else flint.arb("inf"))
+    return _rounded_up(largest), _rounded_up(relative), bool(relative <= limit)
 
 
-def _radius_and_size(points: Array) -> tuple[np.ndarray[Any, Any], np.ndarray[Any, Any]]:
-    """Per point: the larger radius of its two coordinates (rounded up) and max(|x|, |y|)."""
-    flat = points.reshape(-1)
-    n = len(flat)
-    radii = np.fromiter((float(v.rad()) for v in flat), dtype=np.float64, count=n)
-    mids = np.fromiter((float(v) for v in flat), dtype=np.float64, count=n)
-    radii = np.nextafter(radii, np.inf, where=radii > 0, out=radii.copy())
-    radii = np.max(radii.reshape(-1, 2), axis=1)
-    sizes = np.max(np.abs(mids).reshape(-1, 2), axis=1)
-    return radii, sizes
+def _rounded_up(value: Any) -> str:
+    """A decimal >= the exact arb ``value`` (3 digits; ``"inf"`` when unbounded)."""
+    if value.is_zero():
+        return "0"
+    if not value.is_finite():
+        return "inf"
+    return (value * flint.arb("1.01")).upper().str(3, radius=False)
 
 
 def certificate(ar: Arithmetic) -> Certificate | None:

@@ -501,8 +501,13 @@ class Ball(Arithmetic):
         atan2 = np.frompyfunc(flint.arb.atan2, 2, 1)
         self.atan2 = lambda y, x: atan2(y, x)
         # a ball around 0 squared reaches below 0: keep the part >= 0 (it holds the exact value)
-        hypot = np.frompyfunc(_ball_hypot, 2, 1)
-        self.hypot = lambda x, y: hypot(x, y)
+        nonnegative = np.frompyfunc(flint.arb.nonnegative_part, 1, 1)
+        sqrt = np.frompyfunc(flint.arb.sqrt, 1, 1)
+        self.hypot = lambda x, y: (
+            sqrt(nonnegative(x * x + y * y))
+            if isinstance(x, np.ndarray) or isinstance(y, np.ndarray)
+            else _ball_hypot(self.scalar(x), self.scalar(y))
+        )
 
     def scalar(self, value: Any) -> Any:
         kind = type(value)

@@ -82,10 +82,15 @@ class CheckModel(BaseModel):
 class CertificateModel(BaseModel):
     """What the rigorous balls of a precision=mp answer guarantee (python-flint `arb`)."""
 
-    radius: float = Field(
-        description="Largest radius of any returned coordinate (vertices and companions), "
-        "rounded up: each exact coordinate is within `radius` of the computed midpoint, which "
-        "is shown rounded to `precision.digits` significant digits."
+    radius: str = Field(
+        description="Largest radius of any returned coordinate (vertices and companions), a "
+        "decimal rounded up (a string: radii of long ranges leave the float range): each exact "
+        "coordinate is within `radius` of the computed midpoint, which is shown rounded to "
+        "`precision.digits` significant digits."
+    )
+    relative_radius: str = Field(
+        description="Largest radius of a point's coordinates divided by the point's size "
+        "max(|x|, |y|), a decimal rounded up: below 10^−(digits+1) when `resolved`."
     )
     working_digits: int = Field(
         description="Decimal digits the balls were computed with (digits, guard digits and the "

@@ -43,7 +43,8 @@ def test_balls_contain_the_reference_and_every_statement_is_proved() -> None:
             assert ball.overlaps(flint.arb(mpmath.nstr(exact, 60), "1e-50"))
             assert abs(ctx.mpf(shown[j][k]) - exact) < 1e-35 * max(1, abs(exact))
     certificate = balls.certificate(ar)
-    assert certificate is not None and certificate.resolved and certificate.radius < 1e-35
+    assert certificate is not None and certificate.resolved and float(certificate.radius) < 1e-35
+    assert float(certificate.relative_radius) < 1e-41
     assert len(curve.checks) == len(STATEMENTS) == 21
     for check in curve.checks:
         assert check.holds is True, check.id
