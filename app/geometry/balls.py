@@ -111,6 +111,14 @@ EXTRA_DIGITS: dict[str, Callable[[Mapping[str, Any]], int]] = {
 }
 
 
+def extra_digits(identifier: str, arguments: Mapping[str, Any]) -> int | None:
+    """The extra digits ``serve`` starts with for this request (None: not served on balls);
+    the work budget prices them (app/limits.py)."""
+    if not serves(identifier):
+        return None
+    return max(0, EXTRA_DIGITS[identifier](arguments))
+
+
 def serves(identifier: str) -> bool:
     """Whether precision=mp of this discretization is computed on balls."""
     return identifier in EXTRA_DIGITS

@@ -205,6 +205,9 @@ def compute(entry: Discretization, query: CurveQuery, settings: Settings) -> Cur
         query.precision,
         query.digits,
         kind=entry.info.id,
+        extra_digits=balls.extra_digits(entry.info.id, arguments)
+        if query.precision == "mp"
+        else None,
     )
     if query.format == "svg":
         enforce_drawing(settings, arguments["i_min"], arguments["i_max"])
