@@ -8,6 +8,7 @@ from typing import Any
 import flint
 import mpmath
 import pytest
+from fastapi.testclient import TestClient
 
 from app.geometry import balls
 from app.geometry.curve import Curve
@@ -87,3 +88,19 @@ def test_a_cusp_tie_beyond_every_raise_is_refused_as_undecided(
         _served("d4a", 30, h=2, s=1, beta0=beta0, i_min=-3, i_max=3)
     assert raised.value.parameter == "beta0"
     assert "undecided" in str(raised.value)
+
+
+def test_the_response_says_what_is_certified(client: TestClient) -> None:
+    body = client.get("/discretizations/d4b?precision=mp&digits=30").json()
+    certified = body["certified"]
+    assert certified["resolved"] is True and certified["working_digits"] >= 40
+    assert 0 < float(certified["radius"]) < 1e-30
+    assert float(certified["relative_radius"]) < 1e-31
+    errata = {c["erratum"]["id"]: c["erratum"] for c in body["checks"] if c["erratum"]}
+    assert errata["E3"]["certified"] == "false" and errata["E3"]["printed_residual"] > 1e-4
+    assert all(c["holds"] is True for c in body["checks"])
+    plain = client.get("/discretizations/d4b").json()
+    assert plain["certified"] is None
+    assert all(c["erratum"]["certified"] is None for c in plain["checks"] if c["erratum"])
+    theorem = client.get("/theorems/recursion-13-two-step?precision=mp&digits=30").json()
+    assert theorem["check"]["erratum"]["certified"] == "false"
