@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from app import admission
-from app.geometry.precision import Arithmetic, arithmetic
+from app.geometry.precision import GUARD_DIGITS, Arithmetic, arithmetic
 from app.settings import Settings
 
 #: The cost of an mp step grows like (digits + this): below ~200 digits the Python overhead of
@@ -37,6 +37,24 @@ MP_STEP_SECONDS = 3.5e-3
 MP_STEP_BYTES = 24_000
 MP_DIGITS_SCALE = 400
 MP_STEP_SHARE = {"d1": 0.25, "d2a-quad": 0.45, "d2a-hex": 0.45, "d3": 0.35, "smooth": 0.15}
+#: mp curves of /discretizations and /relations, computed on rigorous balls (python-flint arb,
+#: app/geometry/balls.py): seconds and bytes per step grow like (1 + w / BALL_DIGITS_SCALE) in
+#: the *working* digits w = digits + guard digits + the digits a construction's radii grow by
+#: (``balls.extra_digits``: for (D4b) about 2|i|·ln((h+d)/(h−d))/ln 10, so they count here).
+#: Measured (bench/mp.py, /tmp-free runs of 1000 vertices, every check, encoded; load ≈ 7.5 on
+#: the 2-core machine): (D4b) 0.43 ms a step at 50 digits (153 working), 1.5 ms at 500, 2.7 ms
+#: at 1000; peak memory 13 KB a step at 50 digits, 50 KB at 1000. Shares as MP_STEP_SHARE.
+BALL_STEP_SECONDS = 4e-4
+BALL_STEP_BYTES = 8_000
+BALL_DIGITS_SCALE = 150
+BALL_STEP_SHARE = {
+    "d1": 0.3,
+    "d3": 0.35,
+    "d4a": 0.8,
+    "d2a-quad": 0.55,
+    "d2a-hex": 0.65,
+    "d2b": 0.7,
+}
 #: mp surfaces: per mesh vertex (the mesh, its normals and per-face curvatures in mpmath).
 MP_MESH_VERTEX_SECONDS = 2.2e-3
 MP_MESH_VERTEX_BYTES = 12_000
@@ -78,10 +96,21 @@ def admit(settings: Settings, seconds: float, nbytes: float, parameter: str, val
 
 
 def curve_cost(
-    vertices: int, steps: int, precision: str, digits: int, kind: str | None = None
+    vertices: int,
+    steps: int,
+    precision: str,
+    digits: int,
+    kind: str | None = None,
+    extra_digits: int | None = None,
 ) -> tuple[float, float]:
     """(seconds, bytes) of one polygon: ``vertices`` answered, ``steps`` computed; ``kind`` is
-    the discretization's id (None: priced as the dearest)."""
+    the discretization's id (None: priced as the dearest). ``extra_digits`` (not None: the
+    curve is computed on balls) are the digits its radii grow by (``balls.extra_digits``)."""
+    if precision == "mp" and extra_digits is not None:
+        working = digits + GUARD_DIGITS + extra_digits
+        factor = (1 + working / BALL_DIGITS_SCALE) * BALL_STEP_SHARE.get(kind or "", 1.0)
+        work = max(vertices, steps)
+        return BALL_STEP_SECONDS * factor * work, BALL_STEP_BYTES * factor * work
     if precision == "mp":
         factor = mp_factor(digits) * MP_STEP_SHARE.get(kind or "", 1.0)
         work = max(vertices, steps)
@@ -130,9 +159,11 @@ def enforce_range(
     precision: str,
     digits: int,
     kind: str | None = None,
+    extra_digits: int | None = None,
 ) -> None:
     """Refuse oversize index ranges, long constructions and expensive mp requests, then charge
-    the request's estimated cost (``kind``: the discretization's id, for its mp price).
+    the request's estimated cost (``kind``: the discretization's id, for its mp price;
+    ``extra_digits``: set when mp is computed on balls, see ``curve_cost``).
 
     The order i_min <= i_max is the core's to check (a domain error); here an empty range
     simply costs nothing.
@@ -162,7 +193,7 @@ def enforce_range(
                 f"precision=mp (this range needs {steps} steps)",
                 digits,
             )
-    seconds, nbytes = curve_cost(vertices, steps, precision, digits, kind)
+    seconds, nbytes = curve_cost(vertices, steps, precision, digits, kind, extra_digits)
     driver = ("digits", digits) if precision == "mp" else ("i_max", i_max)
     admit(settings, seconds, nbytes, *driver)
 

@@ -12,6 +12,8 @@ from typing import Any
 import numpy as np
 import orjson
 
+from app.geometry import balls
+from app.geometry.ball_arithmetic import Ball
 from app.geometry.checks import Check
 from app.geometry.curve import Curve, Polyline
 from app.geometry.errors import NotRepresentableError
@@ -39,7 +41,7 @@ def encode_json(document: Any) -> bytes:
 
 def coordinates(ar: Arithmetic, points: Array) -> Any:
     """``(n, 2)`` points as float64 array (float64 mode) or ``[[str, str], ...]`` (mp mode)."""
-    if isinstance(ar, MultiPrecision):
+    if isinstance(ar, MultiPrecision | Ball):
         xs, ys = ar.to_strings(points[:, 0]), ar.to_strings(points[:, 1])
         return [list(pair) for pair in zip(xs, ys, strict=True)]
     return np.ascontiguousarray(points, dtype=np.float64)
@@ -49,6 +51,8 @@ def number(ar: Arithmetic, value: Any) -> float | str:
     """A computed value: float in float64 mode, decimal string in mp mode."""
     if isinstance(ar, MultiPrecision):
         return str(ar.ctx.nstr(value, ar.digits))
+    if isinstance(ar, Ball):
+        return ar.to_strings(np.array([value], dtype=object))[0]
     return float(value)
 
 
@@ -74,7 +78,9 @@ def polyline_document(ar: Arithmetic, polyline: Polyline) -> dict[str, Any]:
     }
 
 
-def check_document(check: Check) -> dict[str, Any]:
+def check_document(check: Check, certified: bool = False) -> dict[str, Any]:
+    """One check; ``certified``: computed on balls, so that a positive printed residual (a
+    rigorous lower bound) certifies the printed formula false."""
     erratum = check.erratum
     return {
         "id": check.id,
@@ -93,16 +99,23 @@ def check_document(check: Check) -> dict[str, Any]:
             "printed": erratum.printed,
             "corrected": erratum.corrected,
             "printed_residual": erratum.printed_residual,
+            "certified": _erratum_certified(erratum.printed_residual) if certified else None,
             "link": erratum.link,
         },
         "note": check.note,
     }
 
 
+def _erratum_certified(printed_residual: float | None) -> str:
+    """``"false"`` when the printed residual's lower bound is > 0, else ``"undecided"``."""
+    return "false" if printed_residual is not None and printed_residual > 0 else "undecided"
+
+
 def curve_document(curve: Curve) -> dict[str, Any]:
     """The JSON document of ``CurveResponse`` (see app/schemas/curve.py)."""
     ensure_finite(curve)
     ar = curve.arithmetic
+    certificate = balls.certificate(ar)
     return {
         "id": curve.id,
         "title": curve.title,
@@ -115,7 +128,8 @@ def curve_document(curve: Curve) -> dict[str, Any]:
             name: polyline_document(ar, polyline) for name, polyline in curve.companions.items()
         },
         "constants": {name: number(ar, value) for name, value in curve.constants.items()},
-        "checks": [check_document(check) for check in curve.checks],
+        "checks": [check_document(check, certificate is not None) for check in curve.checks],
+        "certified": None if certificate is None else certificate.document(),
     }
 
 

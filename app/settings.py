@@ -22,13 +22,19 @@ class Settings(BaseSettings):
         description="Most recursion steps of a construction (constructions start at index 0 and "
         "walk to i_min and i_max).",
     )
-    max_digits: int = Field(1000, ge=1, description="Most significant digits in precision=mp.")
+    max_digits: int = Field(
+        1000,
+        ge=1,
+        description="Most significant digits in precision=mp (on balls, 1000 D4b vertices "
+        "with every check take about 2.7 s at 1000 digits; surfaces, studies and smooth "
+        "references still compute mp with mpmath, several times dearer).",
+    )
     max_mp_work: int = Field(
         1_000_000,
         ge=1,
         description="Most (digits + 200) × steps in precision=mp (the cost of mp grows with "
-        "both; for D4b with every check about 5–8 s at the limit on a 2-core machine, see "
-        "docs/performance.md).",
+        "both; for D4b on balls with every check about 4–7 s at the limit on a loaded 2-core "
+        "machine, its working digits growing with the range; see docs/performance.md).",
     )
     max_svg_vertices: int = Field(
         20_001,

@@ -2,28 +2,31 @@
 
 The reference is what a researcher writes by hand: recursion (13) in plain mpmath at the same
 digits, 1000 heights p_i^y, nothing else. Against it, side by side (median of paired ratios,
-bench/common.py):
+bench/common.py), the construction and all 21 checks of (D4b) with every companion, no encoding:
 
-- the service's precision=mp as served today (mpmath numbers in numpy object arrays; the
-  construction and every check, no encoding);
-- the ball prototype of issue 15 (``app.geometry.d4b.certified``: python-flint ``arb`` balls,
-  the construction, the closed forms (14), (16), and rigorous bounds for 9 of the 21 checks of
-  (D4b) — the local ones and Theorems 4–6, not the fits (D1)/(D3)/(2) nor the Gauss images of
-  Section 5 — and the erratum E3).
+- on mpmath numbers in numpy object arrays (``MultiPrecision``: the mp path before issue 15,
+  still what ``discretization.compute`` does when called with it directly);
+- on rigorous balls (``balls.serve``: python-flint ``arb``, what the service serves for
+  precision=mp of (D4b)), residuals as rigorous bounds, the precision raised as needed;
+- on balls with ``checks=none`` (the polygon and companions alone).
 
 Target (issue 15): every check on balls within 5× of the script at 50 digits.
 """
 
 from __future__ import annotations
 
+import os
 import sys
 from pathlib import Path
+from typing import Any
 
 import mpmath
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from app.geometry.d4b import certified, discretization as d4b
+from app.geometry import balls
+from app.geometry.curve import EVERYTHING, NOTHING, Selection
+from app.geometry.d4b import discretization as d4b
 from app.geometry.precision import MultiPrecision
 from bench.common import compare, ratio_row
 
@@ -45,28 +48,39 @@ def plain_script(digits: int) -> list[object]:
     return heights
 
 
+def on_balls(digits: int, selection: Selection = EVERYTHING) -> Any:
+    """(D4b) as the service computes precision=mp: on balls, every check."""
+    arguments = {"h": H, "d": D, "beta0": None, "i_min": LO, "i_max": HI}
+    return balls.serve(
+        "d4b",
+        MultiPrecision(digits),
+        lambda ar: d4b.compute(ar, **arguments, selection=selection),
+        arguments,
+    )
+
+
 def main(digits: tuple[int, ...] = (50, 500)) -> None:
     print(
         f"precision=mp, D4b h = {H:g}, d = {D:g}, {HI - LO + 1} vertices, against a plain mpmath "
-        "script of recursion (13) (median of paired ratios)"
+        f"script of recursion (13) (median of paired ratios; load average {os.getloadavg()[0]:.2f})"
     )
     for n_digits in digits:
         mp = MultiPrecision(n_digits)
-        served = compare(
+        mpmath_path = compare(
             lambda n=n_digits: plain_script(n),
             lambda mp=mp: d4b.compute(mp, H, D, None, LO, HI),
             1,
             warm=False,
         )
-        balls = compare(
-            lambda n=n_digits: plain_script(n),
-            lambda n=n_digits: certified.certify(n, H, D, None, LO, HI),
-            5,
+        served = compare(lambda n=n_digits: plain_script(n), lambda n=n_digits: on_balls(n), 5)
+        polygon = compare(
+            lambda n=n_digits: plain_script(n), lambda n=n_digits: on_balls(n, NOTHING), 5
         )
-        print(ratio_row(f"digits={n_digits}: mpmath, every check", served, "script", TARGET))
+        print(ratio_row(f"digits={n_digits}: mpmath, every check", mpmath_path, "script"))
         print(
-            ratio_row(f"digits={n_digits}: arb balls, 9 certified checks", balls, "script", TARGET)
+            ratio_row(f"digits={n_digits}: balls (served), every check", served, "script", TARGET)
         )
+        print(ratio_row(f"digits={n_digits}: balls, checks=none", polygon, "script"))
 
 
 if __name__ == "__main__":

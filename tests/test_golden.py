@@ -33,6 +33,10 @@ TEXT_CHANGES: dict[tuple[str, str], str] = {
     },
     ("theorem-6", "claim"): "issue 15: d_i measured against |x_i| + h, not |d_i|",
     ("lemma-10", "note"): "issue 15: says why E64's printed residual is null at the defaults",
+    # issue 15: precision=mp on balls: D1's offset C (0 in exact arithmetic) is shown as its
+    # rigorous bound (about 1e-43 at 30 digits) instead of the midpoint 0
+    ("d3", "note"): "issue 15: mp notes show rigorous bounds",
+    ("equation-2", "note"): "issue 15: mp notes show rigorous bounds",
     # issue 15: D4b's n_i is read from the stick directions (exact to the construction's
     # rounding) instead of accumulated from edge angles, so the checks on n use the
     # construction's tolerance instead of one widened by the accumulation
@@ -55,6 +59,13 @@ VALUE_CHANGES = re.compile(
 #: Keys whose every value changed on purpose, with the reason.
 KEY_CHANGES: dict[str, str] = {
     "link": "issue 16: an erratum links to its page on the service (/errata/E<n>), not the repo",
+    # new key (issue 15): precision=mp of D4b is computed on rigorous balls; the curve's
+    # `certified` object (largest radius, working digits) and an erratum's `certified` verdict
+    # ("false": the printed residual's lower bound is > 0); null elsewhere. In that answer every
+    # residual is now a rigorous upper bound and every printed_residual a rigorous lower bound:
+    # they differ from the recorded mpmath values below 1e-9 (residuals) or in the digits past
+    # 1e-6 relative (printed residuals), which RESIDUAL_KEYS already allows.
+    "certified": "issue 15: new key, precision=mp on rigorous balls",
 }
 
 ULPS = 4

@@ -86,7 +86,12 @@ def check_residuals(
     erratum: Erratum | None = None,
     note: str | None = None,
 ) -> Check:
-    """A check whose residual is the largest of the per-index ``residuals`` (all >= 0)."""
+    """A check whose residual is the largest of the per-index ``residuals`` (all >= 0).
+
+    On balls (``ar.certified``) the residual is a rigorous upper bound: ``holds`` is true when
+    it is <= the tolerance, false when a rigorous lower bound exceeds the tolerance, and
+    ``None`` (undecided, with a note) in between.
+    """
     values = np.abs(ar.to_floats(residuals)) if len(residuals) else np.empty(0)
     if len(values) == 0:
         return not_applicable(
@@ -97,6 +102,24 @@ def check_residuals(
     if np.all(finite):
         worst = float(np.max(values))
         holds = worst <= tolerance
+        if not holds and ar.certified and not _exceeds(ar, residuals, tolerance):
+            # on balls ``worst`` is an upper bound: failing needs a lower bound above the
+            # tolerance; in between the verdict is undecided, never guessed
+            undecided = (
+                "undecided: the residual's rigorous bounds enclose the tolerance "
+                "(more digits narrow them)"
+            )
+            return Check(
+                id=statement.id,
+                reference=statement.reference,
+                claim=statement.claim,
+                residual=worst,
+                tolerance=tolerance,
+                holds=None,
+                per_index=PerIndex(np.asarray(indices, dtype=np.int64), values) if detail else None,
+                erratum=erratum,
+                note=f"{note}; {undecided}" if note else undecided,
+            )
     else:
         # A residual that cannot be computed (an overflow, 0/0) tests nothing: the check fails
         # if a computed residual already exceeds the tolerance, and is otherwise not applicable
@@ -119,6 +142,12 @@ def check_residuals(
         erratum=erratum,
         note=note,
     )
+
+
+def _exceeds(ar: Arithmetic, residuals: Array, tolerance: float) -> bool:
+    """Whether a rigorous lower bound of the largest residual exceeds the tolerance."""
+    lower = ar.lower_floats(residuals)
+    return bool(len(lower)) and float(np.max(lower)) > tolerance
 
 
 def not_applicable(statement: Statement, tolerance: float, note: str) -> Check:
@@ -167,9 +196,11 @@ def relative_point_difference(ar: Arithmetic, computed: Array, expected: Array) 
 
 
 def printed_residual(ar: Arithmetic, residuals: Array) -> float | None:
-    """The largest printed-formula residual as a float (``None`` if it is not a number)."""
+    """The largest printed-formula residual as a float (``None`` if it is not a number); on
+    balls (``ar.certified``) a rigorous lower bound of it."""
     if len(residuals) == 0:
         return None
-    values = np.abs(ar.to_floats(residuals))
+    # on balls, a rigorous lower bound: positive certifies that the printed formula is false
+    values = ar.lower_floats(residuals) if ar.certified else np.abs(ar.to_floats(residuals))
     worst = float(np.max(values))
     return worst if np.isfinite(worst) else None

@@ -18,13 +18,11 @@ functions apply to object arrays through ``app.geometry.mp_elementwise``.
 
 from __future__ import annotations
 
-import math
 import time
 from collections.abc import Callable, Iterable
 from functools import partial
 from typing import Any, Literal
 
-import flint
 import mpmath
 import numpy as np
 
@@ -56,6 +54,15 @@ GUARD_DIGITS = 10
 #: numpy passes costs k passes over the cache instead of k passes over memory, each into a fresh
 #: allocation (about 2× faster at 10^6 vertices; bench/kernels.py, docs/performance.md).
 BLOCK_SIZE = 8192
+
+
+class UndecidedError(ArithmeticError):
+    """A comparison that the balls cannot decide (``Arithmetic.exceeds``): the exact values are
+    closer than the radii. ``balls.serve`` computes again with more digits."""
+
+    def __init__(self, parameter: str, what: str) -> None:
+        super().__init__(f"{what}: undecided at this precision")
+        self.parameter, self.what = parameter, what
 
 
 Kernel = Callable[..., Any]
@@ -145,6 +152,39 @@ class Arithmetic:
     def all_finite(self, values: Array) -> bool:
         """Whether every entry is a finite number."""
         raise NotImplementedError
+
+    certified: bool = False
+    """Whether numbers are rigorous balls (``Ball``): then ``to_floats`` of a residual is an
+    upper bound of its absolute value and ``lower_floats`` a lower bound."""
+
+    def lower_floats(self, values: Array) -> np.ndarray[Any, np.dtype[np.float64]]:
+        """Lower bounds of ``|values|`` as float64 (here: the values themselves)."""
+        return np.abs(self.to_floats(values))
+
+    def maximum(self, a: Any, b: Any) -> Any:
+        """The larger of a and b entry by entry (for balls: a ball holding the exact maximum)."""
+        return np.maximum(a, b)
+
+    def exceeds(self, a: Scalar, b: Scalar, parameter: str, what: str) -> bool:
+        """Whether a > b, for a discrete choice of a construction (which branch, which side).
+
+        Balls answer only what they prove; an undecided comparison raises ``UndecidedError``
+        (naming ``parameter`` and ``what`` is chosen) so that the computation is redone with
+        more digits, never guessed.
+        """
+        return bool(a > b)
+
+    def at_least_or(self, x: Scalar, y: Scalar, a: Scalar, b: Scalar) -> Scalar:
+        """``a`` if x >= y else ``b`` (for balls, undecided: a ball holding both)."""
+        return a if x >= y else b
+
+    def nonnegative(self, x: Scalar) -> Scalar:
+        """x where it is >= 0, else 0 (a value >= 0 in exact arithmetic, below by rounding)."""
+        return x if not x < 0 else self.scalar(0)
+
+    def truncate(self, x: Scalar) -> int:
+        """x truncated to an integer (a starting guess of a search that decides exactly)."""
+        return int(x)
 
     deadline: float | None = None
     """``time.monotonic()`` after which ``check_time`` stops the computation (None: no limit)."""
@@ -335,154 +375,3 @@ def arithmetic(mode: PrecisionMode, digits: int | None = None) -> Arithmetic:
 def stack_points(x: Array, y: Array) -> Array:
     """Two ``(n,)`` coordinate arrays as one ``(n, 2)`` array of points."""
     return np.stack([x, y], axis=1)
-
-
-#: Bits of one decimal digit, for the ball arithmetic's working precision.
-BITS_PER_DIGIT = math.log2(10)
-
-
-def _ball_function(name: str, clock: Callable[[], None] | None = None) -> Callable[..., Any]:
-    """An arb method (``cos``, ``log1p``, …) on a ball or, entry by entry, on an object array."""
-
-    def scalar(x: Any) -> Any:
-        return getattr(x, name)()
-
-    ufunc = np.frompyfunc(scalar, 1, 1)
-
-    def apply(x: Any) -> Any:
-        if isinstance(x, np.ndarray):
-            if clock is not None:
-                clock()
-            return ufunc(x)
-        return scalar(x)
-
-    return apply
-
-
-class Ball(Arithmetic):
-    """Rigorous ball arithmetic (python-flint's ``arb``): every number is a midpoint and a radius
-    that contains the exact value of the formula on the exact inputs.
-
-    A prototype of issue 15's precision=mp (``app.geometry.d4b.certified``): the same geometry
-    code runs on object arrays of balls, residuals are read as rigorous upper bounds
-    (``upper``) and printed-formula residuals as rigorous lower bounds (``lower``). flint's
-    working precision is process-global (``flint.ctx.prec``): ``enter`` sets it for one
-    computation, so a server running balls must serialize computations of different digits.
-    """
-
-    mode: PrecisionMode = "mp"
-    may_overflow = False
-
-    def __init__(self, digits: int, extra_digits: int = 0) -> None:
-        if digits < 1:
-            raise DomainError("digits", "digits >= 1", digits)
-        self.digits = digits
-        self.eps = 10.0 ** (-digits)
-        self.working_eps = 10.0 ** (-digits - GUARD_DIGITS - extra_digits)
-        self.extra_digits = extra_digits
-        """Digits carried beyond ``digits`` and the guard digits, for radii that grow."""
-        self.bits = math.ceil((digits + GUARD_DIGITS + extra_digits) * BITS_PER_DIGIT)
-        self.enter()
-        for name in (
-            "exp",
-            "expm1",
-            "log",
-            "log1p",
-            "sqrt",
-            "cos",
-            "sin",
-            "cosh",
-            "sinh",
-            "tanh",
-            "atanh",
-            "asinh",
-            "acosh",
-        ):
-            setattr(self, name, _ball_function(name, self.check_time))
-        atan2 = np.frompyfunc(flint.arb.atan2, 2, 1)
-        self.atan2 = lambda y, x: atan2(y, x)
-        # a ball around 0 squared reaches below 0: keep the part >= 0 (it holds the exact value)
-        nonnegative = np.frompyfunc(lambda v: v.nonnegative_part(), 1, 1)
-        self.hypot = lambda x, y: self.sqrt(nonnegative(x * x + y * y))
-
-    def enter(self) -> None:
-        """Make this arithmetic's precision flint's working precision."""
-        flint.ctx.prec = self.bits
-
-    def scalar(self, value: Any) -> Any:
-        kind = type(value)
-        if kind is flint.arb:
-            return value
-        if kind is int:
-            return flint.arb(value)
-        if isinstance(value, ExactReal):
-            return flint.arb(value.text)  # the ball of the decimal written
-        if isinstance(value, float):
-            return flint.arb(repr(value))
-        return flint.arb(value)
-
-    def array(self, values: Iterable[Any]) -> Array:
-        ball = flint.arb
-        items = [v if type(v) is ball else self.scalar(v) for v in values]
-        out = np.empty(len(items), dtype=object)
-        out[:] = items
-        return out
-
-    def indices(self, i_min: int, i_max: int) -> Array:
-        out = np.empty(i_max - i_min + 1, dtype=object)
-        out[:] = [flint.arb(i) for i in range(i_min, i_max + 1)]
-        return out
-
-    def zeros(self, n: int) -> Array:
-        out = np.empty(n, dtype=object)
-        out[:] = [flint.arb(0)] * n  # arb numbers are immutable
-        return out
-
-    def empty(self, n: int) -> Array:
-        return np.empty(n, dtype=object)
-
-    @property
-    def pi(self) -> Any:
-        return flint.arb.pi()
-
-    def to_float(self, value: Any) -> float:
-        return float(value.mid())
-
-    def to_floats(self, values: Array) -> np.ndarray[Any, np.dtype[np.float64]]:
-        return np.fromiter((float(v.mid()) for v in values), dtype=np.float64, count=len(values))
-
-    def all_finite(self, values: Array) -> bool:
-        return all(v.is_finite() for v in values.reshape(-1))
-
-    def to_strings(self, values: Array) -> list[str]:
-        """The midpoints as decimals with ``digits`` significant digits."""
-        digits = self.digits
-        return [v.mid().str(digits, radius=False) for v in values]
-
-    def largest_radius(self, values: Array) -> float:
-        """The largest radius of the balls, rounded up to a float."""
-        radii = [v.rad() for v in values.reshape(-1)]
-        return upper_float(max(radii, default=flint.arb(0)))
-
-    def upper(self, values: Array) -> float:
-        """A float >= every number in every ball of ``|values|`` (a rigorous residual bound)."""
-        bounds = [abs(v).upper() for v in values.reshape(-1)]
-        return upper_float(max(bounds, default=flint.arb(0)))
-
-    def lower(self, values: Array) -> float:
-        """A float <= every number in every ball of ``|values|``'s largest entry: a rigorous
-        lower bound of the largest |value| (positive: the values certainly are not all 0)."""
-        bounds = [abs(v).lower() for v in values.reshape(-1)]
-        return lower_float(max(bounds, default=flint.arb(0)))
-
-
-def upper_float(value: Any) -> float:
-    """A float >= the (exact, radius-0) arb ``value``."""
-    nearest = float(value.mid()) + 0.0
-    return math.nextafter(nearest, math.inf) if nearest != math.inf else nearest
-
-
-def lower_float(value: Any) -> float:
-    """A float <= the (exact, radius-0) arb ``value``, and >= 0."""
-    nearest = float(value.mid())
-    return max(0.0, math.nextafter(nearest, -math.inf))

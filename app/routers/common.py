@@ -12,6 +12,7 @@ from fastapi.routing import APIRoute
 from pydantic import BaseModel, ValidationError
 
 from app.errors import UnknownIdError
+from app.geometry import balls
 from app.geometry.curve import Curve, Selection
 from app.geometry.precision import ExactReal
 from app.geometry.studies.common import Study
@@ -204,11 +205,17 @@ def compute(entry: Discretization, query: CurveQuery, settings: Settings) -> Cur
         query.precision,
         query.digits,
         kind=entry.info.id,
+        extra_digits=balls.extra_digits(entry.info.id, arguments)
+        if query.precision == "mp"
+        else None,
     )
     if query.format == "svg":
         enforce_drawing(settings, arguments["i_min"], arguments["i_max"])
     ar = timed_arithmetic(settings, query.precision, query.digits)
-    return entry.compute(ar, **arguments, selection=selection)
+    # precision=mp on rigorous balls where the discretization is served on them (issue 15)
+    return balls.serve(
+        entry.info.id, ar, lambda a: entry.compute(a, **arguments, selection=selection), arguments
+    )
 
 
 def curve_response(curve: Curve, response_format: str) -> Response:

@@ -9,7 +9,7 @@ from urllib.parse import urlencode
 from fastapi import APIRouter, Depends, Query, Request, Response
 from pydantic import Field, create_model
 
-from app.geometry import relations
+from app.geometry import balls, relations
 from app.geometry.curve import Curve
 from app.geometry.errors import DomainError
 from app.limits import LimitExceededError, enforce_digits, enforce_relation_row
@@ -134,6 +134,8 @@ def relations_document(curves: list[tuple[Discretization, Curve]]) -> dict[str, 
     rows = []
     for entry, curve in curves:
         shown = {k: v for k, v in curve.parameters.items() if v is not None}
+        with balls.session(curve.arithmetic):  # mp rows are balls: their working precision
+            cells = relations.row(curve)
         rows.append(
             {
                 "id": entry.info.id,
@@ -150,7 +152,7 @@ def relations_document(curves: list[tuple[Discretization, Curve]]) -> dict[str, 
                         "constants": {k: number(ar, v) for k, v in cell.constants.items()},
                         "note": cell.note,
                     }
-                    for cell in relations.row(curve)
+                    for cell in cells
                 ],
             }
         )

@@ -5,6 +5,7 @@ from typing import Annotated, Any, Literal
 from fastapi import APIRouter, Depends, Path, Query, Request, Response
 
 from app.errors import UnknownIdError
+from app.geometry import balls
 from app.geometry.checks import Check
 from app.geometry.precision import arithmetic
 from app.geometry.statement_tex import CLAIM_TEX, ERRATUM_TEX
@@ -114,7 +115,10 @@ def check_statement(
     settings = settings_of(request)
 
     def respond(checks: list[Check], parameters: dict[str, Any], ar: Any) -> Response:
-        document = theorems.document(entry, kind, owner, checks, parameters, ar.describe())
+        certified = balls.certificate(ar) is not None  # mp curves: on rigorous balls
+        document = theorems.document(
+            entry, kind, owner, checks, parameters, ar.describe(), certified
+        )
         return JSONBytesResponse(encode_json(document))
 
     if kind == "study":

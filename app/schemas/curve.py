@@ -43,6 +43,14 @@ class ErratumModel(BaseModel):
     printed_residual: float | None = Field(
         description="The same residual for the printed formula (large: the print is wrong)."
     )
+    certified: Literal["false", "undecided"] | None = Field(
+        None,
+        description="precision=mp on rigorous balls (the response's `certified` is set): "
+        "`printed_residual` is then a rigorous lower bound, and `false` certifies that the "
+        "printed formula is false on this polygon (the bound is > 0); `undecided` when the "
+        "ball still holds 0. null in float64 and where mp is not computed on balls (surfaces, "
+        "GET /theorems/{id} on smooth references).",
+    )
     link: str = Field(
         description="The erratum's page on this service (GET /errata/{id}): the printed and "
         "corrected forms with the evidence."
@@ -60,10 +68,38 @@ class CheckModel(BaseModel):
     claim: str = Field(description="The claim, and how its residual is measured.")
     residual: float | None = Field(description="Largest residual; null when not applicable.")
     tolerance: float = Field(description="Largest residual that counts as holding.")
-    holds: bool | None = Field(description="residual <= tolerance; null when not applicable.")
+    holds: bool | None = Field(
+        description="residual <= tolerance; null when not applicable. On rigorous balls "
+        "(`certified` set) `residual` is an upper bound, so true is a proof; false needs a "
+        "lower bound above the tolerance, and null with the note `undecided` is the case in "
+        "between."
+    )
     per_index: PerIndexModel | None = Field(description="Residual per index (detail=true).")
     erratum: ErratumModel | None = Field(description="Set when the printed formula is wrong.")
     note: str | None = Field(None, description="Context for the verdict.")
+
+
+class CertificateModel(BaseModel):
+    """What the rigorous balls of a precision=mp answer guarantee (python-flint `arb`)."""
+
+    radius: str = Field(
+        description="Largest radius of any returned coordinate (vertices and companions), a "
+        "decimal rounded up (a string: radii of long ranges leave the float range): each exact "
+        "coordinate is within `radius` of the computed midpoint, which is shown rounded to "
+        "`precision.digits` significant digits."
+    )
+    relative_radius: str = Field(
+        description="Largest radius of a point's coordinates divided by the point's size "
+        "max(|x|, |y|), a decimal rounded up: below 10^−(digits+1) when `resolved`."
+    )
+    working_digits: int = Field(
+        description="Decimal digits the balls were computed with (digits, guard digits and the "
+        "digits a recursion's radii grow by)."
+    )
+    resolved: bool = Field(
+        description="Whether every returned coordinate's radius is below 10^−(digits+1) of its "
+        "point's size (the precision is raised until it is, within a bound)."
+    )
 
 
 class CurveResponse(BaseModel):
@@ -82,6 +118,12 @@ class CurveResponse(BaseModel):
     companions: dict[str, PolylineModel] = Field(description="Polygons built alongside p.")
     constants: dict[str, float] = Field(description="Fitted constants (c of D1, D3, (2)).")
     checks: list[CheckModel] = Field(description="Every statement checked on this polygon.")
+    certified: CertificateModel | None = Field(
+        None,
+        description="Set when precision=mp is computed on rigorous balls (every discretization "
+        "of /discretizations): residuals are rigorous bounds and `radius` bounds every "
+        "coordinate; null in float64.",
+    )
 
 
 class CurveResponseMP(CurveResponse):

@@ -128,8 +128,10 @@ def document(
     checks: list[Check],
     parameters: dict[str, Any],
     precision: dict[str, Any],
+    certified: bool = False,
 ) -> dict[str, Any]:
-    """The ``TheoremResponse`` document of one statement checked on one source."""
+    """The ``TheoremResponse`` document of one statement checked on one source (``certified``:
+    computed on rigorous balls, see ``responses.check_document``)."""
     key = statement.statement.id
     check = next(c for c in checks if c.id == key)
     return {
@@ -143,5 +145,5 @@ def document(
         "parameters": parameters,
         "precision": precision,
         "conditions": list(statement.statement.conditions),
-        "check": check_document(check),
+        "check": check_document(check, certified),
     }

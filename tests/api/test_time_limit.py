@@ -20,7 +20,13 @@ TIME_LIMIT_TYPE = "/problems/time-limit"
 @pytest.fixture
 def free_estimates(monkeypatch: pytest.MonkeyPatch) -> None:
     """Estimates of zero cost, so that admission lets an overrunning request start."""
-    for name in ("BASE_SECONDS", "F64_STEP_SECONDS", "F64_VERTEX_SECONDS", "MP_STEP_SECONDS"):
+    for name in (
+        "BASE_SECONDS",
+        "F64_STEP_SECONDS",
+        "F64_VERTEX_SECONDS",
+        "MP_STEP_SECONDS",
+        "BALL_STEP_SECONDS",
+    ):
         monkeypatch.setattr(limits, name, 0.0)
     monkeypatch.setattr(limits, "MP_MESH_VERTEX_SECONDS", 0.0)
 
@@ -55,8 +61,8 @@ def test_a_long_construction_stops_with_the_time_limit_problem_naming_the_range(
 @pytest.mark.usefixtures("free_estimates")
 def test_an_mp_computation_stops_with_the_time_limit_problem_naming_digits() -> None:
     client = warm(TestClient(create_app(Settings(time_limit=0.5))))
-    response = client.get(
-        "/discretizations/d2a-quad", params={"precision": "mp", "digits": 300, "i_max": 1900}
+    response = client.get(  # seconds of work on balls (the working digits grow to ~640)
+        "/discretizations/d4b", params={"precision": "mp", "digits": 300, "i_max": 1900}
     )
     assert response.status_code == 422
     assert response.json()["type"] == TIME_LIMIT_TYPE

@@ -131,17 +131,17 @@ def quadratic(ar: Arithmetic, c: Scalar, delta: Scalar) -> StepQuadratic:
 
 def step_roots(ar: Arithmetic, q: StepQuadratic, y: Scalar) -> tuple[Scalar, Scalar]:
     """(D3) solved for the other height w of an edge from height y: the roots (w+, w−)."""
-    excess = y - q.lowest
-    if excess < 0:  # only by rounding, next to the lowest point: the double root
-        excess = ar.scalar(0)
+    # >= 0 but for rounding, next to the lowest point: the double root
+    excess = ar.nonnegative(y - q.lowest)
     big = q.sum_factor * y + q.root_factor * ar.sqrt(excess * (y + q.lowest))
     return big, (y * y + q.product_term) / big
 
 
-def _other(near: Scalar, roots: tuple[Scalar, Scalar]) -> Scalar:
-    """The root that is not the previous vertex's height ``near`` (the one farther from it)."""
+def _other(ar: Arithmetic, near: Scalar, roots: tuple[Scalar, Scalar]) -> Scalar:
+    """The root that is not the previous vertex's height ``near`` (the one farther from it;
+    on balls that cannot tell, a ball holding both)."""
     big, small = roots
-    return big if abs(big - near) >= abs(small - near) else small
+    return ar.at_least_or(abs(big - near), abs(small - near), big, small)
 
 
 @kernel("UniTuple(float64, 2)(float64, float64, float64, float64, float64)")
@@ -218,11 +218,11 @@ def construct(
     for j in range(2, hi + 1):
         if not j % CLOCK_STEPS:
             ar.check_time()
-        y[j - lo] = _other(y[j - 2 - lo], step_roots(ar, q, y[j - 1 - lo]))
+        y[j - lo] = _other(ar, y[j - 2 - lo], step_roots(ar, q, y[j - 1 - lo]))
     for j in range(-2, lo - 1, -1):
         if not j % CLOCK_STEPS:
             ar.check_time()
-        y[j - lo] = _other(y[j + 2 - lo], step_roots(ar, q, y[j + 1 - lo]))
+        y[j - lo] = _other(ar, y[j + 2 - lo], step_roots(ar, q, y[j + 1 - lo]))
     return AreaLengthPolygon(
         indices=np.arange(i_min, i_max + 1, dtype=np.int64),
         vertices=stack_points(dd * i, ar.array(y[i_min - lo : i_max - lo + 1])),

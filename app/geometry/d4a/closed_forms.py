@@ -70,7 +70,8 @@ def cusp(ar: Arithmetic, h: Scalar, s: Scalar, beta0: float | None) -> Cusp:
         return Cusp(0, ar.scalar(0), ar.scalar(1))
     angle = ar.scalar(beta0)
     cos0, sin0 = ar.cos(angle), ar.sin(angle)
-    if h * sin0 > h - s:
+    what = "which stick is the cusp stick"
+    if ar.exceeds(h * sin0, h - s, "beta0", what):
         return Cusp(0, cos0, sin0)
     k = (h - s) / h
     if not k < 1:
@@ -79,11 +80,11 @@ def cusp(ar: Arithmetic, h: Scalar, s: Scalar, beta0: float | None) -> Cusp:
         )
     # the floor in the arithmetic's own precision: a float64 round trip would be off by
     # j·1e-16 sticks, and the search below would walk them one by one
-    j = max(1, int(ar.log(sin0) / ar.log(k)))
+    j = max(1, ar.truncate(ar.log(sin0) / ar.log(k)))
     for _ in range(CUSP_SEARCH_STEPS):  # at most a step or two of rounding either way
-        if h * sin0 / k**j <= h - s:
+        if not ar.exceeds(h * sin0 / k**j, h - s, "beta0", what):
             j += 1
-        elif j > 1 and h * sin0 / k ** (j - 1) > h - s:
+        elif j > 1 and ar.exceeds(h * sin0 / k ** (j - 1), h - s, "beta0", what):
             j -= 1
         else:
             break
@@ -93,7 +94,8 @@ def cusp(ar: Arithmetic, h: Scalar, s: Scalar, beta0: float | None) -> Cusp:
         )
     sin_c = sin0 / k**j
     cos_c = ar.sqrt((1 - sin_c) * (1 + sin_c))
-    return Cusp(-j, -cos_c, sin_c) if cos0 < 0 else Cusp(j, cos_c, sin_c)
+    leans_back = ar.exceeds(ar.scalar(0), cos0, "beta0", "which way stick 0 leans")
+    return Cusp(-j, -cos_c, sin_c) if leans_back else Cusp(j, cos_c, sin_c)
 
 
 def _advance(h: Scalar, k: Scalar, outer: Array, inner: Array) -> Array:

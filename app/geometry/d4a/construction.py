@@ -102,7 +102,7 @@ class _Stepper:
 
     def is_cusp(self, sin_b: Scalar) -> bool:
         """No stick can carry this stick's end: d^y = h sin β > h − s."""
-        return bool(sin_b > self.keep)
+        return self.ar.exceeds(sin_b, self.keep, "beta0", "which stick is the cusp stick")
 
     def pull(self, x: Scalar, cos_b: Scalar, sin_b: Scalar, ahead: bool) -> tuple[Scalar, ...]:
         """The stick whose end is this stick's carried point x + (h − s)u, leader ahead/behind."""
@@ -213,7 +213,8 @@ def construct_sticks(
     x, cos_u, sin_u = [zero] * n, [zero] * n, [zero] * n
     side = np.zeros(n, dtype=np.int64)
     cos_u[k0], sin_u[k0] = c0, s0
-    side[k0] = CUSP if step.is_cusp(s0) else (PURSUIT if c0 < 0 else MIRRORED)
+    leans_back = ar.exceeds(ar.scalar(0), c0, "beta0", "which way stick 0 leans")
+    side[k0] = CUSP if step.is_cusp(s0) else (PURSUIT if leans_back else MIRRORED)
     for k in range(k0 + 1, n):  # forward: stick k from stick k − 1
         if not k % CLOCK_STEPS:
             ar.check_time()

@@ -214,7 +214,7 @@ def _hypothesis(ctx: _Context, p: Array) -> Check:
     y = p[: ctx.n, 1]
     d2 = ctx.d * ctx.d
     products = y[:-1] * y[1:]
-    violation = np.maximum(d2 - products, ctx.ar.scalar(0)) / d2
+    violation = ctx.ar.maximum(d2 - products, ctx.ar.scalar(0)) / d2
     check = ctx.check(HYPOTHESIS, 1, violation)
     if len(products):
         smallest = ctx.ar.to_float(np.min(products / d2))
@@ -244,7 +244,7 @@ def _equation_2(ctx: _Context, fits: dict[str, conditions.ConditionFit], p: Arra
     c, c1, c2 = (fits[k].constant for k in ("eq2", "d1", "d3"))
     residuals = fits["eq2"].residuals
     if c1 is not None and c2 is not None and c2 != 0 and len(residuals):
-        residuals = np.maximum(residuals, conditions.equation_2_misfit(ctx.ar, p, c1 / c2))
+        residuals = ctx.ar.maximum(residuals, conditions.equation_2_misfit(ctx.ar, p, c1 / c2))
     return _fitted(ctx, THEOREM_4_III, conditions.ConditionFit(c, residuals))
 
 
@@ -345,7 +345,7 @@ def _nikolaides(ctx: _Context, p: Array, tractrix: Array, axis: Array) -> Check:
         )
     at_p = nikolaides.right_angle_residuals(tractrix[:n], axis[:n], p[:n])
     at_next = nikolaides.right_angle_residuals(tractrix[:n], axis[:n], p[1 : n + 1])
-    return ctx.check(NIKOLAIDES, 0, np.maximum(at_p, at_next))
+    return ctx.check(NIKOLAIDES, 0, ctx.ar.maximum(at_p, at_next))
 
 
 def _darboux(ctx: _Context) -> Check:

@@ -1,0 +1,262 @@
+"""Rigorous ball arithmetic behind the ``Arithmetic`` interface (python-flint's ``arb``).
+
+``Ball`` runs the same geometry code as ``Float64`` and ``MultiPrecision``
+(``app.geometry.precision``) on object arrays of ``arb`` balls; ``app.geometry.balls`` serves
+precision=mp with it (working precision, raising the digits until every radius is small).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Iterable
+from typing import Any
+
+import flint
+import numpy as np
+from mpmath.libmp import from_man_exp, to_str
+
+from app.geometry.errors import DomainError
+from app.geometry.exact import ExactReal
+from app.geometry.precision import (
+    GUARD_DIGITS,
+    Arithmetic,
+    Array,
+    PrecisionMode,
+    Scalar,
+    UndecidedError,
+)
+
+#: Bits of one decimal digit, for the ball arithmetic's working precision.
+BITS_PER_DIGIT = math.log2(10)
+
+
+def _ball_function(name: str, clock: Callable[[], None] | None = None) -> Callable[..., Any]:
+    """An arb method (``cos``, ``log1p``, …) on a ball or, entry by entry, on an object array."""
+
+    method = getattr(flint.arb, name)
+
+    def scalar(x: Any) -> Any:
+        return method(x if type(x) is flint.arb else flint.arb(x))
+
+    ufunc = np.frompyfunc(method, 1, 1)  # object arrays of Ball hold arb numbers only
+
+    def apply(x: Any) -> Any:
+        if isinstance(x, np.ndarray):
+            if clock is not None:
+                clock()
+            return ufunc(x)
+        return scalar(x)
+
+    return apply
+
+
+class Ball(Arithmetic):
+    """Rigorous ball arithmetic (python-flint's ``arb``): every number is a midpoint and a radius
+    that contains the exact value of the formula on the exact inputs.
+
+    precision=mp of the discretizations served on balls (``app.geometry.balls``): the same
+    geometry code runs on object arrays of balls; ``to_floats`` of a residual is a rigorous upper
+    bound of its absolute value and ``lower_floats`` a rigorous lower bound (``checks``). flint's
+    working precision is process-wide (``flint.ctx.prec``) and this class does not set it:
+    compute inside ``balls.working_precision(ar.bits)``, which serializes computations.
+    """
+
+    mode: PrecisionMode = "mp"
+    may_overflow = False
+
+    def __init__(self, digits: int, extra_digits: int = 0) -> None:
+        if digits < 1:
+            raise DomainError("digits", "digits >= 1", digits)
+        self.digits = digits
+        self.eps = 10.0 ** (-digits)
+        # the refusals that read it (a step below the resolution) mean the requested digits
+        self.working_eps = 10.0 ** (-digits - GUARD_DIGITS)
+        self.extra_digits = extra_digits
+        """Digits carried beyond ``digits`` and the guard digits, for radii that grow."""
+        self.bits = math.ceil((digits + GUARD_DIGITS + extra_digits) * BITS_PER_DIGIT)
+        self.certificate: Any = None
+        """What the served curve's balls guarantee (``balls.Certificate``), set by
+        ``balls.serve``."""
+        for name in (
+            "exp",
+            "expm1",
+            "log",
+            "log1p",
+            "sqrt",
+            "cos",
+            "sin",
+            "cosh",
+            "sinh",
+            "tanh",
+            "atanh",
+            "asinh",
+            "acosh",
+        ):
+            setattr(self, name, _ball_function(name, self.check_time))
+        atan2 = np.frompyfunc(flint.arb.atan2, 2, 1)
+        self.atan2 = lambda y, x: atan2(y, x)
+        # a ball around 0 squared reaches below 0: keep the part >= 0 (it holds the exact value)
+        nonnegative = np.frompyfunc(flint.arb.nonnegative_part, 1, 1)
+        sqrt = np.frompyfunc(flint.arb.sqrt, 1, 1)
+        self.hypot = lambda x, y: (
+            sqrt(nonnegative(x * x + y * y))
+            if isinstance(x, np.ndarray) or isinstance(y, np.ndarray)
+            else _ball_hypot(self.scalar(x), self.scalar(y))
+        )
+
+    def scalar(self, value: Any) -> Any:
+        kind = type(value)
+        if kind is flint.arb:
+            return value
+        if kind is int:
+            return flint.arb(value)
+        if isinstance(value, np.integer):
+            return flint.arb(int(value))
+        if isinstance(value, ExactReal):
+            return flint.arb(value.text)  # the ball of the decimal written
+        if isinstance(value, float):
+            return flint.arb(repr(float(value)))  # numpy floats print their type in repr
+        return flint.arb(value)
+
+    def array(self, values: Iterable[Any]) -> Array:
+        ball = flint.arb
+        items = [v if type(v) is ball else self.scalar(v) for v in values]
+        out = np.empty(len(items), dtype=object)
+        out[:] = items
+        return out
+
+    def indices(self, i_min: int, i_max: int) -> Array:
+        out = np.empty(i_max - i_min + 1, dtype=object)
+        out[:] = [flint.arb(i) for i in range(i_min, i_max + 1)]
+        return out
+
+    def zeros(self, n: int) -> Array:
+        out = np.empty(n, dtype=object)
+        out[:] = [flint.arb(0)] * n  # arb numbers are immutable
+        return out
+
+    def empty(self, n: int) -> Array:
+        return np.empty(n, dtype=object)
+
+    @property
+    def pi(self) -> Any:
+        return flint.arb.pi()
+
+    certified = True
+
+    def to_float(self, value: Any) -> float:
+        """The float farthest from 0 in the ball, rounded outward: for a residual (>= 0), a
+        rigorous upper bound; for anything else the midpoint to within the radius."""
+        if type(value) is not flint.arb:
+            return float(value)
+        return float(self.to_floats(np.array([value], dtype=object))[0])
+
+    def to_floats(self, values: Array) -> np.ndarray[Any, np.dtype[np.float64]]:
+        """Entry by entry ``to_float``: ``|result| >= |v|`` for every v in each ball, with the
+        sign of the midpoint, so residuals converted here are upper bounds (float arrays, e.g.
+        residuals converted already, pass through)."""
+        if values.dtype != object:
+            return np.asarray(values, dtype=np.float64)
+        n = len(values)
+        flat = values.reshape(-1)
+        mids = np.fromiter((float(v) for v in flat), dtype=np.float64, count=n)
+        uppers = np.fromiter((float(v.abs_upper()) for v in flat), dtype=np.float64, count=n)
+        with np.errstate(invalid="ignore"):
+            bounds = np.nextafter(uppers, np.inf)  # float() rounds to nearest
+        for k in np.flatnonzero(uppers == 0):  # exact zeros stay 0
+            if flat[k].is_zero():
+                bounds[k] = 0.0
+        with np.errstate(invalid="ignore"):
+            uppers = bounds
+            return np.where(mids < 0, -uppers, uppers)
+
+    def lower_floats(self, values: Array) -> np.ndarray[Any, np.dtype[np.float64]]:
+        """Rigorous lower bounds of ``|v|`` (0 where a ball holds 0, or for float entries)."""
+        if values.dtype != object:
+            return np.zeros(len(values), dtype=np.float64)
+        lowers = np.fromiter(
+            (float(v.abs_lower()) for v in values), dtype=np.float64, count=len(values)
+        )
+        with np.errstate(invalid="ignore"):
+            return np.maximum(np.nextafter(lowers, -np.inf), 0.0)
+
+    def maximum(self, a: Any, b: Any) -> Any:
+        """A ball holding max(a, b) entry by entry (numpy's maximum picks one of two overlapping
+        balls, which may not contain the maximum)."""
+        return _ball_maximum(a, b)
+
+    def exceeds(self, a: Scalar, b: Scalar, parameter: str, what: str) -> bool:
+        if a > b:
+            return True
+        if a <= b:
+            return False
+        raise UndecidedError(parameter, what)
+
+    def at_least_or(self, x: Scalar, y: Scalar, a: Scalar, b: Scalar) -> Scalar:
+        if x >= y:
+            return a
+        if x < y:
+            return b
+        return a.union(b)  # the exact choice is one of the two: a ball holding both
+
+    def nonnegative(self, x: Scalar) -> Scalar:
+        return x.nonnegative_part()
+
+    def truncate(self, x: Scalar) -> int:
+        """The midpoint truncated (a guess only: the search that uses it decides exactly)."""
+        mid = x.mid()  # exact, so its floor and ceiling are exact integers
+        return int((mid.floor() if mid > 0 else mid.ceil()).unique_fmpz())
+
+    def all_finite(self, values: Array) -> bool:
+        return all(v.is_finite() for v in values.reshape(-1))
+
+    def to_strings(self, values: Array) -> list[str]:
+        """The midpoints as decimals with ``digits`` significant digits, printed as mpmath
+        prints them (``nstr``): the exact binary midpoint, correctly rounded."""
+        digits = self.digits
+        return [_decimal(v, digits) for v in values]
+
+    def largest_radius(self, values: Array) -> float:
+        """The largest radius of the balls, rounded up to a float."""
+        radii = [v.rad() for v in values.reshape(-1)]
+        return upper_float(max(radii, default=flint.arb(0)))
+
+    def upper(self, values: Array) -> float:
+        """A float >= every number in every ball of ``|values|`` (a rigorous residual bound)."""
+        bounds = [abs(v).upper() for v in values.reshape(-1)]
+        return upper_float(max(bounds, default=flint.arb(0)))
+
+    def lower(self, values: Array) -> float:
+        """A float <= every number in every ball of ``|values|``'s largest entry: a rigorous
+        lower bound of the largest |value| (positive: the values certainly are not all 0)."""
+        bounds = [abs(v).lower() for v in values.reshape(-1)]
+        return lower_float(max(bounds, default=flint.arb(0)))
+
+
+def _decimal(value: Any, digits: int) -> str:
+    """A ball's midpoint (exact in binary) with ``digits`` significant digits, as mpmath's
+    ``nstr`` prints it."""
+    if not value.is_finite():
+        return "nan"  # refused before encoding (``all_finite``)
+    mantissa, exponent = value.mid().man_exp()
+    return to_str(from_man_exp(int(mantissa), int(exponent)), digits)
+
+
+def _ball_hypot(x: Any, y: Any) -> Any:
+    """sqrt(x² + y²) on balls; the sum's part >= 0 (a ball around 0 squared reaches below 0)."""
+    return (x * x + y * y).nonnegative_part().sqrt()
+
+
+_ball_maximum = np.frompyfunc(lambda a, b: flint.arb(a).max(b), 2, 1)
+
+
+def upper_float(value: Any) -> float:
+    """A float >= the (exact, radius-0) arb ``value``."""
+    nearest = float(value.mid()) + 0.0
+    return math.nextafter(nearest, math.inf) if nearest != math.inf else nearest
+
+
+def lower_float(value: Any) -> float:
+    """A float <= the (exact, radius-0) arb ``value``, and >= 0."""
+    nearest = float(value.mid())
+    return max(0.0, math.nextafter(nearest, -math.inf))

@@ -1,0 +1,196 @@
+"""precision=mp on rigorous balls: every served mp curve is computed with python-flint's ``arb``.
+
+A discretization's ``compute`` runs unchanged on ``ball_arithmetic.Ball``: every number is a
+midpoint and a radius that contains the exact value for the exact inputs (the decimals the
+client wrote, ``ExactReal``). What that certifies (``checks.check_residuals``,
+``checks.printed_residual``):
+
+- a statement's residual is a rigorous *upper* bound, so ``holds: true`` proves it to that
+  tolerance on the exact polygon; ``holds: false`` needs a rigorous lower bound above the
+  tolerance, and between the two the verdict is ``null`` with the note "undecided";
+- an erratum's printed residual is a rigorous *lower* bound: positive certifies that the printed
+  formula is false on this polygon (the response says ``"certified": "false"``);
+- coordinates are the midpoints with ``digits`` significant digits; ``radius`` is the largest
+  radius of any returned coordinate (``Certificate``).
+
+Radii grow along a recursion (the dependency problem of interval arithmetic; for (D4b) about
+e^{2|i|L}·ulp while the values shrink like e^{−|i|L}). ``serve`` carries extra digits (a
+discretization's estimate, ``EXTRA_DIGITS``) and, while some returned coordinate's radius
+exceeds 10^−(digits+1) of the point's size, doubles them and computes again: never a guess.
+
+flint's working precision is one process-wide setting (``flint.ctx.prec``; python-flint 0.9 has
+no per-call precision for ``arb`` arithmetic). ``serve`` sets it for one computation and
+restores it afterwards, holding ``LOCK`` meanwhile, so two concurrent mp requests at different
+digits (the server runs requests in a thread pool) never compute with each other's precision.
+The computations hold the GIL anyway (python-flint does not release it), so the lock costs no
+parallelism; a request waiting for it spends its time limit.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Callable, Iterator, Mapping
+from contextlib import contextmanager
+from dataclasses import dataclass
+from typing import Any
+
+import flint
+
+from app.geometry.ball_arithmetic import Ball
+from app.geometry.curve import Curve
+from app.geometry.d4b import certified as d4b_certified
+from app.geometry.errors import NotRepresentableError
+from app.geometry.precision import GUARD_DIGITS, Arithmetic, UndecidedError
+
+#: Serializes ball computations: flint's working precision is process-wide (see above).
+LOCK = threading.RLock()
+
+#: Raise the precision at most this many times (each doubles the extra digits); past that the
+#: curve is served with the radius reached, which ``Certificate.resolved`` reports.
+MAX_RAISES = 6
+
+#: The extra digits tried first when a discretization has no estimate.
+DEFAULT_EXTRA_DIGITS = 4
+
+
+@dataclass(frozen=True)
+class Certificate:
+    """What the balls of one served curve guarantee (the response's ``certified`` object)."""
+
+    radius: str
+    """Largest radius of a returned coordinate, a decimal rounded up (a string: radii of long
+    ranges leave the float range): each exact coordinate lies within it of its midpoint."""
+    relative_radius: str
+    """Largest radius of a point's coordinates over the point's size max(|x|, |y|), rounded
+    up; below 10^−(digits+1) when ``resolved``."""
+    working_digits: int
+    """Decimal digits the balls were computed with (``digits`` + guard + extra digits)."""
+    resolved: bool
+    """Whether every returned coordinate's radius is below 10^−(digits+1) of its point's size."""
+
+    def document(self) -> dict[str, Any]:
+        return {
+            "radius": self.radius,
+            "relative_radius": self.relative_radius,
+            "working_digits": self.working_digits,
+            "resolved": self.resolved,
+        }
+
+
+@contextmanager
+def working_precision(bits: int) -> Iterator[None]:
+    """flint computes with ``bits`` inside; the previous precision is restored afterwards."""
+    with LOCK:
+        saved = flint.ctx.prec
+        flint.ctx.prec = bits
+        try:
+            yield
+        finally:
+            flint.ctx.prec = saved
+
+
+@contextmanager
+def session(ar: Arithmetic) -> Iterator[None]:
+    """Compute more with a served curve's arithmetic (e.g. GET /relations' cells): on balls,
+    inside its working precision (``working_precision``); otherwise as is."""
+    if isinstance(ar, Ball):
+        with working_precision(ar.bits):
+            yield
+    else:
+        yield
+
+
+#: id -> extra digits a discretization's balls lose over ``arguments`` (an estimate; ``serve``
+#: raises further if it is short). Every discretization's curve endpoint is served on balls.
+EXTRA_DIGITS: dict[str, Callable[[Mapping[str, Any]], int]] = {
+    "d4b": d4b_certified.extra_digits,
+    # the others start with a few digits and raise them as needed: their radii grow slowly
+    # (D1, D3, D4a: about one digit per 20 vertices at worst; bench/mp.py)
+    **{
+        identifier: lambda arguments: DEFAULT_EXTRA_DIGITS
+        for identifier in ("d1", "d3", "d4a", "d2a-quad", "d2a-hex", "d2b")
+    },
+}
+
+
+def extra_digits(identifier: str, arguments: Mapping[str, Any]) -> int | None:
+    """The extra digits ``serve`` starts with for this request (None: not served on balls);
+    the work budget prices them (app/limits.py)."""
+    if not serves(identifier):
+        return None
+    return max(0, EXTRA_DIGITS[identifier](arguments))
+
+
+def serves(identifier: str) -> bool:
+    """Whether precision=mp of this discretization is computed on balls."""
+    return identifier in EXTRA_DIGITS
+
+
+def serve(
+    identifier: str,
+    ar: Arithmetic,
+    compute: Callable[[Arithmetic], Curve],
+    arguments: Mapping[str, Any],
+) -> Curve:
+    """``compute`` on balls for an mp request of a discretization served on balls; otherwise
+    (float64, or a discretization still on mpmath) ``compute(ar)`` itself."""
+    if ar.mode != "mp" or ar.certified or not serves(identifier):
+        return compute(ar)
+    extra = max(0, EXTRA_DIGITS[identifier](arguments))
+    for attempt in range(MAX_RAISES + 1):
+        balls = Ball(ar.digits, extra)
+        balls.deadline, balls.limit = ar.deadline, ar.limit
+        try:
+            with working_precision(balls.bits):
+                curve = compute(balls)
+        except UndecidedError as undecided:
+            if attempt == MAX_RAISES:
+                raise NotRepresentableError(
+                    undecided.parameter,
+                    f"a value for which balls of {ar.digits + GUARD_DIGITS + extra} digits decide "
+                    f"{undecided.what}",
+                    arguments.get(undecided.parameter),
+                    f"undecided: {undecided.what} is closer to a tie than the precision resolves; "
+                    "change the parameter or ask for more digits",
+                ) from None
+            extra = max(2 * extra, DEFAULT_EXTRA_DIGITS)
+            continue
+        with working_precision(balls.bits):
+            radius, relative, resolved = _radii(curve, ar.digits)
+        if resolved or attempt == MAX_RAISES:
+            working = ar.digits + GUARD_DIGITS + extra
+            balls.certificate = Certificate(radius, relative, working, resolved)
+            return curve
+        extra = max(2 * extra, DEFAULT_EXTRA_DIGITS)
+    raise AssertionError("unreachable")  # pragma: no cover
+
+
+def _radii(curve: Curve, digits: int) -> tuple[str, str, bool]:
+    """(largest radius, largest relative radius, whether every point is resolved), the radii
+    as decimals rounded up; compared as exact arb numbers (radii underflow floats)."""
+    limit = flint.arb(10) ** (-digits - 1)
+    largest, relative = flint.arb(0), flint.arb(0)
+    for polyline in (curve.polygon, *curve.companions.values()):
+        for x, y in polyline.vertices:
+            radius = x.rad().max(y.rad())
+            if radius.is_zero():
+                continue
+            size = abs(x).lower().max(abs(y).lower())
+            largest = largest.max(radius)
+            relative = relative.max((radius / size).upper() if size > 0 else flint.arb("inf"))
+    return _rounded_up(largest), _rounded_up(relative), bool(relative <= limit)
+
+
+def _rounded_up(value: Any) -> str:
+    """A decimal >= the exact arb ``value`` (3 digits; ``"inf"`` when unbounded)."""
+    if value.is_zero():
+        return "0"
+    if not value.is_finite():
+        return "inf"
+    return (value * flint.arb("1.01")).upper().str(3, radius=False)
+
+
+def certificate(ar: Arithmetic) -> Certificate | None:
+    """The certificate of a curve's arithmetic (``None``: not computed on balls)."""
+    found = getattr(ar, "certificate", None)
+    return found if isinstance(found, Certificate) else None
