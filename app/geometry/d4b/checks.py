@@ -39,10 +39,8 @@ from app.geometry.checks import (
     Statement,
     check_residuals,
     not_applicable,
-    point_distance,
     printed_residual,
     relative_difference,
-    relative_point_difference,
     relative_to,
 )
 from app.geometry.curve import EVERYTHING, Selection
@@ -51,6 +49,7 @@ from app.geometry.d4b import (
     curvature as d4b_curvature,
     residual_kernels,
 )
+from app.geometry.d4b.residual_kernels import point_distance, relative_point_difference
 from app.geometry.precision import Arithmetic, Array, Scalar
 from app.geometry.tolerances import (
     LOCAL_STEPS,

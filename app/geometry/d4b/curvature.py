@@ -37,11 +37,10 @@ from app.geometry.checks import (
     Statement,
     check_residuals,
     not_applicable,
-    point_distance,
     printed_residual,
-    relative_point_difference,
 )
 from app.geometry.d4b import closed_forms as kinematic_closed_forms
+from app.geometry.d4b.residual_kernels import point_distance, relative_point_difference
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 from app.geometry.surfaces.ring_curvature import (
