@@ -17,28 +17,15 @@ last place of hypot, which only residuals at rounding level see; the mp path kee
 
 from __future__ import annotations
 
-import math
 from typing import Any
 
-import numba
 import numpy as np
 
 from app.geometry import checks
-from app.geometry.compiled import kernel
+from app.geometry.compiled import kernel, length
 from app.geometry.precision import Arithmetic, Array
 
 TINY = float(np.finfo(np.float64).tiny)
-#: Magnitudes between which x² + y² neither overflows nor underflows past its last bits.
-_SQUARE_LOW, _SQUARE_HIGH = 2.0**-480, 2.0**480
-
-
-@numba.njit(cache=True, inline="always", error_model="numpy")
-def _length(x: float, y: float) -> float:
-    """|(x, y)|: √(x² + y²) for moderate magnitudes, libm's hypot outside them (and for NaN)."""
-    big = max(abs(x), abs(y))
-    if _SQUARE_LOW < big < _SQUARE_HIGH:
-        return math.sqrt(x * x + y * y)
-    return math.hypot(x, y)
 
 
 @kernel("float64[:](float64[:, :], float64[:, :])")
@@ -46,7 +33,7 @@ def _distances(a: Any, b: Any) -> Any:
     """|a_k − b_k| for each row k of two (m, 2) arrays."""
     out = np.empty(a.shape[0])
     for k in range(a.shape[0]):
-        out[k] = _length(a[k, 0] - b[k, 0], a[k, 1] - b[k, 1])
+        out[k] = length(a[k, 0] - b[k, 0], a[k, 1] - b[k, 1])
     return out
 
 
@@ -56,9 +43,9 @@ def _relative_distances(computed: Any, expected: Any, tiny: float) -> Any:
     out = np.empty(computed.shape[0])
     for k in range(computed.shape[0]):
         ex, ey = expected[k, 0], expected[k, 1]
-        scale = _length(ex, ey)
+        scale = length(ex, ey)
         scale = scale if scale > tiny else tiny
-        out[k] = _length(computed[k, 0] - ex, computed[k, 1] - ey) / scale
+        out[k] = length(computed[k, 0] - ex, computed[k, 1] - ey) / scale
     return out
 
 
