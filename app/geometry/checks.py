@@ -8,6 +8,7 @@ formula is wrong, the check tests the corrected one and carries an ``Erratum`` w
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Any
 
@@ -92,12 +93,12 @@ def check_residuals(
         return not_applicable(
             statement, tolerance, note or "not enough vertices in the range to evaluate it"
         )
-    finite = np.isfinite(values)
     holds: bool | None
-    if np.all(finite):
-        worst = float(np.max(values))
+    worst = float(values.max())
+    if math.isfinite(worst):  # the largest is finite only when every value is
         holds = worst <= tolerance
     else:
+        finite = np.isfinite(values)
         # A residual that cannot be computed (an overflow, 0/0) tests nothing: the check fails
         # if a computed residual already exceeds the tolerance, and is otherwise not applicable
         # (never passed). NaN/Infinity stay out of the response.
@@ -170,6 +171,5 @@ def printed_residual(ar: Arithmetic, residuals: Array) -> float | None:
     """The largest printed-formula residual as a float (``None`` if it is not a number)."""
     if len(residuals) == 0:
         return None
-    values = np.abs(ar.to_floats(residuals))
-    worst = float(np.max(values))
-    return worst if np.isfinite(worst) else None
+    worst = float(np.abs(ar.to_floats(residuals)).max())
+    return worst if math.isfinite(worst) else None
