@@ -42,7 +42,7 @@ sys.path.insert(0, str(ROOT))
 
 from app.geometry.precision import Float64
 from app.geometry.smooth import curves as smooth
-from bench.common import sample
+from bench.common import record_target, sample
 from bench.load import SERVER_ENV, free_port
 
 clock = time.perf_counter
@@ -172,7 +172,9 @@ def _ms(seconds: float) -> str:
     return f"{seconds * 1e3:8.2f} ms"
 
 
-def _verdict(ratio: float, target: float, at_least: bool) -> str:
+def _verdict(ratio: float, target: float, at_least: bool, label: str | None = None) -> str:
+    if label is not None:
+        record_target(label, ratio, target, "≥" if at_least else "≤")
     met = ratio >= target if at_least else ratio <= target
     return f"   target {'≥' if at_least else '≤'} {target:g}×: {'met' if met else 'NOT met'}"
 
@@ -195,7 +197,10 @@ def small_gets(base: str, script: str) -> None:
             ratio = statistics.median(
                 s.rps / b.rps for s, b in zip(loads, runs["bare"], strict=True)
             )
-            verdict = _verdict(ratio, RPS_TARGET, at_least=True) if name == "cached" else ""
+            verdict = ""
+            if name == "cached":
+                label = f"cached 100-vertex D4b GET, c={connections}, × /health"
+                verdict = _verdict(ratio, RPS_TARGET, True, label)
             rps = statistics.median(s.rps for s in loads)
             p50 = statistics.median(s.p50 for s in loads)
             p99 = statistics.median(s.p99 for s in loads)
@@ -279,7 +284,11 @@ def big_response(port: int, count: int, gzip_too: bool) -> None:
         seconds, ratio, size, ref = _paired(port, encoder, path, repeat, headers, inflate)
         references.append(ref)
         targeted = targeted and count == BIG_COUNT  # the target is for 10^6 vertices
-        verdict = _verdict(ratio, JSON_TARGET, at_least=False) if targeted else ""
+        verdict = ""
+        if targeted:
+            verdict = _verdict(
+                ratio, JSON_TARGET, False, f"10^6 vertices, {label.strip()}, × orjson"
+            )
         print(f"  {label:<36}{_ms(seconds)}  {size / 1e6:7.2f} MB  {ratio:6.2f}× orjson{verdict}")
     print(f"  (orjson of the array alone: {_ms(statistics.median(references))})")
 
@@ -354,7 +363,10 @@ def computed_gets(rounds: int = ROUNDS) -> dict[str, float]:
         ratio = statistics.median(s.rps / b.rps for s, b in zip(loads, runs["bare"], strict=True))
         ratios[name] = ratio
         target = COMPUTED_TARGETS.get(name)
-        verdict = _verdict(ratio, target, at_least=True) if target else ""
+        verdict = ""
+        if target:
+            label = f"computed 100-vertex D4b GET, {name}, × /health"
+            verdict = "   " + record_target(label, ratio, target, "≥")
         rps = statistics.median(s.rps for s in loads)
         p50 = statistics.median(s.p50 for s in loads)
         print(
