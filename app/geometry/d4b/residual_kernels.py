@@ -115,6 +115,43 @@ def right_angle_residuals(tractrix: Any, axis: Any, p: Any, n: int) -> Any:
     return _right_angles(f64(tractrix), f64(axis), f64(p), n)
 
 
+@kernel("float64[:](float64[:, :], float64[:, :])")
+def _along(vectors: Any, points: Any) -> Any:
+    """``curvature._along`` row by row: |v × e| / (|p_i| + |p_{i+1}|), 1 where v · e < 0."""
+    out = np.empty(vectors.shape[0])
+    for k in range(vectors.shape[0]):
+        ex = points[k + 1, 0] - points[k, 0]
+        ey = points[k + 1, 1] - points[k, 1]
+        vx, vy = vectors[k, 0], vectors[k, 1]
+        size = abs(points[k, 0]) + abs(points[k, 1]) + abs(points[k + 1, 0]) + abs(points[k + 1, 1])
+        residual = abs(vx * ey - vy * ex) / size
+        out[k] = 1.0 if vx * ex + vy * ey < 0 else residual
+    return out
+
+
+@kernel("float64[:](float64[:, :])")
+def _edge_resolution(points: Any) -> Any:
+    """``curvature._edge_resolution``: |p_{i+1} − p_i| / (|p_i| + |p_{i+1}|) per edge, the
+    length by ``compiled.length``."""
+    out = np.empty(max(points.shape[0] - 1, 0))
+    for k in range(points.shape[0] - 1):
+        ex = points[k + 1, 0] - points[k, 0]
+        ey = points[k + 1, 1] - points[k, 1]
+        size = abs(points[k, 0]) + abs(points[k, 1]) + abs(points[k + 1, 0]) + abs(points[k + 1, 1])
+        out[k] = length(ex, ey) / size
+    return out
+
+
+def along(vectors: Any, points: Any) -> Any:
+    """How far unit vectors v_i are from the edges p_i p_{i+1} (``curvature._along``), float64."""
+    return _along(_points(vectors), _points(points))
+
+
+def edge_resolution(points: Any) -> Any:
+    """|e_i| / (|p_i| + |p_{i+1}|) per edge (``curvature._edge_resolution``), float64."""
+    return _edge_resolution(_points(points))
+
+
 def _points(points: Any) -> Any:
     return np.ascontiguousarray(points, dtype=np.float64)
 
