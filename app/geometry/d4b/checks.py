@@ -262,6 +262,10 @@ def _ratio_erratum(ctx: _Context, p: Array) -> Erratum | None:
 
 def _rotation_angle(ctx: _Context, p: Array, axis: Array) -> Check:
     ar, n = ctx.ar, ctx.n
+    if ar.mode == "float64":  # the same residuals in one compiled pass
+        corrected, printed_angles = residual_kernels.rotation_angles(ctx.d, p, axis, n)
+        erratum = Erratum(*ERRATUM_ANGLE, printed_residual=printed_residual(ar, printed_angles))
+        return ctx.check(ROTATION_ANGLE, 1, corrected, erratum)
     a = axis[: n - 1] - p[1:n]  # x_{i−1} − p_i
     b = axis[1:n] - p[1:n]  # x_i − p_i
     angle = _signed_angle(ar, a, b)

@@ -17,6 +17,7 @@ last place of hypot, which only residuals at rounding level see; the mp path kee
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
@@ -115,6 +116,25 @@ def right_angle_residuals(tractrix: Any, axis: Any, p: Any, n: int) -> Any:
     return _right_angles(f64(tractrix), f64(axis), f64(p), n)
 
 
+@kernel("UniTuple(float64[:], 2)(float64, float64[:, :], float64[:, :], int64)")
+def _rotation_angles(d: float, p: Any, axis: Any, n: int) -> tuple[Any, Any]:
+    """Theorem 4's rotation angle at p_i, i = 1 .. n − 1: |angle − 2 atan2(d, p_i^y)| for the
+    angle between x_{i−1} − p_i and x_i − p_i (corrected), and for x_i − p_i, x_{i+1} − p_i
+    (printed); each angle atan2(a × b, a · b) as ``checks._signed_angle``."""
+    count = max(n - 1, 0)
+    corrected = np.empty(count)
+    printed = np.empty(count)
+    for k in range(1, n):
+        px, py = p[k, 0], p[k, 1]
+        formula = 2 * math.atan2(d, py)
+        ax, ay = axis[k - 1, 0] - px, axis[k - 1, 1] - py
+        bx, by = axis[k, 0] - px, axis[k, 1] - py
+        corrected[k - 1] = abs(math.atan2(ax * by - ay * bx, ax * bx + ay * by) - formula)
+        cx, cy = axis[k + 1, 0] - px, axis[k + 1, 1] - py
+        printed[k - 1] = abs(math.atan2(bx * cy - by * cx, bx * cx + by * cy) - formula)
+    return corrected, printed
+
+
 @kernel("float64[:](float64[:, :], float64[:, :])")
 def _along(vectors: Any, points: Any) -> Any:
     """``curvature._along`` row by row: |v × e| / (|p_i| + |p_{i+1}|), 1 where v · e < 0."""
@@ -140,6 +160,11 @@ def _edge_resolution(points: Any) -> Any:
         size = abs(points[k, 0]) + abs(points[k, 1]) + abs(points[k + 1, 0]) + abs(points[k + 1, 1])
         out[k] = length(ex, ey) / size
     return out
+
+
+def rotation_angles(d: float, p: Any, axis: Any, n: int) -> tuple[Any, Any]:
+    """(corrected, printed) residuals of Theorem 4's rotation angle at i = 1 .. n − 1."""
+    return _rotation_angles(float(d), _points(p), _points(axis), n)
 
 
 def along(vectors: Any, points: Any) -> Any:

@@ -139,3 +139,25 @@ def test_along_and_edge_resolution_equal_numpy(seed: int) -> None:
     expected = np.hypot(edges[:, 0], edges[:, 1]) / size
     assert within_ulps(residual_kernels.edge_resolution(points), expected, 2)
     assert residual_kernels.edge_resolution(points[:1]).shape == (0,)
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_rotation_angles_equal_numpy(seed: int) -> None:
+    """Theorem 4's rotation angle, corrected and printed, as the numpy evaluation (atan2 of
+    libm in both: equal to a few units of the angles, which are below π)."""
+    for data in polygons(seed):
+        n = len(data.p) - 1
+        d = float(data.p[1, 0] - data.p[0, 0]) / 2
+        for p, _, axis in ((data.p, data.tractrix, data.axis), perturbed(data, seed)):
+            corrected, printed = residual_kernels.rotation_angles(d, p, axis, n)
+            formula = 2 * np.arctan2(d, p[1:n, 1])
+
+            def angle(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+                cross = a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]
+                return np.arctan2(cross, a[:, 0] * b[:, 0] + a[:, 1] * b[:, 1])
+
+            expected = abs(angle(axis[: n - 1] - p[1:n], axis[1:n] - p[1:n]) - formula)
+            expected_printed = abs(angle(axis[1:n] - p[1:n], axis[2 : n + 1] - p[1:n]) - formula)
+            unit = 4 * np.spacing(np.pi)
+            np.testing.assert_allclose(corrected, expected, rtol=0, atol=unit)
+            np.testing.assert_allclose(printed, expected_printed, rtol=0, atol=unit)
