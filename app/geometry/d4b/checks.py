@@ -293,7 +293,12 @@ def _recursion(ctx: _Context, p: Array) -> Check:
 def _two_step(ctx: _Context, p: Array) -> Check:
     y = p[:, 1]
     ar = ctx.ar
-    if ar.mode == "mp" or float(np.max(abs(y))) < 1e60:  # the printed form has 7th powers
+    if ar.mode == "float64" and float(np.max(abs(y))) < 1e60:  # the same, compiled
+        printed_residuals = residual_kernels.two_step_printed_residuals(ctx.d, y)
+        erratum = Erratum(
+            *ERRATUM_TWO_STEP, printed_residual=printed_residual(ar, printed_residuals)
+        )
+    elif ar.mode == "mp" or float(np.max(abs(y))) < 1e60:  # the printed form has 7th powers
         printed = kinematic_closed_forms.two_step_printed(ctx.d, y[:-3], y[1:-2])
         erratum = Erratum(
             *ERRATUM_TWO_STEP,

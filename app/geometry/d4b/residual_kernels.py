@@ -79,6 +79,27 @@ def _recursions(d: float, y: Any, tiny: float) -> tuple[Any, Any]:
     return one, two
 
 
+@kernel("float64[:](float64, float64, float64[:], float64)")
+def _two_step_printed(d2: float, d4: float, y: Any, tiny: float) -> Any:
+    """Relative differences of p_{i+2}^y from the two-step form as printed
+    (``closed_forms.two_step_printed``; powers by libm's pow as numpy's, squares as products),
+    d2 = d**2 and d4 = d**4 given."""
+    count = max(y.shape[0] - 3, 0)
+    out = np.empty(count)
+    for k in range(count):
+        a, b = y[k], y[k + 1]
+        numerator = (
+            math.pow(b, 5.0)
+            + d2 * (math.pow(a, 3.0) + 2 * (a * a) * b + 3 * a * (b * b) + 4 * math.pow(b, 3.0))
+            + d4 * (2 * math.pow(b, 3.0) + 2 * a + 3 * b)
+        )
+        denominator = d2 - a * b
+        predicted = numerator / (denominator * denominator)
+        scale = abs(predicted)
+        out[k] = abs(y[k + 3] - predicted) / (scale if scale > tiny else tiny)
+    return out
+
+
 @kernel("float64[:](float64[:, :], float64[:, :], float64[:, :], int64)")
 def _right_angles(tractrix: Any, axis: Any, p: Any, n: int) -> Any:
     """max over the angles x_i d_i p_i and x_i d_i p_{i+1} of |cos| measured as Nikolaides'.
@@ -105,6 +126,12 @@ def _right_angles(tractrix: Any, axis: Any, p: Any, n: int) -> Any:
 def recursion_residuals(d: float, y: Any) -> tuple[Any, Any]:
     """(residuals of (13) for p_{i+1}^y, of the two-step form for p_{i+2}^y) on heights y."""
     return _recursions(float(d), np.ascontiguousarray(y, dtype=np.float64), TINY)
+
+
+def two_step_printed_residuals(d: float, y: Any) -> Any:
+    """Residuals of p_{i+2}^y against the printed two-step form (erratum E3) on heights y."""
+    d = float(d)
+    return _two_step_printed(d**2, d**4, np.ascontiguousarray(y, dtype=np.float64), TINY)
 
 
 def right_angle_residuals(tractrix: Any, axis: Any, p: Any, n: int) -> Any:

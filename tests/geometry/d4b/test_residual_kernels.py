@@ -161,3 +161,22 @@ def test_rotation_angles_equal_numpy(seed: int) -> None:
             unit = 4 * np.spacing(np.pi)
             np.testing.assert_allclose(corrected, expected, rtol=0, atol=unit)
             np.testing.assert_allclose(printed, expected_printed, rtol=0, atol=unit)
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_printed_two_step_residuals_equal_numpy(seed: int) -> None:
+    ar = Float64()
+    for data in polygons(seed):
+        for p in (data.p, perturbed(data, seed)[0]):
+            y = p[:, 1]
+            d = float(data.p[1, 0] - data.p[0, 0]) / 2
+            with np.errstate(over="ignore", invalid="ignore"):  # 5th powers of long ranges
+                expected = relative_difference(
+                    ar, y[3:], closed_forms.two_step_printed(d, y[:-3], y[1:-2])
+                )
+            got = residual_kernels.two_step_printed_residuals(d, y)
+            # numpy's power may be its own vectorized one: the predicted heights agree to a few
+            # units in the last place, so the residuals to a few eps
+            eps = np.finfo(np.float64).eps
+            np.testing.assert_allclose(got, expected, rtol=8 * eps, atol=8 * eps)
+    assert residual_kernels.two_step_printed_residuals(0.1, np.ones(3)).shape == (0,)
