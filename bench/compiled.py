@@ -80,7 +80,7 @@ def checks(n: int = 10**6) -> None:
         )
         label = f"compute, method={method}"
         verdict = record_target(
-            f"D4b 10^6 every check, {method}, × copy", paired.ratio, CHECKS_TARGET, "≤"
+            f"D4b {n:,} vertices every check, {method}, × copy", paired.ratio, CHECKS_TARGET, "≤"
         )
         print(f"{ratio_row(label, paired, 'copy')}   {verdict}")
 
