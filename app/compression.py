@@ -44,8 +44,12 @@ class Compress:
         accepts = self.settings.gzip_level > 0 and accepts_gzip(
             request_headers.get(b"accept-encoding", b"").decode("latin-1")
         )
+        static = path.startswith("/static/")
+        if not accepts and not static:  # nothing to do on the way out: no wrapper per message
+            await self.app(scope, receive, send)
+            return
         inm = request_headers.get(b"if-none-match")
-        if path.startswith("/static/") and inm and b'-gzip"' in inm:
+        if static and inm and b'-gzip"' in inm:
             # StaticFiles knows the identity tag only: revalidate the gzip variant against it
             headers = [(k, v) for k, v in scope["headers"] if k.lower() != b"if-none-match"]
             headers.append((b"if-none-match", inm.replace(b'-gzip"', b'"')))
@@ -57,7 +61,7 @@ class Compress:
             nonlocal start
             if message["type"] == "http.response.start":
                 headers = MutableHeaders(scope=message)
-                if path.startswith("/static/") and "cache-control" not in headers:
+                if static and "cache-control" not in headers:
                     headers["Cache-Control"] = "no-cache"
                 if accepts and self._eligible(message["status"], headers):
                     start = message  # held until the whole body is here

@@ -81,8 +81,33 @@ def ratio_row(label: str, paired: Paired, reference_label: str, target: float | 
     """One printed line from ``compare``: median time, median ratio and the target if any."""
     verdict = ""
     if target is not None:
+        TARGETS[f"{label.strip()}, × {reference_label}"] = (paired.ratio, target, "≤")
         verdict = f"   target ≤ {target:g}×: {'met' if paired.ratio <= target else 'NOT met'}"
     return (
         f"  {label:<44} {paired.seconds * 1e3:10.3f} ms   {paired.ratio:8.2f}× "
         f"{reference_label}{verdict}"
     )
+
+
+#: Every issue target measured in this process: label -> (measured, target, "≤" or "≥"), for
+#: the side-by-side summary that ``make bench`` prints last (bench/run.py).
+TARGETS: dict[str, tuple[float, float, str]] = {}
+
+
+def record_target(label: str, measured: float, target: float, sense: str) -> str:
+    """Keep a measured figure with its target; the verdict as printed next to it."""
+    TARGETS[label] = (measured, target, sense)
+    met = measured <= target if sense == "≤" else measured >= target
+    return f"target {sense} {target:g}: {'met' if met else 'NOT met'}"
+
+
+def target_summary() -> str:
+    """Every recorded target, one line each: measured, target, verdict."""
+    lines = [" every target of this run, side by side"]
+    for label, (measured, target, sense) in TARGETS.items():
+        met = measured <= target if sense == "≤" else measured >= target
+        lines.append(
+            f"  {label:<52} {measured:9.3f}   target {sense} {target:<6g} "
+            f"{'met' if met else 'NOT met'}"
+        )
+    return "\n".join(lines)

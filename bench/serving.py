@@ -42,7 +42,7 @@ sys.path.insert(0, str(ROOT))
 
 from app.geometry.precision import Float64
 from app.geometry.smooth import curves as smooth
-from bench.common import sample
+from bench.common import record_target, sample
 from bench.load import SERVER_ENV, free_port
 
 clock = time.perf_counter
@@ -55,6 +55,9 @@ BIG_COUNT = 10**6
 #: JSON response <= 1.3× the encoder alone.
 RPS_TARGET = 0.8
 JSON_TARGET = 1.3
+#: Issue 13: a computed (uncached) small GET against /health on the served configuration
+#: (``python -m app.server``: h11, the service's limits), with every check and with none.
+COMPUTED_TARGETS = {"every check": 0.3, "checks=none": 0.6}
 
 #: wrk script: a new d on every request; the run's first d comes from its argument, so that no
 #: two runs (nor rounds, nor concurrencies) ask for the same curve.
@@ -169,7 +172,9 @@ def _ms(seconds: float) -> str:
     return f"{seconds * 1e3:8.2f} ms"
 
 
-def _verdict(ratio: float, target: float, at_least: bool) -> str:
+def _verdict(ratio: float, target: float, at_least: bool, label: str | None = None) -> str:
+    if label is not None:
+        record_target(label, ratio, target, "≥" if at_least else "≤")
     met = ratio >= target if at_least else ratio <= target
     return f"   target {'≥' if at_least else '≤'} {target:g}×: {'met' if met else 'NOT met'}"
 
@@ -192,7 +197,10 @@ def small_gets(base: str, script: str) -> None:
             ratio = statistics.median(
                 s.rps / b.rps for s, b in zip(loads, runs["bare"], strict=True)
             )
-            verdict = _verdict(ratio, RPS_TARGET, at_least=True) if name == "cached" else ""
+            verdict = ""
+            if name == "cached":
+                label = f"cached 100-vertex D4b GET, c={connections}, × /health"
+                verdict = _verdict(ratio, RPS_TARGET, True, label)
             rps = statistics.median(s.rps for s in loads)
             p50 = statistics.median(s.p50 for s in loads)
             p99 = statistics.median(s.p99 for s in loads)
@@ -276,7 +284,11 @@ def big_response(port: int, count: int, gzip_too: bool) -> None:
         seconds, ratio, size, ref = _paired(port, encoder, path, repeat, headers, inflate)
         references.append(ref)
         targeted = targeted and count == BIG_COUNT  # the issue's target is for 10^6 vertices
-        verdict = _verdict(ratio, JSON_TARGET, at_least=False) if targeted else ""
+        verdict = ""
+        if targeted:
+            verdict = _verdict(
+                ratio, JSON_TARGET, False, f"10^6 vertices, {label.strip()}, × orjson"
+            )
         print(f"  {label:<36}{_ms(seconds)}  {size / 1e6:7.2f} MB  {ratio:6.2f}× orjson{verdict}")
     print(f"  (orjson of the array alone: {_ms(statistics.median(references))})")
 
@@ -301,6 +313,67 @@ def gzip_levels(count: int) -> None:
             f"  level {level}: {len(body) / len(packed):5.2f}× smaller, compress {_ms(seconds)} "
             f"({len(body) / seconds / 1e6:4.0f} MB/s), decompress {_ms(unpack)}"
         )
+
+
+def start_service(port: int) -> subprocess.Popen[bytes]:
+    """The server as ``make run`` starts it (``python -m app.server``), access log off."""
+    from app.server import command
+
+    argv = command("127.0.0.1", port, 1, ["--log-level", "warning", "--no-access-log"])
+    server = subprocess.Popen(argv, cwd=ROOT, env={**os.environ, **SERVER_ENV})
+    for _ in range(200):
+        try:
+            fetch(port, "/health")
+            return server
+        except OSError:
+            time.sleep(0.1)
+    server.terminate()
+    raise RuntimeError("the server did not start")
+
+
+def computed_gets(rounds: int = ROUNDS) -> dict[str, float]:
+    """Computed 100-vertex D4b GETs (a new d each request) against /health, on the served
+    configuration, c=1: median of paired ratios per variant; returns the ratios."""
+    port = free_port()
+    base = f"http://127.0.0.1:{port}"
+    server = start_service(port)
+    scripts: dict[str, str] = {}
+    try:
+        for label, query in (("every check", ""), ("checks=none", "&checks=none")):
+            descriptor, scripts[label] = tempfile.mkstemp(suffix=".lua")
+            with os.fdopen(descriptor, "w") as handle:
+                handle.write(UNIQUE_SCRIPT % (SMALL + query))
+        fetch(port, SMALL)
+        runs: dict[str, list[Load]] = {"bare": [], **{label: [] for label in scripts}}
+        for _ in range(rounds):
+            runs["bare"].append(wrk(base, "/health", 1))
+            for label, script in scripts.items():
+                runs[label].append(wrk(base, SMALL, 1, script))
+    finally:
+        for script in scripts.values():
+            os.unlink(script)
+        server.terminate()
+        server.wait(timeout=20)
+    print(
+        f" computed 100-vertex D4b GET (a new d each request) against GET /health, "
+        f"python -m app.server (h11), c=1, wrk {WRK_SECONDS} s, median of {rounds} rounds"
+    )
+    ratios = {}
+    for name, loads in runs.items():
+        ratio = statistics.median(s.rps / b.rps for s, b in zip(loads, runs["bare"], strict=True))
+        ratios[name] = ratio
+        target = COMPUTED_TARGETS.get(name)
+        verdict = ""
+        if target:
+            label = f"computed 100-vertex D4b GET, {name}, × /health"
+            verdict = "   " + record_target(label, ratio, target, "≥")
+        rps = statistics.median(s.rps for s in loads)
+        p50 = statistics.median(s.p50 for s in loads)
+        print(
+            f"  {name if name != 'bare' else 'GET /health':<20}{rps:9.0f} req/s  p50 {_ms(p50)}"
+            f"  {ratio:6.3f}× /health{verdict}"
+        )
+    return ratios
 
 
 def two_workers(base: str, script: str) -> None:
@@ -348,4 +421,7 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    if sys.argv[1:] == ["computed"]:
+        computed_gets()
+    else:
+        main()

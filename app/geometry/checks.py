@@ -8,6 +8,7 @@ formula is wrong, the check tests the corrected one and carries an ``Erratum`` w
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Any
 
@@ -97,10 +98,9 @@ def check_residuals(
         return not_applicable(
             statement, tolerance, note or "not enough vertices in the range to evaluate it"
         )
-    finite = np.isfinite(values)
     holds: bool | None
-    if np.all(finite):
-        worst = float(np.max(values))
+    worst = float(values.max())
+    if math.isfinite(worst):  # the largest is finite only when every value is
         holds = worst <= tolerance
         if not holds and ar.certified and not _exceeds(ar, residuals, tolerance):
             # on balls ``worst`` is an upper bound: failing needs a lower bound above the
@@ -121,6 +121,7 @@ def check_residuals(
                 note=f"{note}; {undecided}" if note else undecided,
             )
     else:
+        finite = np.isfinite(values)
         # A residual that cannot be computed (an overflow, 0/0) tests nothing: the check fails
         # if a computed residual already exceeds the tolerance, and is otherwise not applicable
         # (never passed). NaN/Infinity stay out of the response.
@@ -202,5 +203,5 @@ def printed_residual(ar: Arithmetic, residuals: Array) -> float | None:
         return None
     # on balls, a rigorous lower bound: positive certifies that the printed formula is false
     values = ar.lower_floats(residuals) if ar.certified else np.abs(ar.to_floats(residuals))
-    worst = float(np.max(values))
-    return worst if np.isfinite(worst) else None
+    worst = float(values.max())
+    return worst if math.isfinite(worst) else None

@@ -17,6 +17,7 @@ MODULES = (
     "app.geometry.d1.construction",
     "app.geometry.d3.construction",
     "app.geometry.d4a.construction",
+    "app.geometry.d4b.closed_forms",
     "app.geometry.d4b.construction",
     "app.geometry.d4b.residual_kernels",
     "app.geometry.surfaces.equation_17_kernel",

@@ -4,7 +4,8 @@
 Python loops of commit 2496aa5 (the constructions before ``app/geometry/compiled.py``), as exact
 hexadecimal floats, for long ranges on both sides of index 0, tilted first sticks, steps next to
 the lowest point (D3) and next to the cusp (D4a). The kernels run the same IEEE operations in
-the same order, so they agree to the bit; the test allows the issue's 4 units in the last place.
+the same order, so they agree to the bit; the test allows the issue's 4 units in the last place,
+which D1 uses: its kernel carries √(1 + m²) from one step to the next instead of a second hypot.
 The mp path keeps its Python loop: it must agree with the kernel to float64 rounding.
 """
 
@@ -65,7 +66,8 @@ def test_kernels_reproduce_the_previous_python_loops(case: dict[str, Any]) -> No
         recorded = np.array([[float.fromhex(v) for v in row] for row in values])
         got = np.asarray(computed[name], dtype=np.float64)[rows].reshape(recorded.shape)
         assert ulps(got, recorded) <= ULPS, name
-        assert np.array_equal(got, recorded), name  # in fact bit for bit
+        if case["construction"] != "d1":  # D1 carries √(1 + m²) instead of a second hypot
+            assert np.array_equal(got, recorded), name  # in fact bit for bit
 
 
 @pytest.mark.parametrize(

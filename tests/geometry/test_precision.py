@@ -94,3 +94,17 @@ def test_sinh_product_where_one_sinh_overflows() -> None:
     np.testing.assert_allclose(got, expected, rtol=1e-12)
     direct = sinh_product(float64, 2.0, a[1:], b[1:])  # no overflow: the direct form
     np.testing.assert_allclose(direct, 2 * np.sinh(a[1:]) * np.sinh(b[1:]), rtol=1e-15)
+
+
+def test_stack_points_is_numpy_stack() -> None:
+    rng = np.random.default_rng(0)
+    x, y = rng.normal(size=7), rng.normal(size=(7, 2))[:, 1]
+    for a, b in ((x, y), (np.arange(7), y), (x[:0], y[:0])):
+        got, expected = precision.stack_points(a, b), np.stack([a, b], axis=1)
+        assert got.dtype == expected.dtype
+        np.testing.assert_array_equal(got, expected)
+    mp = MultiPrecision(20)
+    got = precision.stack_points(mp.array([1, 2]), mp.array([3, 4]))
+    assert got.dtype == object and got.tolist() == [[1, 3], [2, 4]]
+    with pytest.raises(ValueError, match="same shape"):
+        precision.stack_points(x, y[:3])

@@ -35,8 +35,10 @@ and for κ < 0, m+ = (κ − c)(κ + c)/(κ − c√(κ² + 1 − c²)) (both ar
 divided by the other one). The slopes are sequential (each step needs the previous slope), so
 they are computed in a scalar loop over max(|i_min|, |i_max|) steps: in float64 the compiled
 kernel ``_slopes`` (app/geometry/compiled.py; ≈ 20 ns per step, 1.8 µs as a Python loop), in mp
-the loop of ``construct`` over mpmath numbers, the same step in both; the heights are then
-partial sums (numpy cumsum). The step
+the loop of ``construct`` over mpmath numbers, the same step in both, except that the kernel
+takes √(1 + m_{i+1}²) from the step's own numbers instead of a second hypot (``_step``: within
+4 units in the last place of the previous kernel on tests/geometry/previous_constructions.json);
+the heights are then partial sums (numpy cumsum). The step
 is a hyperbolic rotation of (√(1 + m²), m), so vectorizing it means solving the recursion: that
 is the closed form (``hanging_chain_closed_forms``), a theorem the checks compare with this
 construction, so it is not used here; ``method=closed-form`` serves long ranges from it.
@@ -111,30 +113,44 @@ def backward_slope(ar: Arithmetic, k: StepConstants, m: Scalar) -> Scalar:
     return -forward_slope(ar, k, -m)
 
 
-@kernel("float64(float64, float64, float64, float64)")
-def _forward(c: float, one_minus_c2: float, root: float, m: float) -> float:
-    """``forward_slope`` in float64, for the compiled loop: the root m+ of the step's quadratic."""
-    r = math.hypot(1.0, m)
+@kernel("UniTuple(float64, 2)(float64, float64, float64, float64, float64)")
+def _step(c: float, one_minus_c2: float, root: float, m: float, r: float) -> tuple[float, float]:
+    """``forward_slope`` carrying r = √(1 + m²) along: (m_{i+1}, √(1 + m_{i+1}²)) from (m_i, r_i).
+
+    The next r needs no second hypot: m_{i+1} − κ = c√(1 + m_{i+1}²) gives
+    √(1 + m_{i+1}²) = (cκ + √(κ² + 1 − c²))/(1 − c²) for κ ≥ 0 and, with the product of the
+    conjugates, (κ² + 1)/(√(κ² + 1 − c²) − cκ) for κ < 0: sums of positive terms, a few units
+    in the last place of hypot(1, m_{i+1}) (one hypot a step instead of two).
+    """
     kappa = m + c * r if m >= 0 else (one_minus_c2 * m * m - c * c) / (m - c * r)
     big = math.hypot(kappa, root)
     if kappa >= 0:
-        return (kappa + c * big) / one_minus_c2
-    return (kappa - c) * (kappa + c) / (kappa - c * big)
+        return (kappa + c * big) / one_minus_c2, (c * kappa + big) / one_minus_c2
+    following = (kappa - c) * (kappa + c) / (kappa - c * big)
+    if kappa < -1e150:  # κ² would overflow
+        return following, math.hypot(1.0, following)
+    return following, (kappa * kappa + 1) / (big - c * kappa)
 
 
 @kernel("float64[:](float64, float64, float64, float64, int64, int64)")
 def _slopes(c: float, one_minus_c2: float, root: float, m0: float, lo: int, hi: int) -> Array:
     """The float64 recursion of ``construct``: the slopes m_j of the edges j = lo .. hi − 1.
 
-    m_0 is given; edge j follows from edge j − 1 by (D1) solved forwards (``forward_slope``),
-    edge j from edge j + 1 by the reversed chain, m_j = −F(−m_{j+1}) (``backward_slope``).
+    m_0 is given; edge j follows from edge j − 1 by (D1) solved forwards (``forward_slope``,
+    as ``_step``), edge j from edge j + 1 by the reversed chain, m_j = −F(−m_{j+1})
+    (``backward_slope``); √(1 + m²) is even in m, so it carries over both ways.
     """
     slopes = np.zeros(hi - lo)
     slopes[-lo] = m0
+    r0 = math.hypot(1.0, m0)
+    m, r = m0, r0
     for j in range(1, hi):
-        slopes[j - lo] = _forward(c, one_minus_c2, root, slopes[j - 1 - lo])
+        m, r = _step(c, one_minus_c2, root, m, r)
+        slopes[j - lo] = m
+    m, r = -m0, r0
     for j in range(-1, lo - 1, -1):
-        slopes[j - lo] = -_forward(c, one_minus_c2, root, -slopes[j + 1 - lo])
+        m, r = _step(c, one_minus_c2, root, m, r)
+        slopes[j - lo] = -m
     return slopes
 
 

@@ -39,10 +39,8 @@ from app.geometry.checks import (
     Statement,
     check_residuals,
     not_applicable,
-    point_distance,
     printed_residual,
     relative_difference,
-    relative_point_difference,
     relative_to,
 )
 from app.geometry.curve import EVERYTHING, Selection
@@ -51,6 +49,7 @@ from app.geometry.d4b import (
     curvature as d4b_curvature,
     residual_kernels,
 )
+from app.geometry.d4b.residual_kernels import point_distance, relative_point_difference
 from app.geometry.precision import Arithmetic, Array, Scalar
 from app.geometry.tolerances import (
     LOCAL_STEPS,
@@ -263,6 +262,10 @@ def _ratio_erratum(ctx: _Context, p: Array) -> Erratum | None:
 
 def _rotation_angle(ctx: _Context, p: Array, axis: Array) -> Check:
     ar, n = ctx.ar, ctx.n
+    if ar.mode == "float64":  # the same residuals in one compiled pass
+        corrected, printed_angles = residual_kernels.rotation_angles(ctx.d, p, axis, n)
+        erratum = Erratum(*ERRATUM_ANGLE, printed_residual=printed_residual(ar, printed_angles))
+        return ctx.check(ROTATION_ANGLE, 1, corrected, erratum)
     a = axis[: n - 1] - p[1:n]  # x_{i−1} − p_i
     b = axis[1:n] - p[1:n]  # x_i − p_i
     angle = _signed_angle(ar, a, b)
@@ -290,7 +293,12 @@ def _recursion(ctx: _Context, p: Array) -> Check:
 def _two_step(ctx: _Context, p: Array) -> Check:
     y = p[:, 1]
     ar = ctx.ar
-    if ar.mode == "mp" or float(np.max(abs(y))) < 1e60:  # the printed form has 7th powers
+    if ar.mode == "float64" and float(np.max(abs(y))) < 1e60:  # the same, compiled
+        printed_residuals = residual_kernels.two_step_printed_residuals(ctx.d, y)
+        erratum = Erratum(
+            *ERRATUM_TWO_STEP, printed_residual=printed_residual(ar, printed_residuals)
+        )
+    elif ar.mode == "mp" or float(np.max(abs(y))) < 1e60:  # the printed form has 7th powers
         printed = kinematic_closed_forms.two_step_printed(ctx.d, y[:-3], y[1:-2])
         erratum = Erratum(
             *ERRATUM_TWO_STEP,

@@ -19,8 +19,11 @@ the vertical one advanced by the non-integer index τ = ln(tan(β0/2))/L, so p_i
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
+from app.geometry.compiled import kernel
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 
 
@@ -261,7 +264,26 @@ def circumscribed_gauss_image_printed(
 
 
 def pole_by_inversion(before: Array, after: Array) -> Array:
-    """(20), first form: 2(ñ_{i−1} + ñ_i)/|ñ_{i−1} + ñ_i|², the midpoint inverted in the circle."""
+    """(20), first form: 2(ñ_{i−1} + ñ_i)/|ñ_{i−1} + ñ_i|², the midpoint inverted in the circle.
+
+    float64 points in one compiled pass (``_pole_by_inversion``, the same operations), others
+    with numpy.
+    """
+    if before.dtype == np.float64 and after.dtype == np.float64:
+        return _pole_by_inversion(before, after)
     total = before + after
     squared = total[:, 0] * total[:, 0] + total[:, 1] * total[:, 1]
     return stack_points(2 * total[:, 0] / squared, 2 * total[:, 1] / squared)
+
+
+@kernel("float64[:, :](float64[:, :], float64[:, :])")
+def _pole_by_inversion(before: Any, after: Any) -> Any:
+    """``pole_by_inversion`` row by row: t = b + a, 2t/(t^x t^x + t^y t^y)."""
+    out = np.empty((before.shape[0], 2))
+    for k in range(before.shape[0]):
+        tx = before[k, 0] + after[k, 0]
+        ty = before[k, 1] + after[k, 1]
+        squared = tx * tx + ty * ty
+        out[k, 0] = 2 * tx / squared
+        out[k, 1] = 2 * ty / squared
+    return out

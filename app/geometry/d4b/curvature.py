@@ -37,11 +37,10 @@ from app.geometry.checks import (
     Statement,
     check_residuals,
     not_applicable,
-    point_distance,
     printed_residual,
-    relative_point_difference,
 )
-from app.geometry.d4b import closed_forms as kinematic_closed_forms
+from app.geometry.d4b import closed_forms as kinematic_closed_forms, residual_kernels
+from app.geometry.d4b.residual_kernels import point_distance, relative_point_difference
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 from app.geometry.surfaces.ring_curvature import (
@@ -282,11 +281,9 @@ def evaluate(
     )
     edges = p[1:] - p[:-1]
     slope = edges[:, 1] / edges[:, 0]  # k_{i+1} of the edge p_i p_{i+1}, eq. (12)
-    from_slope = kinematic_closed_forms.normal_from_slope(ar, slope)
     slope_printed = kinematic_closed_forms.normal_from_slope_printed(ar, slope)
     rotated = stack_points(-nt[:, 1], nt[:, 0])
     inverted = kinematic_closed_forms.pole_by_inversion(c[:-1], c[1:])  # i_min .. i_max + 1
-    del from_slope
     return [
         equation_17_check(
             ar,
@@ -344,6 +341,8 @@ def evaluate(
 
 def _edge_resolution(ar: Arithmetic, points: Array) -> Array:
     """|p_{i+1} − p_i| / (|p_i| + |p_{i+1}|) per edge (coordinates summed): at most 1."""
+    if ar.mode == "float64":  # one compiled pass (the length within 2 ulp of hypot)
+        return residual_kernels.edge_resolution(points)
     edges = points[1:] - points[:-1]
     return ar.hypot(edges[:, 0], edges[:, 1]) / magnitude(points[:-1], points[1:])
 
@@ -354,6 +353,8 @@ def _along(ar: Arithmetic, vectors: Array, points: Array) -> Array:
     |v_i × e_i| / (|p_i| + |p_{i+1}|), or 1 where v_i points against the edge: 0 when v_i is
     the unit vector of the edge's direction (the line of slope k_{i+1} through the centre).
     """
+    if ar.mode == "float64":  # the same operations in one compiled pass
+        return residual_kernels.along(vectors, points)
     edges = points[1:] - points[:-1]
     crossed = abs(vectors[:, 0] * edges[:, 1] - vectors[:, 1] * edges[:, 0])
     residual = crossed / magnitude(points[:-1], points[1:])

@@ -8,17 +8,46 @@ here compute the same residual arrays entry by entry, with the same operations i
 (tests/geometry/d4b/test_residual_kernels.py). They hold the proof's formulas, as
 ``closed_forms`` does, and take the polygons as given (arrays in, residual arrays out): the
 construction is never consulted here. The mp path keeps the numpy/mpmath evaluation.
+
+The distances between two polygons (``point_distance``, ``relative_point_difference``) take
+√(x² + y²) where neither square can overflow or lose its bits to underflow, instead of libm's
+hypot (50–90 ns an entry here, most of the checks' time at 10^6 vertices): within 2 units in the
+last place of hypot, which only residuals at rounding level see; the mp path keeps ``ar.hypot``.
 """
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
 
-from app.geometry.compiled import kernel
+from app.geometry import checks
+from app.geometry.compiled import kernel, length
+from app.geometry.precision import Arithmetic, Array
 
 TINY = float(np.finfo(np.float64).tiny)
+
+
+@kernel("float64[:](float64[:, :], float64[:, :])")
+def _distances(a: Any, b: Any) -> Any:
+    """|a_k − b_k| for each row k of two (m, 2) arrays."""
+    out = np.empty(a.shape[0])
+    for k in range(a.shape[0]):
+        out[k] = length(a[k, 0] - b[k, 0], a[k, 1] - b[k, 1])
+    return out
+
+
+@kernel("float64[:](float64[:, :], float64[:, :], float64)")
+def _relative_distances(computed: Any, expected: Any, tiny: float) -> Any:
+    """|computed_k − expected_k| / max(|expected_k|, tiny) for each row k."""
+    out = np.empty(computed.shape[0])
+    for k in range(computed.shape[0]):
+        ex, ey = expected[k, 0], expected[k, 1]
+        scale = length(ex, ey)
+        scale = scale if scale > tiny else tiny
+        out[k] = length(computed[k, 0] - ex, computed[k, 1] - ey) / scale
+    return out
 
 
 @kernel("UniTuple(float64[:], 2)(float64, float64[:], float64)")
@@ -50,6 +79,27 @@ def _recursions(d: float, y: Any, tiny: float) -> tuple[Any, Any]:
     return one, two
 
 
+@kernel("float64[:](float64, float64, float64[:], float64)")
+def _two_step_printed(d2: float, d4: float, y: Any, tiny: float) -> Any:
+    """Relative differences of p_{i+2}^y from the two-step form as printed
+    (``closed_forms.two_step_printed``; powers by libm's pow as numpy's, squares as products),
+    d2 = d**2 and d4 = d**4 given."""
+    count = max(y.shape[0] - 3, 0)
+    out = np.empty(count)
+    for k in range(count):
+        a, b = y[k], y[k + 1]
+        numerator = (
+            math.pow(b, 5.0)
+            + d2 * (math.pow(a, 3.0) + 2 * (a * a) * b + 3 * a * (b * b) + 4 * math.pow(b, 3.0))
+            + d4 * (2 * math.pow(b, 3.0) + 2 * a + 3 * b)
+        )
+        denominator = d2 - a * b
+        predicted = numerator / (denominator * denominator)
+        scale = abs(predicted)
+        out[k] = abs(y[k + 3] - predicted) / (scale if scale > tiny else tiny)
+    return out
+
+
 @kernel("float64[:](float64[:, :], float64[:, :], float64[:, :], int64)")
 def _right_angles(tractrix: Any, axis: Any, p: Any, n: int) -> Any:
     """max over the angles x_i d_i p_i and x_i d_i p_{i+1} of |cos| measured as Nikolaides'.
@@ -78,6 +128,12 @@ def recursion_residuals(d: float, y: Any) -> tuple[Any, Any]:
     return _recursions(float(d), np.ascontiguousarray(y, dtype=np.float64), TINY)
 
 
+def two_step_printed_residuals(d: float, y: Any) -> Any:
+    """Residuals of p_{i+2}^y against the printed two-step form (erratum E3) on heights y."""
+    d = float(d)
+    return _two_step_printed(d**2, d**4, np.ascontiguousarray(y, dtype=np.float64), TINY)
+
+
 def right_angle_residuals(tractrix: Any, axis: Any, p: Any, n: int) -> Any:
     """Nikolaides' right angles at d_i (to p_i and to p_{i+1}) for i = 0 .. n − 1, the larger."""
 
@@ -85,3 +141,83 @@ def right_angle_residuals(tractrix: Any, axis: Any, p: Any, n: int) -> Any:
         return np.ascontiguousarray(points, dtype=np.float64)
 
     return _right_angles(f64(tractrix), f64(axis), f64(p), n)
+
+
+@kernel("UniTuple(float64[:], 2)(float64, float64[:, :], float64[:, :], int64)")
+def _rotation_angles(d: float, p: Any, axis: Any, n: int) -> tuple[Any, Any]:
+    """Theorem 4's rotation angle at p_i, i = 1 .. n − 1: |angle − 2 atan2(d, p_i^y)| for the
+    angle between x_{i−1} − p_i and x_i − p_i (corrected), and for x_i − p_i, x_{i+1} − p_i
+    (printed); each angle atan2(a × b, a · b) as ``checks._signed_angle``."""
+    count = max(n - 1, 0)
+    corrected = np.empty(count)
+    printed = np.empty(count)
+    for k in range(1, n):
+        px, py = p[k, 0], p[k, 1]
+        formula = 2 * math.atan2(d, py)
+        ax, ay = axis[k - 1, 0] - px, axis[k - 1, 1] - py
+        bx, by = axis[k, 0] - px, axis[k, 1] - py
+        corrected[k - 1] = abs(math.atan2(ax * by - ay * bx, ax * bx + ay * by) - formula)
+        cx, cy = axis[k + 1, 0] - px, axis[k + 1, 1] - py
+        printed[k - 1] = abs(math.atan2(bx * cy - by * cx, bx * cx + by * cy) - formula)
+    return corrected, printed
+
+
+@kernel("float64[:](float64[:, :], float64[:, :])")
+def _along(vectors: Any, points: Any) -> Any:
+    """``curvature._along`` row by row: |v × e| / (|p_i| + |p_{i+1}|), 1 where v · e < 0."""
+    out = np.empty(vectors.shape[0])
+    for k in range(vectors.shape[0]):
+        ex = points[k + 1, 0] - points[k, 0]
+        ey = points[k + 1, 1] - points[k, 1]
+        vx, vy = vectors[k, 0], vectors[k, 1]
+        size = abs(points[k, 0]) + abs(points[k, 1]) + abs(points[k + 1, 0]) + abs(points[k + 1, 1])
+        residual = abs(vx * ey - vy * ex) / size
+        out[k] = 1.0 if vx * ex + vy * ey < 0 else residual
+    return out
+
+
+@kernel("float64[:](float64[:, :])")
+def _edge_resolution(points: Any) -> Any:
+    """``curvature._edge_resolution``: |p_{i+1} − p_i| / (|p_i| + |p_{i+1}|) per edge, the
+    length by ``compiled.length``."""
+    out = np.empty(max(points.shape[0] - 1, 0))
+    for k in range(points.shape[0] - 1):
+        ex = points[k + 1, 0] - points[k, 0]
+        ey = points[k + 1, 1] - points[k, 1]
+        size = abs(points[k, 0]) + abs(points[k, 1]) + abs(points[k + 1, 0]) + abs(points[k + 1, 1])
+        out[k] = length(ex, ey) / size
+    return out
+
+
+def rotation_angles(d: float, p: Any, axis: Any, n: int) -> tuple[Any, Any]:
+    """(corrected, printed) residuals of Theorem 4's rotation angle at i = 1 .. n − 1."""
+    return _rotation_angles(float(d), _points(p), _points(axis), n)
+
+
+def along(vectors: Any, points: Any) -> Any:
+    """How far unit vectors v_i are from the edges p_i p_{i+1} (``curvature._along``), float64."""
+    return _along(_points(vectors), _points(points))
+
+
+def edge_resolution(points: Any) -> Any:
+    """|e_i| / (|p_i| + |p_{i+1}|) per edge (``curvature._edge_resolution``), float64."""
+    return _edge_resolution(_points(points))
+
+
+def _points(points: Any) -> Any:
+    return np.ascontiguousarray(points, dtype=np.float64)
+
+
+def point_distance(ar: Arithmetic, a: Array, b: Array) -> Array:
+    """``checks.point_distance``: |a_i − b_i| of two ``(m, 2)`` arrays, compiled in float64."""
+    if ar.mode != "float64":
+        return checks.point_distance(ar, a, b)
+    return _distances(_points(a), _points(b))
+
+
+def relative_point_difference(ar: Arithmetic, computed: Array, expected: Array) -> Array:
+    """``checks.relative_point_difference`` (the difference relative to |expected_i|), compiled
+    in float64."""
+    if ar.mode != "float64":
+        return checks.relative_point_difference(ar, computed, expected)
+    return _relative_distances(_points(computed), _points(expected), TINY)

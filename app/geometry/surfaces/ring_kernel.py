@@ -17,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from app.geometry.compiled import kernel
+from app.geometry.compiled import kernel, length3
 from app.geometry.curvature import FaceCurvatures
 
 TINY = float(np.finfo(np.float64).tiny)
@@ -91,9 +91,8 @@ def _ring(meridian: Any, gauss: Any, cos: float, sin: float, tiny: float) -> Any
         out[2, k] = a_fn
         out[3, k] = a_n / size
         out[4, k] = -a_fn / size
-        out[5, k] = math.hypot(math.hypot(crossed[0], crossed[1]), crossed[2]) / (
-            both if both > tiny else tiny
-        )
+        # a residual: the fast length (within 2 ulp of the nested hypot, ``compiled.length3``)
+        out[5, k] = length3(crossed[0], crossed[1], crossed[2]) / (both if both > tiny else tiny)
         out[6, k] = mag_f
         out[7, k] = mag_n
         out[8, k] = (f_1 * n_2 + n_1 * f_2) / 4

@@ -5,10 +5,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from app.geometry import nikolaides
+from app.geometry import checks, nikolaides
 from app.geometry.checks import relative_difference
 from app.geometry.d4b import closed_forms, discretization as d4b, residual_kernels
-from app.geometry.precision import Float64
+from app.geometry.precision import Float64, MultiPrecision, stack_points
 
 
 def polygons(seed: int) -> list[d4b.D4bPolygons]:
@@ -64,3 +64,119 @@ def test_right_angle_residuals_equal_numpy(seed: int) -> None:
 def test_short_polygons_give_empty_residuals() -> None:
     one, two = residual_kernels.recursion_residuals(0.1, np.array([1.0, 1.1]))
     assert one.shape == (0,) and two.shape == (0,)
+
+
+def within_ulps(got: np.ndarray, expected: np.ndarray, ulps: int) -> bool:
+    """Entry by entry within ``ulps`` units in the last place of the larger (NaN where NaN)."""
+    same_nan = np.isnan(got) == np.isnan(expected)
+    both = ~np.isnan(got)
+    scale = np.spacing(np.maximum(abs(got[both]), abs(expected[both])))
+    return bool(np.all(same_nan) and np.all(abs(got[both] - expected[both]) <= ulps * scale))
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_point_distances_within_two_ulps_of_hypot(seed: int) -> None:
+    ar = Float64()
+    rng = np.random.default_rng(seed)
+    size = 4000
+    # magnitudes from subnormal to near overflow, zeros, and equal points
+    a = rng.normal(size=(size, 2)) * 10.0 ** rng.integers(-320, 300, size=(size, 2))
+    b = a * (1 + rng.normal(size=(size, 2)) * 10.0 ** rng.integers(-16, 1, size=(size, 2)))
+    a[:10], b[5:15] = 0.0, a[5:15]
+    for got, expected in (
+        (residual_kernels.point_distance(ar, a, b), checks.point_distance(ar, a, b)),
+        (
+            residual_kernels.relative_point_difference(ar, a, b),
+            checks.relative_point_difference(ar, a, b),
+        ),
+    ):
+        assert within_ulps(got, expected, 2)
+    for data in polygons(seed):
+        for built, closed in ((data.p, data.closed_p), (data.tractrix, data.closed_tractrix)):
+            got = residual_kernels.relative_point_difference(ar, built, closed)
+            assert within_ulps(got, checks.relative_point_difference(ar, built, closed), 2)
+
+
+def test_point_distances_in_mp_are_the_generic_ones() -> None:
+    ar = MultiPrecision(30)
+    a = stack_points(ar.array([1, 3]), ar.array([2, 4]))
+    b = stack_points(ar.array([1, 0]), ar.array([1, 0]))
+    assert list(residual_kernels.point_distance(ar, a, b)) == [1, 5]
+    assert list(residual_kernels.relative_point_difference(ar, a, b)) == list(
+        checks.relative_point_difference(ar, a, b)
+    )
+
+
+@pytest.mark.parametrize("seed", [1, 2])
+def test_pole_by_inversion_equals_numpy(seed: int) -> None:
+    rng = np.random.default_rng(seed)
+    before, after = rng.normal(size=(500, 2)), rng.normal(size=(500, 2))
+    total = before + after
+    squared = total[:, 0] * total[:, 0] + total[:, 1] * total[:, 1]
+    expected = np.stack([2 * total[:, 0] / squared, 2 * total[:, 1] / squared], axis=1)
+    np.testing.assert_array_equal(closed_forms.pole_by_inversion(before, after), expected)
+    contact = rng.normal(size=(50, 2))  # views of one array, as the check passes them
+    np.testing.assert_array_equal(
+        closed_forms.pole_by_inversion(contact[:-1], contact[1:]),
+        closed_forms.pole_by_inversion(contact[:-1].copy(), contact[1:].copy()),
+    )
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_along_and_edge_resolution_equal_numpy(seed: int) -> None:
+    """The edge-direction residual of (18) bit for bit, the edge resolution within 2 ulp."""
+    rng = np.random.default_rng(seed)
+    points = rng.normal(size=(300, 2)) * 10.0 ** rng.integers(-5, 5, size=(300, 1))
+    vectors = rng.normal(size=(299, 2))
+    edges = points[1:] - points[:-1]
+    size = abs(points[:-1, 0]) + abs(points[:-1, 1]) + abs(points[1:, 0]) + abs(points[1:, 1])
+    crossed = abs(vectors[:, 0] * edges[:, 1] - vectors[:, 1] * edges[:, 0])
+    backwards = vectors[:, 0] * edges[:, 0] + vectors[:, 1] * edges[:, 1] < 0
+    assert backwards.any() and not backwards.all()
+    np.testing.assert_array_equal(
+        residual_kernels.along(vectors, points), np.where(backwards, 1.0, crossed / size)
+    )
+    expected = np.hypot(edges[:, 0], edges[:, 1]) / size
+    assert within_ulps(residual_kernels.edge_resolution(points), expected, 2)
+    assert residual_kernels.edge_resolution(points[:1]).shape == (0,)
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_rotation_angles_equal_numpy(seed: int) -> None:
+    """Theorem 4's rotation angle, corrected and printed, as the numpy evaluation (atan2 of
+    libm in both: equal to a few units of the angles, which are below π)."""
+    for data in polygons(seed):
+        n = len(data.p) - 1
+        d = float(data.p[1, 0] - data.p[0, 0]) / 2
+        for p, _, axis in ((data.p, data.tractrix, data.axis), perturbed(data, seed)):
+            corrected, printed = residual_kernels.rotation_angles(d, p, axis, n)
+            formula = 2 * np.arctan2(d, p[1:n, 1])
+
+            def angle(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+                cross = a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]
+                return np.arctan2(cross, a[:, 0] * b[:, 0] + a[:, 1] * b[:, 1])
+
+            expected = abs(angle(axis[: n - 1] - p[1:n], axis[1:n] - p[1:n]) - formula)
+            expected_printed = abs(angle(axis[1:n] - p[1:n], axis[2 : n + 1] - p[1:n]) - formula)
+            unit = 4 * np.spacing(np.pi)
+            np.testing.assert_allclose(corrected, expected, rtol=0, atol=unit)
+            np.testing.assert_allclose(printed, expected_printed, rtol=0, atol=unit)
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_printed_two_step_residuals_equal_numpy(seed: int) -> None:
+    ar = Float64()
+    for data in polygons(seed):
+        for p in (data.p, perturbed(data, seed)[0]):
+            y = p[:, 1]
+            d = float(data.p[1, 0] - data.p[0, 0]) / 2
+            with np.errstate(over="ignore", invalid="ignore"):  # 5th powers of long ranges
+                expected = relative_difference(
+                    ar, y[3:], closed_forms.two_step_printed(d, y[:-3], y[1:-2])
+                )
+            got = residual_kernels.two_step_printed_residuals(d, y)
+            # numpy's power may be its own vectorized one: the predicted heights agree to a few
+            # units in the last place, so the residuals to a few eps
+            eps = np.finfo(np.float64).eps
+            np.testing.assert_allclose(got, expected, rtol=8 * eps, atol=8 * eps)
+    assert residual_kernels.two_step_printed_residuals(0.1, np.ones(3)).shape == (0,)
