@@ -56,5 +56,6 @@ EXPOSE 8000
 STOPSIGNAL SIGTERM
 HEALTHCHECK --interval=30s --timeout=3s --start-period=10s --retries=3 \
     CMD ["python", "-c", "import os, urllib.request; urllib.request.urlopen('http://127.0.0.1:' + os.environ['PORT'] + '/health', timeout=2)"]
-# app.server execs uvicorn (PID 1 then, so SIGTERM reaches it) with the limits of `make run`
+# app.server (PID 1) starts $WORKERS uvicorn workers, each on its own SO_REUSEPORT socket, with
+# the limits of `make run`, restarts a worker that dies and forwards SIGTERM to them
 CMD ["python", "-m", "app.server"]

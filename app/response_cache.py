@@ -25,6 +25,13 @@ that entry at once, without routing, validation or the thread pool. The raw quer
 determines the validated query and hence the canonical key, so this is the same answer; the
 alias table (raw request → canonical key) is bounded by ``ALIASES`` and only ever points at
 keys whose computation succeeded.
+
+Identical requests in flight are computed once: a GET to a computational path whose raw path
+and query string are being computed for an earlier request waits for that request to finish
+(on the event loop: no thread, no admission charge, no place in the gate's queue), bounded by
+its own deadline, and is then answered from the entry the first one kept. When the first one
+kept nothing (an error, a refusal, a body over ``DCOSH_RESPONSE_CACHE_ENTRY_BYTES``) or the
+deadline passes first, the waiting request goes on as if it had arrived alone.
 """
 
 from __future__ import annotations
@@ -32,13 +39,16 @@ from __future__ import annotations
 import gzip
 import hashlib
 import threading
+import time
 from collections import OrderedDict
 from dataclasses import dataclass, field
 
+import anyio
 from starlette.responses import Response
 from starlette.types import ASGIApp, Receive, Scope, Send
 
 from app import __version__
+from app.admission import current, is_computing
 from app.settings import Settings
 
 #: Media types worth compressing (everything else here is binary float data or a GLB).
@@ -98,6 +108,8 @@ class ResponseCache:
         """Of those, found by ``lookup``."""
         self.misses = 0
         self.evictions = 0
+        self.coalesced = 0
+        """Requests answered with the entry of an identical request they waited for."""
 
     def __len__(self) -> int:
         return len(self._entries)
@@ -284,12 +296,22 @@ class FastPath:
         self.app = app
         self.cache = cache
         self.settings = settings
+        self._flights: dict[tuple[str, bytes], anyio.Event] = {}
+        """The raw GETs being computed now, each with the event set when it is answered (only
+        touched on the event loop)."""
 
     async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
         if scope["type"] != "http" or scope["method"] != "GET":
             await self.app(scope, receive, send)
             return
-        found = self.cache.lookup((scope["path"], scope["query_string"]))
+        raw = (scope["path"], scope["query_string"])
+        found = self.cache.lookup(raw)
+        if found is None and self.cache.max_bytes and is_computing(raw[0]):
+            flight = self._flights.get(raw)
+            if flight is None:
+                await self._lead(raw, scope, receive, send)
+                return
+            found = await self._follow(raw, flight)
         if found is None:
             await self.app(scope, receive, send)
             return
@@ -310,3 +332,29 @@ class FastPath:
                 None if accept is None else accept.decode("latin-1"),
             )
         await answer.response()(scope, receive, send)
+
+    async def _lead(
+        self, raw: tuple[str, bytes], scope: Scope, receive: Receive, send: Send
+    ) -> None:
+        """Compute ``raw`` while identical requests arriving meanwhile wait for the result."""
+        done = anyio.Event()
+        self._flights[raw] = done
+        try:
+            await self.app(scope, receive, send)
+        finally:
+            del self._flights[raw]
+            done.set()
+
+    async def _follow(
+        self, raw: tuple[str, bytes], flight: anyio.Event
+    ) -> tuple[str, Entry] | None:
+        """Wait for the identical request in flight (until this request's deadline), then its
+        kept entry (None when it kept none)."""
+        ticket = current()
+        timeout = self.settings.time_limit if ticket is None else ticket.deadline - time.monotonic()
+        with anyio.move_on_after(max(timeout, 0.0)):
+            await flight.wait()
+        found = self.cache.lookup(raw)
+        if found is not None:
+            self.cache.coalesced += 1  # only ever counted on the event loop
+        return found
