@@ -9,7 +9,11 @@ app/limits.py before any work); a charge is refused with a 503 and ``Retry-After
 - the estimated seconds cannot finish before the ticket's deadline, or
 - the estimated seconds or bytes already admitted on this worker plus this charge exceed the
   worker's budget (``DCOSH_ADMISSION_SECONDS``, ``DCOSH_ADMISSION_BYTES``); a worker with
-  nothing admitted always admits one request that fits the limits.
+  nothing admitted always admits one request that fits the limits. Only a request's first
+  charge is measured against the budget: a request that charges again as it goes (GET
+  /relations, one charge per row) is not refused half-way, after its first rows were computed
+  (a slow 503 for wasted work); it may take the worker past its budget by its own cost, which
+  its limits bound.
 
 In front of the thread pool, ``AdmissionGate`` bounds the queue: at most
 ``DCOSH_COMPUTE_THREADS + DCOSH_ADMISSION_QUEUE`` computational requests (paths that may
@@ -150,7 +154,7 @@ class Admission:
             others = self.admitted - (0 if first else 1)
             over_time = (self.seconds + seconds) * self.slowdown > settings.admission_seconds
             over_memory = self.bytes + nbytes > settings.admission_bytes
-            if others > 0 and (over_time or over_memory):
+            if first and others > 0 and (over_time or over_memory):
                 self.refused += 1
                 what = "time" if over_time else "memory"
                 raise OverloadedError(
