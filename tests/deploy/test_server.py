@@ -89,3 +89,18 @@ def _state(pid: int) -> str:
         return Path(f"/proc/{pid}/stat").read_text().split()[2]
     except FileNotFoundError:
         return "gone"
+
+
+def test_a_worker_freezes_what_the_import_made_and_collects_young_objects_less_often() -> None:
+    import gc
+
+    from app.server import GC_THRESHOLDS, tune_gc
+
+    thresholds = gc.get_threshold()
+    try:
+        tune_gc()
+        assert gc.get_threshold() == GC_THRESHOLDS == (10_000, 10, 10)
+        assert gc.get_freeze_count() > 10_000  # the modules, schemas and kernels imported
+    finally:
+        gc.unfreeze()
+        gc.set_threshold(*thresholds)
