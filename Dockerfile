@@ -6,11 +6,14 @@
 # read from /srv/.numba-cache). Stop with at least 30 s of grace (docker stop -t 30,
 # compose's stop_grace_period): uvicorn drains for up to 25 s after SIGTERM.
 #
-# Base images: pass digests to pin them, e.g.
-#   docker build --build-arg PYTHON_IMAGE=python:3.11-slim-bookworm@sha256:<digest> \
-#                --build-arg NODE_IMAGE=node:24-bookworm-slim@sha256:<digest> .
-# (`docker buildx imagetools inspect <tag>` prints the digest). The defaults are tags: no
-# digest could be verified from the machine this file was written on (no registry access).
+# Base images: tags by default, to be pinned by digest on a machine with registry access (none
+# was verifiable where this file was written, and a digest is never written from memory):
+#   docker buildx imagetools inspect python:3.11-slim-bookworm --format '{{json .Manifest.Digest}}'
+#   docker buildx imagetools inspect node:24-bookworm-slim --format '{{json .Manifest.Digest}}'
+# print each tag's multi-platform index digest ("sha256:<64 hex>"); then either pass them,
+#   docker build --build-arg PYTHON_IMAGE=python:3.11-slim-bookworm@sha256:<64 hex> \
+#                --build-arg NODE_IMAGE=node:24-bookworm-slim@sha256:<64 hex> .
+# or write them into the two ARG defaults below (tests/deploy/test_dockerfile.py checks the form).
 ARG PYTHON_IMAGE=python:3.11-slim-bookworm
 # Node 24: the active LTS line (Node 20 reached its end of life in April 2026)
 ARG NODE_IMAGE=node:24-bookworm-slim
@@ -56,5 +59,6 @@ EXPOSE 8000
 STOPSIGNAL SIGTERM
 HEALTHCHECK --interval=30s --timeout=3s --start-period=10s --retries=3 \
     CMD ["python", "-c", "import os, urllib.request; urllib.request.urlopen('http://127.0.0.1:' + os.environ['PORT'] + '/health', timeout=2)"]
-# app.server execs uvicorn (PID 1 then, so SIGTERM reaches it) with the limits of `make run`
+# app.server (PID 1) starts $WORKERS uvicorn workers, each on its own SO_REUSEPORT socket, with
+# the limits of `make run`, restarts a worker that dies and forwards SIGTERM to them
 CMD ["python", "-m", "app.server"]

@@ -88,8 +88,9 @@ nginx:
 # checks but keeps about 2x the memory under make load's concurrent traffic, so it is not used.
 SERVER_ENV := MALLOC_ARENA_MAX=2 MALLOC_MMAP_THRESHOLD_=131072 MALLOC_TRIM_THRESHOLD_=8388608
 
-# app/server.py adds uvicorn's limits: h11 with a 64 KiB header block, 5 s keep-alive, a 25 s
-# graceful shutdown, at most 1024 connections per worker (docs/reliability.md).
+# app/server.py starts WORKERS uvicorn workers, each on its own SO_REUSEPORT socket (the kernel
+# spreads connections over them), with uvicorn's limits: h11 with a 64 KiB header block, 5 s
+# keep-alive, a 25 s graceful shutdown, at most 1024 connections per worker (docs/reliability.md).
 run: $(BIN)/.runtime-installed $(VENDOR)/.built warm
 	$(SERVER_ENV) $(BIN)/python -m app.server --host $(HOST) --port $(PORT) --workers $(WORKERS)
 

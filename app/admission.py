@@ -1,6 +1,6 @@
 """Admission control, deadlines from arrival, and bounded I/O for each worker.
 
-Every HTTP request gets a ``Ticket`` when it arrives (``BoundedIO``, the outermost middleware):
+Every HTTP request gets a ``Ticket`` when it arrives (``app.bounded_io.BoundedIO``):
 its deadline is arrival + ``DCOSH_TIME_LIMIT``, so time spent waiting counts. Computing code
 charges the ticket with its estimated cost (``charge``, called by the budget checks of
 app/limits.py before any work); a charge is refused with a 503 and ``Retry-After`` when
@@ -9,18 +9,19 @@ app/limits.py before any work); a charge is refused with a 503 and ``Retry-After
 - the estimated seconds cannot finish before the ticket's deadline, or
 - the estimated seconds or bytes already admitted on this worker plus this charge exceed the
   worker's budget (``DCOSH_ADMISSION_SECONDS``, ``DCOSH_ADMISSION_BYTES``); a worker with
-  nothing admitted always admits one request that fits the limits.
+  nothing admitted always admits one request that fits the limits. Only a request's first
+  charge is measured against the budget: a request that charges again as it goes (GET
+  /relations, one charge per row) is not refused half-way, after its first rows were computed
+  (a slow 503 for wasted work); it may take the worker past its budget by its own cost, which
+  its limits bound.
 
 In front of the thread pool, ``AdmissionGate`` bounds the queue: at most
 ``DCOSH_COMPUTE_THREADS + DCOSH_ADMISSION_QUEUE`` computational requests (paths that may
 compute) are in flight per worker; the next one is a 503 at once. Catalogs, /health, /ready and
 answers of the response cache never pass the gate (the cache's fast path sits in front of it).
 
-``BoundedIO`` also caps request bodies (``DCOSH_MAX_BODY_BYTES``: a declared Content-Length over
-the cap is a 413 before anything is read, a chunked body is cut off with a 413 as soon as it
-passes the cap), bounds the time to receive a body (``DCOSH_BODY_TIMEOUT``: 408) and the time
-one send may wait for a client that does not read (``DCOSH_SEND_TIMEOUT``: the connection is
-dropped).
+Tickets are handed out by ``app.bounded_io.BoundedIO``, the outermost middleware, which also
+bounds request bodies and sends.
 
 Estimates are CPU seconds on a free core; ``Admission.slowdown`` learns how much longer the
 host takes now (wall over estimated seconds of computations that ran alone on the worker, at
@@ -48,9 +49,8 @@ from contextlib import contextmanager
 from dataclasses import dataclass, field
 from typing import Any
 
-import anyio
 import orjson
-from starlette.types import ASGIApp, Message, Receive, Scope, Send
+from starlette.types import ASGIApp, Receive, Scope, Send
 
 from app.settings import Settings
 
@@ -154,7 +154,7 @@ class Admission:
             others = self.admitted - (0 if first else 1)
             over_time = (self.seconds + seconds) * self.slowdown > settings.admission_seconds
             over_memory = self.bytes + nbytes > settings.admission_bytes
-            if others > 0 and (over_time or over_memory):
+            if first and others > 0 and (over_time or over_memory):
                 self.refused += 1
                 what = "time" if over_time else "memory"
                 raise OverloadedError(
@@ -355,124 +355,6 @@ async def send_problem(
 
 def overloaded_headers(retry_after: int) -> list[tuple[bytes, bytes]]:
     return [(b"retry-after", str(retry_after).encode()), (b"cache-control", b"no-store")]
-
-
-class _BodyError(Exception):
-    def __init__(self, status: int, kind: str, title: str, detail: str) -> None:
-        self.status, self.kind, self.title, self.detail = status, kind, title, detail
-
-
-class BoundedIO:
-    """ASGI middleware (outermost): the request's ticket, body cap, body and send timeouts."""
-
-    def __init__(self, app: ASGIApp, admission: Admission) -> None:
-        self.app = app
-        self.admission = admission
-        self.settings = admission.settings
-
-    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
-        if scope["type"] != "http":
-            await self.app(scope, receive, send)
-            return
-        now = time.monotonic()
-        ticket = Ticket(arrival=now, deadline=now + self.settings.time_limit)
-        token = CURRENT.set(ticket)
-        token_admission = _ADMISSION.set(self.admission)
-        settings = self.settings
-        try:
-            length = _content_length(scope)
-            if length is not None and length > settings.max_body_bytes:
-                await send_problem(
-                    send,
-                    413,
-                    "content-too-large",
-                    "Content too large",
-                    f"The request body has {length} bytes; at most {settings.max_body_bytes} "
-                    "are accepted (DCOSH_MAX_BODY_BYTES).",
-                    [(b"connection", b"close")],
-                )
-                return
-            if scope["method"] in ("POST", "PUT", "PATCH") or length:
-                try:
-                    body = await self._read_body(receive)
-                except _BodyError as error:
-                    await send_problem(
-                        send,
-                        error.status,
-                        error.kind,
-                        error.title,
-                        error.detail,
-                        [(b"connection", b"close")],
-                    )
-                    return
-                receive = _replay(body, receive)
-
-            send_timeout = settings.send_timeout
-
-            async def bounded_send(message: Message) -> None:
-                with anyio.fail_after(send_timeout):
-                    await send(message)
-
-            await self.app(scope, receive, bounded_send)
-        finally:
-            self.admission.release(ticket)
-            CURRENT.reset(token)
-            _ADMISSION.reset(token_admission)
-
-    async def _read_body(self, receive: Receive) -> bytes:
-        settings = self.settings
-        chunks: list[bytes] = []
-        size = 0
-        try:
-            with anyio.fail_after(settings.body_timeout):
-                while True:
-                    message = await receive()
-                    if message["type"] == "http.disconnect":
-                        raise _BodyError(400, "bad-request", "Bad request", "The client went away.")
-                    chunk = message.get("body", b"")
-                    size += len(chunk)
-                    if size > settings.max_body_bytes:
-                        raise _BodyError(
-                            413,
-                            "content-too-large",
-                            "Content too large",
-                            f"The request body passed {settings.max_body_bytes} bytes "
-                            "(DCOSH_MAX_BODY_BYTES).",
-                        )
-                    chunks.append(chunk)
-                    if not message.get("more_body", False):
-                        return b"".join(chunks)
-        except TimeoutError:
-            raise _BodyError(
-                408,
-                "request-timeout",
-                "Request timeout",
-                f"The request body did not arrive within {settings.body_timeout:g} s "
-                "(DCOSH_BODY_TIMEOUT).",
-            ) from None
-
-
-def _content_length(scope: Scope) -> int | None:
-    for name, value in scope["headers"]:
-        if name.lower() == b"content-length":
-            try:
-                return int(value)
-            except ValueError:
-                return None
-    return None
-
-
-def _replay(body: bytes, receive: Receive) -> Receive:
-    sent = False
-
-    async def replay() -> Message:
-        nonlocal sent
-        if not sent:
-            sent = True
-            return {"type": "http.request", "body": body, "more_body": False}
-        return await receive()
-
-    return replay
 
 
 def is_computing(path: str) -> bool:

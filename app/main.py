@@ -15,9 +15,9 @@ from app.admission import (
     SWITCH_INTERVAL,
     Admission,
     AdmissionGate,
-    BoundedIO,
     drain_on_sigterm,
 )
+from app.bounded_io import BoundedIO
 from app.compression import Compress
 from app.response_cache import FastPath, ResponseCache
 from app.routers import (

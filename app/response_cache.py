@@ -25,6 +25,13 @@ that entry at once, without routing, validation or the thread pool. The raw quer
 determines the validated query and hence the canonical key, so this is the same answer; the
 alias table (raw request → canonical key) is bounded by ``ALIASES`` and only ever points at
 keys whose computation succeeded.
+
+Identical requests in flight are computed once: a GET to a computational path whose raw path
+and query string are being computed for an earlier request waits for that request to finish
+(on the event loop: no thread, no admission charge, no place in the gate's queue), bounded by
+its own deadline, and is then answered from the entry the first one kept. When the first one
+kept nothing (an error, a refusal, a body over ``DCOSH_RESPONSE_CACHE_ENTRY_BYTES``) or the
+deadline passes first, the waiting request goes on as if it had arrived alone.
 """
 
 from __future__ import annotations
@@ -32,20 +39,36 @@ from __future__ import annotations
 import gzip
 import hashlib
 import threading
+import time
 from collections import OrderedDict
 from dataclasses import dataclass, field
 
+import anyio
 from starlette.responses import Response
 from starlette.types import ASGIApp, Receive, Scope, Send
 
 from app import __version__
+from app.admission import current, is_computing
 from app.settings import Settings
 
 #: Media types worth compressing (everything else here is binary float data or a GLB).
 COMPRESSIBLE = ("application/json", "text/", "image/svg+xml", "model/obj")
 
-#: Bytes charged per entry beyond its bodies (key, headers, bookkeeping).
-ENTRY_OVERHEAD = 512
+#: Bytes charged per entry beyond its bodies and key: the entry object, its headers and media
+#: type, the table's node (measured with tracemalloc: about 700-900 bytes for the service's
+#: responses; tests/api/test_response_cache_memory.py checks that the charge covers them).
+ENTRY_OVERHEAD = 1024
+
+#: Bytes charged per remembered raw request beyond its path, query string and key (the tuple,
+#: the table's node). The fast path's table of raw requests counts in the cache's bound, and
+#: takes at most ``ALIAS_SHARE`` of it.
+ALIAS_OVERHEAD = 256
+ALIAS_SHARE = 1 / 16
+
+#: Bodies shorter than this are copied before they are kept (``entry_of``). Longer ones come
+#: from the mmap threshold's separate mappings (MALLOC_MMAP_THRESHOLD_, 128 KiB), where the
+#: pages of an encoder's unused capacity are never touched, so never resident.
+COMPACT_BELOW = 1 << 20
 
 #: Headers a cached response does not repeat (recomputed for each reply).
 _DROPPED = {"content-length", "content-encoding", "etag", "cache-control", "vary"}
@@ -56,7 +79,7 @@ ALIASES = 4096
 ALIAS_QUERY_BYTES = 2048
 
 
-@dataclass
+@dataclass(slots=True)
 class Entry:
     """One encoded response: status, headers (content type included) and body."""
 
@@ -79,7 +102,11 @@ def entry_of(response: Response) -> Entry | None:
         return None
     headers = tuple((k, v) for k, v in response.headers.items() if k.lower() not in _DROPPED)
     media_type = response.headers.get("content-type", "")
-    return Entry(200, headers, bytes(body), media_type)
+    if len(body) < COMPACT_BELOW:
+        # orjson leaves its whole growth buffer behind the bytes it returns (a 14 kB body can
+        # hold 30-120 kB): a kept body is copied into an object of its own size
+        body = bytes(memoryview(body))
+    return Entry(200, headers, body, media_type)
 
 
 class ResponseCache:
@@ -89,7 +116,10 @@ class ResponseCache:
         self.max_bytes = max_bytes
         self.max_entry_bytes = min(max_entry_bytes, max_bytes)
         self._entries: OrderedDict[str, Entry] = OrderedDict()
-        self._aliases: OrderedDict[tuple[str, bytes], str] = OrderedDict()
+        self._aliases: OrderedDict[tuple[str, bytes], tuple[str, int]] = OrderedDict()
+        self.alias_bytes = 0
+        """Bytes charged for the fast path's raw requests (``alias``); ``bytes`` plus this
+        stays within ``max_bytes``."""
         self._lock = threading.Lock()
         self.bytes = 0
         self.hits = 0
@@ -98,6 +128,8 @@ class ResponseCache:
         """Of those, found by ``lookup``."""
         self.misses = 0
         self.evictions = 0
+        self.coalesced = 0
+        """Requests answered with the entry of an identical request they waited for."""
 
     def __len__(self) -> int:
         return len(self._entries)
@@ -147,19 +179,27 @@ class ResponseCache:
         """Remember that the raw GET ``(path, query string)`` has the canonical ``key``."""
         if len(raw[1]) > ALIAS_QUERY_BYTES:
             return
+        size = len(raw[0]) + len(raw[1]) + len(key) + ALIAS_OVERHEAD
         with self._lock:
-            self._aliases[raw] = key
-            self._aliases.move_to_end(raw)
-            while len(self._aliases) > ALIASES:
-                self._aliases.popitem(last=False)
+            previous = self._aliases.pop(raw, None)
+            if previous is not None:
+                self.alias_bytes -= previous[1]
+            self._aliases[raw] = (key, size)
+            self.alias_bytes += size
+            share = self.max_bytes * ALIAS_SHARE
+            while self._aliases and (len(self._aliases) > ALIASES or self.alias_bytes > share):
+                _, (_, old) = self._aliases.popitem(last=False)
+                self.alias_bytes -= old
+            self._evict()
 
     def lookup(self, raw: tuple[str, bytes]) -> tuple[str, Entry] | None:
         """The canonical key and kept entry of a raw GET seen before, or None."""
         with self._lock:
-            key = self._aliases.get(raw)
-            entry = None if key is None else self._entries.get(key)
-            if key is None or entry is None:
+            alias = self._aliases.get(raw)
+            entry = None if alias is None else self._entries.get(alias[0])
+            if alias is None or entry is None:
                 return None
+            key = alias[0]
             self._entries.move_to_end(key)
             self.hits += 1
             self.fast_hits += 1
@@ -170,9 +210,10 @@ class ResponseCache:
             self._entries.clear()
             self._aliases.clear()
             self.bytes = 0
+            self.alias_bytes = 0
 
     def _evict(self) -> None:
-        while self.bytes > self.max_bytes and self._entries:
+        while self.bytes + self.alias_bytes > self.max_bytes and self._entries:
             _, old = self._entries.popitem(last=False)
             self.bytes -= old.size
             self.evictions += 1
@@ -284,12 +325,22 @@ class FastPath:
         self.app = app
         self.cache = cache
         self.settings = settings
+        self._flights: dict[tuple[str, bytes], anyio.Event] = {}
+        """The raw GETs being computed now, each with the event set when it is answered (only
+        touched on the event loop)."""
 
     async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
         if scope["type"] != "http" or scope["method"] != "GET":
             await self.app(scope, receive, send)
             return
-        found = self.cache.lookup((scope["path"], scope["query_string"]))
+        raw = (scope["path"], scope["query_string"])
+        found = self.cache.lookup(raw)
+        if found is None and self.cache.max_bytes and is_computing(raw[0]):
+            flight = self._flights.get(raw)
+            if flight is None:
+                await self._lead(raw, scope, receive, send)
+                return
+            found = await self._follow(raw, flight)
         if found is None:
             await self.app(scope, receive, send)
             return
@@ -310,3 +361,29 @@ class FastPath:
                 None if accept is None else accept.decode("latin-1"),
             )
         await answer.response()(scope, receive, send)
+
+    async def _lead(
+        self, raw: tuple[str, bytes], scope: Scope, receive: Receive, send: Send
+    ) -> None:
+        """Compute ``raw`` while identical requests arriving meanwhile wait for the result."""
+        done = anyio.Event()
+        self._flights[raw] = done
+        try:
+            await self.app(scope, receive, send)
+        finally:
+            del self._flights[raw]
+            done.set()
+
+    async def _follow(
+        self, raw: tuple[str, bytes], flight: anyio.Event
+    ) -> tuple[str, Entry] | None:
+        """Wait for the identical request in flight (until this request's deadline), then its
+        kept entry (None when it kept none)."""
+        ticket = current()
+        timeout = self.settings.time_limit if ticket is None else ticket.deadline - time.monotonic()
+        with anyio.move_on_after(max(timeout, 0.0)):
+            await flight.wait()
+        found = self.cache.lookup(raw)
+        if found is not None:
+            self.cache.coalesced += 1  # only ever counted on the event loop
+        return found

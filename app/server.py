@@ -1,5 +1,14 @@
-"""Start uvicorn with the service's connection limits: one command for `make run`, the Docker
-image and the tests that need a real server (tests/deploy/).
+"""Start the service's workers with its connection limits: one command for `make run`, the Docker
+image, `make load` and the tests that need a real server (tests/deploy/).
+
+Workers: each worker process has a listening socket of its own, all bound to the same address
+with ``SO_REUSEPORT``, so the kernel spreads new connections over the workers (by a hash of the
+connection's addresses and ports). uvicorn's ``--workers`` shares one socket between its
+workers instead, and whichever worker is idle in ``accept`` takes the whole queue: a burst of 32
+connections all landed on one worker while the other had nothing to do (measured:
+docs/reliability.md). This process binds the sockets, starts the workers, restarts a worker
+that dies (on the same socket: connections waiting in its queue are served by the new one),
+and forwards SIGTERM to every worker. With one worker it serves in-process.
 
 The limits (docs/reliability.md):
 
@@ -19,9 +28,22 @@ Usage: python -m app.server [--host H] [--port P] [--workers N] [uvicorn options
 from __future__ import annotations
 
 import argparse
+import contextlib
+import ctypes
+import ctypes.util
+import gc
 import os
+import signal
+import socket
+import subprocess
 import sys
+import time
 from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+#: Connections waiting to be accepted, per worker socket.
+BACKLOG = 1024
 
 #: uvicorn's options for every deployment of the service.
 UVICORN_FLAGS = (
@@ -36,37 +58,196 @@ UVICORN_FLAGS = (
     "--limit-concurrency",
     "1024",
     "--backlog",
-    "1024",
+    str(BACKLOG),
     "--no-server-header",
 )
 
+#: A worker that exits by itself within this many seconds of its start is not restarted (it
+#: cannot start: a bad option, an import error, a port in use); the server stops instead. A
+#: worker killed by a signal is always restarted.
+MIN_LIFETIME = 10.0
+
+#: Exit status when a worker cannot start (uvicorn's own code for a startup failure).
+STARTUP_FAILURE = 3
+
 
 def command(host: str, port: int, workers: int, extra: Sequence[str] = ()) -> list[str]:
-    """The uvicorn command line serving the app with the service's limits."""
+    """The command line serving the app with the service's limits (this module)."""
     return [
         sys.executable,
         "-m",
-        "uvicorn",
-        "app.main:app",
+        "app.server",
         "--host",
         host,
         "--port",
         str(port),
         "--workers",
         str(workers),
-        *UVICORN_FLAGS,
         *extra,
     ]
 
 
+def listening_socket(host: str, port: int) -> socket.socket:
+    """A TCP socket listening on ``(host, port)`` that other sockets may share (SO_REUSEPORT)."""
+    family = socket.AF_INET6 if ":" in host else socket.AF_INET
+    sock = socket.socket(family, socket.SOCK_STREAM)
+    sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+    sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEPORT, 1)
+    sock.bind((host, port))
+    sock.listen(BACKLOG)
+    sock.set_inheritable(True)
+    return sock
+
+
+def uvicorn_config(options: Sequence[str]) -> Any:
+    """uvicorn's Config for the app from uvicorn's command-line options (parsed by uvicorn's own
+    command, so every option of ``uvicorn --help`` works here)."""
+    import uvicorn
+    from uvicorn.config import LOGGING_CONFIG
+    from uvicorn.main import main as uvicorn_main
+
+    with uvicorn_main.make_context("uvicorn", ["app.main:app", *options]) as context:
+        params = dict(context.params)
+    if params.pop("app_dir", None):
+        sys.path.insert(0, os.path.abspath(str(context.params["app_dir"])))
+    if params.get("log_config") is None:
+        params["log_config"] = LOGGING_CONFIG
+    params["headers"] = [header.split(":", 1) for header in params.get("headers") or ()]
+    for name in ("reload_dirs", "reload_includes", "reload_excludes"):
+        params[name] = params.get(name) or None
+    return uvicorn.Config(**params)
+
+
+def serve(sock: socket.socket, options: Sequence[str]) -> None:
+    """Run one worker on ``sock`` until SIGTERM (uvicorn's graceful shutdown)."""
+    config = uvicorn_config(options)
+    config.load()  # imports the app: everything it holds for good exists from here on
+    tune_gc()
+    uvicorn_server(config).run(sockets=[sock])
+
+
+#: The cyclic garbage collector's thresholds in a worker (Python's default: 700, 10, 10).
+GC_THRESHOLDS = (10_000, 10, 10)
+
+
+def tune_gc() -> None:
+    """Keep the cyclic garbage collector from stopping the worker for long.
+
+    A collection holds the GIL, so while it runs the event loop answers nothing, /health
+    included. mp computations allocate millions of tracked objects (mpmath numbers), so the
+    collector ran hundreds of times per request, and each full collection walked the ~180,000
+    objects of the imported modules too: 1.2-1.8 s pauses. The objects that exist after the
+    import are frozen (never walked again: they live as long as the worker), and a young
+    collection waits for 10,000 allocations instead of 700 (docs/reliability.md, measured).
+    """
+    gc.collect()
+    gc.freeze()
+    gc.set_threshold(*GC_THRESHOLDS)
+
+
+def uvicorn_server(config: Any) -> Any:
+    import uvicorn
+
+    return uvicorn.Server(config)
+
+
+def end_with_parent() -> None:
+    """Ask Linux to send this worker SIGTERM when the server process dies (so a worker is never
+    left serving alone after a ``kill -9`` of the server)."""
+    name = ctypes.util.find_library("c")
+    if name is None:
+        return
+    with contextlib.suppress(OSError, AttributeError):
+        pr_set_pdeathsig = 1
+        ctypes.CDLL(name, use_errno=True).prctl(pr_set_pdeathsig, signal.SIGTERM)
+
+
+@dataclass
+class Worker:
+    sock: socket.socket
+    process: subprocess.Popen[bytes] | None = None
+    started: float = 0.0
+
+
+class Supervisor:
+    """N workers, each on its own SO_REUSEPORT socket (see the module doc)."""
+
+    def __init__(self, host: str, port: int, workers: int, options: Sequence[str]) -> None:
+        self.options = list(options)
+        self.workers = [Worker(listening_socket(host, port)) for _ in range(workers)]
+        self.stopping = False
+
+    def start(self, worker: Worker) -> None:
+        fd = worker.sock.fileno()
+        worker.process = subprocess.Popen(
+            [sys.executable, "-m", "app.server", "--listen-fd", str(fd), *self.options],
+            pass_fds=(fd,),
+        )
+        worker.started = time.monotonic()
+
+    def stop(self, signum: int = signal.SIGTERM, frame: Any = None) -> None:
+        """Forward SIGTERM to every worker; they drain and exit (uvicorn's graceful shutdown)."""
+        self.stopping = True
+        for worker in self.workers:
+            if worker.process is not None and worker.process.poll() is None:
+                with contextlib.suppress(ProcessLookupError):
+                    worker.process.send_signal(signal.SIGTERM)
+            # no new connection is queued on a socket whose worker is leaving
+            worker.sock.close()
+
+    def run(self) -> int:
+        signal.signal(signal.SIGTERM, self.stop)
+        signal.signal(signal.SIGINT, self.stop)
+        for worker in self.workers:
+            self.start(worker)
+        status = 0
+        while True:
+            running = [w for w in self.workers if w.process is not None]
+            if not running:
+                return status
+            try:
+                pid, code = os.wait()
+            except ChildProcessError:
+                return status
+            for worker in running:
+                assert worker.process is not None
+                if worker.process.pid != pid:
+                    continue
+                exit_code = os.waitstatus_to_exitcode(code)
+                worker.process.returncode = exit_code
+                worker.process = None
+                if self.stopping:
+                    continue
+                # killed (OOM, kill -9) is restarted; an exit of its own right away is a failure
+                if exit_code >= 0 and time.monotonic() - worker.started < MIN_LIFETIME:
+                    print(f"app.server: worker {pid} exited at start; stopping", file=sys.stderr)
+                    status = STARTUP_FAILURE
+                    self.stop()
+                else:
+                    print(f"app.server: worker {pid} died; starting another", file=sys.stderr)
+                    self.start(worker)
+
+
 def main(argv: Sequence[str] | None = None) -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = argparse.ArgumentParser(description=(__doc__ or "").splitlines()[0])
     parser.add_argument("--host", default=os.environ.get("HOST", "127.0.0.1"))
     parser.add_argument("--port", type=int, default=int(os.environ.get("PORT", "8000")))
     parser.add_argument("--workers", type=int, default=int(os.environ.get("WORKERS", "1")))
+    parser.add_argument("--listen-fd", type=int, default=None, help=argparse.SUPPRESS)
     args, extra = parser.parse_known_args(argv)
-    argv_out = command(args.host, args.port, args.workers, extra)
-    os.execv(argv_out[0], argv_out)
+    options = [*UVICORN_FLAGS, *extra]
+    if args.listen_fd is not None:  # a worker started by the supervisor
+        end_with_parent()
+        serve(socket.socket(fileno=args.listen_fd), options)
+        return
+    print(
+        f"app.server: serving on {args.host}:{args.port} with {args.workers} worker(s)",
+        file=sys.stderr,
+    )
+    if args.workers <= 1:
+        serve(listening_socket(args.host, args.port), options)
+        return
+    raise SystemExit(Supervisor(args.host, args.port, args.workers, options).run())
 
 
 if __name__ == "__main__":

@@ -69,14 +69,16 @@ NEVER = {"eval", "exec", "compile", "__import__"}
 
 def test_nothing_from_a_request_is_evaluated_or_written() -> None:
     """No module of the service evaluates code or starts processes; only the OpenAPI export
-    (a command-line tool, not a route) writes a file."""
+    (a command-line tool, not a route) writes a file, and only the launcher (app/server.py,
+    which the app never imports) starts the worker processes."""
     for path in APP.rglob("*.py"):
         tree = ast.parse(path.read_text(encoding="utf-8"))
         calls = [node.func for node in ast.walk(tree) if isinstance(node, ast.Call)]
         builtins = {f.id for f in calls if isinstance(f, ast.Name)}  # eval(...), not re.compile
         methods = {f.attr for f in calls if isinstance(f, ast.Attribute)}
         assert not builtins & NEVER, f"{path.name} calls {builtins & NEVER}"
-        assert "subprocess" not in {m.split(".")[0] for m in imported_modules(path)}, path.name
+        if path.name != "server.py":
+            assert "subprocess" not in {m.split(".")[0] for m in imported_modules(path)}, path.name
         writes = methods & {"write_text", "write_bytes"}
         assert not writes or path.name == "openapi_export.py", f"{path.name} writes files"
 
@@ -84,7 +86,13 @@ def test_nothing_from_a_request_is_evaluated_or_written() -> None:
 APP = CORE.parent
 WEB_MODULES = {"main.py", "errors.py"}
 """Besides the routers, only these import FastAPI (the app factory and the error handlers)."""
-HTTP_PLUMBING = {"admission.py", "compression.py", "response_cache.py", "security.py"}
+HTTP_PLUMBING = {
+    "admission.py",
+    "bounded_io.py",
+    "compression.py",
+    "response_cache.py",
+    "security.py",
+}
 """ASGI middlewares: they speak HTTP through Starlette's types, never FastAPI's."""
 
 

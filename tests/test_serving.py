@@ -53,7 +53,7 @@ def test_the_image_command_serves_health() -> None:
         "WORKERS": "2",
         "PATH": f"{Path(sys.executable).parent}:{os.environ['PATH']}",
     }
-    # the CMD exactly as the image runs it (app.server execs uvicorn); in a session of
+    # the CMD exactly as the image runs it (app.server starts the workers); in a session of
     # its own with no stdin (an xdist worker's stdin is its channel to the controller), so that
     # the whole process group can be ended, whatever the server does
     with tempfile.TemporaryFile() as log:

@@ -53,6 +53,17 @@ def test_one_request_may_charge_several_times() -> None:
     assert admission.admitted == 1 and ticket.seconds == pytest.approx(1.2)
 
 
+def test_an_admitted_request_is_not_refused_half_way_for_the_budget() -> None:
+    admission = Admission(Settings(admission_seconds=1.0))
+    first, second = _ticket(), _ticket()
+    admission.charge(first, 0.5, 0)
+    admission.charge(second, 0.4, 0)
+    admission.charge(first, 0.5, 0)  # its next row: over the budget, but already admitted
+    assert admission.admitted == 2 and admission.seconds == pytest.approx(1.4)
+    with pytest.raises(OverloadedError, match="time budget"):
+        admission.charge(_ticket(), 0.1, 0)  # a new request is refused
+
+
 def test_a_request_that_cannot_finish_before_its_deadline_is_refused_before_it_starts() -> None:
     admission = Admission(Settings())
     with pytest.raises(OverloadedError, match="cannot finish within"):

@@ -12,7 +12,14 @@ import pytest
 from fastapi.testclient import TestClient
 
 from app.main import create_app
-from app.response_cache import Entry, ResponseCache, accepts_gzip, etag_for
+from app.response_cache import (
+    ALIAS_OVERHEAD,
+    ENTRY_OVERHEAD,
+    Entry,
+    ResponseCache,
+    accepts_gzip,
+    etag_for,
+)
 from app.responses import canonical_key
 from app.schemas.d4b import D4bQuery
 from app.settings import Settings
@@ -80,7 +87,10 @@ def test_errors_are_not_kept(client: TestClient) -> None:
 
 def test_the_cache_stays_within_its_bound_and_evicts_the_least_recently_used() -> None:
     one = len(make_client().get("/discretizations/d4b?d=0.1", headers=IDENTITY).content)
-    client = make_client(response_cache_bytes=3 * one + 3000, gzip_level=0)
+    # three bodies, their keys (~300 bytes), entries and the fast path's raw requests
+    room = 3 * (one + 300 + ENTRY_OVERHEAD + 300 + ALIAS_OVERHEAD) + 1000
+    assert room < 4 * one
+    client = make_client(response_cache_bytes=room, gzip_level=0)
     cache = cache_of(client)
     for d in (0.1, 0.2, 0.3):
         client.get("/discretizations/d4b", params={"d": d})

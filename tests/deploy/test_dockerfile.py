@@ -34,3 +34,12 @@ def test_the_app_is_installed_once_and_docs_are_included() -> None:
     assert "COPY app ./app" in DOCKERFILE
     assert "COPY docs ./docs" in DOCKERFILE
     assert "PYTHONPATH=/srv" in DOCKERFILE
+
+
+def test_base_images_are_tags_or_well_formed_digests() -> None:
+    """A pinned base image is ``name:tag@sha256:<64 hex>`` (the index digest printed by
+    ``docker buildx imagetools inspect``); until pinned, a plain tag."""
+    for name in ("PYTHON_IMAGE", "NODE_IMAGE"):
+        default = re.search(rf"^ARG {name}=(\S+)$", DOCKERFILE, re.M)
+        assert default is not None, name
+        assert re.fullmatch(r"[a-z0-9.\-/]+:[\w.\-]+(@sha256:[0-9a-f]{64})?", default.group(1))
