@@ -3,6 +3,7 @@
 from typing import Annotated, Any
 
 from fastapi import APIRouter, Body, Depends, Path, Request, Response
+from fastapi.exceptions import RequestValidationError
 
 from app.registry import DISCRETIZATIONS
 from app.responses import canonical_key
@@ -27,26 +28,49 @@ router = APIRouter(prefix="/surfaces", tags=["surfaces"])
 SURFACE_FIELDS = frozenset(SurfaceQuery.model_fields)
 
 
-def documented_parameters() -> list[dict[str, Any]]:
-    """Query parameters for OpenAPI: the surface's own, then every discretization's.
+DEFAULT_DISCRETIZATION = SurfaceQuery.model_fields["discretization"].default
 
-    The endpoint validates the discretization's parameters against the chosen discretization's
-    model; OpenAPI lists the union so that clients (the explorer) see the names.
+
+def surfaces_of(identifier: str) -> list[str]:
+    """The surfaces a discretization gives: the catenoids always (their meridian is p), the
+    pseudospheres when it has a tractrix and its Gauss image (d4b)."""
+    companions = DISCRETIZATIONS[identifier].info.companions
+    has_tractrix = {"tractrix", "tractrix_gauss_image"} <= set(companions)
+    return [k for k, kind in surface_service.KINDS.items() if kind.meridian == "p" or has_tractrix]
+
+
+def documented_parameters(identifier: str, in_path: bool) -> list[dict[str, Any]]:
+    """Query parameters for OpenAPI: the surface's own, then the discretization's.
+
+    One discretization per path, so that every documented parameter is one the endpoint takes
+    (a union over discretizations would declare ``y1`` of D1 where D4b refuses it). On
+    ``/surfaces/{surface_id}/{discretization}`` the path names it; on ``/surfaces/{surface_id}``
+    the query parameter ``discretization`` is documented with the default alone.
     """
     parameters: list[dict[str, Any]] = []
     seen: set[str] = set()
     models: list[tuple[str, Any]] = [("surface", SurfaceQuery)]
-    models += [(identifier, entry.query) for identifier, entry in DISCRETIZATIONS.items()]
+    models.append((identifier, DISCRETIZATIONS[identifier].query))
     for owner, model in models:
-        for name, schema in model.model_json_schema()["properties"].items():
+        for name, schema in model.model_json_schema(by_alias=True)["properties"].items():
             if name in seen or (owner != "surface" and name in {"format", "detail"}):
                 continue
             seen.add(name)
+            if name == "discretization" and in_path:
+                continue
             schema = dict(schema)
             description = schema.pop("description", "")
             schema.pop("title", None)
             schema.pop("x-domain", None)
-            if owner != "surface":
+            if name == "discretization":
+                schema["enum"] = [identifier]
+                description = (
+                    f"Discretization giving the meridian: `{identifier}` on this path. Every "
+                    "discretization has its own path, `/surfaces/{surface_id}/{discretization}`, "
+                    "with its parameters (this path still takes the other ids, with their "
+                    "parameters, for older links)."
+                )
+            elif owner != "surface":
                 description = f"Parameter of the discretization ({owner}: {description})"
             parameters.append(
                 {
@@ -58,6 +82,22 @@ def documented_parameters() -> list[dict[str, Any]]:
                 }
             )
     return parameters
+
+
+def documented_body(identifier: str, in_path: bool) -> dict[str, Any]:
+    """The POST body for OpenAPI: an object of the same parameters, no other member."""
+    properties = {
+        p["name"]: {**p["schema"], "description": p["description"]}
+        for p in documented_parameters(identifier, in_path)
+    }
+    schema = {
+        "type": "object",
+        "title": f"Surface{identifier.replace('-', '').title()}Body",
+        "description": "Surface and discretization parameters.",
+        "properties": properties,
+        "additionalProperties": False,
+    }
+    return {"requestBody": {"required": True, "content": {"application/json": {"schema": schema}}}}
 
 
 RESPONSES: dict[int | str, dict[str, Any]] = {
@@ -117,29 +157,14 @@ def _file(result: surface_service.SurfaceResult, file_format: str) -> Response:
     return Response(body, media_type=media_type, headers=headers)
 
 
-@router.get(
-    "/{surface_id}",
-    summary="One discrete surface of revolution",
-    description=SURFACES_DESCRIPTION,
-    response_model=SurfaceResponse,
-    responses=RESPONSES,
-    dependencies=[Depends(reject_repeated_parameters)],
-    openapi_extra={"parameters": documented_parameters()},
-)
-def get_surface(
-    request: Request,
-    surface_id: Annotated[
-        str,
-        Path(
-            description="`catenoid`, `pseudosphere`, or either's `-gauss-image`.",
-            json_schema_extra={"enum": list(surface_service.KINDS)},
-        ),
-    ],
-) -> Response:
-    kind, (surface, curve_query) = _build(surface_id, dict(request.query_params), request)
+def _get(request: Request, surface_id: str, values: dict[str, Any]) -> Response:
+    kind, (surface, curve_query) = _build(surface_id, values, request)
     settings = settings_of(request)
+    # one key for every path of the same surface: /surfaces/catenoid?discretization=d1 and
+    # /surfaces/catenoid/d1 are one answer with one ETag
     key = canonical_key(
-        request.url.path, {"surface": surface.model_dump(), "curve": curve_query.model_dump()}
+        f"/surfaces/{surface_id}",
+        {"surface": surface.model_dump(), "curve": curve_query.model_dump()},
     )
     return cached(
         request,
@@ -149,6 +174,31 @@ def get_surface(
             surface_service.compute(kind, surface, curve_query, settings), surface.format
         ),
     )
+
+
+SURFACE_ID_DESCRIPTION = "`catenoid`, `pseudosphere`, or either's `-gauss-image`."
+
+
+@router.get(
+    "/{surface_id}",
+    summary="One discrete surface of revolution",
+    description=SURFACES_DESCRIPTION,
+    response_model=SurfaceResponse,
+    responses=RESPONSES,
+    dependencies=[Depends(reject_repeated_parameters)],
+    openapi_extra={"parameters": documented_parameters(DEFAULT_DISCRETIZATION, in_path=False)},
+)
+def get_surface(
+    request: Request,
+    surface_id: Annotated[
+        str,
+        Path(
+            description=SURFACE_ID_DESCRIPTION,
+            json_schema_extra={"enum": surfaces_of(DEFAULT_DISCRETIZATION)},
+        ),
+    ],
+) -> Response:
+    return _get(request, surface_id, dict(request.query_params))
 
 
 @router.post(
@@ -158,22 +208,77 @@ def get_surface(
     "a custom (D2b) sequence `s`).",
     response_model=SurfaceResponse,
     responses=RESPONSES,
+    openapi_extra=documented_body(DEFAULT_DISCRETIZATION, in_path=False),
 )
 def post_surface(
     request: Request,
     surface_id: Annotated[str, Path(description="Surface id.")],
     body: Annotated[dict[str, Any], Body(description="Surface and discretization parameters.")],
 ) -> Response:
-    kind, (surface, curve_query) = _build(surface_id, body, request)
-    settings = settings_of(request)
-    key = canonical_key(
-        request.url.path, {"surface": surface.model_dump(), "curve": curve_query.model_dump()}
+    return _get(request, surface_id, body)
+
+
+def _with_discretization(identifier: str, values: dict[str, Any]) -> dict[str, Any]:
+    """The parameters with the discretization the path names; it is not a parameter here."""
+    if "discretization" in values:
+        raise RequestValidationError(
+            [
+                {
+                    "type": "extra_forbidden",
+                    "loc": ("query", "discretization"),
+                    "msg": "the path names the discretization",
+                    "input": values["discretization"],
+                }
+            ]
+        )
+    return {**values, "discretization": identifier}
+
+
+def _add_discretization_routes(identifier: str) -> None:
+    """GET and POST /surfaces/{surface_id}/{identifier}: the surfaces of one discretization,
+    documented with exactly its parameters."""
+    path = f"/{{surface_id}}/{identifier}"
+    kinds = surfaces_of(identifier)
+    surface_path = Path(description=SURFACE_ID_DESCRIPTION, json_schema_extra={"enum": kinds})
+
+    def get(request: Request, surface_id: Annotated[str, surface_path]) -> Response:
+        return _get(
+            request, surface_id, _with_discretization(identifier, dict(request.query_params))
+        )
+
+    def post(
+        request: Request,
+        surface_id: Annotated[str, surface_path],
+        body: Annotated[dict[str, Any], Body(description="Surface and discretization parameters.")],
+    ) -> Response:
+        return _get(request, surface_id, _with_discretization(identifier, body))
+
+    router.add_api_route(
+        path,
+        get,
+        methods=["GET"],
+        name=f"get_surface_{identifier}",
+        summary=f"One discrete surface of revolution with a {identifier} meridian",
+        description=f"As `GET /surfaces/{{surface_id}}` with `discretization={identifier}`; the "
+        f"query takes the surface's parameters and those of {identifier}.",
+        response_model=SurfaceResponse,
+        responses=RESPONSES,
+        dependencies=[Depends(reject_repeated_parameters)],
+        openapi_extra={"parameters": documented_parameters(identifier, in_path=True)},
     )
-    return cached(
-        request,
-        key,
-        settings,
-        lambda: _file(
-            surface_service.compute(kind, surface, curve_query, settings), surface.format
-        ),
+    router.add_api_route(
+        path,
+        post,
+        methods=["POST"],
+        name=f"post_surface_{identifier}",
+        summary=f"One discrete surface of revolution with a {identifier} meridian (JSON body)",
+        description=f"As GET /surfaces/{{surface_id}}/{identifier}, with the parameters in a "
+        "JSON object.",
+        response_model=SurfaceResponse,
+        responses=RESPONSES,
+        openapi_extra=documented_body(identifier, in_path=True),
     )
+
+
+for _identifier in DISCRETIZATIONS:
+    _add_discretization_routes(_identifier)

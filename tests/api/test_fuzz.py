@@ -13,7 +13,9 @@ checked to be problem+json naming a parameter (see `test_api`).
 
 from __future__ import annotations
 
+import json
 import os
+from typing import Any
 
 import pytest
 import schemathesis
@@ -24,6 +26,10 @@ from app.main import create_app
 from app.settings import Settings
 
 EXAMPLES = int(os.environ.get("FUZZ_EXAMPLES", "120"))
+#: ``FUZZ_LOG=path``: one JSON line per request (operation, generation mode, status, and for a
+#: positive request refused with 422 the request and the problem's errors), in ``path.<pid>``
+#: (one file per xdist worker), to count requests and list the schema-valid inputs refused.
+LOG = os.environ.get("FUZZ_LOG")
 
 #: Fuzzing tests that every input gets a correct answer or a clear error, not capacity (that is
 #: `make load`): tight budgets keep every generated request cheap, so that thousands run in
@@ -62,9 +68,29 @@ schema.config.checks.positive_data_acceptance = PositiveDataAcceptanceConfig(
 @settings(max_examples=EXAMPLES, deadline=None, suppress_health_check=list(HealthCheck))
 def test_api(case: schemathesis.Case) -> None:
     response = case.call_and_validate()
+    if LOG:
+        _log(case, response)
     if response.status_code == 422:
         problem = response.json()
         where = case.as_curl_command()
         assert response.headers["content-type"][0] == "application/problem+json", where
         assert problem["errors"], (problem, where)
         assert all(e["parameter"] and e["constraint"] for e in problem["errors"]), (problem, where)
+
+
+def _log(case: schemathesis.Case, response: Any) -> None:
+    meta = case.meta
+    mode = "explicit" if meta is None else meta.generation.mode.value
+    if meta is not None and any(c.mode.is_negative for c in meta.components.values()):
+        mode = "negative"
+    line: dict[str, Any] = {
+        "operation": f"{case.method} {case.path}",
+        "mode": mode,
+        "status": response.status_code,
+    }
+    if response.status_code == 422 and mode != "negative":
+        line["request"] = case.as_curl_command()
+        line["errors"] = response.json().get("errors")
+        line["title"] = response.json().get("title")
+    with open(f"{LOG}.{os.getpid()}", "a", encoding="utf-8") as out:
+        out.write(json.dumps(line, default=str) + "\n")

@@ -178,3 +178,39 @@ def test_post_documents_415(client: TestClient) -> None:
     responses = SPEC["paths"]["/discretizations/d4b"]["post"]["responses"]
     assert "415" in responses
     assert client.post("/discretizations/d4b", content=b"x").status_code == 415
+
+
+def _query_names(path: str) -> set[str]:
+    return {p["name"] for p in SPEC["paths"][path]["get"]["parameters"] if p["in"] == "query"}
+
+
+def test_each_surface_path_documents_exactly_the_parameters_it_takes(client: TestClient) -> None:
+    from app.registry import DISCRETIZATIONS
+
+    surface = {"m", "steps", "gauss_image", "format", "checks"}
+    default = _query_names("/surfaces/{surface_id}")
+    assert "y1" not in default and default >= surface | {"discretization", "h", "d"}
+    for identifier, entry in DISCRETIZATIONS.items():
+        own = {f.alias or name for name, f in entry.query.model_fields.items()}
+        path = f"/surfaces/{{surface_id}}/{identifier}"
+        assert _query_names(path) == surface | (own - {"detail"}), identifier
+        body = SPEC["paths"][path]["post"]["requestBody"]["content"]["application/json"]
+        assert body["schema"]["additionalProperties"] is False
+    # D1's y1: documented on D1's path, taken there; one answer (and ETag) with the old spelling
+    ok = client.get("/surfaces/catenoid-gauss-image/d1?y1=1.5&m=3&i_min=-2&i_max=2")
+    assert ok.status_code == 200, ok.text
+    old = client.get("/surfaces/catenoid-gauss-image?discretization=d1&y1=1.5&m=3&i_min=-2&i_max=2")
+    assert old.json() == ok.json() and old.headers["etag"] == ok.headers["etag"]
+    posted = client.post(
+        "/surfaces/catenoid-gauss-image/d1", json={"y1": 1.5, "m": 3, "i_min": -2, "i_max": 2}
+    )
+    assert posted.json() == ok.json()
+    # the path names the discretization; the default path's y1 stays refused, as documented
+    for refused in (
+        client.get("/surfaces/catenoid/d1?discretization=d1"),
+        client.get("/surfaces/catenoid?y1=1.0"),
+    ):
+        assert refused.status_code == 422
+        assert refused.json()["errors"][0]["constraint"] == "not a parameter of this endpoint"
+    pseudo = SPEC["paths"]["/surfaces/{surface_id}/d1"]["get"]["parameters"][0]["schema"]["enum"]
+    assert pseudo == ["catenoid", "catenoid-gauss-image"]
