@@ -84,7 +84,14 @@ def test_nothing_from_a_request_is_evaluated_or_written() -> None:
 APP = CORE.parent
 WEB_MODULES = {"main.py", "errors.py"}
 """Besides the routers, only these import FastAPI (the app factory and the error handlers)."""
-HTTP_PLUMBING = {"admission.py", "compression.py", "response_cache.py", "security.py"}
+HTTP_PLUMBING = {
+    "admission.py",
+    "compression.py",
+    "negotiation.py",
+    "problem_types.py",
+    "response_cache.py",
+    "security.py",
+}
 """ASGI middlewares: they speak HTTP through Starlette's types, never FastAPI's."""
 
 

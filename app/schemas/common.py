@@ -247,6 +247,13 @@ class ProblemParameterError(BaseModel):
     value: JSONValue = Field(None, description="The value received (as sent, or null if absent).")
 
 
+class ProblemFormat(BaseModel):
+    """One representation an endpoint has (406 Not acceptable lists them)."""
+
+    format: str = Field(description="The value of the query parameter `format` that asks for it.")
+    media_type: str = Field(description="Its media type, as `Accept` names it.")
+
+
 class Problem(BaseModel):
     """RFC 9457 problem details, with the offending parameters in `errors`."""
 
@@ -258,6 +265,9 @@ class Problem(BaseModel):
         default_factory=list, description="The parameters at fault, each with its constraint."
     )
     valid: list[str] | None = Field(None, description="For unknown ids: the ids that exist.")
+    available: list[ProblemFormat] | None = Field(
+        None, description="For 406 Not acceptable: the representations the endpoint has."
+    )
 
 
 PROBLEM_RESPONSES: dict[int | str, dict[str, Any]] = {

@@ -10,6 +10,8 @@ FastAPI's document is adjusted in one pass, after generation:
 - limits: ``digits`` carries the maximum of the settings in force (``DCOSH_MAX_DIGITS``);
 - curves: the 200 of a curve endpoint is ``CurveResponse`` (float64: coordinates are
   JSON numbers) and ``CurveResponseMP`` (decimal strings);
+- content negotiation: where ``Accept`` can choose the ``format`` (app.negotiation), the
+  ``format`` parameter says so and the operation documents its 406;
 - request bodies refuse unknown members (``additionalProperties: false``), as the server does;
 - array query parameters are comma-separated (``explode: false``), as the server reads them;
 - recursive JSON values (``JSONValue``) in a form TypeScript generators can express;
@@ -20,6 +22,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from app.negotiation import accept_description, negotiable
 from app.schemas.curve import CurveResponseMP
 from app.settings import Settings
 
@@ -54,6 +57,13 @@ JSON_VALUE: dict[str, Any] = {
 }
 
 
+NOT_ACCEPTABLE_RESPONSE = {
+    "description": "Not acceptable: no representation satisfies the `Accept` header and the "
+    "query names no `format`; `available` lists the formats and media types.",
+    "content": {PROBLEM_MEDIA_TYPE: {"schema": {"$ref": PROBLEM_REF}}},
+}
+
+
 UNSUPPORTED_MEDIA_TYPE_RESPONSE = {
     "description": "The body is not JSON (Content-Type must be application/json).",
     "content": {PROBLEM_MEDIA_TYPE: {"schema": {"$ref": PROBLEM_REF}}},
@@ -75,6 +85,8 @@ def refine(spec: dict[str, Any], settings: Settings) -> dict[str, Any]:
             _problem_responses(operation)
             _typed_bodies(operation)
             _curve_union(operation, schemas)
+            if method == "get":
+                _negotiated(operation)
             for parameter in operation.get("parameters", []):
                 if parameter.get("schema", {}).get("type") == "array":
                     parameter["style"], parameter["explode"] = "form", False
@@ -99,6 +111,19 @@ def _problem_responses(operation: dict[str, Any]) -> None:
         if PROBLEM_MEDIA_TYPE in content or status.startswith(("4", "5")):
             response["content"] = {PROBLEM_MEDIA_TYPE: {"schema": {"$ref": PROBLEM_REF}}}
     responses.setdefault("422", UNKNOWN_PARAMETER_RESPONSE)
+
+
+def _negotiated(operation: dict[str, Any]) -> None:
+    """Where ``Accept`` chooses the format (app.negotiation): say so, and document the 406."""
+    formats = negotiable(operation)
+    if len(formats) < 2:
+        return
+    for parameter in operation["parameters"]:
+        if parameter["name"] == "format":
+            parameter["description"] = parameter.get("description", "") + accept_description(
+                formats
+            )
+    operation["responses"].setdefault("406", NOT_ACCEPTABLE_RESPONSE)
 
 
 def _typed_bodies(operation: dict[str, Any]) -> None:
