@@ -14,7 +14,7 @@ from app.routers.common import (
     reject_repeated_parameters,
     settings_of,
 )
-from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES, CurveQuery
+from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES, CurveQuery, strict_body
 from app.schemas.surfaces import (
     SURFACES_DESCRIPTION,
     SurfaceEntry,
@@ -106,8 +106,10 @@ RESPONSES: dict[int | str, dict[str, Any]] = {
             "model/obj": {"schema": {"type": "string"}},
             "application/octet-stream": {"schema": {"type": "string", "format": "binary"}},
             "model/gltf-binary": {"schema": {"type": "string", "format": "binary"}},
+            "application/xml": {"schema": {"type": "string"}},
         },
-        "description": "The mesh as JSON (default), OBJ, PLY or GLB (`format`); files carry a "
+        "description": "The mesh as JSON (default), OBJ, PLY (application/octet-stream), VTU "
+        "(application/xml) or GLB (`format`); files carry a "
         "Content-Disposition file name. GET responses carry an ETag and Cache-Control.",
     },
     304: {"description": "Not modified (the If-None-Match ETag matches)."},
@@ -130,25 +132,31 @@ def list_surfaces() -> list[SurfaceEntry]:
     ]
 
 
-def _split(values: dict[str, Any]) -> tuple[SurfaceQuery, dict[str, Any]]:
+#: The strict JSON-body variant of ``SurfaceQuery`` (POST: `false` is not an integer there).
+SURFACE_BODY = strict_body(SurfaceQuery)  # type: ignore[arg-type]
+
+
+def _split(values: dict[str, Any], strict: bool) -> tuple[SurfaceQuery, dict[str, Any]]:
     """The surface's own parameters, and the rest (the discretization's)."""
     own = {k: v for k, v in values.items() if k in SURFACE_FIELDS}
     rest = {k: v for k, v in values.items() if k not in SURFACE_FIELDS}
-    return parse_query(SurfaceQuery, own), rest
+    model: type[SurfaceQuery] = SURFACE_BODY if strict else SurfaceQuery  # type: ignore[assignment]
+    return parse_query(model, own), rest
 
 
 def parse(
-    identifier: str, values: dict[str, Any]
+    identifier: str, values: dict[str, Any], strict: bool = False
 ) -> tuple[surface_service.SurfaceKind, SurfaceQuery, CurveQuery]:
-    """The surface kind, the surface's own parameters and its discretization's, validated."""
+    """The surface kind, the surface's own parameters and its discretization's, validated (a
+    JSON body strictly, as POST /discretizations/{id} validates it)."""
     kind = surface_service.kind_of(identifier)
-    surface, rest = _split(values)
+    surface, rest = _split(values, strict)
     entry = discretization(surface.discretization)
-    return kind, surface, parse_query(entry.query, rest)
+    return kind, surface, parse_query(entry.body if strict else entry.query, rest)
 
 
 def _build(identifier: str, values: dict[str, Any], request: Request) -> tuple[Any, Any]:
-    kind, surface, curve_query = parse(identifier, values)
+    kind, surface, curve_query = parse(identifier, values, strict=request.method == "POST")
     return kind, (surface, curve_query)
 
 

@@ -216,7 +216,9 @@ def strict_body(model: type[CurveQuery]) -> type[CurveQuery]:
     name = model.__name__.removesuffix("Query") + "Body"
     config = ConfigDict(**{**model.model_config, "strict": True})
     integers = frozenset(
-        field for field, info in model.model_fields.items() if info.annotation in (int, int | None)
+        field
+        for field, schema in model.model_json_schema()["properties"].items()
+        if "integer" in {schema.get("type"), *(o.get("type") for o in schema.get("anyOf", []))}
     )
 
     def integral_floats(cls: type[BaseModel], data: Any) -> Any:
