@@ -163,7 +163,9 @@ def _selections(operations: dict[str, Any], schemas: dict[str, Any]) -> None:
 def _selection_schema(schema: dict[str, Any], name: str, ids: list[str]) -> dict[str, Any]:
     """A keyword alone, or a comma-separated list of this resource's ids: a pattern (a string
     schema, so that generated clients and fuzzers send it as the server reads it)."""
-    kept = {k: schema[k] for k in ("title", "description", "default") if k in schema}
+    kept: dict[str, Any] = {
+        k: schema[k] for k in ("title", "description", "default") if k in schema
+    }
     words = SELECTION_WORDS[name]
     if not ids:
         return {**kept, "type": "string", "enum": words}
@@ -176,7 +178,7 @@ def _selection_schema(schema: dict[str, Any], name: str, ids: list[str]) -> dict
 
 #: A real parameter is 0 or at least ``SMALLEST_MAGNITUDE`` in magnitude (app.schemas.common):
 #: the same rule in JSON Schema, added to every number a request takes.
-MAGNITUDE = [
+MAGNITUDE: list[dict[str, Any]] = [
     {"const": 0},
     {"minimum": SMALLEST_MAGNITUDE},
     {"maximum": -SMALLEST_MAGNITUDE},
