@@ -5,6 +5,7 @@ from typing import Annotated, Any
 from fastapi import APIRouter, Body, Depends, Path, Request, Response
 from fastapi.exceptions import RequestValidationError
 
+from app.geometry.surfaces import rotational
 from app.registry import DISCRETIZATIONS
 from app.responses import canonical_key
 from app.routers.caching import cached
@@ -15,6 +16,7 @@ from app.routers.common import (
     settings_of,
 )
 from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES, CurveQuery, strict_body
+from app.schemas.openapi_document import selection_schema
 from app.schemas.surfaces import (
     SURFACES_DESCRIPTION,
     SurfaceEntry,
@@ -37,6 +39,18 @@ def surfaces_of(identifier: str) -> list[str]:
     companions = DISCRETIZATIONS[identifier].info.companions
     has_tractrix = {"tractrix", "tractrix_gauss_image"} <= set(companions)
     return [k for k, kind in surface_service.KINDS.items() if kind.meridian == "p" or has_tractrix]
+
+
+def checks_of(kinds: list[str]) -> list[str]:
+    """The statement ids the surfaces ``kinds`` check (a catenoid's, a pseudosphere's)."""
+    claims = {
+        "constant-curvature" if surface_service.KINDS[k].meridian == "tractrix" else "minimal"
+        for k in kinds
+    }
+    ids: list[str] = []
+    for claim in sorted(claims, reverse=True):  # the catenoids' first
+        ids += [s.id for s in rotational.STATEMENTS[claim] if s.id not in ids]
+    return ids
 
 
 def documented_parameters(identifier: str, in_path: bool) -> list[dict[str, Any]]:
@@ -62,6 +76,8 @@ def documented_parameters(identifier: str, in_path: bool) -> list[dict[str, Any]
             description = schema.pop("description", "")
             schema.pop("title", None)
             schema.pop("x-domain", None)
+            if name == "checks" and owner == "surface":
+                schema = selection_schema(schema, "checks", checks_of(surfaces_of(identifier)))
             if name == "discretization":
                 schema["enum"] = [identifier]
                 description = (

@@ -151,16 +151,16 @@ def _selections(operations: dict[str, Any], schemas: dict[str, Any]) -> None:
         for parameter in operation.get("parameters", []):
             if parameter.get("in") == "query" and parameter["name"] in ids:
                 name = parameter["name"]
-                parameter["schema"] = _selection_schema(parameter["schema"], name, ids[name])
+                parameter["schema"] = selection_schema(parameter["schema"], name, ids[name])
         body = operation.get("requestBody", {}).get("content", {}).get("application/json")
         if method == "post" and body is not None:
             properties = _resolve(body.get("schema", {}), schemas).get("properties", {})
             for name in ids:
                 if name in properties:
-                    properties[name] = _selection_schema(properties[name], name, ids[name])
+                    properties[name] = selection_schema(properties[name], name, ids[name])
 
 
-def _selection_schema(schema: dict[str, Any], name: str, ids: list[str]) -> dict[str, Any]:
+def selection_schema(schema: dict[str, Any], name: str, ids: list[str]) -> dict[str, Any]:
     """A keyword alone, or a comma-separated list of this resource's ids: a pattern (a string
     schema, so that generated clients and fuzzers send it as the server reads it)."""
     kept: dict[str, Any] = {
