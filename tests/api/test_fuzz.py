@@ -5,10 +5,12 @@ Positive and negative data for every operation; `FUZZ_EXAMPLES` examples per ope
 content types, response schemas and headers documented, negative data rejected, Allow headers.
 
 Tight budgets (``FUZZ_SETTINGS``): every generated request stays cheap, and many go down the
-over-budget 422 paths. One documented relaxation: positive (schema-valid) requests may get a
-422, because some domains couple parameters (0 < d < h) or depend on the precision (float64
-ranges that would overflow), which an OpenAPI schema cannot express. Every such 422 is still
-checked to be problem+json naming a parameter (see `test_api`).
+over-budget 422 paths. Positive (schema-valid) requests may get a 422 for two documented reasons
+only: a runtime limit (listed with its value in the OpenAPI description, "Runtime limits"), or
+a domain that couples parameters (0 < d < h, i_min <= i_max, format=npy with precision=float64,
+…; each parameter's description and ``x-domain``), which a JSON Schema cannot express. Every such
+422 is still checked to be problem+json naming a parameter (see `test_api`); ``FUZZ_LOG`` lists
+them (docs/reliability.md counts them by kind).
 """
 
 from __future__ import annotations
