@@ -9,7 +9,7 @@
 
 import { plotSVG, widthFor, PALETTE } from './plot.js';
 
-/** @typedef {import('../../../tools/contract/openapi').components['schemas']} Schemas */
+/** @typedef {import('../../../tools/contract/api-types').components['schemas']} Schemas */
 /** A curve response, float64 or mp. @typedef {Schemas['CurveResponse'] | Schemas['CurveResponseMP']} Curve */
 /** @typedef {import('./plot.js').Point} Point */
 /** @typedef {import('./plot.js').Series} Series */
