@@ -7,11 +7,14 @@
 - ``OverloadedError`` (admission control, app/admission.py)      -> 503 with Retry-After
 - ``UnknownIdError``                                             -> 404 with the valid ids
 - a POST body that is not JSON                              -> 415
+- a GET whose Accept no format satisfies (app.negotiation)   -> 406 with the available ones
 - Starlette HTTP errors (unknown path, wrong method)        -> their status
 - anything else                                             -> 500 without internals
 
 Each problem's ``type`` is a path on this service (``/problems/{slug}``, served by
-app.routers.problems) naming one of ``PROBLEM_TYPES``; each type has one title.
+app.routers.problems) naming one of ``PROBLEM_TYPES`` (app.problem_types, with the response
+builder ``problem``); each type has one title. Besides the handlers: the app-wide request guards
+(undeclared query parameters, the digits limit) and ``HeadAsGet``.
 """
 
 from __future__ import annotations
@@ -21,7 +24,6 @@ import math
 import warnings
 from typing import Any
 
-import orjson
 from fastapi import FastAPI, Request, Response
 from fastapi.dependencies.models import Dependant
 from fastapi.exceptions import RequestValidationError
@@ -31,199 +33,29 @@ from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
 from app.admission import HardStopError, OverloadedError, current, overloaded_headers
 from app.geometry.errors import DomainError, GeometryError, TimeLimitError
-from app.geometry.precision import ExactReal
 from app.limits import LimitExceededError
+from app.problem_types import (
+    ECHO_ITEMS,
+    PROBLEM_MEDIA_TYPE,
+    PROBLEM_TYPES,
+    PROBLEMS_PATH,
+    ProblemType,
+    UnknownIdError,
+    json_safe,
+    problem,
+)
 
-PROBLEM_MEDIA_TYPE = "application/problem+json"
+__all__ = [
+    "PROBLEMS_PATH",
+    "PROBLEM_MEDIA_TYPE",
+    "PROBLEM_TYPES",
+    "ProblemType",
+    "UnknownIdError",
+    "install",
+    "json_safe",
+    "problem",
+]
 logger = logging.getLogger("app.errors")
-
-
-class UnknownIdError(LookupError):
-    """An id that is not in a catalog."""
-
-    def __init__(self, kind: str, value: str, valid: list[str]) -> None:
-        self.kind, self.value, self.valid = kind, value, valid
-        super().__init__(f"unknown {kind} {value!r}")
-
-
-class ProblemType:
-    """One kind of problem: its slug (the last part of its ``type`` URI), status and title."""
-
-    def __init__(self, slug: str, status: int, title: str, description: str) -> None:
-        self.slug, self.status, self.title, self.description = slug, status, title, description
-
-    @property
-    def uri(self) -> str:
-        """The ``type`` member: a path on this service, resolved against the request's URL."""
-        return f"{PROBLEMS_PATH}/{self.slug}"
-
-
-PROBLEMS_PATH = "/problems"
-
-PROBLEM_TYPES: dict[str, ProblemType] = {
-    t.slug: t
-    for t in (
-        ProblemType(
-            "invalid-parameters",
-            422,
-            "Invalid parameters",
-            "A query parameter or body field has the wrong type, breaks a bound of the "
-            "schema, is given twice, or is not a parameter of the endpoint; or the body is not "
-            "valid JSON. `errors` names each parameter with its constraint and the value sent.",
-        ),
-        ProblemType(
-            "outside-domain",
-            422,
-            "Outside the domain",
-            "The parameters are each valid but the construction is not defined for them (for "
-            "example d >= h), or the result is not representable in the chosen precision. "
-            "`errors` names the parameter and the condition it must satisfy.",
-        ),
-        ProblemType(
-            "over-limits",
-            422,
-            "Over the limits",
-            "The request would exceed a work limit of this deployment (vertices, digits, "
-            "mp work, samples, computation time). The limits are settings (DCOSH_MAX_…); the "
-            "constraint gives the bound in force.",
-        ),
-        ProblemType(
-            "unknown-id",
-            404,
-            "Unknown id",
-            "The path names a discretization, study, statement, figure, surface, erratum or "
-            "problem type that does not exist; `valid` lists those that do.",
-        ),
-        ProblemType("not-found", 404, "Not found", "No resource lives at this path."),
-        ProblemType(
-            "method-not-allowed",
-            405,
-            "Method not allowed",
-            "The resource exists but not with this method; the `Allow` header lists the ones "
-            "it has (HEAD wherever GET is served).",
-        ),
-        ProblemType(
-            "unsupported-media-type",
-            415,
-            "Unsupported media type",
-            "A POST body must be JSON: `Content-Type: application/json` (or a `+json` type).",
-        ),
-        ProblemType(
-            "bad-request",
-            400,
-            "Bad request",
-            "The request could not be read to its end (the client went away).",
-        ),
-        ProblemType(
-            "request-timeout",
-            408,
-            "Request timeout",
-            "The request body did not arrive within DCOSH_BODY_TIMEOUT seconds.",
-        ),
-        ProblemType(
-            "content-too-large",
-            413,
-            "Content too large",
-            "The request body is larger than DCOSH_MAX_BODY_BYTES (declared or, chunked, as it "
-            "arrives); nothing of it is kept.",
-        ),
-        ProblemType(
-            "time-limit",
-            422,
-            "Over the time limit",
-            "The computation could not finish within DCOSH_TIME_LIMIT seconds from the request's "
-            "arrival (waiting counts) and was stopped; ask for a shorter range or fewer digits.",
-        ),
-        ProblemType(
-            "overloaded",
-            503,
-            "Overloaded",
-            "The worker admits no more work now (its budget of concurrent work is spent, the "
-            "request could not finish by its deadline, or the worker is shutting down); retry "
-            "after the `Retry-After` seconds, on this or another replica.",
-        ),
-        ProblemType(
-            "internal-error",
-            500,
-            "Internal error",
-            "The service failed on this request. It was logged; no internals are shown.",
-        ),
-    )
-}
-_BY_TITLE = {t.title: t for t in PROBLEM_TYPES.values()}
-
-
-def problem(
-    status: int,
-    title: str,
-    detail: str,
-    errors: list[dict[str, Any]] | None = None,
-    kind: str | None = None,
-    **extra: Any,
-) -> Response:
-    """A problem+json response; ``type`` is the page of the problem type ``kind`` (its slug), or
-    of the type with this title (``about:blank`` for a title that has none, as RFC 9457 allows)."""
-    known = PROBLEM_TYPES.get(kind) if kind is not None else _BY_TITLE.get(title)
-    body = {
-        "type": known.uri if known is not None and known.status == status else "about:blank",
-        "title": title,
-        "status": status,
-        "detail": detail,
-        "errors": errors or [],
-        **extra,
-    }
-    return Response(
-        orjson.dumps(body, default=_exact_number),
-        status_code=status,
-        media_type=PROBLEM_MEDIA_TYPE,
-    )
-
-
-def _exact_number(value: Any) -> Any:
-    """A precision=mp parameter (``ExactReal``) as the JSON number the client wrote."""
-    if isinstance(value, ExactReal):
-        return orjson.Fragment(value.text)
-    raise TypeError(f"{type(value).__name__} is not JSON serializable")
-
-
-#: An error echoes at most this many characters of a received string, and this many items of a
-#: received list or object (the rest is cut off and counted), so a large input never comes back.
-ECHO_CHARS = 200
-ECHO_ITEMS = 20
-
-
-def _short(text: str) -> str:
-    if len(text) <= ECHO_CHARS:
-        return text
-    return f"{text[:ECHO_CHARS]}… ({len(text)} characters)"
-
-
-def json_safe(value: Any, depth: int = 0) -> Any:
-    """A received value as it can appear in JSON (non-finite floats as strings, bytes decoded),
-    cut to ``ECHO_CHARS`` characters and ``ECHO_ITEMS`` items per level, 4 levels deep."""
-    if isinstance(value, float) and not math.isfinite(value):
-        return str(value)
-    if isinstance(value, bytes):
-        return _short(value[: 4 * ECHO_CHARS].decode("utf-8", "replace"))
-    if isinstance(value, int) and not isinstance(value, bool) and not -(2**63) <= value < 2**63:
-        return _short(str(value))  # JSON encoders stop at 64 bits
-    if isinstance(value, str):
-        return _short(value)
-    if isinstance(value, int | float | bool) or value is None:
-        return value
-    if depth >= 4:
-        return _short(str(type(value).__name__))
-    if isinstance(value, list | tuple):
-        items = [json_safe(v, depth + 1) for v in value[:ECHO_ITEMS]]
-        if len(value) > ECHO_ITEMS:
-            items.append(f"… ({len(value)} items)")
-        return items
-    if isinstance(value, dict):
-        out = {_short(str(k)): json_safe(v, depth + 1) for k, v in list(value.items())[:ECHO_ITEMS]}
-        if len(value) > ECHO_ITEMS:
-            out["…"] = f"({len(value)} items)"
-        return out
-    return _short(str(value))
 
 
 _BOUNDS = {

@@ -19,6 +19,7 @@ from app.admission import (
 )
 from app.bounded_io import BoundedIO
 from app.compression import Compress
+from app.negotiation import Negotiation
 from app.response_cache import FastPath, ResponseCache
 from app.routers import (
     convergence,
@@ -50,7 +51,8 @@ A_i is the signed trapezoid area under the edge p_i p_{i+1}. `precision=mp` comp
 `digits` significant digits and returns coordinates as decimal strings. Errors are
 `application/problem+json` (RFC 9457) naming the parameter and its constraint; each problem's
 `type` is a page of this service (GET /problems). HEAD is answered wherever GET is. The
-representation is chosen by `format`; `Accept` is ignored except by the errata and problem pages.
+representation is chosen by `format`; a GET without it gets the one its `Accept` header prefers
+among those of the endpoint (406 if none; see each `format` parameter).
 """
 
 TAGS = [
@@ -113,6 +115,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.add_middleware(AdmissionGate, admission=app.state.admission)
     # cached answers still pass CORS and the security headers
     app.add_middleware(FastPath, cache=app.state.response_cache, settings=app.state.settings)
+    app.add_middleware(Negotiation)  # Accept → format, before the cache sees the query
     app.add_middleware(Compress, settings=app.state.settings)  # what the cache did not compress
     app.add_middleware(
         CORSMiddleware,

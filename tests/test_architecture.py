@@ -90,6 +90,8 @@ HTTP_PLUMBING = {
     "admission.py",
     "bounded_io.py",
     "compression.py",
+    "negotiation.py",
+    "problem_types.py",
     "response_cache.py",
     "security.py",
 }

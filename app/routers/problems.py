@@ -1,7 +1,7 @@
 """GET /problems and GET /problems/{slug}: the page behind every problem ``type`` URI.
 
 An error response's ``type`` (e.g. ``/problems/invalid-parameters``) resolves here, as HTML for
-a browser and as JSON otherwise (see app.errors.PROBLEM_TYPES: one title per type).
+a browser and as JSON otherwise (see app.problem_types.PROBLEM_TYPES: one title per type).
 """
 
 from __future__ import annotations
@@ -12,7 +12,7 @@ from typing import Annotated
 from fastapi import APIRouter, Path, Query, Request, Response
 from pydantic import BaseModel, Field
 
-from app.errors import PROBLEM_TYPES, PROBLEMS_PATH, ProblemType, UnknownIdError
+from app.problem_types import PROBLEM_TYPES, PROBLEMS_PATH, ProblemType, UnknownIdError
 from app.routers.errata import DOCUMENT_RESPONSES, STYLE, DocumentQuery, negotiated
 from app.schemas.common import NOT_FOUND_RESPONSE
 

@@ -3,7 +3,9 @@
 from typing import Annotated, Any
 
 from fastapi import APIRouter, Body, Depends, Path, Request, Response
+from fastapi.exceptions import RequestValidationError
 
+from app.geometry.surfaces import rotational
 from app.registry import DISCRETIZATIONS
 from app.responses import canonical_key
 from app.routers.caching import cached
@@ -13,7 +15,8 @@ from app.routers.common import (
     reject_repeated_parameters,
     settings_of,
 )
-from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES, CurveQuery
+from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES, CurveQuery, strict_body
+from app.schemas.openapi_document import selection_schema
 from app.schemas.surfaces import (
     SURFACES_DESCRIPTION,
     SurfaceEntry,
@@ -27,26 +30,63 @@ router = APIRouter(prefix="/surfaces", tags=["surfaces"])
 SURFACE_FIELDS = frozenset(SurfaceQuery.model_fields)
 
 
-def documented_parameters() -> list[dict[str, Any]]:
-    """Query parameters for OpenAPI: the surface's own, then every discretization's.
+DEFAULT_DISCRETIZATION = SurfaceQuery.model_fields["discretization"].default
 
-    The endpoint validates the discretization's parameters against the chosen discretization's
-    model; OpenAPI lists the union so that clients (the explorer) see the names.
+
+def surfaces_of(identifier: str) -> list[str]:
+    """The surfaces a discretization gives: the catenoids always (their meridian is p), the
+    pseudospheres when it has a tractrix and its Gauss image (d4b)."""
+    companions = DISCRETIZATIONS[identifier].info.companions
+    has_tractrix = {"tractrix", "tractrix_gauss_image"} <= set(companions)
+    return [k for k, kind in surface_service.KINDS.items() if kind.meridian == "p" or has_tractrix]
+
+
+def checks_of(kinds: list[str]) -> list[str]:
+    """The statement ids the surfaces ``kinds`` check (a catenoid's, a pseudosphere's)."""
+    claims = {
+        "constant-curvature" if surface_service.KINDS[k].meridian == "tractrix" else "minimal"
+        for k in kinds
+    }
+    ids: list[str] = []
+    for claim in sorted(claims, reverse=True):  # the catenoids' first
+        ids += [s.id for s in rotational.STATEMENTS[claim] if s.id not in ids]
+    return ids
+
+
+def documented_parameters(identifier: str, in_path: bool) -> list[dict[str, Any]]:
+    """Query parameters for OpenAPI: the surface's own, then the discretization's.
+
+    One discretization per path, so that every documented parameter is one the endpoint takes
+    (a union over discretizations would declare ``y1`` of D1 where D4b refuses it). On
+    ``/surfaces/{surface_id}/{discretization}`` the path names it; on ``/surfaces/{surface_id}``
+    the query parameter ``discretization`` is documented with the default alone.
     """
     parameters: list[dict[str, Any]] = []
     seen: set[str] = set()
     models: list[tuple[str, Any]] = [("surface", SurfaceQuery)]
-    models += [(identifier, entry.query) for identifier, entry in DISCRETIZATIONS.items()]
+    models.append((identifier, DISCRETIZATIONS[identifier].query))
     for owner, model in models:
-        for name, schema in model.model_json_schema()["properties"].items():
+        for name, schema in model.model_json_schema(by_alias=True)["properties"].items():
             if name in seen or (owner != "surface" and name in {"format", "detail"}):
                 continue
             seen.add(name)
+            if name == "discretization" and in_path:
+                continue
             schema = dict(schema)
             description = schema.pop("description", "")
             schema.pop("title", None)
             schema.pop("x-domain", None)
-            if owner != "surface":
+            if name == "checks" and owner == "surface":
+                schema = selection_schema(schema, "checks", checks_of(surfaces_of(identifier)))
+            if name == "discretization":
+                schema["enum"] = [identifier]
+                description = (
+                    f"Discretization giving the meridian: `{identifier}` on this path. Every "
+                    "discretization has its own path, `/surfaces/{surface_id}/{discretization}`, "
+                    "with its parameters (this path still takes the other ids, with their "
+                    "parameters, for older links)."
+                )
+            elif owner != "surface":
                 description = f"Parameter of the discretization ({owner}: {description})"
             parameters.append(
                 {
@@ -60,14 +100,32 @@ def documented_parameters() -> list[dict[str, Any]]:
     return parameters
 
 
+def documented_body(identifier: str, in_path: bool) -> dict[str, Any]:
+    """The POST body for OpenAPI: an object of the same parameters, no other member."""
+    properties = {
+        p["name"]: {**p["schema"], "description": p["description"]}
+        for p in documented_parameters(identifier, in_path)
+    }
+    schema = {
+        "type": "object",
+        "title": f"Surface{identifier.replace('-', '').title()}Body",
+        "description": "Surface and discretization parameters.",
+        "properties": properties,
+        "additionalProperties": False,
+    }
+    return {"requestBody": {"required": True, "content": {"application/json": {"schema": schema}}}}
+
+
 RESPONSES: dict[int | str, dict[str, Any]] = {
     200: {
         "content": {
             "model/obj": {"schema": {"type": "string"}},
             "application/octet-stream": {"schema": {"type": "string", "format": "binary"}},
             "model/gltf-binary": {"schema": {"type": "string", "format": "binary"}},
+            "application/xml": {"schema": {"type": "string"}},
         },
-        "description": "The mesh as JSON (default), OBJ, PLY or GLB (`format`); files carry a "
+        "description": "The mesh as JSON (default), OBJ, PLY (application/octet-stream), VTU "
+        "(application/xml) or GLB (`format`); files carry a "
         "Content-Disposition file name. GET responses carry an ETag and Cache-Control.",
     },
     304: {"description": "Not modified (the If-None-Match ETag matches)."},
@@ -90,31 +148,59 @@ def list_surfaces() -> list[SurfaceEntry]:
     ]
 
 
-def _split(values: dict[str, Any]) -> tuple[SurfaceQuery, dict[str, Any]]:
+#: The strict JSON-body variant of ``SurfaceQuery`` (POST: `false` is not an integer there).
+SURFACE_BODY = strict_body(SurfaceQuery)  # type: ignore[arg-type]
+
+
+def _split(values: dict[str, Any], strict: bool) -> tuple[SurfaceQuery, dict[str, Any]]:
     """The surface's own parameters, and the rest (the discretization's)."""
     own = {k: v for k, v in values.items() if k in SURFACE_FIELDS}
     rest = {k: v for k, v in values.items() if k not in SURFACE_FIELDS}
-    return parse_query(SurfaceQuery, own), rest
+    model: type[SurfaceQuery] = SURFACE_BODY if strict else SurfaceQuery  # type: ignore[assignment]
+    return parse_query(model, own), rest
 
 
 def parse(
-    identifier: str, values: dict[str, Any]
+    identifier: str, values: dict[str, Any], strict: bool = False
 ) -> tuple[surface_service.SurfaceKind, SurfaceQuery, CurveQuery]:
-    """The surface kind, the surface's own parameters and its discretization's, validated."""
+    """The surface kind, the surface's own parameters and its discretization's, validated (a
+    JSON body strictly, as POST /discretizations/{id} validates it)."""
     kind = surface_service.kind_of(identifier)
-    surface, rest = _split(values)
+    surface, rest = _split(values, strict)
     entry = discretization(surface.discretization)
-    return kind, surface, parse_query(entry.query, rest)
+    return kind, surface, parse_query(entry.body if strict else entry.query, rest)
 
 
 def _build(identifier: str, values: dict[str, Any], request: Request) -> tuple[Any, Any]:
-    kind, surface, curve_query = parse(identifier, values)
+    kind, surface, curve_query = parse(identifier, values, strict=request.method == "POST")
     return kind, (surface, curve_query)
 
 
 def _file(result: surface_service.SurfaceResult, file_format: str) -> Response:
     body, media_type, headers = surface_service.encoded(result, file_format)
     return Response(body, media_type=media_type, headers=headers)
+
+
+def _get(request: Request, surface_id: str, values: dict[str, Any]) -> Response:
+    kind, (surface, curve_query) = _build(surface_id, values, request)
+    settings = settings_of(request)
+    # one key for every path of the same surface: /surfaces/catenoid?discretization=d1 and
+    # /surfaces/catenoid/d1 are one answer with one ETag
+    key = canonical_key(
+        f"/surfaces/{surface_id}",
+        {"surface": surface.model_dump(), "curve": curve_query.model_dump()},
+    )
+    return cached(
+        request,
+        key,
+        settings,
+        lambda: _file(
+            surface_service.compute(kind, surface, curve_query, settings), surface.format
+        ),
+    )
+
+
+SURFACE_ID_DESCRIPTION = "`catenoid`, `pseudosphere`, or either's `-gauss-image`."
 
 
 @router.get(
@@ -124,31 +210,19 @@ def _file(result: surface_service.SurfaceResult, file_format: str) -> Response:
     response_model=SurfaceResponse,
     responses=RESPONSES,
     dependencies=[Depends(reject_repeated_parameters)],
-    openapi_extra={"parameters": documented_parameters()},
+    openapi_extra={"parameters": documented_parameters(DEFAULT_DISCRETIZATION, in_path=False)},
 )
 def get_surface(
     request: Request,
     surface_id: Annotated[
         str,
         Path(
-            description="`catenoid`, `pseudosphere`, or either's `-gauss-image`.",
-            json_schema_extra={"enum": list(surface_service.KINDS)},
+            description=SURFACE_ID_DESCRIPTION,
+            json_schema_extra={"enum": surfaces_of(DEFAULT_DISCRETIZATION)},
         ),
     ],
 ) -> Response:
-    kind, (surface, curve_query) = _build(surface_id, dict(request.query_params), request)
-    settings = settings_of(request)
-    key = canonical_key(
-        request.url.path, {"surface": surface.model_dump(), "curve": curve_query.model_dump()}
-    )
-    return cached(
-        request,
-        key,
-        settings,
-        lambda: _file(
-            surface_service.compute(kind, surface, curve_query, settings), surface.format
-        ),
-    )
+    return _get(request, surface_id, dict(request.query_params))
 
 
 @router.post(
@@ -158,22 +232,77 @@ def get_surface(
     "a custom (D2b) sequence `s`).",
     response_model=SurfaceResponse,
     responses=RESPONSES,
+    openapi_extra=documented_body(DEFAULT_DISCRETIZATION, in_path=False),
 )
 def post_surface(
     request: Request,
     surface_id: Annotated[str, Path(description="Surface id.")],
     body: Annotated[dict[str, Any], Body(description="Surface and discretization parameters.")],
 ) -> Response:
-    kind, (surface, curve_query) = _build(surface_id, body, request)
-    settings = settings_of(request)
-    key = canonical_key(
-        request.url.path, {"surface": surface.model_dump(), "curve": curve_query.model_dump()}
+    return _get(request, surface_id, body)
+
+
+def _with_discretization(identifier: str, values: dict[str, Any]) -> dict[str, Any]:
+    """The parameters with the discretization the path names; it is not a parameter here."""
+    if "discretization" in values:
+        raise RequestValidationError(
+            [
+                {
+                    "type": "extra_forbidden",
+                    "loc": ("query", "discretization"),
+                    "msg": "the path names the discretization",
+                    "input": values["discretization"],
+                }
+            ]
+        )
+    return {**values, "discretization": identifier}
+
+
+def _add_discretization_routes(identifier: str) -> None:
+    """GET and POST /surfaces/{surface_id}/{identifier}: the surfaces of one discretization,
+    documented with exactly its parameters."""
+    path = f"/{{surface_id}}/{identifier}"
+    kinds = surfaces_of(identifier)
+    surface_path = Path(description=SURFACE_ID_DESCRIPTION, json_schema_extra={"enum": kinds})
+
+    def get(request: Request, surface_id: Annotated[str, surface_path]) -> Response:
+        return _get(
+            request, surface_id, _with_discretization(identifier, dict(request.query_params))
+        )
+
+    def post(
+        request: Request,
+        surface_id: Annotated[str, surface_path],
+        body: Annotated[dict[str, Any], Body(description="Surface and discretization parameters.")],
+    ) -> Response:
+        return _get(request, surface_id, _with_discretization(identifier, body))
+
+    router.add_api_route(
+        path,
+        get,
+        methods=["GET"],
+        name=f"get_surface_{identifier}",
+        summary=f"One discrete surface of revolution with a {identifier} meridian",
+        description=f"As `GET /surfaces/{{surface_id}}` with `discretization={identifier}`; the "
+        f"query takes the surface's parameters and those of {identifier}.",
+        response_model=SurfaceResponse,
+        responses=RESPONSES,
+        dependencies=[Depends(reject_repeated_parameters)],
+        openapi_extra={"parameters": documented_parameters(identifier, in_path=True)},
     )
-    return cached(
-        request,
-        key,
-        settings,
-        lambda: _file(
-            surface_service.compute(kind, surface, curve_query, settings), surface.format
-        ),
+    router.add_api_route(
+        path,
+        post,
+        methods=["POST"],
+        name=f"post_surface_{identifier}",
+        summary=f"One discrete surface of revolution with a {identifier} meridian (JSON body)",
+        description=f"As GET /surfaces/{{surface_id}}/{identifier}, with the parameters in a "
+        "JSON object.",
+        response_model=SurfaceResponse,
+        responses=RESPONSES,
+        openapi_extra=documented_body(identifier, in_path=True),
     )
+
+
+for _identifier in DISCRETIZATIONS:
+    _add_discretization_routes(_identifier)

@@ -216,7 +216,9 @@ def strict_body(model: type[CurveQuery]) -> type[CurveQuery]:
     name = model.__name__.removesuffix("Query") + "Body"
     config = ConfigDict(**{**model.model_config, "strict": True})
     integers = frozenset(
-        field for field, info in model.model_fields.items() if info.annotation in (int, int | None)
+        field
+        for field, schema in model.model_json_schema()["properties"].items()
+        if "integer" in {schema.get("type"), *(o.get("type") for o in schema.get("anyOf", []))}
     )
 
     def integral_floats(cls: type[BaseModel], data: Any) -> Any:
@@ -247,6 +249,13 @@ class ProblemParameterError(BaseModel):
     value: JSONValue = Field(None, description="The value received (as sent, or null if absent).")
 
 
+class ProblemFormat(BaseModel):
+    """One representation an endpoint has (406 Not acceptable lists them)."""
+
+    format: str = Field(description="The value of the query parameter `format` that asks for it.")
+    media_type: str = Field(description="Its media type, as `Accept` names it.")
+
+
 class Problem(BaseModel):
     """RFC 9457 problem details, with the offending parameters in `errors`."""
 
@@ -258,6 +267,9 @@ class Problem(BaseModel):
         default_factory=list, description="The parameters at fault, each with its constraint."
     )
     valid: list[str] | None = Field(None, description="For unknown ids: the ids that exist.")
+    available: list[ProblemFormat] | None = Field(
+        None, description="For 406 Not acceptable: the representations the endpoint has."
+    )
 
 
 PROBLEM_RESPONSES: dict[int | str, dict[str, Any]] = {

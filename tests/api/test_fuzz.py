@@ -5,15 +5,19 @@ Positive and negative data for every operation; `FUZZ_EXAMPLES` examples per ope
 content types, response schemas and headers documented, negative data rejected, Allow headers.
 
 Tight budgets (``FUZZ_SETTINGS``): every generated request stays cheap, and many go down the
-over-budget 422 paths. One documented relaxation: positive (schema-valid) requests may get a
-422, because some domains couple parameters (0 < d < h) or depend on the precision (float64
-ranges that would overflow), which an OpenAPI schema cannot express. Every such 422 is still
-checked to be problem+json naming a parameter (see `test_api`).
+over-budget 422 paths. Positive (schema-valid) requests may get a 422 for two documented reasons
+only: a runtime limit (listed with its value in the OpenAPI description, "Runtime limits"), or
+a domain that couples parameters (0 < d < h, i_min <= i_max, format=npy with precision=float64,
+…; each parameter's description and ``x-domain``), which a JSON Schema cannot express. Every such
+422 is still checked to be problem+json naming a parameter (see `test_api`); ``FUZZ_LOG`` lists
+them (docs/reliability.md counts them by kind).
 """
 
 from __future__ import annotations
 
+import json
 import os
+from typing import Any
 
 import pytest
 import schemathesis
@@ -24,6 +28,10 @@ from app.main import create_app
 from app.settings import Settings
 
 EXAMPLES = int(os.environ.get("FUZZ_EXAMPLES", "120"))
+#: ``FUZZ_LOG=path``: one JSON line per request (operation, generation mode, status, and for a
+#: positive request refused with 422 the request and the problem's errors), in ``path.<pid>``
+#: (one file per xdist worker), to count requests and list the schema-valid inputs refused.
+LOG = os.environ.get("FUZZ_LOG")
 
 #: Fuzzing tests that every input gets a correct answer or a clear error, not capacity (that is
 #: `make load`): tight budgets keep every generated request cheap, so that thousands run in
@@ -62,9 +70,29 @@ schema.config.checks.positive_data_acceptance = PositiveDataAcceptanceConfig(
 @settings(max_examples=EXAMPLES, deadline=None, suppress_health_check=list(HealthCheck))
 def test_api(case: schemathesis.Case) -> None:
     response = case.call_and_validate()
+    if LOG:
+        _log(case, response)
     if response.status_code == 422:
         problem = response.json()
         where = case.as_curl_command()
         assert response.headers["content-type"][0] == "application/problem+json", where
         assert problem["errors"], (problem, where)
         assert all(e["parameter"] and e["constraint"] for e in problem["errors"]), (problem, where)
+
+
+def _log(case: schemathesis.Case, response: Any) -> None:
+    meta = case.meta
+    mode = "explicit" if meta is None else meta.generation.mode.value
+    if meta is not None and any(c.mode.is_negative for c in meta.components.values()):
+        mode = "negative"
+    line: dict[str, Any] = {
+        "operation": f"{case.method} {case.path}",
+        "mode": mode,
+        "status": response.status_code,
+    }
+    if response.status_code == 422 and mode != "negative":
+        line["request"] = case.as_curl_command()
+        line["errors"] = response.json().get("errors")
+        line["title"] = response.json().get("title")
+    with open(f"{LOG}.{os.getpid()}", "a", encoding="utf-8") as out:
+        out.write(json.dumps(line, default=str) + "\n")

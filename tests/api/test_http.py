@@ -177,3 +177,38 @@ def test_catalogs_and_static_files_are_gzipped(client: TestClient) -> None:
         headers={"accept-encoding": "gzip", "if-none-match": script.headers["etag"]},
     )
     assert again.status_code == 304
+
+
+def test_three_js_is_fingerprinted_immutable_and_gzipped(client: TestClient) -> None:
+    import re
+
+    from app.routers.explorer import THREE, directory_fingerprint
+
+    importmap = json.loads(
+        re.search(r'<script type="importmap">(.*?)</script>', client.get("/").text, re.S).group(1)  # type: ignore[union-attr]
+    )["imports"]
+    fingerprint = directory_fingerprint(THREE)
+    assert importmap == {
+        "three": f"/assets/three-{fingerprint}/build/three.module.js",
+        "three/addons/": f"/assets/three-{fingerprint}/examples/jsm/",
+    }
+    for url in (
+        importmap["three"],
+        importmap["three"].replace("three.module.js", "three.core.js"),  # its relative import
+        importmap["three/addons/"] + "loaders/GLTFLoader.js",
+        importmap["three/addons/"] + "controls/OrbitControls.js",
+    ):
+        plain = client.get(url, headers={"accept-encoding": "identity"})
+        zipped = client.get(url, headers={"accept-encoding": "gzip"})
+        assert plain.status_code == zipped.status_code == 200, url
+        assert plain.headers["cache-control"] == "public, max-age=31536000, immutable"
+        assert zipped.headers["content-encoding"] == "gzip" and zipped.content == plain.content
+        assert plain.content == (THREE / url.split(f"three-{fingerprint}/", 1)[1]).read_bytes()
+        again = client.get(url, headers={"if-none-match": plain.headers["etag"]})
+        assert again.status_code == 304
+    missing = client.get(f"/assets/three-{fingerprint}/build/none.js")
+    assert missing.status_code == 404 and "immutable" not in missing.headers.get(
+        "cache-control", ""
+    )
+    # another fingerprint is not served: an address never changes content
+    assert client.get("/assets/three-0000000000000000/build/three.module.js").status_code == 404

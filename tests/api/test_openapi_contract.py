@@ -178,3 +178,92 @@ def test_post_documents_415(client: TestClient) -> None:
     responses = SPEC["paths"]["/discretizations/d4b"]["post"]["responses"]
     assert "415" in responses
     assert client.post("/discretizations/d4b", content=b"x").status_code == 415
+
+
+def _query_names(path: str) -> set[str]:
+    return {p["name"] for p in SPEC["paths"][path]["get"]["parameters"] if p["in"] == "query"}
+
+
+def test_each_surface_path_documents_exactly_the_parameters_it_takes(client: TestClient) -> None:
+    from app.registry import DISCRETIZATIONS
+
+    surface = {"m", "steps", "gauss_image", "format", "checks"}
+    default = _query_names("/surfaces/{surface_id}")
+    assert "y1" not in default and default >= surface | {"discretization", "h", "d"}
+    for identifier, entry in DISCRETIZATIONS.items():
+        own = {f.alias or name for name, f in entry.query.model_fields.items()}
+        path = f"/surfaces/{{surface_id}}/{identifier}"
+        assert _query_names(path) == surface | (own - {"detail"}), identifier
+        body = SPEC["paths"][path]["post"]["requestBody"]["content"]["application/json"]
+        assert body["schema"]["additionalProperties"] is False
+    # D1's y1: documented on D1's path, taken there; one answer (and ETag) with the old spelling
+    ok = client.get("/surfaces/catenoid-gauss-image/d1?y1=1.5&m=3&i_min=-2&i_max=2")
+    assert ok.status_code == 200, ok.text
+    old = client.get("/surfaces/catenoid-gauss-image?discretization=d1&y1=1.5&m=3&i_min=-2&i_max=2")
+    assert old.json() == ok.json() and old.headers["etag"] == ok.headers["etag"]
+    posted = client.post(
+        "/surfaces/catenoid-gauss-image/d1", json={"y1": 1.5, "m": 3, "i_min": -2, "i_max": 2}
+    )
+    assert posted.json() == ok.json()
+    # the path names the discretization; the default path's y1 stays refused, as documented
+    for refused in (
+        client.get("/surfaces/catenoid/d1?discretization=d1"),
+        client.get("/surfaces/catenoid?y1=1.0"),
+    ):
+        assert refused.status_code == 422
+        assert refused.json()["errors"][0]["constraint"] == "not a parameter of this endpoint"
+    pseudo = SPEC["paths"]["/surfaces/{surface_id}/d1"]["get"]["parameters"][0]["schema"]["enum"]
+    assert pseudo == ["catenoid", "catenoid-gauss-image"]
+
+
+def test_every_real_parameter_documents_and_gets_the_smallest_magnitude(client: TestClient) -> None:
+    """The schema's rule (0 or at least 1e-100 in magnitude) is the server's, on every endpoint."""
+    checked = 0
+    for path, method, operation in operations():
+        if method != "get":
+            continue
+        url = path.replace("{surface_id}", "catenoid").replace("{statement_id}", "theorem-5")
+        for parameter in operation.get("parameters", []):
+            schema = parameter["schema"]
+            numbers = [schema, *schema.get("anyOf", [])]
+            if not any(s.get("type") == "number" for s in numbers):
+                continue
+            assert any(
+                s.get("anyOf") == [{"const": 0}, {"minimum": 1e-100}, {"maximum": -1e-100}]
+                for s in numbers
+            ), (path, parameter["name"])
+            if "{" in url:
+                continue
+            response = client.get(url, params={parameter["name"]: "1e-200"})
+            assert response.status_code == 422, (url, parameter["name"])
+            named = [e["parameter"] for e in response.json()["errors"]]
+            assert parameter["name"] in named, (url, parameter["name"], response.json())
+            checked += 1
+    assert checked > 50
+
+
+def test_nullable_array_parameters_are_comma_separated_too(client: TestClient) -> None:
+    parameters = SPEC["paths"]["/discretizations/d2b"]["get"]["parameters"]
+    s = next(p for p in parameters if p["name"] == "s")
+    assert (s["style"], s["explode"]) == ("form", False)
+    url = "/discretizations/d2b?sequence=custom&s=0,0.25,0.5&i_min=0&i_max=2"
+    assert client.get(url).status_code == 200
+
+
+def test_an_integral_float_is_an_integer_also_in_an_annotated_optional_field(
+    client: TestClient,
+) -> None:
+    as_float = client.post("/discretizations/d2b", json={"j": 6.0, "i_max": 6.0})
+    as_int = client.post("/discretizations/d2b", json={"j": 6, "i_max": 6})
+    assert as_float.status_code == 200, as_float.text
+    assert as_float.json() == as_int.json()
+    assert client.post("/discretizations/d2b", json={"j": 6.5}).status_code == 422
+
+
+def test_the_runtime_limits_in_force_are_listed_in_the_document() -> None:
+    text = SPEC["info"]["description"]
+    assert "## Runtime limits" in text
+    for name in ("MAX_VERTICES", "MAX_MP_WORK", "MAX_MESH_VERTICES", "TIME_LIMIT"):
+        assert f"`DCOSH_{name}`" in text
+    small = create_app(Settings(max_convergence_levels=6)).openapi()["info"]["description"]
+    assert "| `DCOSH_MAX_CONVERGENCE_LEVELS` | 6 |" in small

@@ -1,10 +1,25 @@
 // A small SVG plotter for the explorer: equal scales, axes with ticks, one <g> per series.
 // It mirrors the server's writer (app/rendering/svg.py) so that both pictures read alike.
 
+// @ts-check
+// Type-checked by `make contract` (tsc --strict --checkJs, tools/contract/tsconfig.explorer.json).
+
+/** A point as the plot reads it. @typedef {[number, number]} Point */
+/**
+ * One drawn polyline.
+ * @typedef {{name: string, label: string, points: Point[], color: string, width?: number,
+ *   dashed?: boolean, markers?: boolean}} Series
+ */
+
 const NS = 'http://www.w3.org/2000/svg';
 export const PALETTE = ['#0072B2', '#D55E00', '#009E73', '#CC79A7', '#E69F00', '#56B4E9', '#000000'];
 const MAX_MARKERS = 400;
 
+/**
+ * @param {string} name
+ * @param {Record<string, string | number>} [attributes]
+ * @param {string | null} [text]
+ */
 function el(name, attributes = {}, text = null) {
   const node = document.createElementNS(NS, name);
   for (const [key, value] of Object.entries(attributes)) node.setAttribute(key, String(value));
@@ -12,6 +27,7 @@ function el(name, attributes = {}, text = null) {
   return node;
 }
 
+/** @param {number} span @param {number} target */
 function niceStep(span, target) {
   const raw = span / Math.max(target, 1);
   const magnitude = 10 ** Math.floor(Math.log10(raw));
@@ -19,6 +35,7 @@ function niceStep(span, target) {
   return 10 * magnitude;
 }
 
+/** @param {number} value @param {number} step */
 function tickLabel(value, step) {
   const decimals = Math.max(0, -Math.floor(Math.log10(step) + 1e-9));
   if (Math.abs(value) < step * 1e-6) value = 0;
@@ -27,6 +44,7 @@ function tickLabel(value, step) {
   return text.replace('-', '\u2212');
 }
 
+/** @param {number[]} values @returns {[number, number]} */
 function range(values) {
   let low = Infinity;
   let high = -Infinity;
@@ -41,6 +59,7 @@ function range(values) {
 
 // The picture's width in its own units for a container: on a phone the plot is drawn narrower
 // (not scaled down), so that its labels keep their size.
+/** @param {HTMLElement | null | undefined} container */
 export function widthFor(container) {
   const available = container?.clientWidth || 800;
   return Math.round(Math.max(340, Math.min(800, available)));
@@ -49,9 +68,16 @@ export function widthFor(container) {
 // series: [{name, label, points: [[x, y], ...], color, dashed, width, markers}]
 // bounds: [[x, y], ...] points the view must include (a fixed frame for an animation);
 // id: distinguishes the clip path of several plots on one page.
+/**
+ * @param {Series[]} series
+ * @param {{width?: number, height?: number, title?: string, bounds?: Point[], id?: string}} [options]
+ */
 export function plotSVG(series, { width = 800, height = 520, title = '', bounds = [], id = 'explorer-plot' } = {}) {
   const left = 60, right = width - 12, top = 12, bottom = height - 44;
-  const xs = [], ys = [];
+  /** @type {number[]} */
+  const xs = [];
+  /** @type {number[]} */
+  const ys = [];
   for (const s of series) for (const [x, y] of s.points) { xs.push(x); ys.push(y); }
   for (const [x, y] of bounds) { xs.push(x); ys.push(y); }
   let [x0, x1] = range(xs);
@@ -62,8 +88,8 @@ export function plotSVG(series, { width = 800, height = 520, title = '', bounds 
   const b = Math.min(w / (x1 - x0), h / (y1 - y0));
   const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
   x0 = cx - w / (2 * b); x1 = cx + w / (2 * b); y0 = cy - h / (2 * b); y1 = cy + h / (2 * b);
-  const X = (x) => left + b * (x - x0);
-  const Y = (y) => top + b * (y1 - y);
+  const X = (/** @type {number} */ x) => left + b * (x - x0);
+  const Y = (/** @type {number} */ y) => top + b * (y1 - y);
 
   const svg = el('svg', {
     viewBox: `0 0 ${width} ${height}`, role: 'img', 'aria-label': title,

@@ -1,3 +1,4 @@
+// @ts-check (three.js has no type declarations here: tools/contract/three.d.ts types it as any)
 // The 3D view: a surface from GET /surfaces/{id}?format=glb, drawn with three.js, coloured by
 // the per-face curvature attributes `_K` / `_H` of the glTF file (three.js names them `_k`, `_h`).
 
@@ -5,14 +6,17 @@ import * as THREE from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 
+/** The view shown now, to be disposed of before the next. @type {{dispose(): void} | null} */
 let current = null;
 
+/** @param {ArrayBuffer} buffer @returns {Promise<any>} the parsed glTF */
 function parse(buffer) {
   return new Promise((resolve, reject) => new GLTFLoader().parse(buffer, '', resolve, reject));
 }
 
 // blue (negative) – white (0) – red (positive), symmetric about 0 when the values change sign;
 // a constant quantity is drawn in one colour and said so in the legend.
+/** @param {number} value @param {number} low @param {number} high */
 function colour(value, low, high) {
   const c = new THREE.Color();
   if (!(high > low)) return c.setRGB(0.35, 0.55, 0.85);
@@ -25,6 +29,7 @@ function colour(value, low, high) {
   return c.setRGB(0.2 + 0.75 * t, 0.35 + 0.3 * (1 - Math.abs(2 * t - 1)), 0.95 - 0.75 * t);
 }
 
+/** @param {any} geometry a three.js BufferGeometry @param {string} name */
 function attribute(geometry, name) {
   return geometry.getAttribute(name) || geometry.getAttribute(name.toUpperCase());
 }
@@ -33,6 +38,7 @@ function attribute(geometry, name) {
 // a millionth of each other are one value, and values far below the surface's own scale of the
 // quantity (1/size for H, 1/size² for K) are zero up to rounding — colouring that noise would
 // paint stripes where the service computed 0.
+/** @param {number} low @param {number} high @param {string} quantity @param {number} size */
 function classify(low, high, quantity, size) {
   const top = Math.max(Math.abs(low), Math.abs(high));
   const unit = quantity === '_k' ? 1 / (size * size) : 1 / size;
@@ -41,6 +47,7 @@ function classify(low, high, quantity, size) {
   return 'varies';
 }
 
+/** @param {any[]} meshes three.js meshes @param {string} quantity @param {number} size */
 function paint(meshes, quantity, size) {
   let low = Infinity, high = -Infinity, found = false;
   for (const mesh of meshes) {
@@ -72,13 +79,20 @@ function paint(meshes, quantity, size) {
   return `${name} from ${low.toPrecision(4)} (blue) to ${high.toPrecision(4)} (${low < 0 && high > 0 ? 'red; white is 0' : 'red'}).`;
 }
 
+/**
+ * @param {HTMLElement} container
+ * @param {ArrayBuffer} buffer a GLB file (GET /surfaces/{id}?format=glb)
+ * @param {string} quantity `_k`, `_h` or `none`
+ * @returns {Promise<{triangles: number, legend: string}>}
+ */
 export async function showSurface(container, buffer, quantity) {
   const gltf = await parse(buffer);
   current?.dispose();
   const scene = new THREE.Scene();
   scene.background = new THREE.Color(0xf4f6f8);
+  /** @type {any[]} */
   const meshes = [];
-  gltf.scene.traverse((node) => { if (node.isMesh) meshes.push(node); });
+  gltf.scene.traverse((/** @type {any} */ node) => { if (node.isMesh) meshes.push(node); });
   if (!meshes.length) throw new Error('the file holds no mesh');
   const group = new THREE.Group();
   group.add(gltf.scene);
@@ -110,7 +124,7 @@ export async function showSurface(container, buffer, quantity) {
   controls.addEventListener('change', render);
 
   const step = Math.PI / 18;
-  const act = (what) => {
+  const act = (/** @type {string | undefined} */ what) => {
     if (what === 'left') group.rotation.y -= step;
     else if (what === 'right') group.rotation.y += step;
     else if (what === 'up') group.rotation.x -= step;
@@ -121,11 +135,12 @@ export async function showSurface(container, buffer, quantity) {
     render();
     return true;
   };
+  /** @type {Record<string, string>} */
   const keys = { ArrowLeft: 'left', ArrowRight: 'right', ArrowUp: 'up', ArrowDown: 'down', '+': 'in', '=': 'in', '-': 'out' };
-  const onKey = (event) => { if (keys[event.key] && act(keys[event.key])) event.preventDefault(); };
+  const onKey = (/** @type {KeyboardEvent} */ event) => { if (keys[event.key] && act(keys[event.key])) event.preventDefault(); };
   container.addEventListener('keydown', onKey);
   const buttons = [...document.querySelectorAll('[data-rotate]')];
-  const onButton = (event) => act(event.currentTarget.dataset.rotate);
+  const onButton = (/** @type {Event} */ event) => act(/** @type {HTMLElement} */ (event.currentTarget).dataset.rotate);
   for (const b of buttons) b.addEventListener('click', onButton);
   const onResize = () => {
     const w = container.clientWidth || width, h = container.clientHeight || height;
