@@ -8,6 +8,7 @@ import pytest
 from fastapi.testclient import TestClient
 
 from app import limits
+from app.admission import HardStopError
 from app.geometry.d4b import discretization as d4b
 from app.geometry.errors import TimeLimitError
 from app.geometry.precision import Arithmetic, Float64, MultiPrecision
@@ -97,3 +98,26 @@ def test_the_core_checks_the_clock_in_its_loops(ar: Float64 | MultiPrecision) ->
     ar.start_clock(-1.0, "i_max")  # already past
     with pytest.raises(TimeLimitError, match="i_max must satisfy the computation finishes"):
         d4b.compute(ar, 1.0, 0.001, None, 0, 5000)
+
+
+def test_a_hard_stop_that_lands_inside_an_extension_is_the_time_limit_not_a_500() -> None:
+    """The watchdog's asynchronous HardStopError can surface as a SystemError caused by it (numba
+    loading a kernel when the exception arrives): still the time-limit problem, never a 500."""
+    app = create_app(Settings())
+
+    @app.get("/__stopped_inside")
+    def stopped_inside() -> None:
+        try:
+            raise HardStopError
+        except HardStopError as stop:
+            raise SystemError(
+                "<built-in function x> returned a result with an exception set"
+            ) from stop
+
+    with TestClient(app, raise_server_exceptions=False) as client:
+        response = client.get("/__stopped_inside")
+    assert response.status_code == 422
+    assert response.headers["content-type"] == "application/problem+json"
+    body = response.json()
+    assert body["title"] == "Over the time limit"
+    assert body["type"].endswith("/problems/time-limit")
