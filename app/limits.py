@@ -78,11 +78,17 @@ def admit(settings: Settings, seconds: float, nbytes: float, parameter: str, val
     request's admission ticket (a 503 when the worker's budget is taken, app/admission.py)."""
     seconds += BASE_SECONDS
     nbytes = int(nbytes + BASE_BYTES)
-    if seconds > settings.admission_seconds:
+    # alone on a free core it must fit both the worker's budget and the time limit; past either
+    # waiting cannot help (a 422, not a 503 asking to retry)
+    ceiling, setting = min(
+        (settings.admission_seconds, "DCOSH_ADMISSION_SECONDS"),
+        (settings.time_limit, "DCOSH_TIME_LIMIT"),
+    )
+    if seconds > ceiling:
         raise LimitExceededError(
             parameter,
-            f"estimated time <= {settings.admission_seconds:g} s (DCOSH_ADMISSION_SECONDS; "
-            f"this request needs about {seconds:.3g} s)",
+            f"estimated time <= {ceiling:g} s ({setting}; this request needs about "
+            f"{seconds:.3g} s)",
             value,
         )
     if nbytes > settings.admission_bytes:

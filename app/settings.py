@@ -80,7 +80,8 @@ class Settings(BaseSettings):
         20.0,
         gt=0,
         description="Seconds from a request's arrival to its answer: waiting counts; a request "
-        "that cannot finish in time is refused before it starts (503), and a computation "
+        "that cannot finish in time now is refused before it starts (503; a 422 when its "
+        "estimate alone on a free core exceeds the limit), and a computation "
         "that overruns stops with a 422 (the time-limit problem type).",
     )
     admission_seconds: float = Field(

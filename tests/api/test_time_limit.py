@@ -38,12 +38,25 @@ def warm(client: TestClient) -> TestClient:
     return client
 
 
-def test_a_request_that_cannot_finish_in_time_is_refused_before_it_starts() -> None:
+def test_a_request_that_could_never_finish_in_time_is_a_422_naming_its_parameter() -> None:
+    """Estimated alone on a free core above the time limit: waiting cannot help, so no 503."""
     client = TestClient(create_app(Settings(time_limit=0.001)))
+    response = client.get("/discretizations/d4b", params={"d": 1e-4, "i_max": 200000})
+    assert response.status_code == 422
+    (error,) = response.json()["errors"]
+    assert error["parameter"] == "i_max"
+    assert error["constraint"].startswith("estimated time <= 0.001 s (DCOSH_TIME_LIMIT;")
+    assert "retry-after" not in response.headers
+
+
+def test_a_request_that_cannot_finish_in_time_now_is_refused_before_it_starts() -> None:
+    """It would fit the limit on a free core, but the host is slow now: a 503 to retry later."""
+    client = TestClient(create_app(Settings(time_limit=1.0)))
+    client.app.state.admission.slowdown = 1000.0  # type: ignore[attr-defined]
     response = client.get("/discretizations/d4b", params={"d": 1e-4, "i_max": 200000})
     assert response.status_code == 503
     assert response.json()["type"] == "/problems/overloaded"
-    assert "cannot finish within 0.001 s" in response.json()["detail"]
+    assert "cannot finish within 1 s" in response.json()["detail"]
     assert int(response.headers["retry-after"]) >= 1
 
 
