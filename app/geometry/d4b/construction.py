@@ -21,8 +21,9 @@ the bisector and the normal, then the rotation of ``rotation_about``.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-from typing import Any
+from collections.abc import Callable
+from functools import cached_property
+from typing import Any, Literal
 
 import numpy as np
 
@@ -30,20 +31,42 @@ from app.geometry.compiled import kernel
 from app.geometry.errors import DomainError
 from app.geometry.precision import CLOCK_STEPS, Arithmetic, Array, Scalar, stack_points
 
+PointName = Literal["axis_points", "tractrix", "centres", "directions"]
 
-@dataclass(frozen=True)
+
 class KinematicTractrix:
-    """The construction (D4b) on the indices i_min .. i_max; every array is ``(n, 2)``."""
+    """The construction (D4b) on the indices i_min .. i_max; every array is ``(n, 2)``.
 
-    indices: np.ndarray[Any, np.dtype[np.int64]]
-    axis_points: Array
-    """x_i = (2di, 0)."""
-    tractrix: Array
-    """d_i, the free end of stick i."""
-    centres: Array
-    """p_i, the centre of the rotation taking stick i−1 to stick i."""
-    directions: Array
-    """u_i, the unit vector from x_i to d_i."""
+    The recursion gives each stick's direction u_i and centre height p_i^y; the four point
+    arrays are made from them when first read (``points(name)``), so a request that returns p
+    alone never holds the other three (a 10^6-vertex ``format=npy`` answer, issue 12).
+    """
+
+    def __init__(
+        self, indices: np.ndarray[Any, np.dtype[np.int64]], points: Callable[[PointName], Array]
+    ) -> None:
+        self.indices = indices
+        self._points = points
+
+    @cached_property
+    def axis_points(self) -> Array:
+        """x_i = (2di, 0)."""
+        return self._points("axis_points")
+
+    @cached_property
+    def tractrix(self) -> Array:
+        """d_i, the free end of stick i."""
+        return self._points("tractrix")
+
+    @cached_property
+    def centres(self) -> Array:
+        """p_i, the centre of the rotation taking stick i−1 to stick i."""
+        return self._points("centres")
+
+    @cached_property
+    def directions(self) -> Array:
+        """u_i, the unit vector from x_i to d_i."""
+        return self._points("directions")
 
 
 def validate(h: float, d: float, beta0: float | None) -> None:
@@ -123,11 +146,13 @@ def _sticks(
     return cos_u, sin_u, centre_y
 
 
-@kernel(
-    "UniTuple(float64[:, :], 4)"
-    "(float64, float64, float64[:], float64[:], float64[:], int64, int64, int64)"
+_POINTS_SIGNATURE = (
+    "float64[:, :](float64, float64, float64[:], float64[:], float64[:], int64, int64, int64)"
 )
-def _points(
+
+
+@kernel(_POINTS_SIGNATURE)
+def _axis_points(
     h: float,
     d: float,
     cos_u: Array,
@@ -136,31 +161,85 @@ def _points(
     first: int,
     i_min: int,
     i_max: int,
-) -> tuple[Array, Array, Array, Array]:
-    """x_i = (2di, 0), d_i = x_i + h u_i, p_i = ((2i − 1)d, p_i^y) and u_i for i_min .. i_max.
-
-    Entry ``first`` of the recursion's arrays is index i_min; the same operations as
-    ``_assemble`` (which mp uses), in one pass.
-    """
+) -> Array:
+    """x_i = (2di, 0) for i_min .. i_max, ``(n, 2)`` (as ``_assemble``, which mp uses)."""
     n = i_max - i_min + 1
     axis = np.empty((n, 2))
-    tractrix = np.empty((n, 2))
-    centres = np.empty((n, 2))
-    u = np.empty((n, 2))
     two_d = 2 * d
     for k in range(n):
-        i = float(i_min + k)
-        c, s = cos_u[first + k], sin_u[first + k]
-        x = two_d * i
-        axis[k, 0] = x
+        axis[k, 0] = two_d * float(i_min + k)
         axis[k, 1] = 0.0
-        tractrix[k, 0] = x + h * c
-        tractrix[k, 1] = 0.0 + h * s
-        centres[k, 0] = (2 * i - 1) * d
+    return axis
+
+
+@kernel(_POINTS_SIGNATURE)
+def _tractrix(
+    h: float,
+    d: float,
+    cos_u: Array,
+    sin_u: Array,
+    centre_y: Array,
+    first: int,
+    i_min: int,
+    i_max: int,
+) -> Array:
+    """d_i = x_i + h u_i for i_min .. i_max, ``(n, 2)``; entry ``first`` of the recursion's
+    arrays is index i_min."""
+    n = i_max - i_min + 1
+    tractrix = np.empty((n, 2))
+    two_d = 2 * d
+    for k in range(n):
+        tractrix[k, 0] = two_d * float(i_min + k) + h * cos_u[first + k]
+        tractrix[k, 1] = 0.0 + h * sin_u[first + k]
+    return tractrix
+
+
+@kernel(_POINTS_SIGNATURE)
+def _centres(
+    h: float,
+    d: float,
+    cos_u: Array,
+    sin_u: Array,
+    centre_y: Array,
+    first: int,
+    i_min: int,
+    i_max: int,
+) -> Array:
+    """p_i = ((2i − 1)d, p_i^y) for i_min .. i_max, ``(n, 2)``."""
+    n = i_max - i_min + 1
+    centres = np.empty((n, 2))
+    for k in range(n):
+        centres[k, 0] = (2 * float(i_min + k) - 1) * d
         centres[k, 1] = centre_y[first + k]
-        u[k, 0] = c
-        u[k, 1] = s
-    return axis, tractrix, centres, u
+    return centres
+
+
+@kernel(_POINTS_SIGNATURE)
+def _directions(
+    h: float,
+    d: float,
+    cos_u: Array,
+    sin_u: Array,
+    centre_y: Array,
+    first: int,
+    i_min: int,
+    i_max: int,
+) -> Array:
+    """u_i = (cos, sin) of stick i for i_min .. i_max, ``(n, 2)``."""
+    n = i_max - i_min + 1
+    u = np.empty((n, 2))
+    for k in range(n):
+        u[k, 0] = cos_u[first + k]
+        u[k, 1] = sin_u[first + k]
+    return u
+
+
+_POINT_KERNELS: dict[str, Callable[..., Array]] = {
+    "axis_points": _axis_points,
+    "tractrix": _tractrix,
+    "centres": _centres,
+    "directions": _directions,
+}
 
 
 def construct(
@@ -186,13 +265,10 @@ def construct(
         c0, s0 = initial_direction(ar, beta0)
         cos_f, sin_f, centre_f = _sticks(float(h), float(d), float(c0), float(s0), lo, hi)
         ar.check_time()  # once, after the kernel: ≈ 20 ns per stick
-        axis, tractrix, centres, u = _points(h, d, cos_f, sin_f, centre_f, i_min - lo, i_min, i_max)
+        arguments = (float(h), float(d), cos_f, sin_f, centre_f, i_min - lo, i_min, i_max)
         return KinematicTractrix(
-            indices=np.arange(i_min, i_max + 1, dtype=np.int64),
-            axis_points=axis,
-            tractrix=tractrix,
-            centres=centres,
-            directions=u,
+            np.arange(i_min, i_max + 1, dtype=np.int64),
+            lambda name: _POINT_KERNELS[name](*arguments),
         )
     cos_u = [ar.scalar(0)] * (hi - lo + 1)
     sin_u = list(cos_u)
@@ -240,10 +316,10 @@ def _assemble(
     i = ar.indices(i_min, i_max)
     u = stack_points(cos_u, sin_u)
     axis = stack_points(2 * d * i, ar.zeros(len(i)))
-    return KinematicTractrix(
-        indices=np.arange(i_min, i_max + 1, dtype=np.int64),
-        axis_points=axis,
-        tractrix=axis + h * u,
-        centres=stack_points((2 * i - 1) * d, centre_y),
-        directions=u,
-    )
+    points: dict[PointName, Array] = {
+        "axis_points": axis,
+        "tractrix": axis + h * u,
+        "centres": stack_points((2 * i - 1) * d, centre_y),
+        "directions": u,
+    }
+    return KinematicTractrix(np.arange(i_min, i_max + 1, dtype=np.int64), points.__getitem__)
