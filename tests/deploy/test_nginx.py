@@ -11,6 +11,7 @@ import signal
 import subprocess
 import tempfile
 from collections.abc import Iterator
+from concurrent.futures import ThreadPoolExecutor
 from contextlib import ExitStack
 from pathlib import Path
 
@@ -44,8 +45,8 @@ def proxy() -> Iterator[dict[str, object]]:
     # not under pytest's private temporary directory: nginx's workers (nobody) must reach it
     root = Path(tempfile.mkdtemp(prefix="dcosh-nginx-"))
     root.chmod(0o755)
-    # a 1 s time limit: a request estimated at more is refused up front with a 503
-    env = {"DCOSH_TIME_LIMIT": "1"}
+    # a 1 s admission budget: a second request admitted beside one of 0.6 s is refused (503)
+    env = {"DCOSH_TIME_LIMIT": "10", "DCOSH_ADMISSION_SECONDS": "1"}
     with ExitStack() as stack:
         replicas = [stack.enter_context(uvicorn_server(env)) for _ in range(2)]
         listen = free_port()
@@ -116,10 +117,20 @@ def test_killing_one_replica_loses_no_get(proxy: dict[str, object]) -> None:
 
 def test_overload_503s_reach_the_client_with_retry_after(proxy: dict[str, object]) -> None:
     port = int(proxy["port"])  # type: ignore[call-overload]
-    # estimated at about 2 s: more than the replicas' 1 s time limit allows
-    response = get(port, "/discretizations/d4b?d=0.0001&method=closed-form&i_min=0&i_max=500000")
-    assert response.status == 503
-    assert response.getheader("Content-Type") == "application/problem+json"
-    assert int(response.getheader("Retry-After") or 0) >= 1
-    assert response.getheader("X-Cache-Status") != "HIT"
+    # each estimated at about 0.6 s against the replicas' 1 s admission budget: one at a time per
+    # replica is admitted, the others sent at the same moment are refused (distinct queries, so
+    # neither nginx's cache lock nor the app's coalescing of identical requests merges them)
+    paths = [
+        f"/discretizations/d4b?d=0.0001{k}&method=closed-form&i_min=0&i_max=150000"
+        for k in range(6)
+    ]
+    with ThreadPoolExecutor(len(paths)) as pool:
+        responses = list(pool.map(lambda path: get(port, path), paths))
+    refused = [r for r in responses if r.status == 503]
+    assert refused, [r.status for r in responses]
+    assert {r.status for r in responses} <= {200, 503}
+    for response in refused:
+        assert response.getheader("Content-Type") == "application/problem+json"
+        assert int(response.getheader("Retry-After") or 0) >= 1
+        assert response.getheader("X-Cache-Status") != "HIT"
     assert get(port, "/health").status == 200
