@@ -100,26 +100,18 @@ def check_residuals(
         )
     holds: bool | None
     worst = float(values.max())
+    residual: float | None = worst
     if math.isfinite(worst):  # the largest is finite only when every value is
         holds = worst <= tolerance
         if not holds and ar.certified and not _exceeds(ar, residuals, tolerance):
             # on balls ``worst`` is an upper bound: failing needs a lower bound above the
             # tolerance; in between the verdict is undecided, never guessed
+            holds = None
             undecided = (
                 "undecided: the residual's rigorous bounds enclose the tolerance "
                 "(more digits narrow them)"
             )
-            return Check(
-                id=statement.id,
-                reference=statement.reference,
-                claim=statement.claim,
-                residual=worst,
-                tolerance=tolerance,
-                holds=None,
-                per_index=PerIndex(np.asarray(indices, dtype=np.int64), values) if detail else None,
-                erratum=erratum,
-                note=f"{note}; {undecided}" if note else undecided,
-            )
+            note = f"{note}; {undecided}" if note else undecided
     else:
         finite = np.isfinite(values)
         # A residual that cannot be computed (an overflow, 0/0) tests nothing: the check fails
@@ -128,6 +120,7 @@ def check_residuals(
         computed = values[finite]
         worst = float(np.max(computed)) if len(computed) else np.finfo(np.float64).max
         holds = False if worst > tolerance else None
+        residual = worst if holds is not None else None
         missing = f"{int(np.count_nonzero(~finite))} of {len(values)} residuals could not be "
         missing += "computed (not finite)"
         note = f"{note}; {missing}" if note else missing
@@ -136,7 +129,7 @@ def check_residuals(
         id=statement.id,
         reference=statement.reference,
         claim=statement.claim,
-        residual=worst if holds is not None else None,
+        residual=residual,
         tolerance=tolerance,
         holds=holds,
         per_index=PerIndex(np.asarray(indices, dtype=np.int64), values) if detail else None,

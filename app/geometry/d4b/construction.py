@@ -146,13 +146,16 @@ def _sticks(
     return cos_u, sin_u, centre_y
 
 
-_POINTS_SIGNATURE = (
-    "float64[:, :](float64, float64, float64[:], float64[:], float64[:], int64, int64, int64)"
+#: The four point arrays of ``KinematicTractrix``, in the order of ``_point_array``'s ``which``.
+_POINT_NAMES: tuple[PointName, ...] = ("axis_points", "tractrix", "centres", "directions")
+
+
+@kernel(
+    "float64[:, :]"
+    "(int64, float64, float64, float64[:], float64[:], float64[:], int64, int64, int64)"
 )
-
-
-@kernel(_POINTS_SIGNATURE)
-def _axis_points(
+def _point_array(
+    which: int,
     h: float,
     d: float,
     cos_u: Array,
@@ -162,84 +165,31 @@ def _axis_points(
     i_min: int,
     i_max: int,
 ) -> Array:
-    """x_i = (2di, 0) for i_min .. i_max, ``(n, 2)`` (as ``_assemble``, which mp uses)."""
+    """One ``(n, 2)`` array of sticks i_min .. i_max (``which`` indexes ``_POINT_NAMES``):
+    x_i = (2di, 0), d_i = x_i + h u_i, p_i = ((2i − 1)d, p_i^y) or u_i.
+
+    Entry ``first`` of the recursion's arrays is index i_min; the same operations as
+    ``_assemble`` (which mp uses).
+    """
     n = i_max - i_min + 1
-    axis = np.empty((n, 2))
+    out = np.empty((n, 2))
     two_d = 2 * d
     for k in range(n):
-        axis[k, 0] = two_d * float(i_min + k)
-        axis[k, 1] = 0.0
-    return axis
-
-
-@kernel(_POINTS_SIGNATURE)
-def _tractrix(
-    h: float,
-    d: float,
-    cos_u: Array,
-    sin_u: Array,
-    centre_y: Array,
-    first: int,
-    i_min: int,
-    i_max: int,
-) -> Array:
-    """d_i = x_i + h u_i for i_min .. i_max, ``(n, 2)``; entry ``first`` of the recursion's
-    arrays is index i_min."""
-    n = i_max - i_min + 1
-    tractrix = np.empty((n, 2))
-    two_d = 2 * d
-    for k in range(n):
-        tractrix[k, 0] = two_d * float(i_min + k) + h * cos_u[first + k]
-        tractrix[k, 1] = 0.0 + h * sin_u[first + k]
-    return tractrix
-
-
-@kernel(_POINTS_SIGNATURE)
-def _centres(
-    h: float,
-    d: float,
-    cos_u: Array,
-    sin_u: Array,
-    centre_y: Array,
-    first: int,
-    i_min: int,
-    i_max: int,
-) -> Array:
-    """p_i = ((2i − 1)d, p_i^y) for i_min .. i_max, ``(n, 2)``."""
-    n = i_max - i_min + 1
-    centres = np.empty((n, 2))
-    for k in range(n):
-        centres[k, 0] = (2 * float(i_min + k) - 1) * d
-        centres[k, 1] = centre_y[first + k]
-    return centres
-
-
-@kernel(_POINTS_SIGNATURE)
-def _directions(
-    h: float,
-    d: float,
-    cos_u: Array,
-    sin_u: Array,
-    centre_y: Array,
-    first: int,
-    i_min: int,
-    i_max: int,
-) -> Array:
-    """u_i = (cos, sin) of stick i for i_min .. i_max, ``(n, 2)``."""
-    n = i_max - i_min + 1
-    u = np.empty((n, 2))
-    for k in range(n):
-        u[k, 0] = cos_u[first + k]
-        u[k, 1] = sin_u[first + k]
-    return u
-
-
-_POINT_KERNELS: dict[str, Callable[..., Array]] = {
-    "axis_points": _axis_points,
-    "tractrix": _tractrix,
-    "centres": _centres,
-    "directions": _directions,
-}
+        i = float(i_min + k)
+        c, s = cos_u[first + k], sin_u[first + k]
+        if which == 0:
+            out[k, 0] = two_d * i
+            out[k, 1] = 0.0
+        elif which == 1:
+            out[k, 0] = two_d * i + h * c
+            out[k, 1] = 0.0 + h * s
+        elif which == 2:
+            out[k, 0] = (2 * i - 1) * d
+            out[k, 1] = centre_y[first + k]
+        else:
+            out[k, 0] = c
+            out[k, 1] = s
+    return out
 
 
 def construct(
@@ -268,7 +218,7 @@ def construct(
         arguments = (float(h), float(d), cos_f, sin_f, centre_f, i_min - lo, i_min, i_max)
         return KinematicTractrix(
             np.arange(i_min, i_max + 1, dtype=np.int64),
-            lambda name: _POINT_KERNELS[name](*arguments),
+            lambda name: _point_array(_POINT_NAMES.index(name), *arguments),
         )
     cos_u = [ar.scalar(0)] * (hi - lo + 1)
     sin_u = list(cos_u)
