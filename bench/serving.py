@@ -157,7 +157,11 @@ def start_server(port: int, workers: int = 1) -> subprocess.Popen[bytes]:
         "--log-level",
         "warning",
     ]
-    server = subprocess.Popen(command, cwd=ROOT, env={**os.environ, **SERVER_ENV})
+    return _serving(subprocess.Popen(command, cwd=ROOT, env={**os.environ, **SERVER_ENV}), port)
+
+
+def _serving(server: subprocess.Popen[bytes], port: int) -> subprocess.Popen[bytes]:
+    """``server`` once it answers /health on ``port`` (stopped if it never does)."""
     for _ in range(200):
         try:
             fetch(port, "/health")
@@ -320,15 +324,7 @@ def start_service(port: int) -> subprocess.Popen[bytes]:
     from app.server import command
 
     argv = command("127.0.0.1", port, 1, ["--log-level", "warning", "--no-access-log"])
-    server = subprocess.Popen(argv, cwd=ROOT, env={**os.environ, **SERVER_ENV})
-    for _ in range(200):
-        try:
-            fetch(port, "/health")
-            return server
-        except OSError:
-            time.sleep(0.1)
-    server.terminate()
-    raise RuntimeError("the server did not start")
+    return _serving(subprocess.Popen(argv, cwd=ROOT, env={**os.environ, **SERVER_ENV}), port)
 
 
 def computed_gets(rounds: int = ROUNDS) -> dict[str, float]:
