@@ -72,6 +72,40 @@ def kernel(signature: str) -> Callable[[F], F]:
     return compile_
 
 
+#: glibc's bounds for its unscaled hypot: the larger |argument| at most 2^511, the smaller at
+#: least 2^-459 and more than 2^-54 times the larger (``hypot``).
+HYPOT_LARGE, HYPOT_TINY, HYPOT_EPS = 2.0**511, 2.0**-459, 2.0**-54
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def hypot(x: float, y: float) -> float:
+    """libm's hypot(x, y), bit for bit, without the call (glibc 2.36, x86-64 without FMA).
+
+    glibc computes h = √(a² + b²) for a = max(|x|, |y|), b = min(|x|, |y|) and corrects it by
+    one Newton step on the rounding errors of the squares (Borges' algorithm, with the error
+    terms written so that no product rounds away what the step needs). That is done here,
+    inline, for the arguments glibc itself treats so (a ≤ 2^511, b ≥ 2^-459, b > 2^-54·a);
+    everything else (scaled, negligible b, inf, NaN) calls libm. Inline it costs ≈ 10 ns in a
+    loop against 50–90 ns for the call here; tests/geometry/test_compiled.py compares it with
+    ``np.hypot`` on millions of arguments.
+    """
+    a, b = abs(x), abs(y)
+    if a < b:
+        a, b = b, a
+    if a <= HYPOT_LARGE and b >= HYPOT_TINY and b > a * HYPOT_EPS:
+        h = math.sqrt(a * a + b * b)
+        if h <= 2.0 * b:
+            delta = h - b
+            t1 = a * (2.0 * delta - a)
+            t2 = (delta - 2.0 * (a - b)) * delta
+        else:
+            delta = h - a
+            t1 = 2.0 * delta * (a - 2.0 * b)
+            t2 = (4.0 * delta - b) * b + delta * delta
+        return h - (t1 + t2) / (2.0 * h)
+    return math.hypot(x, y)
+
+
 #: Magnitudes between which a sum of squares neither overflows nor underflows past its last bits.
 SQUARES_LOW, SQUARES_HIGH = 2.0**-480, 2.0**480
 

@@ -15,10 +15,11 @@ import json
 from pathlib import Path
 from typing import Any
 
+import numba
 import numpy as np
 import pytest
 
-from app.geometry.compiled import KERNELS
+from app.geometry.compiled import KERNELS, hypot
 from app.geometry.d1.construction import construct as construct_d1
 from app.geometry.d3.construction import construct as construct_d3
 from app.geometry.d4a.construction import construct_sticks
@@ -97,3 +98,37 @@ def test_every_kernel_is_compiled_for_its_signature() -> None:
     for name, compiled in KERNELS.items():
         assert len(compiled.signatures) == 1, name
         assert compiled.nopython_signatures, name
+
+
+@numba.njit(cache=False)
+def _inline_hypot(x: Any, y: Any) -> Any:
+    out = np.empty(x.shape[0])
+    for k in range(x.shape[0]):
+        out[k] = hypot(x[k], y[k])
+    return out
+
+
+def _arguments(kind: int, rng: np.random.Generator, n: int) -> tuple[Any, Any]:
+    if kind == 0:  # moderate, both signs
+        return rng.standard_normal(n), rng.standard_normal(n)
+    if kind == 1:  # one much smaller (the correction's other branch, and ay <= ax·2^-54)
+        return rng.standard_normal(n), rng.standard_normal(n) * 10.0 ** rng.uniform(-20, 0, n)
+    if kind == 2:  # the whole exponent range: scaled, underflowing and overflowing cases
+        return np.exp(rng.uniform(-740, 709, n)), -np.exp(rng.uniform(-740, 709, n))
+    if kind == 3:  # nearly equal
+        x = np.exp(rng.uniform(-40, 40, n))
+        return x, x * (1 + rng.uniform(-1e-6, 1e-6, n))
+    special = [0.0, -0.0, np.inf, -np.inf, np.nan, 5e-324, 2.0**-459, 2.0**511, 1.7e308, 3.0]
+    pairs = [(a, b) for a in special for b in special]
+    return np.array([a for a, _ in pairs]), np.array([b for _, b in pairs])
+
+
+@pytest.mark.parametrize("kind", range(5))
+def test_inline_hypot_is_libms_bit_for_bit(kind: int) -> None:
+    """``compiled.hypot`` replays glibc's algorithm: the same bits as ``np.hypot`` (libm)."""
+    x, y = _arguments(kind, np.random.default_rng(kind), 200_000)
+    with np.errstate(over="ignore"):
+        expected = np.hypot(x, y)
+    got = _inline_hypot(x, y)
+    same = (got.view(np.int64) == expected.view(np.int64)) | (np.isnan(got) & np.isnan(expected))
+    assert bool(np.all(same)), (x[~same][:3], y[~same][:3])

@@ -34,7 +34,7 @@ from edge i+1 back to edge i is m_i = −F(−m_{i+1}), F the forward step. Any 
 and for κ < 0, m+ = (κ − c)(κ + c)/(κ − c√(κ² + 1 − c²)) (both are the product of the two roots
 divided by the other one). The slopes are sequential (each step needs the previous slope), so
 they are computed in a scalar loop over max(|i_min|, |i_max|) steps: in float64 the compiled
-kernel ``_slopes`` (app/geometry/compiled.py; ≈ 20 ns per step, 1.8 µs as a Python loop), in mp
+kernel ``_chain`` (app/geometry/compiled.py; ≈ 30 ns per step, 1.8 µs as a Python loop), in mp
 the loop of ``construct`` over mpmath numbers, the same step in both, except that the kernel
 takes √(1 + m_{i+1}²) from the step's own numbers instead of a second hypot (``_step``: within
 4 units in the last place of the previous kernel on tests/geometry/previous_constructions.json);
@@ -52,7 +52,7 @@ from typing import Any
 
 import numpy as np
 
-from app.geometry.compiled import kernel
+from app.geometry.compiled import hypot, kernel
 from app.geometry.errors import DomainError
 from app.geometry.precision import CLOCK_STEPS, Arithmetic, Array, Scalar, stack_points
 
@@ -61,10 +61,16 @@ from app.geometry.precision import CLOCK_STEPS, Arithmetic, Array, Scalar, stack
 class HangingChain:
     """(D1) on the indices i_min .. i_max: vertices ``(n, 2)`` and edge slopes ``(n − 1,)``."""
 
-    indices: np.ndarray[Any, np.dtype[np.int64]]
+    first: int
+    """The first index, i_min."""
     vertices: Array
     slopes: Array
     """m_i = (y_{i+1} − y_i)/δ for i = i_min .. i_max − 1, as the recursion computed them."""
+
+    @property
+    def indices(self) -> np.ndarray[Any, np.dtype[np.int64]]:
+        """The indices i_min .. i_max (made when read: no computation needs them)."""
+        return np.arange(self.first, self.first + len(self.vertices), dtype=np.int64)
 
 
 def validate(c: float, delta: float, y0: float, y1: float) -> None:
@@ -123,35 +129,69 @@ def _step(c: float, one_minus_c2: float, root: float, m: float, r: float) -> tup
     in the last place of hypot(1, m_{i+1}) (one hypot a step instead of two).
     """
     kappa = m + c * r if m >= 0 else (one_minus_c2 * m * m - c * c) / (m - c * r)
-    big = math.hypot(kappa, root)
+    big = hypot(kappa, root)  # libm's, bit for bit (inline)
     if kappa >= 0:
         return (kappa + c * big) / one_minus_c2, (c * kappa + big) / one_minus_c2
     following = (kappa - c) * (kappa + c) / (kappa - c * big)
     if kappa < -1e150:  # κ² would overflow
-        return following, math.hypot(1.0, following)
+        return following, hypot(1.0, following)
     return following, (kappa * kappa + 1) / (big - c * kappa)
 
 
-@kernel("float64[:](float64, float64, float64, float64, int64, int64)")
-def _slopes(c: float, one_minus_c2: float, root: float, m0: float, lo: int, hi: int) -> Array:
-    """The float64 recursion of ``construct``: the slopes m_j of the edges j = lo .. hi − 1.
+@kernel(
+    "Tuple((float64[:], float64[:, :]))"
+    "(float64, float64, float64, float64, float64, float64, int64, int64, int64, int64)"
+)
+def _chain(
+    c: float,
+    one_minus_c2: float,
+    root: float,
+    delta: float,
+    y0: float,
+    y1: float,
+    lo: int,
+    hi: int,
+    i_min: int,
+    i_max: int,
+) -> tuple[Array, Array]:
+    """The float64 ``construct`` in one pass: (slopes m_j of the edges j = lo .. hi − 1,
+    vertices p_i for i = i_min .. i_max).
 
-    m_0 is given; edge j follows from edge j − 1 by (D1) solved forwards (``forward_slope``,
-    as ``_step``), edge j from edge j + 1 by the reversed chain, m_j = −F(−m_{j+1})
-    (``backward_slope``); √(1 + m²) is even in m, so it carries over both ways.
+    m_0 = (y1 − y0)/δ; edge j follows from edge j − 1 by (D1) solved forwards
+    (``forward_slope``, as ``_step``), edge j from edge j + 1 by the reversed chain,
+    m_j = −F(−m_{j+1}) (``backward_slope``); √(1 + m²) is even in m, so it carries over both
+    ways. The heights are the partial sums of the mp path, in its order: y_{j+1} = y1 + Σ δm_k
+    (k = 1 .. j) forwards, y_{j−1} = y0 − Σ δm_k (k = j − 1 .. −1) backwards, each sum
+    accumulated from index 0 outwards as ``np.cumsum`` does; x_i = δ·i. The vertices are written
+    straight into the ``(n, 2)`` result (no height array, no index array, no stacking).
     """
-    slopes = np.zeros(hi - lo)
+    slopes = np.empty(hi - lo)
+    vertices = np.empty((i_max - i_min + 1, 2))
+    m0 = (y1 - y0) / delta
     slopes[-lo] = m0
+    for i in (0, 1):
+        if i_min <= i <= i_max:
+            vertices[i - i_min, 0] = delta * float(i)
+            vertices[i - i_min, 1] = y0 if i == 0 else y1
     r0 = math.hypot(1.0, m0)
     m, r = m0, r0
-    for j in range(1, hi):
+    total = 0.0
+    for j in range(1, hi):  # edge j from edge j − 1; then p_{j+1} = p_j + (δ, δm_j)
         m, r = _step(c, one_minus_c2, root, m, r)
         slopes[j - lo] = m
+        total = delta * m if j == 1 else total + delta * m
+        if i_min <= j + 1 <= i_max:
+            vertices[j + 1 - i_min, 0] = delta * float(j + 1)
+            vertices[j + 1 - i_min, 1] = y1 + total
     m, r = -m0, r0
-    for j in range(-1, lo - 1, -1):
+    for j in range(-1, lo - 1, -1):  # edge j from edge j + 1; then p_j = p_{j+1} − (δ, δm_j)
         m, r = _step(c, one_minus_c2, root, m, r)
         slopes[j - lo] = -m
-    return slopes
+        total = delta * -m if j == -1 else total + delta * -m
+        if i_min <= j <= i_max:
+            vertices[j - i_min, 0] = delta * float(j)
+            vertices[j - i_min, 1] = y0 - total
+    return slopes, vertices
 
 
 def construct(
@@ -170,20 +210,24 @@ def construct(
     k = StepConstants.of(ar, cc)
     lo, hi = min(0, i_min), max(1, i_max)  # vertices lo .. hi, edges lo .. hi − 1
     if ar.mode == "float64":
-        m = _slopes(k.c, k.one_minus_c2, k.root, (yy1 - yy0) / dd, lo, hi)
-        ar.check_time()  # once, after the kernel: ≈ 50 ns per step
-    else:
-        slopes: list[Scalar] = [ar.scalar(0)] * (hi - lo)
-        slopes[-lo] = (yy1 - yy0) / dd
-        for j in range(1, hi):  # edge j from edge j − 1
-            if not j % CLOCK_STEPS:
-                ar.check_time()
-            slopes[j - lo] = forward_slope(ar, k, slopes[j - 1 - lo])
-        for j in range(-1, lo - 1, -1):  # edge j from edge j + 1
-            if not j % CLOCK_STEPS:
-                ar.check_time()
-            slopes[j - lo] = backward_slope(ar, k, slopes[j + 1 - lo])
-        m = ar.array(slopes)
+        m, vertices = _chain(k.c, k.one_minus_c2, k.root, dd, yy0, yy1, lo, hi, i_min, i_max)
+        ar.check_time()  # once, after the kernel: ≈ 30 ns per step
+        return HangingChain(
+            first=i_min,
+            vertices=vertices,
+            slopes=m[i_min - lo : i_max - lo],
+        )
+    slopes: list[Scalar] = [ar.scalar(0)] * (hi - lo)
+    slopes[-lo] = (yy1 - yy0) / dd
+    for j in range(1, hi):  # edge j from edge j − 1
+        if not j % CLOCK_STEPS:
+            ar.check_time()
+        slopes[j - lo] = forward_slope(ar, k, slopes[j - 1 - lo])
+    for j in range(-1, lo - 1, -1):  # edge j from edge j + 1
+        if not j % CLOCK_STEPS:
+            ar.check_time()
+        slopes[j - lo] = backward_slope(ar, k, slopes[j + 1 - lo])
+    m = ar.array(slopes)
     # heights: y_1 = y1 exactly, y_{j+1} = y_j + δ m_j forwards, y_{j−1} = y_j − δ m_{j−1} back
     ahead = np.cumsum(dd * m[1 - lo :]) if hi > 1 else ar.array([])
     behind = np.cumsum(dd * m[-lo - 1 :: -1]) if lo < 0 else ar.array([])
@@ -191,7 +235,7 @@ def construct(
     window = slice(i_min - lo, i_max - lo + 1)
     i = ar.indices(i_min, i_max)
     return HangingChain(
-        indices=np.arange(i_min, i_max + 1, dtype=np.int64),
+        first=i_min,
         vertices=stack_points(dd * i, y[window]),
         slopes=m[i_min - lo : i_max - lo],
     )

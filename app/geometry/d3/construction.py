@@ -36,7 +36,7 @@ ill-conditioned by nature: dw/dy = sinh(v ± 2D)/sinh v grows without bound as v
 within a relative ε of the bottom can cost up to log10(1/ε)/2 digits in the vertex after it
 (measured in float64: 2 digits for ε = 1e-10, 5 for ε = 1e-14). Each step needs the
 previous height, so the construction is a scalar loop over max(|i_min|, |i_max|) steps: in
-float64 the compiled kernel ``_heights`` (app/geometry/compiled.py; ≈ 10 ns per step, 1.1 µs as
+float64 the compiled kernel ``_vertices`` (app/geometry/compiled.py; ≈ 10 ns per step, 1.1 µs as
 a Python loop), in mp the loop of ``construct`` over mpmath numbers, the same step in both.
 Vectorizing it means solving the recursion, which is the closed form the checks compare with
 (served by ``method=closed-form``).
@@ -61,8 +61,14 @@ Branch = Literal["up", "down"]
 class AreaLengthPolygon:
     """(D3) on the indices i_min .. i_max: vertices ``(n, 2)``."""
 
-    indices: np.ndarray[Any, np.dtype[np.int64]]
+    first: int
+    """The first index, i_min."""
     vertices: Array
+
+    @property
+    def indices(self) -> np.ndarray[Any, np.dtype[np.int64]]:
+        """The indices i_min .. i_max (made when read: no computation needs them)."""
+        return np.arange(self.first, self.first + len(self.vertices), dtype=np.int64)
 
 
 @dataclass(frozen=True)
@@ -156,36 +162,50 @@ def _roots(
     return big, (y * y + product_term) / big
 
 
-@kernel("float64[:](float64, float64, float64, float64, float64, boolean, int64, int64)")
-def _heights(
+@kernel(
+    "float64[:, :](float64, float64, float64, float64, float64, float64, boolean, int64, int64)"
+)
+def _vertices(
     sum_factor: float,
     root_factor: float,
     product_term: float,
     lowest: float,
+    delta: float,
     y0: float,
     up: bool,
-    lo: int,
-    hi: int,
+    i_min: int,
+    i_max: int,
 ) -> Array:
-    """The float64 recursion of ``construct``: the heights y_j for j = lo .. hi (lo ≤ −1, hi ≥ 1).
+    """The float64 ``construct`` in one pass: the vertices p_i = (δi, y_i), i = i_min .. i_max.
 
     Each step solves the quadratic of ``step_roots`` (given by the four ``StepQuadratic``
     numbers) at the last height and keeps the root that is not the height before it (``_other``);
-    at p_0 ``up`` sends w+ forwards and w− backwards, and the reverse otherwise.
+    at p_0 ``up`` sends w+ forwards and w− backwards, and the reverse otherwise. The recursion
+    runs from index 0 to i_max and to i_min (at least one step each way, as the mp loop) and
+    writes the vertices of the range straight into the ``(n, 2)`` result.
     """
-    y = np.full(hi - lo + 1, y0)
+    out = np.empty((i_max - i_min + 1, 2))
     big, small = _roots(sum_factor, root_factor, product_term, lowest, y0)
-    y[1 - lo] = big if up else small
-    y[-1 - lo] = small if up else big
-    for j in range(2, hi + 1):
-        near = y[j - 2 - lo]
-        big, small = _roots(sum_factor, root_factor, product_term, lowest, y[j - 1 - lo])
-        y[j - lo] = big if abs(big - near) >= abs(small - near) else small
-    for j in range(-2, lo - 1, -1):
-        near = y[j + 2 - lo]
-        big, small = _roots(sum_factor, root_factor, product_term, lowest, y[j + 1 - lo])
-        y[j - lo] = big if abs(big - near) >= abs(small - near) else small
-    return y
+    ahead, behind = (big, small) if up else (small, big)
+    for i, height in ((0, y0), (1, ahead), (-1, behind)):
+        if i_min <= i <= i_max:
+            out[i - i_min, 0] = delta * float(i)
+            out[i - i_min, 1] = height
+    near, last = y0, ahead
+    for j in range(2, i_max + 1):
+        big, small = _roots(sum_factor, root_factor, product_term, lowest, last)
+        near, last = last, (big if abs(big - near) >= abs(small - near) else small)
+        if j >= i_min:
+            out[j - i_min, 0] = delta * float(j)
+            out[j - i_min, 1] = last
+    near, last = y0, behind
+    for j in range(-2, i_min - 1, -1):
+        big, small = _roots(sum_factor, root_factor, product_term, lowest, last)
+        near, last = last, (big if abs(big - near) >= abs(small - near) else small)
+        if j <= i_max:
+            out[j - i_min, 0] = delta * float(j)
+            out[j - i_min, 1] = last
+    return out
 
 
 def construct(
@@ -202,16 +222,21 @@ def construct(
     cc, dd, yy0 = ar.scalar(c), ar.scalar(delta), ar.scalar(y0)
     q = quadratic(ar, cc, dd)
     lo, hi = min(-1, i_min), max(1, i_max)
-    i = ar.indices(i_min, i_max)
     if ar.mode == "float64":
-        heights = _heights(
-            q.sum_factor, q.root_factor, q.product_term, q.lowest, yy0, branch == "up", lo, hi
+        vertices = _vertices(
+            q.sum_factor,
+            q.root_factor,
+            q.product_term,
+            q.lowest,
+            dd,
+            yy0,
+            branch == "up",
+            i_min,
+            i_max,
         )
         ar.check_time()  # once, after the kernel: ≈ 20 ns per step
-        return AreaLengthPolygon(
-            indices=np.arange(i_min, i_max + 1, dtype=np.int64),
-            vertices=stack_points(dd * i, heights[i_min - lo : i_max - lo + 1]),
-        )
+        return AreaLengthPolygon(first=i_min, vertices=vertices)
+    i = ar.indices(i_min, i_max)
     y: list[Scalar] = [yy0] * (hi - lo + 1)
     big, small = step_roots(ar, q, yy0)
     y[1 - lo], y[-1 - lo] = (big, small) if branch == "up" else (small, big)
@@ -224,6 +249,6 @@ def construct(
             ar.check_time()
         y[j - lo] = _other(ar, y[j + 2 - lo], step_roots(ar, q, y[j + 1 - lo]))
     return AreaLengthPolygon(
-        indices=np.arange(i_min, i_max + 1, dtype=np.int64),
+        first=i_min,
         vertices=stack_points(dd * i, ar.array(y[i_min - lo : i_max - lo + 1])),
     )

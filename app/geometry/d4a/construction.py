@@ -65,7 +65,8 @@ MIRRORED, CUSP, PURSUIT = -1, 0, 1
 class SauerSticks:
     """Sticks i_lo .. i_hi of (D4a); every point array is ``(n, 2)``."""
 
-    indices: np.ndarray[Any, np.dtype[np.int64]]
+    first: int
+    """The first index, i_lo."""
     axis_points: Array
     """x_i on the x-axis."""
     tractrix: Array
@@ -74,6 +75,11 @@ class SauerSticks:
     """u_i, the unit vector from x_i to d_i."""
     side: np.ndarray[Any, np.dtype[np.int64]]
     """−1 before the cusp stick, 0 at it, +1 after it."""
+
+    @property
+    def indices(self) -> np.ndarray[Any, np.dtype[np.int64]]:
+        """The indices i_lo .. i_hi (made when read: no computation needs them)."""
+        return np.arange(self.first, self.first + len(self.side), dtype=np.int64)
 
 
 def validate(h: float, s: float, beta0: float | None) -> None:
@@ -128,7 +134,7 @@ class _Stepper:
 
 
 @kernel(
-    "Tuple((float64[:], float64[:], float64[:], int64[:]))"
+    "Tuple((float64[:, :], float64[:, :], float64[:, :], int64[:]))"
     "(float64, float64, float64, float64, float64, float64, int64, int64)"
 )
 def _sticks(
@@ -141,52 +147,59 @@ def _sticks(
     k0: int,
     n: int,
 ) -> tuple[Array, Array, Array, Any]:
-    """The float64 recursion of ``construct_sticks``: (x, cos β, sin β, side) of n sticks.
+    """The float64 ``construct_sticks`` in one pass: (x_i, d_i, u_i, side) of n sticks.
 
     Stick k0 starts at x = 0 with direction (c0, s0); ``carry``, ``keep`` and ``widening`` are
     the ``_Stepper`` numbers h − s, (h − s)/h and s(2h − s)/h². The moves are ``_Stepper.pull``
     (the next stick is the one whose end is this stick's carried point) and
     ``_Stepper.carrier`` (the next stick is the one carrying this stick's end), chosen by the
-    side of the cusp as in ``construct_sticks``.
+    side of the cusp as in ``construct_sticks``. The recursion keeps each stick in the
+    ``(n, 2)`` results themselves (x_i = (x, 0), u_i = (cos β, sin β)) and writes
+    d_i = x_i + h u_i as ``_assemble`` does (no further arrays, no stacking).
     """
-    x = np.zeros(n)
-    cos_u = np.zeros(n)
-    sin_u = np.zeros(n)
+    axis = np.empty((n, 2))
+    tractrix = np.empty((n, 2))
+    u = np.empty((n, 2))
     side = np.zeros(n, dtype=np.int64)
-    cos_u[k0] = c0
-    sin_u[k0] = s0
+    axis[k0, 0] = 0.0
+    u[k0, 0] = c0
+    u[k0, 1] = s0
     side[k0] = CUSP if s0 > keep else (PURSUIT if c0 < 0 else MIRRORED)
     for k in range(k0 + 1, n):  # forward: stick k from stick k − 1
-        xb, cb, sb = x[k - 1], cos_u[k - 1], sin_u[k - 1]
+        xb, cb, sb = axis[k - 1, 0], u[k - 1, 0], u[k - 1, 1]
         if side[k - 1] >= CUSP:  # pull, the leader moves ahead
             root = math.sqrt(cb * cb + widening * sb * sb)
-            x[k] = (xb + carry * cb) + h * root
-            cos_u[k] = -root
-            sin_u[k] = keep * sb
+            axis[k, 0] = (xb + carry * cb) + h * root
+            u[k, 0] = -root
+            u[k, 1] = keep * sb
             side[k] = PURSUIT
         else:  # carrier leaning forward
             sin_n = sb / keep
             cos_n = math.sqrt((1 - sin_n) * (1 + sin_n))
-            x[k] = xb + h * cb - carry * cos_n
-            cos_u[k] = cos_n
-            sin_u[k] = sin_n
+            axis[k, 0] = xb + h * cb - carry * cos_n
+            u[k, 0] = cos_n
+            u[k, 1] = sin_n
             side[k] = CUSP if sin_n > keep else MIRRORED
     for k in range(k0 - 1, -1, -1):  # backward: stick k from stick k + 1
-        xb, cb, sb = x[k + 1], cos_u[k + 1], sin_u[k + 1]
+        xb, cb, sb = axis[k + 1, 0], u[k + 1, 0], u[k + 1, 1]
         if side[k + 1] <= CUSP:  # pull, the leader moves behind
             root = math.sqrt(cb * cb + widening * sb * sb)
-            x[k] = (xb + carry * cb) - h * root
-            cos_u[k] = root
-            sin_u[k] = keep * sb
+            axis[k, 0] = (xb + carry * cb) - h * root
+            u[k, 0] = root
+            u[k, 1] = keep * sb
             side[k] = MIRRORED
         else:  # carrier leaning back
             sin_n = sb / keep
             cos_n = -math.sqrt((1 - sin_n) * (1 + sin_n))
-            x[k] = xb + h * cb - carry * cos_n
-            cos_u[k] = cos_n
-            sin_u[k] = sin_n
+            axis[k, 0] = xb + h * cb - carry * cos_n
+            u[k, 0] = cos_n
+            u[k, 1] = sin_n
             side[k] = CUSP if sin_n > keep else PURSUIT
-    return x, cos_u, sin_u, side
+    for k in range(n):  # x_i = (x, 0), d_i = x_i + h u_i
+        axis[k, 1] = 0.0
+        tractrix[k, 0] = axis[k, 0] + h * u[k, 0]
+        tractrix[k, 1] = 0.0 + h * u[k, 1]
+    return axis, tractrix, u, side
 
 
 def construct_sticks(
@@ -204,11 +217,15 @@ def construct_sticks(
         c0, s0 = ar.cos(angle), ar.sin(angle)
     k0 = -i_lo
     if ar.mode == "float64":
-        axis_f, cos_f, sin_f, side_f = _sticks(
-            hh, step.carry, step.keep, step.widening, c0, s0, k0, n
+        axis, tractrix, u, side_f = _sticks(hh, step.carry, step.keep, step.widening, c0, s0, k0, n)
+        ar.check_time()  # once, after the kernel: ≈ 30 ns per stick
+        return SauerSticks(
+            first=i_lo,
+            axis_points=axis,
+            tractrix=tractrix,
+            directions=u,
+            side=side_f,
         )
-        ar.check_time()  # once, after the kernel: ≈ 20 ns per stick
-        return _assemble(ar, hh, i_lo, i_hi, axis_f, cos_f, sin_f, side_f)
     zero = ar.scalar(0)
     x, cos_u, sin_u = [zero] * n, [zero] * n, [zero] * n
     side = np.zeros(n, dtype=np.int64)
@@ -252,7 +269,7 @@ def _assemble(
     u = stack_points(cos_u, sin_u)
     axis = stack_points(axis_x, ar.zeros(len(axis_x)))
     return SauerSticks(
-        indices=np.arange(i_lo, i_hi + 1, dtype=np.int64),
+        first=i_lo,
         axis_points=axis,
         tractrix=axis + h * u,
         directions=u,

@@ -42,11 +42,14 @@ class KinematicTractrix:
     alone never holds the other three (a 10^6-vertex ``format=npy`` answer, issue 12).
     """
 
-    def __init__(
-        self, indices: np.ndarray[Any, np.dtype[np.int64]], points: Callable[[PointName], Array]
-    ) -> None:
-        self.indices = indices
+    def __init__(self, i_min: int, i_max: int, points: Callable[[PointName], Array]) -> None:
+        self.i_min, self.i_max = i_min, i_max
         self._points = points
+
+    @property
+    def indices(self) -> np.ndarray[Any, np.dtype[np.int64]]:
+        """i_min .. i_max (made when read: no computation needs them)."""
+        return np.arange(self.i_min, self.i_max + 1, dtype=np.int64)
 
     @cached_property
     def axis_points(self) -> Array:
@@ -217,8 +220,7 @@ def construct(
         ar.check_time()  # once, after the kernel: ≈ 20 ns per stick
         arguments = (float(h), float(d), cos_f, sin_f, centre_f, i_min - lo, i_min, i_max)
         return KinematicTractrix(
-            np.arange(i_min, i_max + 1, dtype=np.int64),
-            lambda name: _point_array(_POINT_NAMES.index(name), *arguments),
+            i_min, i_max, lambda name: _point_array(_POINT_NAMES.index(name), *arguments)
         )
     cos_u = [ar.scalar(0)] * (hi - lo + 1)
     sin_u = list(cos_u)
@@ -272,4 +274,4 @@ def _assemble(
         "centres": stack_points((2 * i - 1) * d, centre_y),
         "directions": u,
     }
-    return KinematicTractrix(np.arange(i_min, i_max + 1, dtype=np.int64), points.__getitem__)
+    return KinematicTractrix(i_min, i_max, points.__getitem__)

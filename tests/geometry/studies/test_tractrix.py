@@ -114,7 +114,9 @@ def _perturbed_builder(factor: float):
         tractrix[k] = tractrix[k] * factor
         moved = {"centres": centres, "tractrix": tractrix}
         return KinematicTractrix(
-            built.indices, lambda name: moved[name] if name in moved else getattr(built, name)
+            built.i_min,
+            built.i_max,
+            lambda name: moved[name] if name in moved else getattr(built, name),
         )
 
     return build
