@@ -93,14 +93,15 @@ def check_residuals(
     it is <= the tolerance, false when a rigorous lower bound exceeds the tolerance, and
     ``None`` (undecided, with a note) in between.
     """
-    values = np.abs(ar.to_floats(residuals)) if len(residuals) else np.empty(0)
-    if len(values) == 0:
+    if len(residuals) == 0:
         return not_applicable(
             statement, tolerance, note or "not enough vertices in the range to evaluate it"
         )
+    floats = ar.to_floats(residuals)
     holds: bool | None
-    worst = float(values.max())
+    worst = largest_magnitude(floats)
     residual: float | None = worst
+    values = np.abs(floats) if detail else floats  # |values| only where they are shown
     if math.isfinite(worst):  # the largest is finite only when every value is
         holds = worst <= tolerance
         if not holds and ar.certified and not _exceeds(ar, residuals, tolerance):
@@ -113,6 +114,7 @@ def check_residuals(
             )
             note = f"{note}; {undecided}" if note else undecided
     else:
+        values = np.abs(floats)
         finite = np.isfinite(values)
         # A residual that cannot be computed (an overflow, 0/0) tests nothing: the check fails
         # if a computed residual already exceeds the tolerance, and is otherwise not applicable
@@ -195,6 +197,14 @@ def printed_residual(ar: Arithmetic, residuals: Array) -> float | None:
     if len(residuals) == 0:
         return None
     # on balls, a rigorous lower bound: positive certifies that the printed formula is false
-    values = ar.lower_floats(residuals) if ar.certified else np.abs(ar.to_floats(residuals))
-    worst = float(values.max())
+    if ar.certified:
+        worst = float(ar.lower_floats(residuals).max())
+    else:
+        worst = largest_magnitude(ar.to_floats(residuals))
     return worst if math.isfinite(worst) else None
+
+
+def largest_magnitude(values: np.ndarray[Any, np.dtype[np.float64]]) -> float:
+    """max |v| of a non-empty float64 array, as ``np.abs(values).max()`` (NaN if one is NaN)
+    but without the array of absolute values: the larger of max v and −min v."""
+    return abs(max(float(values.max()), -float(values.min())))

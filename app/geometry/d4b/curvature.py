@@ -46,7 +46,9 @@ from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 from app.geometry.surfaces.ring_curvature import (
     constant_curvature_residuals,
     equation_17_check,
+    equation_17_result,
     minimal_residuals,
+    ring_checks,
     ring_curvatures,
 )
 
@@ -261,15 +263,36 @@ def evaluate(
         residuals = relative_point_difference(ar, built[:n], formula[:n])
         return Erratum(*entry, printed_residual=printed_residual(ar, residuals))
 
-    pseudo = ring_curvatures(ar, tractrix, nt)
-    theorem_7 = np.maximum(
-        ar.to_floats(constant_curvature_residuals(pseudo, -1 / (h * h))),
-        ar.to_floats(pseudo.parallel),
-    )
-    catenoid = ring_curvatures(ar, p, m)
-    theorem_8 = np.maximum(
-        ar.to_floats(minimal_residuals(catenoid)), ar.to_floats(catenoid.parallel)
-    )
+    pseudo_rings = ring_checks(ar, tractrix, nt, -1 / (h * h))
+    catenoid_rings = ring_checks(ar, p, m, None)
+    if pseudo_rings is not None and catenoid_rings is not None:  # float64, one pass per ring
+        theorem_7, theorem_8 = pseudo_rings[0], catenoid_rings[0]
+        equation_17 = equation_17_result(
+            ar,
+            shown,
+            [pseudo_rings[1], catenoid_rings[1]],
+            pseudo_rings[2] + catenoid_rings[2],
+            construction_tolerance,
+            detail,
+        )
+    else:
+        pseudo = ring_curvatures(ar, tractrix, nt)
+        theorem_7 = np.maximum(
+            ar.to_floats(constant_curvature_residuals(pseudo, -1 / (h * h))),
+            ar.to_floats(pseudo.parallel),
+        )
+        catenoid = ring_curvatures(ar, p, m)
+        theorem_8 = np.maximum(
+            ar.to_floats(minimal_residuals(catenoid)), ar.to_floats(catenoid.parallel)
+        )
+        equation_17 = equation_17_check(
+            ar,
+            shown,
+            [(tractrix, nt), (p, m)],
+            construction_tolerance,
+            detail,
+            [pseudo, catenoid],
+        )
     # ñ and m come from the edges of p, which the stored vertices resolve only to eps times
     # |p_i| + |p_{i+1}| (coordinates summed): residuals of quantities built from edge directions
     # are scaled by the resolution |e_i| / (|p_i| + |p_{i+1}|) <= 1 (docs/checks.md)
@@ -285,14 +308,7 @@ def evaluate(
     rotated = stack_points(-nt[:, 1], nt[:, 0])
     inverted = kinematic_closed_forms.pole_by_inversion(c[:-1], c[1:])  # i_min .. i_max + 1
     return [
-        equation_17_check(
-            ar,
-            shown,
-            [(tractrix, nt), (p, m)],
-            construction_tolerance,
-            detail,
-            [pseudo, catenoid],
-        ),
+        equation_17,
         closed(
             EQUATION_18,
             nt,

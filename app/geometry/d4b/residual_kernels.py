@@ -125,20 +125,20 @@ def _right_angles(tractrix: Any, axis: Any, p: Any, n: int) -> Any:
 
 def recursion_residuals(d: float, y: Any) -> tuple[Any, Any]:
     """(residuals of (13) for p_{i+1}^y, of the two-step form for p_{i+2}^y) on heights y."""
-    return _recursions(float(d), np.ascontiguousarray(y, dtype=np.float64), TINY)
+    return _recursions(float(d), np.asarray(y, dtype=np.float64), TINY)
 
 
 def two_step_printed_residuals(d: float, y: Any) -> Any:
     """Residuals of p_{i+2}^y against the printed two-step form (erratum E3) on heights y."""
     d = float(d)
-    return _two_step_printed(d**2, d**4, np.ascontiguousarray(y, dtype=np.float64), TINY)
+    return _two_step_printed(d**2, d**4, np.asarray(y, dtype=np.float64), TINY)
 
 
 def right_angle_residuals(tractrix: Any, axis: Any, p: Any, n: int) -> Any:
     """Nikolaides' right angles at d_i (to p_i and to p_{i+1}) for i = 0 .. n − 1, the larger."""
 
     def f64(points: Any) -> Any:
-        return np.ascontiguousarray(points, dtype=np.float64)
+        return np.asarray(points, dtype=np.float64)
 
     return _right_angles(f64(tractrix), f64(axis), f64(p), n)
 
@@ -205,7 +205,7 @@ def edge_resolution(points: Any) -> Any:
 
 
 def _points(points: Any) -> Any:
-    return np.ascontiguousarray(points, dtype=np.float64)
+    return np.asarray(points, dtype=np.float64)
 
 
 def point_distance(ar: Arithmetic, a: Array, b: Array) -> Array:

@@ -11,11 +11,49 @@ from __future__ import annotations
 
 from typing import Any
 
+import numba
 import numpy as np
 
 from app.geometry.compiled import kernel
 
 TINY = float(np.finfo(np.float64).tiny)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def one_face(
+    p0: float,
+    p1: float,
+    a0: float,
+    a1: float,
+    area: float,
+    gauss_area: float,
+    mixed_area: float,
+    area_magnitude: float,
+    gauss_area_magnitude: float,
+    mixed_area_magnitude: float,
+    tiny: float,
+) -> tuple[float, float, float]:
+    """One face: the K residual, the H residual and Δ = q1² − q0² (see the caller)."""
+    c = max(abs(p0), abs(p1))
+    if not c > tiny:
+        c = 1.0
+    q0 = p0 / c
+    q1 = p1 / c
+    dp = q1 * q1 - q0 * q0
+    sp = q1 * q1 + q0 * q0
+    area_k = area / c / c
+    mag_k = area_magnitude / c / c
+    area_h = area / c
+    mag_h = area_magnitude / c
+    k_scale = gauss_area_magnitude * sp + mag_k * (a1 * a1 + a0 * a0)
+    h_scale = mixed_area_magnitude * sp + mag_h * (abs(q0 * a0) + abs(q1 * a1))
+    k_res = abs(gauss_area * dp - area_k * (a1 * a1 - a0 * a0))
+    h_res = abs(mixed_area * dp + area_h * (q0 * a0 - q1 * a1))
+    return (
+        k_res / (k_scale if k_scale > tiny else tiny),
+        h_res / (h_scale if h_scale > tiny else tiny),
+        dp,
+    )
 
 
 @kernel(
@@ -35,28 +73,22 @@ def _residuals(
     mixed_area_magnitude: Any,
     tiny: float,
 ) -> Any:
-    """Rows: the K residual, the H residual and Δ = q1² − q0² of every face (see the caller)."""
+    """Rows: the K residual, the H residual and Δ = q1² − q0² of every face (``one_face``)."""
     out = np.empty((3, p0.shape[0]))
     for k in range(p0.shape[0]):
-        c = max(abs(p0[k]), abs(p1[k]))
-        if not c > tiny:
-            c = 1.0
-        q0 = p0[k] / c
-        q1 = p1[k] / c
-        dp = q1 * q1 - q0 * q0
-        sp = q1 * q1 + q0 * q0
-        area_k = area[k] / c / c
-        mag_k = area_magnitude[k] / c / c
-        area_h = area[k] / c
-        mag_h = area_magnitude[k] / c
-        a0, a1 = n0[k], n1[k]
-        k_scale = gauss_area_magnitude[k] * sp + mag_k * (a1 * a1 + a0 * a0)
-        h_scale = mixed_area_magnitude[k] * sp + mag_h * (abs(q0 * a0) + abs(q1 * a1))
-        k_res = abs(gauss_area[k] * dp - area_k * (a1 * a1 - a0 * a0))
-        h_res = abs(mixed_area[k] * dp + area_h * (q0 * a0 - q1 * a1))
-        out[0, k] = k_res / (k_scale if k_scale > tiny else tiny)
-        out[1, k] = h_res / (h_scale if h_scale > tiny else tiny)
-        out[2, k] = dp
+        out[0, k], out[1, k], out[2, k] = one_face(
+            p0[k],
+            p1[k],
+            n0[k],
+            n1[k],
+            area[k],
+            gauss_area[k],
+            mixed_area[k],
+            area_magnitude[k],
+            gauss_area_magnitude[k],
+            mixed_area_magnitude[k],
+            tiny,
+        )
     return out
 
 
@@ -66,7 +98,7 @@ def face_residuals(
     """``revolution_formulas.face_residuals`` in float64: (K residuals, H residuals, p1 ≠ p0)."""
 
     def f64(values: Any) -> Any:
-        return np.ascontiguousarray(values, dtype=np.float64)
+        return np.asarray(values, dtype=np.float64)
 
     rows = _residuals(
         f64(p0),

@@ -72,17 +72,42 @@ def equation_17_check(
     ``curvatures``, if given, are the pairs' ``ring_curvatures`` already computed (by the
     checks of Theorems 7, 8), so that they are not computed twice.
     """
-    worst: Array | None = None
+    per_pair: list[Array] = []
     skipped = 0
     for k, (meridian, gauss) in enumerate(pairs):
         curvature = ring_curvatures(ar, meridian, gauss) if curvatures is None else curvatures[k]
         k_res, h_res, defined = equation_17_residuals(ar, meridian[:, 1], gauss[:, 1], curvature)
         both = np.maximum(ar.to_floats(k_res), ar.to_floats(h_res))
-        both = np.where(defined, both, 0.0)
+        per_pair.append(np.where(defined, both, 0.0))
         skipped += int(np.count_nonzero(~defined))
-        worst = both if worst is None else np.maximum(worst, both)
-    assert worst is not None
-    if skipped == len(worst) * len(pairs):
+    return equation_17_result(ar, indices, per_pair, skipped, tolerance, detail)
+
+
+def ring_checks(
+    ar: Arithmetic, meridian: Array, gauss: Array, curvature: float | None
+) -> tuple[Array, Array, int] | None:
+    """Float64: Theorem 7's (``curvature`` K) or 8's (None: H = 0) residuals and (17)'s on
+    one ring, in one compiled pass (``ring_kernel.ring_checks``); None in mp, or where the
+    numpy path must name a face without area."""
+    if ar.mode != "float64":
+        return None
+    theta = ar.pi / RING_M
+    return ring_kernel.ring_checks(meridian, gauss, ar.cos(theta), ar.sin(theta), curvature)
+
+
+def equation_17_result(
+    ar: Arithmetic,
+    indices: np.ndarray[Any, np.dtype[np.int64]],
+    per_pair: list[Array],
+    skipped: int,
+    tolerance: float,
+    detail: bool,
+) -> Check:
+    """The check of (17) from each pair's residuals per face (0 where 0/0, ``skipped`` such)."""
+    worst = per_pair[0]
+    for both in per_pair[1:]:
+        worst = np.maximum(worst, both)
+    if skipped == len(worst) * len(per_pair):
         return not_applicable(EQUATION_17, tolerance, "(17) is 0/0 on every face of the range")
     note = (
         f"(17) is 0/0 on {skipped} face(s) with p_(i+1)^y = p_i^y (skipped; the mixed-area "

@@ -107,3 +107,40 @@ def numpy_face_residuals(p0, p1, n0, n1, areas):
     k_res = k_res / np.where(k_scale > tiny, k_scale, tiny)
     h_res = h_res / np.where(h_scale > tiny, h_scale, tiny)
     return k_res, h_res, dp != 0
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3])
+@pytest.mark.parametrize("curvature", [-1.0, -0.37, None])
+def test_fused_ring_checks_equal_the_ring_and_its_residuals(
+    seed: int, curvature: float | None
+) -> None:
+    """Theorem 7's / 8's and (17)'s residuals in one pass: the bits of the steps they fuse
+    (``ring_curvatures``, ``constant_curvature_residuals`` or ``minimal_residuals`` with
+    ``np.maximum``, ``face_residuals``), faces where (17) is 0/0 counted as skipped."""
+    ar = Float64()
+    cases = meridians(seed)
+    flat = np.array([[0.0, 1.0], [1.0, 1.0], [2.0, 1.5], [3.0, 1.5], [4.0, 2.0]])
+    cases.append((flat, flat * 0.5 + 0.25))
+    for meridian, gauss in cases:
+        n = min(len(meridian), len(gauss))
+        meridian, gauss = meridian[:n], gauss[:n]
+        fused = ring_curvature.ring_checks(ar, meridian, gauss, curvature)
+        assert fused is not None
+        ring = ring_curvature.ring_curvatures(ar, meridian, gauss)
+        own = (
+            ring_curvature.minimal_residuals(ring)
+            if curvature is None
+            else ring_curvature.constant_curvature_residuals(ring, curvature)
+        )
+        np.testing.assert_array_equal(fused[0], np.maximum(own, ring.parallel))
+        k_res, h_res, defined = revolution_formulas.equation_17_residuals(
+            ar, meridian[:, 1], gauss[:, 1], ring
+        )
+        np.testing.assert_array_equal(fused[1], np.where(defined, np.maximum(k_res, h_res), 0.0))
+        assert fused[2] == int(np.count_nonzero(~defined))
+
+
+def test_fused_ring_checks_leave_a_face_without_area_to_the_numpy_path() -> None:
+    meridian = np.array([[0.0, 1.0], [1.0, 1.0], [1.0, 1.0], [2.0, 2.0]])
+    gauss = np.array([[0.0, 1.0], [0.5, 1.0], [0.7, 1.0], [1.0, 1.5]])
+    assert ring_curvature.ring_checks(Float64(), meridian, gauss, -1.0) is None
