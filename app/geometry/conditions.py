@@ -14,8 +14,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
+import numba
 import numpy as np
 
+from app.geometry.compiled import hypot, kernel
 from app.geometry.polygon import (
     area_magnitude,
     edge_lengths,
@@ -46,6 +48,8 @@ def fit(
 ) -> ConditionFit:
     """Least-squares c in lhs = c·rhs and the relative residuals; all arrays ``(m,)``."""
     tiny = ar.scalar(np.finfo(np.float64).tiny)
+    if ar.mode == "float64":  # the same operations, the elementwise ones in compiled passes
+        return _fit_float64(lhs, rhs, lhs_magnitude, rhs_magnitude)
     weight = np.where(lhs_magnitude > tiny, lhs_magnitude, tiny)
     # each side scaled to at most 1 before and after the weighting, so that neither the
     # quotients (weights can be as small as the smallest normal float) nor the squares can
@@ -67,6 +71,9 @@ def misfit(
 ) -> Array:
     """|lhs_i − c·rhs_i| / (|lhs|_i + |c|·|rhs|_i) for a given constant c; ``(m,)``."""
     tiny = ar.scalar(np.finfo(np.float64).tiny)
+    if ar.mode == "float64":  # the same operations in one compiled pass
+        left, right, left_size, right_size = _f64(lhs, rhs, lhs_magnitude, rhs_magnitude)
+        return _misfit(left, right, left_size, right_size, float(c), TINY)
     scale = lhs_magnitude + abs(c) * rhs_magnitude
     scale = np.where(scale > tiny, scale, tiny)
     return abs(lhs - c * rhs) / scale
@@ -74,6 +81,8 @@ def misfit(
 
 def d1(ar: Arithmetic, p: Array) -> ConditionFit:
     """(D1): Δ²p_i^y = c (l_i + l_{i+1}); equations i = i_min .. i_max − 2."""
+    if ar.mode == "float64":
+        return fit(ar, *_columns(p, D1))
     y = p[:, 1]
     lengths = edge_lengths(ar, p)
     sizes = edge_magnitude(p)
@@ -88,11 +97,15 @@ def d1(ar: Arithmetic, p: Array) -> ConditionFit:
 
 def d3(ar: Arithmetic, p: Array) -> ConditionFit:
     """(D3): A_i = c l_i; equations i = i_min .. i_max − 1."""
+    if ar.mode == "float64":
+        return fit(ar, *_columns(p, D3))
     return fit(ar, signed_areas(p), edge_lengths(ar, p), area_magnitude(p), edge_magnitude(p))
 
 
 def equation_2(ar: Arithmetic, p: Array) -> ConditionFit:
     """Eq. (2): Δ²p_i^y = c (A_i + A_{i+1}); equations i = i_min .. i_max − 2."""
+    if ar.mode == "float64":
+        return fit(ar, *_columns(p, EQUATION_2))
     y = p[:, 1]
     areas = signed_areas(p)
     sizes = area_magnitude(p)
@@ -107,6 +120,8 @@ def equation_2(ar: Arithmetic, p: Array) -> ConditionFit:
 
 def equation_2_misfit(ar: Arithmetic, p: Array, c: Scalar) -> Array:
     """Eq. (2) with a given c: the residual of each equation, measured as in ``fit``."""
+    if ar.mode == "float64":
+        return misfit(ar, *_columns(p, EQUATION_2), c)
     y = p[:, 1]
     areas = signed_areas(p)
     sizes = area_magnitude(p)
@@ -200,3 +215,124 @@ def equilibrium(ar: Arithmetic, p: Array) -> ConditionFit:
         sizes[:-1] + sizes[1:],
         edge_sizes[:-1] + edge_sizes[1:],
     )
+
+
+# --- float64: the same numbers in compiled passes (no temporary arrays but the four columns) ---
+
+TINY = float(np.finfo(np.float64).tiny)
+
+#: ``_columns`` kinds: the two sides of (D1), (D3) and eq. (2) with their magnitudes.
+D1, D3, EQUATION_2 = 0, 1, 2
+
+
+@kernel("UniTuple(float64[:], 4)(float64[:, :], int64)")
+def _condition_columns(p: Any, kind: int) -> tuple[Any, Any, Any, Any]:
+    """(lhs, rhs, |lhs|~, |rhs|~) of ``d1``, ``d3`` or ``equation_2`` (``kind``), entry by
+    entry as the ``polygon`` functions compute them (the same operations in the same order;
+    edge lengths by libm's hypot, inline)."""
+    n = p.shape[0]
+    count = max(n - 1 if kind == D3 else n - 2, 0)
+    lhs = np.empty(count)
+    rhs = np.empty(count)
+    lhs_size = np.empty(count)
+    rhs_size = np.empty(count)
+    for k in range(count):
+        x0, y0, x1, y1 = p[k, 0], p[k, 1], p[k + 1, 0], p[k + 1, 1]
+        if kind == D3:  # A_k = c l_k
+            lhs[k] = (y0 + y1) / 2 * (x1 - x0)
+            rhs[k] = hypot(x1 - x0, y1 - y0)
+            lhs_size[k] = (abs(y0) + abs(y1)) / 2 * (abs(x0) + abs(x1))
+            rhs_size[k] = abs(x0) + abs(y0) + abs(x1) + abs(y1)
+            continue
+        x2, y2 = p[k + 2, 0], p[k + 2, 1]
+        lhs[k] = y2 - 2 * y1 + y0
+        lhs_size[k] = abs(y2) + 2 * abs(y1) + abs(y0)
+        if kind == D1:  # Δ²y_k = c (l_k + l_{k+1})
+            rhs[k] = hypot(x1 - x0, y1 - y0) + hypot(x2 - x1, y2 - y1)
+            rhs_size[k] = (abs(x0) + abs(y0) + abs(x1) + abs(y1)) + (
+                abs(x1) + abs(y1) + abs(x2) + abs(y2)
+            )
+        else:  # Δ²y_k = c (A_k + A_{k+1})
+            rhs[k] = (y0 + y1) / 2 * (x1 - x0) + (y1 + y2) / 2 * (x2 - x1)
+            rhs_size[k] = (abs(y0) + abs(y1)) / 2 * (abs(x0) + abs(x1)) + (
+                abs(y1) + abs(y2)
+            ) / 2 * (abs(x1) + abs(x2))
+    return lhs, rhs, lhs_size, rhs_size
+
+
+def _columns(p: Array, kind: int) -> tuple[Any, Any, Any, Any]:
+    return _condition_columns(np.asarray(p, dtype=np.float64), kind)
+
+
+def _f64(*arrays: Array) -> list[Any]:
+    return [np.asarray(a, dtype=np.float64) for a in arrays]
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _largest(value: float, nan: bool, largest: float) -> tuple[float, bool]:
+    """One step of max |v| with numpy's NaN propagation: (largest so far, NaN seen)."""
+    if value != value:
+        return largest, True
+    magnitude = abs(value)
+    return (magnitude if magnitude > largest else largest), nan
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _column_scale(largest: float, nan: bool) -> float:
+    """``_largest_magnitude``: max |v|, or 1 when it is 0 or NaN (NaN > 0 is false)."""
+    return largest if (not nan and largest > 0) else 1.0
+
+
+@kernel(
+    "Tuple((float64[:], float64[:], float64, float64, float64, float64))"
+    "(float64[:], float64[:], float64[:], float64)"
+)
+def _fit_terms(
+    lhs: Any, rhs: Any, lhs_size: Any, tiny: float
+) -> tuple[Any, Any, float, float, float, float]:
+    """``fit``'s scaled columns without storing them: the terms v_k² and u_k v_k of its two
+    sums (left to ``np.sum``, whose pairwise order gives the constant its bits) and the four
+    scales (lhs, rhs, u, v), each entry computed as ``fit`` computes it."""
+    n = lhs.shape[0]
+    big_l, nan_l, big_r, nan_r = 0.0, False, 0.0, False
+    for k in range(n):
+        big_l, nan_l = _largest(lhs[k], nan_l, big_l)
+        big_r, nan_r = _largest(rhs[k], nan_r, big_r)
+    lhs_scale, rhs_scale = _column_scale(big_l, nan_l), _column_scale(big_r, nan_r)
+    big_u, nan_u, big_v, nan_v = 0.0, False, 0.0, False
+    for k in range(n):
+        weight = lhs_size[k] if lhs_size[k] > tiny else tiny
+        big_u, nan_u = _largest(lhs[k] / lhs_scale / weight, nan_u, big_u)
+        big_v, nan_v = _largest(rhs[k] / rhs_scale / weight, nan_v, big_v)
+    u_scale, v_scale = _column_scale(big_u, nan_u), _column_scale(big_v, nan_v)
+    squares = np.empty(n)
+    products = np.empty(n)
+    for k in range(n):
+        weight = lhs_size[k] if lhs_size[k] > tiny else tiny
+        u = lhs[k] / lhs_scale / weight / u_scale
+        v = rhs[k] / rhs_scale / weight / v_scale
+        squares[k] = v * v
+        products[k] = u * v
+    return squares, products, lhs_scale, rhs_scale, u_scale, v_scale
+
+
+@kernel("float64[:](float64[:], float64[:], float64[:], float64[:], float64, float64)")
+def _misfit(lhs: Any, rhs: Any, lhs_size: Any, rhs_size: Any, c: float, tiny: float) -> Any:
+    """``misfit`` entry by entry: |lhs − c·rhs| / max(|lhs|~ + |c|·|rhs|~, tiny)."""
+    out = np.empty(lhs.shape[0])
+    for k in range(lhs.shape[0]):
+        scale = lhs_size[k] + abs(c) * rhs_size[k]
+        out[k] = abs(lhs[k] - c * rhs[k]) / (scale if scale > tiny else tiny)
+    return out
+
+
+def _fit_float64(lhs: Array, rhs: Array, lhs_size: Array, rhs_size: Array) -> ConditionFit:
+    """``fit`` in float64: its elementwise passes compiled, its two sums numpy's."""
+    lhs, rhs, lhs_size, rhs_size = _f64(lhs, rhs, lhs_size, rhs_size)
+    squares, products, lhs_scale, rhs_scale, u_scale, v_scale = _fit_terms(lhs, rhs, lhs_size, TINY)
+    vv = np.sum(squares) if len(squares) else np.float64(0)
+    constant = (
+        np.sum(products) / vv * (u_scale / v_scale) * (lhs_scale / rhs_scale) if vv > 0 else None
+    )
+    c = float(constant) if constant is not None else 0.0
+    return ConditionFit(constant, _misfit(lhs, rhs, lhs_size, rhs_size, c, TINY))
