@@ -283,16 +283,12 @@ def _column_scale(largest: float, nan: bool) -> float:
     return largest if (not nan and largest > 0) else 1.0
 
 
-@kernel(
-    "Tuple((float64[:], float64[:], float64, float64, float64, float64))"
-    "(float64[:], float64[:], float64[:], float64)"
-)
-def _fit_terms(
+@kernel("UniTuple(float64, 4)(float64[:], float64[:], float64[:], float64)")
+def _fit_scales(
     lhs: Any, rhs: Any, lhs_size: Any, tiny: float
-) -> tuple[Any, Any, float, float, float, float]:
-    """``fit``'s scaled columns without storing them: the terms v_k² and u_k v_k of its two
-    sums (left to ``np.sum``, whose pairwise order gives the constant its bits) and the four
-    scales (lhs, rhs, u, v), each entry computed as ``fit`` computes it."""
+) -> tuple[float, float, float, float]:
+    """``fit``'s four column scales (lhs, rhs, then u and v), as it computes them, in two
+    passes without storing u and v."""
     n = lhs.shape[0]
     big_l, nan_l, big_r, nan_r = 0.0, False, 0.0, False
     for k in range(n):
@@ -304,35 +300,60 @@ def _fit_terms(
         weight = lhs_size[k] if lhs_size[k] > tiny else tiny
         big_u, nan_u = _largest(lhs[k] / lhs_scale / weight, nan_u, big_u)
         big_v, nan_v = _largest(rhs[k] / rhs_scale / weight, nan_v, big_v)
-    u_scale, v_scale = _column_scale(big_u, nan_u), _column_scale(big_v, nan_v)
-    squares = np.empty(n)
-    products = np.empty(n)
-    for k in range(n):
+    return lhs_scale, rhs_scale, _column_scale(big_u, nan_u), _column_scale(big_v, nan_v)
+
+
+@kernel(
+    "void(float64[:], float64[:], float64[:], float64, float64, float64, float64, float64, "
+    "boolean, float64[:])"
+)
+def _fit_terms(
+    lhs: Any,
+    rhs: Any,
+    lhs_size: Any,
+    tiny: float,
+    lhs_scale: float,
+    rhs_scale: float,
+    u_scale: float,
+    v_scale: float,
+    products: bool,
+    out: Any,
+) -> None:
+    """The terms of one of ``fit``'s sums into ``out``: u_k v_k (``products``) or v_k²."""
+    for k in range(lhs.shape[0]):
         weight = lhs_size[k] if lhs_size[k] > tiny else tiny
-        u = lhs[k] / lhs_scale / weight / u_scale
         v = rhs[k] / rhs_scale / weight / v_scale
-        squares[k] = v * v
-        products[k] = u * v
-    return squares, products, lhs_scale, rhs_scale, u_scale, v_scale
+        out[k] = lhs[k] / lhs_scale / weight / u_scale * v if products else v * v
 
 
-@kernel("float64[:](float64[:], float64[:], float64[:], float64[:], float64, float64)")
-def _misfit(lhs: Any, rhs: Any, lhs_size: Any, rhs_size: Any, c: float, tiny: float) -> Any:
-    """``misfit`` entry by entry: |lhs − c·rhs| / max(|lhs|~ + |c|·|rhs|~, tiny)."""
-    out = np.empty(lhs.shape[0])
+@kernel("void(float64[:], float64[:], float64[:], float64[:], float64, float64, float64[:])")
+def _misfit_into(
+    lhs: Any, rhs: Any, lhs_size: Any, rhs_size: Any, c: float, tiny: float, out: Any
+) -> None:
+    """``misfit`` entry by entry into ``out``: |lhs − c·rhs| / max(|lhs|~ + |c|·|rhs|~, tiny)."""
     for k in range(lhs.shape[0]):
         scale = lhs_size[k] + abs(c) * rhs_size[k]
         out[k] = abs(lhs[k] - c * rhs[k]) / (scale if scale > tiny else tiny)
+
+
+def _misfit(lhs: Any, rhs: Any, lhs_size: Any, rhs_size: Any, c: float, tiny: float) -> Any:
+    out = np.empty(len(lhs))
+    _misfit_into(lhs, rhs, lhs_size, rhs_size, c, tiny, out)
     return out
 
 
 def _fit_float64(lhs: Array, rhs: Array, lhs_size: Array, rhs_size: Array) -> ConditionFit:
-    """``fit`` in float64: its elementwise passes compiled, its two sums numpy's."""
+    """``fit`` in float64: its elementwise passes compiled, its two sums numpy's; one array
+    holds the terms of each sum in turn, then the residuals."""
     lhs, rhs, lhs_size, rhs_size = _f64(lhs, rhs, lhs_size, rhs_size)
-    squares, products, lhs_scale, rhs_scale, u_scale, v_scale = _fit_terms(lhs, rhs, lhs_size, TINY)
-    vv = np.sum(squares) if len(squares) else np.float64(0)
-    constant = (
-        np.sum(products) / vv * (u_scale / v_scale) * (lhs_scale / rhs_scale) if vv > 0 else None
-    )
+    lhs_scale, rhs_scale, u_scale, v_scale = scales = _fit_scales(lhs, rhs, lhs_size, TINY)
+    out = np.empty(len(lhs))
+    _fit_terms(lhs, rhs, lhs_size, TINY, *scales, False, out)
+    vv = np.sum(out) if len(out) else np.float64(0)
+    constant = None
+    if vv > 0:
+        _fit_terms(lhs, rhs, lhs_size, TINY, *scales, True, out)
+        constant = np.sum(out) / vv * (u_scale / v_scale) * (lhs_scale / rhs_scale)
     c = float(constant) if constant is not None else 0.0
-    return ConditionFit(constant, _misfit(lhs, rhs, lhs_size, rhs_size, c, TINY))
+    _misfit_into(lhs, rhs, lhs_size, rhs_size, c, TINY, out)
+    return ConditionFit(constant, out)

@@ -50,6 +50,33 @@ def _relative_distances(computed: Any, expected: Any, tiny: float) -> Any:
     return out
 
 
+@kernel("float64[:](float64[:, :], float64[:, :], float64, float64[:])")
+def _scaled_relative_distances(computed: Any, expected: Any, tiny: float, scale: Any) -> Any:
+    """``_relative_distances`` times scale_k, in the same pass (the product as numpy's)."""
+    out = np.empty(computed.shape[0])
+    for k in range(computed.shape[0]):
+        ex, ey = expected[k, 0], expected[k, 1]
+        size = length(ex, ey)
+        size = size if size > tiny else tiny
+        out[k] = length(computed[k, 0] - ex, computed[k, 1] - ey) / size * scale[k]
+    return out
+
+
+@kernel("float64(float64[:, :], float64[:, :], float64)")
+def _largest_relative_distance(computed: Any, expected: Any, tiny: float) -> float:
+    """max_k of ``_relative_distances`` without storing them: NaN if one is NaN, as np.max."""
+    largest = 0.0
+    for k in range(computed.shape[0]):
+        ex, ey = expected[k, 0], expected[k, 1]
+        size = length(ex, ey)
+        size = size if size > tiny else tiny
+        value = length(computed[k, 0] - ex, computed[k, 1] - ey) / size
+        if value != value:
+            return value
+        largest = value if value > largest else largest
+    return largest
+
+
 @kernel("UniTuple(float64[:], 2)(float64, float64[:], float64)")
 def _recursions(d: float, y: Any, tiny: float) -> tuple[Any, Any]:
     """Relative differences of p_{i+1}^y from (13) and of p_{i+2}^y from its two-step form.
@@ -221,3 +248,19 @@ def relative_point_difference(ar: Arithmetic, computed: Array, expected: Array) 
     if ar.mode != "float64":
         return checks.relative_point_difference(ar, computed, expected)
     return _relative_distances(_points(computed), _points(expected), TINY)
+
+
+def scaled_relative_point_difference(computed: Array, expected: Array, scale: Array) -> Array:
+    """Float64: ``relative_point_difference`` times ``scale`` entry by entry, in one pass."""
+    return _scaled_relative_distances(
+        _points(computed), _points(expected), TINY, np.asarray(scale, dtype=np.float64)
+    )
+
+
+def largest_relative_point_difference(computed: Array, expected: Array) -> float | None:
+    """Float64: the largest ``relative_point_difference`` as ``checks.printed_residual`` reports
+    it (None for no rows or a value that is not finite), without the array."""
+    if len(computed) == 0:
+        return None
+    worst = float(_largest_relative_distance(_points(computed), _points(expected), TINY))
+    return worst if math.isfinite(worst) else None

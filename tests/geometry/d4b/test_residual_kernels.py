@@ -180,3 +180,26 @@ def test_printed_two_step_residuals_equal_numpy(seed: int) -> None:
             eps = np.finfo(np.float64).eps
             np.testing.assert_allclose(got, expected, rtol=8 * eps, atol=8 * eps)
     assert residual_kernels.two_step_printed_residuals(0.1, np.ones(3)).shape == (0,)
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_scaled_and_largest_relative_differences_equal_the_array_path(seed: int) -> None:
+    """One pass each: the scaled residuals and the largest one, as the array and numpy give."""
+    ar = Float64()
+    for data in polygons(seed):
+        p = perturbed(data, seed)[0]
+        scale = np.random.default_rng(seed).uniform(0, 1, len(p))
+        residuals = residual_kernels.relative_point_difference(ar, p, data.p)
+        np.testing.assert_array_equal(
+            residual_kernels.scaled_relative_point_difference(p, data.p, scale),
+            residuals * scale,
+        )
+        assert residual_kernels.largest_relative_point_difference(
+            p, data.p
+        ) == checks.printed_residual(ar, residuals)
+    assert (
+        residual_kernels.largest_relative_point_difference(np.empty((0, 2)), np.empty((0, 2)))
+        is None
+    )
+    nan = np.array([[1.0, 2.0], [np.nan, 1.0]])
+    assert residual_kernels.largest_relative_point_difference(nan, np.ones((2, 2))) is None
