@@ -157,3 +157,13 @@ def hypot_arrays(x: Any, y: Any) -> Any:
     ):
         return _hypot_arrays(x, y)
     return np.hypot(x, y)
+
+
+@kernel("boolean(float64[:, :])")
+def all_positive_lengths(vectors: Any) -> bool:
+    """Whether hypot(v_x, v_y) > 0 for every row (false for a zero or NaN row), as
+    ``np.all(np.hypot(…) > 0)`` without the array of lengths."""
+    for k in range(vectors.shape[0]):  # noqa: SIM110 (a loop numba compiles)
+        if not hypot(vectors[k, 0], vectors[k, 1]) > 0:
+            return False
+    return True

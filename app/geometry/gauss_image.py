@@ -25,13 +25,18 @@ from __future__ import annotations
 
 import numpy as np
 
+from app.geometry.compiled import all_positive_lengths
 from app.geometry.errors import DomainError
 from app.geometry.polygon import edge_vectors
 from app.geometry.precision import Arithmetic, Array, stack_points
 
 
 def _require_edges(ar: Arithmetic, edges: Array) -> None:
-    if len(edges) and not bool(np.all(ar.hypot(edges[:, 0], edges[:, 1]) > 0)):
+    if ar.mode == "float64":  # the same test without the array of lengths
+        positive = all_positive_lengths(np.asarray(edges, dtype=np.float64))
+    else:
+        positive = not len(edges) or bool(np.all(ar.hypot(edges[:, 0], edges[:, 1]) > 0))
+    if not positive:
         raise DomainError("meridian", "consecutive vertices are distinct", "a zero-length edge")
 
 

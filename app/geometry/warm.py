@@ -14,12 +14,14 @@ from app.geometry.compiled import KERNELS
 
 #: The modules that declare kernels.
 MODULES = (
+    "app.geometry.conditions",
     "app.geometry.d1.construction",
     "app.geometry.d3.construction",
     "app.geometry.d4a.construction",
     "app.geometry.d4b.closed_forms",
     "app.geometry.d4b.construction",
     "app.geometry.d4b.residual_kernels",
+    "app.geometry.darboux",
     "app.geometry.surfaces.equation_17_kernel",
     "app.geometry.surfaces.ring_kernel",
 )

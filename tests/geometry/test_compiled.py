@@ -24,6 +24,7 @@ from app.geometry.d1.construction import construct as construct_d1
 from app.geometry.d3.construction import construct as construct_d3
 from app.geometry.d4a.construction import construct_sticks
 from app.geometry.d4b.construction import construct as construct_d4b
+from app.geometry.errors import DomainError
 from app.geometry.precision import Arithmetic, Float64, MultiPrecision
 
 PREVIOUS = json.loads((Path(__file__).parent / "previous_constructions.json").read_text())
@@ -132,3 +133,52 @@ def test_inline_hypot_is_libms_bit_for_bit(kind: int) -> None:
     got = _inline_hypot(x, y)
     same = (got.view(np.int64) == expected.view(np.int64)) | (np.isnan(got) & np.isnan(expected))
     assert bool(np.all(same)), (x[~same][:3], y[~same][:3])
+
+
+class _NumpyFloat64(Float64):
+    """Float64 numbers taking the generic numpy path (the one mp takes) instead of kernels."""
+
+    mode = "float64-numpy"  # type: ignore[assignment]
+
+
+def _random_polygons(seed: int) -> list[np.ndarray]:
+    rng = np.random.default_rng(seed)
+    x = np.cumsum(rng.uniform(0.01, 1.0, 400))
+    y = np.cosh(x / 50) * rng.choice([1.0, 1e-6, 1e6]) + rng.normal(size=400) * 1e-3
+    polygon = np.stack([x, y], axis=1)
+    return [polygon, polygon[::-1].copy(), polygon * [1.0, -1.0], polygon[:3], polygon[:1]]
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_compiled_fits_and_darboux_residuals_equal_the_numpy_path(seed: int) -> None:
+    """conditions' fits (constants and residuals) and darboux's residuals, bit for bit."""
+    from app.geometry import conditions, darboux, gauss_image
+
+    fast, generic = Float64(), _NumpyFloat64()
+    for p in _random_polygons(seed):
+        for fit in (conditions.d1, conditions.d3, conditions.equation_2):
+            a, b = fit(fast, p), fit(generic, p)
+            assert (a.constant is None) == (b.constant is None)
+            if a.constant is not None:
+                assert float(a.constant) == float(b.constant)  # type: ignore[arg-type]
+            np.testing.assert_array_equal(a.residuals, b.residuals)
+        np.testing.assert_array_equal(
+            conditions.equation_2_misfit(fast, p, 0.37),
+            conditions.equation_2_misfit(generic, p, 0.37),
+        )
+        e = darboux.reflect_in_points(p, p[::-1] * 0.5)
+        np.testing.assert_array_equal(
+            darboux.edge_length_residuals(fast, p, e), darboux.edge_length_residuals(generic, p, e)
+        )
+        np.testing.assert_array_equal(
+            darboux.distance_residuals(fast, p, e, 2.0),
+            darboux.distance_residuals(generic, p, e, 2.0),
+        )
+        if len(p) > 1:
+            np.testing.assert_array_equal(
+                gauss_image.contact_points(fast, p), gauss_image.contact_points(generic, p)
+            )
+    repeated = np.array([[0.0, 1.0], [1.0, 2.0], [1.0, 2.0]])
+    for ar in (fast, generic):
+        with pytest.raises(DomainError, match="distinct"):
+            gauss_image.contact_points(ar, repeated)
