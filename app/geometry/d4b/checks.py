@@ -102,7 +102,8 @@ def evaluate(
     """Fitted constants and the selected checks of ``STATEMENTS`` on the given polygons.
 
     Each check computes only the polygons and shared quantities it needs (``_Context``); the
-    constants of (D1), (D3) and (2) come with the checks (none for ``checks=none``).
+    constants of (D1), (D3) and (2) come with the checks that fit them (Theorem 4 (i)–(iii)),
+    as ``Selection.constants`` has it: a selection without those checks computes no fit.
     """
     ctx = _Context(ar, ar.scalar(h), ar.scalar(d), data, detail)
     checks = [
@@ -127,7 +128,7 @@ def evaluate(
             detail,
         )
     constants: dict[str, Scalar] = {}
-    if not selection.no_checks:
+    if "fits" in vars(ctx):  # the fitted constants come with the checks that fit them
         constants = {k: f.constant for k, f in ctx.fits.items() if f.constant is not None}
     return constants, checks
 

@@ -179,3 +179,13 @@ def test_every_check_holds_near_the_ends_of_the_domain(
     curve = d4b.compute(float64, h, d, beta0, i_min, i_max, method)  # type: ignore[arg-type]
     assert [c.id for c in curve.checks if c.holds is False] == []
     assert d4b.conditioning(h, d) == pytest.approx(h * h / ((h - d) * (h + d)))
+
+
+def test_fitted_constants_come_with_the_checks_that_fit_them(float64: Float64) -> None:
+    """A selection without Theorem 4 (i)–(iii) computes no fit and reports no constant."""
+    from app.geometry.curve import Selection
+
+    alone = d4b.compute(float64, selection=Selection(checks=frozenset({"theorem-4-hypothesis"})))
+    assert alone.constants == {}
+    fitted = d4b.compute(float64, selection=Selection(checks=frozenset({"theorem-4-ii"})))
+    assert set(fitted.constants) == {"d1", "d3", "eq2"}
