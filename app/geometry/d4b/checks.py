@@ -126,6 +126,7 @@ def evaluate(
             ctx.tolerance,
             ctx.construction_tolerance,
             detail,
+            selection.wants_check,
         )
     constants: dict[str, Scalar] = {}
     if "fits" in vars(ctx):  # the fitted constants come with the checks that fit them

@@ -14,7 +14,8 @@ carry an erratum (E60–E63 in docs/errata.md):
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from collections.abc import Callable
+from functools import cached_property
 from typing import Any
 
 import numpy as np
@@ -100,26 +101,68 @@ ERRATUM_20 = (
 )
 
 
-@dataclass(frozen=True)
 class GaussImages:
     """The three polygons of Section 5 for one (D4b) computation, with their closed forms.
 
     ``tractrix_gauss`` and ``gauss`` are aligned with ``D4bPolygons.p`` (i_min .. i_max + 1);
     ``contact`` starts one index earlier (i_min − 1 .. i_max + 1), since m_i needs ñ_{i−1}.
+    Each of the six polygons is computed when first read (``build`` says how), so that a
+    companion or a check computes the images and closed forms it uses and no others.
     """
 
-    tractrix_gauss: Array
-    contact: Array
-    gauss: Array
-    closed_tractrix_gauss: Array
-    closed_contact: Array
-    closed_gauss: Array
-    constructed: bool
-    contact_edges_before: Array | None = None
-    """p_{i_min−1} and p_{i_min}: the edge before the range, which m_{i_min} also uses."""
     conditioning: float = 1.0
     """Step count of n's tolerance beyond the construction's: 1, since n is read from the stick
     directions (``build``) instead of accumulated from edge angles."""
+
+    def __init__(
+        self,
+        constructed: bool,
+        parts: dict[str, Callable[[GaussImages], Array]],
+        contact_edges_before: Array | None = None,
+    ) -> None:
+        self.constructed = constructed
+        self._parts = parts
+        self.contact_edges_before = contact_edges_before
+        """p_{i_min−1} and p_{i_min}: the edge before the range, which m_{i_min} also uses."""
+
+    def replaced(self, **polygons: Array) -> GaussImages:
+        """A copy with some of the six polygons given (the tests perturb them)."""
+        unknown = set(polygons) - {*self._parts}
+        if unknown:
+            raise TypeError(f"no polygon named {sorted(unknown)}")
+        copy = GaussImages(self.constructed, self._parts, self.contact_edges_before)
+        copy.__dict__.update(polygons)
+        return copy
+
+    @cached_property
+    def tractrix_gauss(self) -> Array:
+        """n_i, inscribed (Theorem 7, (18))."""
+        return self._parts["tractrix_gauss"](self)
+
+    @cached_property
+    def contact(self) -> Array:
+        """ñ_i, the contact points ((19))."""
+        return self._parts["contact"](self)
+
+    @cached_property
+    def gauss(self) -> Array:
+        """m_i, circumscribed (Theorem 8, (20))."""
+        return self._parts["gauss"](self)
+
+    @cached_property
+    def closed_tractrix_gauss(self) -> Array:
+        """(18) corrected, closed form."""
+        return self._parts["closed_tractrix_gauss"](self)
+
+    @cached_property
+    def closed_contact(self) -> Array:
+        """(19) corrected, closed form."""
+        return self._parts["closed_contact"](self)
+
+    @cached_property
+    def closed_gauss(self) -> Array:
+        """(20) corrected, closed form."""
+        return self._parts["closed_gauss"](self)
 
 
 def build(
@@ -135,7 +178,7 @@ def build(
     p_extended: Array | None,
     directions_hull: Array | None = None,
 ) -> GaussImages:
-    """The Gauss images on i_min .. i_max + 1 (``contact`` from i_min − 1).
+    """The Gauss images on i_min .. i_max + 1 (``contact`` from i_min − 1), each made when read.
 
     With a construction, ``tractrix_hull`` is the tractrix on hull_start .. (covering 0 and the
     range), ``first_direction`` the unit vector of stick 0, ``p_extended`` the hyperbolic cosine on
@@ -143,17 +186,30 @@ def build(
     ``tractrix_hull``. Without (method=closed-form) the closed forms are used.
     """
     i = ar.indices(i_min, i_max + 1)
-    closed_n = kinematic_closed_forms.tractrix_gauss_image(ar, h, d, i, shift)
-    closed_m = kinematic_closed_forms.circumscribed_gauss_image(ar, h, d, i, shift)
-    closed_c = kinematic_closed_forms.contact_points(
-        ar, h, d, ar.indices(i_min - 1, i_max + 1), shift
-    )
+    closed: dict[str, Callable[[GaussImages], Array]] = {
+        "closed_tractrix_gauss": lambda _: kinematic_closed_forms.tractrix_gauss_image(
+            ar, h, d, i, shift
+        ),
+        "closed_gauss": lambda _: kinematic_closed_forms.circumscribed_gauss_image(
+            ar, h, d, i, shift
+        ),
+        "closed_contact": lambda _: kinematic_closed_forms.contact_points(
+            ar, h, d, ar.indices(i_min - 1, i_max + 1), shift
+        ),
+    }
     if tractrix_hull is None or first_direction is None or p_extended is None:
         before = kinematic_closed_forms.hyperbolic_cosine(
             ar, h, d, ar.indices(i_min - 1, i_min), shift
         )
         return GaussImages(
-            closed_n, closed_c, closed_m, closed_n, closed_c, closed_m, False, before
+            False,
+            {
+                **closed,
+                "tractrix_gauss": lambda images: images.closed_tractrix_gauss,
+                "contact": lambda images: images.closed_contact,
+                "gauss": lambda images: images.closed_gauss,
+            },
+            before,
         )
     # n is inscribed with edges parallel to the tractrix's and n_0 = J u_0, the unit normal of
     # stick 0 (J(x, y) = (y, −x)). Its exact form is n_i = J u_i for every i: the rotation R
@@ -165,17 +221,17 @@ def build(
     del first_direction
     if directions_hull is None:
         raise ValueError("a construction needs its stick directions")
-    n_hull = stack_points(directions_hull[:, 1], -directions_hull[:, 0])
+    directions = directions_hull
     window = slice(i_min - hull_start, i_max + 1 - hull_start + 1)
     return GaussImages(
-        tractrix_gauss=n_hull[window],
-        contact=gauss_image.contact_points(ar, p_extended),
-        gauss=gauss_image.circumscribed(ar, p_extended),
-        closed_tractrix_gauss=closed_n,
-        closed_contact=closed_c,
-        closed_gauss=closed_m,
-        constructed=True,
-        contact_edges_before=p_extended[:2],
+        True,
+        {
+            **closed,
+            "tractrix_gauss": lambda _: stack_points(directions[window, 1], -directions[window, 0]),
+            "contact": lambda _: gauss_image.contact_points(ar, p_extended),
+            "gauss": lambda _: gauss_image.circumscribed(ar, p_extended),
+        },
+        p_extended[:2],
     )
 
 
@@ -198,14 +254,15 @@ def companion_tolerances(
 
 def printed_forms(
     ar: Arithmetic, h: Scalar, d: Scalar, shift: Scalar, i_min: int, i_max: int
-) -> dict[str, Array]:
-    """The printed (18), (19), (20) on i_min .. i_max (for the errata's printed residuals)."""
-    i = ar.indices(i_min, i_max)
-    return {
-        "18": kinematic_closed_forms.tractrix_gauss_image_printed(ar, h, d, i, shift),
-        "19": kinematic_closed_forms.contact_points_printed(ar, h, d, i, shift),
-        "20": kinematic_closed_forms.circumscribed_gauss_image_printed(ar, h, d, i, shift),
+) -> Callable[[str], Array]:
+    """The printed (18), (19), (20) on i_min .. i_max (for the errata's printed residuals), by
+    ``"18"``, ``"19"``, ``"20"``, each computed when asked for."""
+    forms = {
+        "18": kinematic_closed_forms.tractrix_gauss_image_printed,
+        "19": kinematic_closed_forms.contact_points_printed,
+        "20": kinematic_closed_forms.circumscribed_gauss_image_printed,
     }
+    return lambda key: forms[key](ar, h, d, ar.indices(i_min, i_max), shift)
 
 
 def evaluate(
@@ -214,19 +271,31 @@ def evaluate(
     p: Array,
     tractrix: Array,
     images: GaussImages,
-    printed: dict[str, Array],
+    printed: Callable[[str], Array],
     indices: np.ndarray[Any, np.dtype[np.int64]],
     n: int,
     local_tolerance: float,
     construction_tolerance: float,
     detail: bool,
+    wanted: Callable[[str], bool] = lambda statement_id: True,
 ) -> list[Check]:
-    """Every check of ``STATEMENTS`` on the given polygons (aligned as in ``GaussImages``).
+    """The checks of ``STATEMENTS`` that are ``wanted`` (by id) on the given polygons (aligned
+    as in ``GaussImages``), each computing only the images and shared quantities it uses.
 
     ``n`` is the number of indices shown (i_min .. i_max); the face-wise checks use the faces
-    i_min .. i_max (edges to i + 1).
+    i_min .. i_max (edges to i + 1); ``printed`` gives the printed forms ``"18"``, ``"19"``,
+    ``"20"`` (``printed_forms``).
     """
-    nt, c, m = images.tractrix_gauss, images.contact, images.gauss
+
+    def nt() -> Array:
+        return images.tractrix_gauss
+
+    def c() -> Array:
+        return images.contact
+
+    def m() -> Array:
+        return images.gauss
+
     shown = indices[:n]
     n_tolerance = companion_tolerances(ar, images, construction_tolerance)["tractrix_gauss_image"]
 
@@ -271,96 +340,157 @@ def evaluate(
         residuals = relative_point_difference(ar, built[:n], formula[:n])
         return Erratum(*entry, printed_residual=printed_residual(ar, residuals))
 
-    pseudo_rings = ring_checks(ar, tractrix, nt, -1 / (h * h))
-    catenoid_rings = ring_checks(ar, p, m, None)
-    if pseudo_rings is not None and catenoid_rings is not None:  # float64, one pass per ring
-        theorem_7, theorem_8 = pseudo_rings[0], catenoid_rings[0]
-        equation_17 = equation_17_result(
+    memo: dict[str, Any] = {}
+
+    def shared(name: str, make: Callable[[], Any]) -> Any:
+        """A quantity several checks use, computed when the first of them runs."""
+        if name not in memo:
+            memo[name] = make()
+        return memo[name]
+
+    def rings(pseudosphere: bool) -> tuple[Array, Array, int] | None:
+        """Float64: the ring's theorem and (17) residuals in one pass (``ring_checks``)."""
+        if pseudosphere:
+            return shared("pseudo", lambda: ring_checks(ar, tractrix, nt(), -1 / (h * h)))
+        return shared("catenoid", lambda: ring_checks(ar, p, m(), None))
+
+    def curvatures(pseudosphere: bool) -> Any:
+        """The ring's curvatures, numpy (mp, or a face without area to name)."""
+        if pseudosphere:
+            return shared("pseudo curvatures", lambda: ring_curvatures(ar, tractrix, nt()))
+        return shared("catenoid curvatures", lambda: ring_curvatures(ar, p, m()))
+
+    def theorem_7() -> Check:
+        fused = rings(True)
+        if fused is not None:
+            residuals = fused[0]
+        else:
+            pseudo = curvatures(True)
+            residuals = np.maximum(
+                ar.to_floats(constant_curvature_residuals(pseudo, -1 / (h * h))),
+                ar.to_floats(pseudo.parallel),
+            )
+        return check(THEOREM_7, residuals[:n], n_tolerance)
+
+    def theorem_8() -> Check:
+        fused = rings(False)
+        if fused is not None:
+            residuals = fused[0]
+        else:
+            catenoid = curvatures(False)
+            residuals = np.maximum(
+                ar.to_floats(minimal_residuals(catenoid)), ar.to_floats(catenoid.parallel)
+            )
+        return check(THEOREM_8, residuals[:n], construction_tolerance)
+
+    def equation_17() -> Check:
+        pseudo, catenoid = rings(True), rings(False)
+        if pseudo is not None and catenoid is not None:
+            return equation_17_result(
+                ar,
+                shown,
+                [pseudo[1], catenoid[1]],
+                pseudo[2] + catenoid[2],
+                construction_tolerance,
+                detail,
+            )
+        return equation_17_check(
             ar,
             shown,
-            [pseudo_rings[1], catenoid_rings[1]],
-            pseudo_rings[2] + catenoid_rings[2],
+            [(tractrix, nt()), (p, m())],
             construction_tolerance,
             detail,
+            [curvatures(True), curvatures(False)],
         )
-    else:
-        pseudo = ring_curvatures(ar, tractrix, nt)
-        theorem_7 = np.maximum(
-            ar.to_floats(constant_curvature_residuals(pseudo, -1 / (h * h))),
-            ar.to_floats(pseudo.parallel),
-        )
-        catenoid = ring_curvatures(ar, p, m)
-        theorem_8 = np.maximum(
-            ar.to_floats(minimal_residuals(catenoid)), ar.to_floats(catenoid.parallel)
-        )
-        equation_17 = equation_17_check(
-            ar,
-            shown,
-            [(tractrix, nt), (p, m)],
-            construction_tolerance,
-            detail,
-            [pseudo, catenoid],
-        )
+
     # ñ and m come from the edges of p, which the stored vertices resolve only to eps times
     # |p_i| + |p_{i+1}| (coordinates summed): residuals of quantities built from edge directions
     # are scaled by the resolution |e_i| / (|p_i| + |p_{i+1}|) <= 1 (docs/checks.md)
-    resolution = _edge_resolution(ar, p)  # edges i_min .. i_max (p_i p_{i+1})
-    assert images.contact_edges_before is not None
-    before = _edge_resolution(ar, images.contact_edges_before)
-    pole_resolution = np.minimum(
-        ar.to_floats(np.concatenate([before, resolution[:-1]])), ar.to_floats(resolution)
-    )
-    edges = p[1:] - p[:-1]
-    slope = edges[:, 1] / edges[:, 0]  # k_{i+1} of the edge p_i p_{i+1}, eq. (12)
-    slope_printed = kinematic_closed_forms.normal_from_slope_printed(ar, slope)
-    rotated = stack_points(-nt[:, 1], nt[:, 0])
-    inverted = kinematic_closed_forms.pole_by_inversion(c[:-1], c[1:])  # i_min .. i_max + 1
-    return [
-        equation_17,
-        closed(
+    def resolution() -> Array:  # edges i_min .. i_max (p_i p_{i+1})
+        return shared("resolution", lambda: _edge_resolution(ar, p))
+
+    def pole_resolution() -> Array:
+        def make() -> Array:
+            assert images.contact_edges_before is not None
+            before = _edge_resolution(ar, images.contact_edges_before)
+            return np.minimum(
+                ar.to_floats(np.concatenate([before, resolution()[:-1]])),
+                ar.to_floats(resolution()),
+            )
+
+        return shared("pole resolution", make)
+
+    def slope_erratum() -> Erratum:
+        edges = p[1:] - p[:-1]
+        slope = edges[:, 1] / edges[:, 0]  # k_{i+1} of the edge p_i p_{i+1}, eq. (12)
+        slope_printed = kinematic_closed_forms.normal_from_slope_printed(ar, slope)
+        return Erratum(
+            *ERRATUM_18_SLOPE,
+            printed_residual=printed_residual(ar, _along(ar, slope_printed[:n], p[: n + 1])),
+        )
+
+    def rotation() -> Check:
+        rotated = stack_points(-nt()[:, 1], nt()[:, 0])
+        return check(
+            EQUATION_19_ROTATION,
+            ar.to_floats(point_distance(ar, c()[1 : n + 1], rotated[:n]))
+            * ar.to_floats(resolution()[:n]),
+            n_tolerance,
+        )
+
+    def inversion() -> Check:
+        inverted = kinematic_closed_forms.pole_by_inversion(c()[:-1], c()[1:])  # i_min .. +1
+        return check(
+            EQUATION_20_INVERSION,
+            ar.to_floats(relative_point_difference(ar, m()[:n], inverted[:n]))
+            * pole_resolution()[:n],
+            local_tolerance,
+        )
+
+    evaluators: tuple[tuple[Statement, Callable[[], Check]], ...] = (
+        (EQUATION_17, equation_17),
+        (
             EQUATION_18,
-            nt,
-            images.closed_tractrix_gauss,
-            printed_erratum(ERRATUM_18, nt, printed["18"]),
-            n_tolerance,
-        ),
-        check(
-            EQUATION_18_SLOPE,
-            _along(ar, nt[:n], p[: n + 1]),
-            n_tolerance,
-            Erratum(
-                *ERRATUM_18_SLOPE,
-                printed_residual=printed_residual(ar, _along(ar, slope_printed[:n], p[: n + 1])),
+            lambda: closed(
+                EQUATION_18,
+                nt(),
+                images.closed_tractrix_gauss,
+                printed_erratum(ERRATUM_18, nt(), printed("18")),
+                n_tolerance,
             ),
         ),
-        closed(
+        (
+            EQUATION_18_SLOPE,
+            lambda: check(
+                EQUATION_18_SLOPE, _along(ar, nt()[:n], p[: n + 1]), n_tolerance, slope_erratum()
+            ),
+        ),
+        (
             EQUATION_19,
-            c[1:],
-            images.closed_contact[1:],
-            printed_erratum(ERRATUM_19, c[1:], printed["19"]),
-            scale=resolution,
+            lambda: closed(
+                EQUATION_19,
+                c()[1:],
+                images.closed_contact[1:],
+                printed_erratum(ERRATUM_19, c()[1:], printed("19")),
+                scale=resolution(),
+            ),
         ),
-        check(
-            EQUATION_19_ROTATION,
-            ar.to_floats(point_distance(ar, c[1 : n + 1], rotated[:n]))
-            * ar.to_floats(resolution[:n]),
-            n_tolerance,
-        ),
-        check(
-            EQUATION_20_INVERSION,
-            ar.to_floats(relative_point_difference(ar, m[:n], inverted[:n])) * pole_resolution[:n],
-            local_tolerance,
-        ),
-        closed(
+        (EQUATION_19_ROTATION, rotation),
+        (EQUATION_20_INVERSION, inversion),
+        (
             EQUATION_20,
-            m,
-            images.closed_gauss,
-            printed_erratum(ERRATUM_20, m, printed["20"]),
-            scale=pole_resolution,
+            lambda: closed(
+                EQUATION_20,
+                m(),
+                images.closed_gauss,
+                printed_erratum(ERRATUM_20, m(), printed("20")),
+                scale=pole_resolution(),
+            ),
         ),
-        check(THEOREM_7, theorem_7[:n], n_tolerance),
-        check(THEOREM_8, theorem_8[:n], construction_tolerance),
-    ]
+        (THEOREM_7, theorem_7),
+        (THEOREM_8, theorem_8),
+    )
+    return [evaluate() for statement, evaluate in evaluators if wanted(statement.id)]
 
 
 def _edge_resolution(ar: Arithmetic, points: Array) -> Array:

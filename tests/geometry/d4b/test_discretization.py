@@ -189,3 +189,26 @@ def test_fitted_constants_come_with_the_checks_that_fit_them(float64: Float64) -
     assert alone.constants == {}
     fitted = d4b.compute(float64, selection=Selection(checks=frozenset({"theorem-4-ii"})))
     assert set(fitted.constants) == {"d1", "d3", "eq2"}
+
+
+@pytest.mark.parametrize("method", ["construction", "closed-form"])
+def test_each_section_5_check_alone_equals_its_value_among_all(
+    float64: Float64, method: str
+) -> None:
+    """The Section 5 checks run one by one (each computing what it uses) as in the full set."""
+    from app.geometry.curve import Selection
+
+    full = {c.id: c for c in d4b.compute(float64, 1.0, 0.3, 1.1, -20, 25, method).checks}  # type: ignore[arg-type]
+    for statement in d4b.d4b_curvature.STATEMENTS:
+        alone = d4b.compute(
+            float64,
+            1.0,
+            0.3,
+            1.1,
+            -20,
+            25,
+            method,  # type: ignore[arg-type]
+            selection=Selection(checks=frozenset({statement.id})),
+        ).checks
+        assert [c.id for c in alone] == [statement.id]
+        assert alone[0] == full[statement.id]
