@@ -51,6 +51,7 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
+import numba
 import numpy as np
 
 from app.geometry.compiled import kernel
@@ -133,6 +134,15 @@ class _Stepper:
         return x + self.h * cos_b - self.carry * cos_n, cos_n, sin_n
 
 
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _place(axis: Array, tractrix: Array, h: float, k: int, x: float, c: float, s: float) -> None:
+    """Stick k's points: x_k = (x, 0) and d_k = x_k + h u_k, u_k = (c, s) (as ``_assemble``)."""
+    axis[k, 0] = x
+    axis[k, 1] = 0.0
+    tractrix[k, 0] = x + h * c
+    tractrix[k, 1] = 0.0 + h * s
+
+
 @kernel(
     "Tuple((float64[:, :], float64[:, :], float64[:, :], int64[:]))"
     "(float64, float64, float64, float64, float64, float64, int64, int64)"
@@ -161,44 +171,40 @@ def _sticks(
     tractrix = np.empty((n, 2))
     u = np.empty((n, 2))
     side = np.zeros(n, dtype=np.int64)
-    axis[k0, 0] = 0.0
     u[k0, 0] = c0
     u[k0, 1] = s0
+    _place(axis, tractrix, h, k0, 0.0, c0, s0)
     side[k0] = CUSP if s0 > keep else (PURSUIT if c0 < 0 else MIRRORED)
     for k in range(k0 + 1, n):  # forward: stick k from stick k − 1
         xb, cb, sb = axis[k - 1, 0], u[k - 1, 0], u[k - 1, 1]
         if side[k - 1] >= CUSP:  # pull, the leader moves ahead
             root = math.sqrt(cb * cb + widening * sb * sb)
-            axis[k, 0] = (xb + carry * cb) + h * root
             u[k, 0] = -root
             u[k, 1] = keep * sb
+            _place(axis, tractrix, h, k, (xb + carry * cb) + h * root, u[k, 0], u[k, 1])
             side[k] = PURSUIT
         else:  # carrier leaning forward
             sin_n = sb / keep
             cos_n = math.sqrt((1 - sin_n) * (1 + sin_n))
-            axis[k, 0] = xb + h * cb - carry * cos_n
             u[k, 0] = cos_n
             u[k, 1] = sin_n
+            _place(axis, tractrix, h, k, xb + h * cb - carry * cos_n, cos_n, sin_n)
             side[k] = CUSP if sin_n > keep else MIRRORED
     for k in range(k0 - 1, -1, -1):  # backward: stick k from stick k + 1
         xb, cb, sb = axis[k + 1, 0], u[k + 1, 0], u[k + 1, 1]
         if side[k + 1] <= CUSP:  # pull, the leader moves behind
             root = math.sqrt(cb * cb + widening * sb * sb)
-            axis[k, 0] = (xb + carry * cb) - h * root
             u[k, 0] = root
             u[k, 1] = keep * sb
+            _place(axis, tractrix, h, k, (xb + carry * cb) - h * root, u[k, 0], u[k, 1])
             side[k] = MIRRORED
         else:  # carrier leaning back
             sin_n = sb / keep
             cos_n = -math.sqrt((1 - sin_n) * (1 + sin_n))
-            axis[k, 0] = xb + h * cb - carry * cos_n
             u[k, 0] = cos_n
             u[k, 1] = sin_n
+            _place(axis, tractrix, h, k, xb + h * cb - carry * cos_n, cos_n, sin_n)
             side[k] = CUSP if sin_n > keep else PURSUIT
-    for k in range(n):  # x_i = (x, 0), d_i = x_i + h u_i
-        axis[k, 1] = 0.0
-        tractrix[k, 0] = axis[k, 0] + h * u[k, 0]
-        tractrix[k, 1] = 0.0 + h * u[k, 1]
     return axis, tractrix, u, side
 
 
