@@ -10,6 +10,11 @@
    would cost. The issue's target: at most 1 s more.
 
 Run: .venv/bin/python bench/compiled.py   (about 60 s; ``make bench`` runs it with the others)
+
+``--base DIR`` compares with another version of the code instead (e.g. a commit exported with
+``git archive <commit> app bench | tar -x -C DIR``): parts 1 and 2 run in DIR and here, each in
+its own process, alternating for ``--rounds`` rounds (CPU time; the kernels of DIR compile into
+its own cache on its first run).
 """
 
 from __future__ import annotations
@@ -119,7 +124,69 @@ def first_request() -> None:
         )
 
 
+#: Parts 1 and 2 in one process, on the tree given as its argument (its own code only).
+CHILD = """
+import sys, time, statistics
+sys.path.insert(0, sys.argv[1])
+from app.geometry.d1 import construction as d1
+from app.geometry.d3 import construction as d3
+from app.geometry.d4a import construction as d4a
+from app.geometry.d4b import construction as d4b, discretization as full
+from app.geometry.precision import Float64
+ar = Float64()
+def cpu(run, count):
+    samples = []
+    for _ in range(count):
+        start = time.process_time()
+        run()
+        samples.append(time.process_time() - start)
+    return statistics.median(samples)
+n = 10**5
+lo, hi = -(n // 2), n - n // 2 - 1
+cases = {
+    "D4b (h=1, d=1e-4)": lambda: d4b.construct(ar, 1.0, 1e-4, None, lo, hi),
+    "D1 (c=1e-4, delta=0.2)": lambda: d1.construct(ar, 1e-4, 0.2, 1.0, 1.0, lo, hi),
+    "D3 (c=1, delta=1e-4)": lambda: d3.construct(ar, 1.0, 1e-4, 1.0, "up", lo, hi),
+    "D4a (h=1, s=1e-3)": lambda: d4a.construct_sticks(ar, 1.0, 1e-3, None, lo, hi),
+}
+for label, build in cases.items():
+    build()
+    print(f"{label}, 10^5|{cpu(build, 7) / n * 1e9:.1f} ns/vertex")
+lo, hi = -(10**6 // 2), 10**6 - 10**6 // 2 - 1
+for method in ("closed-form", "construction"):
+    seconds = cpu(lambda: full.compute(ar, 1.0, 1e-4, None, lo, hi, method), 3)
+    print(f"D4b 10^6 every check, {method}|{seconds * 1e3:.0f} ms")
+"""
+
+
+def against(base: str, rounds: int) -> None:
+    """Parts 1 and 2 in ``base`` and here, each in its own process, alternating."""
+    import subprocess
+
+    figures: dict[str, dict[str, list[str]]] = {}
+    for _ in range(rounds):
+        for name, root in (("base", base), ("here", str(ROOT))):
+            out = subprocess.run(
+                [sys.executable, "-c", CHILD, root],
+                capture_output=True,
+                text=True,
+                check=True,
+                cwd=root,
+            ).stdout
+            for line in out.splitlines():
+                label, value = line.split("|")
+                figures.setdefault(label, {}).setdefault(name, []).append(value)
+    print(f" {base} → this tree, {rounds} rounds, each in its own process (CPU time)")
+    for label, by_tree in figures.items():
+        before, after = ", ".join(by_tree["base"]), ", ".join(by_tree["here"])
+        print(f"  {label:<42} {before}  →  {after}")
+
+
 def main() -> None:
+    if "--base" in sys.argv:
+        rounds = int(sys.argv[sys.argv.index("--rounds") + 1]) if "--rounds" in sys.argv else 2
+        against(sys.argv[sys.argv.index("--base") + 1], rounds)
+        return
     print("Compiled float64 kernels (median of paired ratios; CPU time unless said)")
     constructions()
     checks()
