@@ -113,6 +113,12 @@ EXTRA_DIGITS: dict[str, Callable[[Mapping[str, Any]], int]] = {
 }
 
 
+#: Discretizations whose sequential construction runs inside ``Arithmetic.recursion()``: their
+#: balls carry the extra digits there only, and compute the rest (closed forms, companions,
+#: checks) at ``digits`` + guard digits (``Ball``); the others carry them everywhere.
+RECURSIONS_MARKED = frozenset({"d4b"})
+
+
 def extra_digits(identifier: str, arguments: Mapping[str, Any]) -> int | None:
     """The extra digits ``serve`` starts with for this request (None: not served on balls);
     the work budget prices them (app/limits.py)."""
@@ -137,13 +143,18 @@ def serve(
     if ar.mode != "mp" or ar.certified or not serves(identifier):
         return compute(ar)
     extra = max(0, EXTRA_DIGITS[identifier](arguments))
+    # first with the extra digits in the recursions only, where the discretization marks them;
+    # whatever that leaves open (a check undecided, a comparison, a radius too large) is
+    # computed again with every digit everywhere
+    recursions_only = identifier in RECURSIONS_MARKED
     for attempt in range(MAX_RAISES + 1):
-        balls = Ball(ar.digits, extra)
+        balls = Ball(ar.digits, extra, recursions_only)
         balls.deadline, balls.limit = ar.deadline, ar.limit
         try:
             with working_precision(balls.bits):
                 curve = compute(balls)
         except UndecidedError as undecided:
+            recursions_only = False
             if attempt == MAX_RAISES:
                 raise NotRepresentableError(
                     undecided.parameter,
@@ -155,12 +166,16 @@ def serve(
                 ) from None
             extra = max(2 * extra, DEFAULT_EXTRA_DIGITS)
             continue
+        if recursions_only and balls.undecided:
+            recursions_only = False  # decide the checks with every digit
+            continue
         with working_precision(balls.bits):
             radius, relative, resolved = _radii(curve, ar.digits)
         if resolved or attempt == MAX_RAISES:
             working = ar.digits + GUARD_DIGITS + extra
             balls.certificate = Certificate(radius, relative, working, resolved)
             return curve
+        recursions_only = False
         extra = max(2 * extra, DEFAULT_EXTRA_DIGITS)
     raise AssertionError("unreachable")  # pragma: no cover
 

@@ -107,6 +107,8 @@ def check_residuals(
             # on balls ``worst`` is an upper bound: failing needs a lower bound above the
             # tolerance; in between the verdict is undecided, never guessed
             holds = None
+            if tolerance > 0:  # more digits may decide it (balls.serve); a tolerance
+                ar.undecided += 1  # below the float range (digits > 300) stays undecided
             undecided = (
                 "undecided: the residual's rigorous bounds enclose the tolerance "
                 "(more digits narrow them)"

@@ -19,7 +19,8 @@ functions apply to object arrays through ``app.geometry.mp_elementwise``.
 from __future__ import annotations
 
 import time
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
+from contextlib import contextmanager
 from functools import partial
 from typing import Any, Literal
 
@@ -209,6 +210,15 @@ class Arithmetic:
                 "over the limit",
                 "use a shorter range or fewer digits",
             )
+
+    undecided: int = 0
+    """Checks left undecided on balls (``checks.check_residuals`` counts them on ``Ball``)."""
+
+    @contextmanager
+    def recursion(self) -> Iterator[None]:
+        """Around a sequential construction (a recursion along the range): on balls, computed
+        with the extra digits its growing radii need (``Ball.recursion``); here nothing."""
+        yield
 
     def tolerance(self, steps: int = 1) -> float:
         """The tolerance for a residual built from ``steps`` elementary operations in sequence."""
