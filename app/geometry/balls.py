@@ -211,9 +211,9 @@ def _radii(curve: Curve, digits: int) -> tuple[str, str, bool]:
     return _rounded_up(largest), _rounded_up(relative), bool(relative <= limit)
 
 
-_RADIUS = np.frompyfunc(flint.arb.rad, 1, 1)
-_ABS_LOWER = np.frompyfunc(flint.arb.abs_lower, 1, 1)
-_LARGER = np.frompyfunc(flint.arb.max, 2, 1)
+_RADIUS: Any = np.frompyfunc(flint.arb.rad, 1, 1)
+_ABS_LOWER: Any = np.frompyfunc(flint.arb.abs_lower, 1, 1)
+_LARGER: Any = np.frompyfunc(flint.arb.max, 2, 1)
 
 
 def _rounded_up(value: Any) -> str:
