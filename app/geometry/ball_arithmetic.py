@@ -30,6 +30,10 @@ from app.geometry.precision import (
 #: Bits of one decimal digit, for the ball arithmetic's working precision.
 BITS_PER_DIGIT = math.log2(10)
 
+#: Bits of a residual's last operations (``Ball.residual_precision``): more than a float's 53,
+#: so that the float it is reported as is the bound, not the rounding.
+RESIDUAL_BITS = 64
+
 
 def _ball_function(name: str, clock: Callable[[], None] | None = None) -> Callable[..., Any]:
     """An arb method (``cos``, ``log1p``, …) on a ball or, entry by entry, on an object array."""
@@ -129,6 +133,17 @@ class Ball(Arithmetic):
         balls' radii grow along it; the precision before is restored afterwards."""
         saved = flint.ctx.prec
         flint.ctx.prec = self.recursion_bits
+        try:
+            yield
+        finally:
+            flint.ctx.prec = saved
+
+    @contextmanager
+    def residual_precision(self) -> Iterator[None]:
+        """``RESIDUAL_BITS`` inside (if below the precision before, which is restored): for the
+        operations after a residual's differences, whose result is reported as a float."""
+        saved = flint.ctx.prec
+        flint.ctx.prec = min(saved, RESIDUAL_BITS)
         try:
             yield
         finally:
