@@ -108,6 +108,8 @@ def check_residuals(
             # on balls ``worst`` is an upper bound: failing needs a lower bound above the
             # tolerance; in between the verdict is undecided, never guessed
             holds = None
+            if tolerance > 0:  # more digits may decide it (balls.serve); a tolerance
+                ar.undecided += 1  # below the float range (digits > 300) stays undecided
             undecided = (
                 "undecided: the residual's rigorous bounds enclose the tolerance "
                 "(more digits narrow them)"
@@ -183,12 +185,17 @@ def point_distance(ar: Arithmetic, a: Array, b: Array) -> Array:
 
 
 def relative_point_difference(ar: Arithmetic, computed: Array, expected: Array) -> Array:
-    """``|computed_i - expected_i| / max(|expected_i|, tiny)`` for ``(n, 2)`` point arrays."""
-    zero = ar.scalar(0)
-    scale = point_distance(ar, expected, np.full_like(expected, zero))
-    tiny = ar.scalar(np.finfo(np.float64).tiny)
-    scale = np.where(scale > tiny, scale, tiny)
-    return point_distance(ar, computed, expected) / scale
+    """``|computed_i - expected_i| / max(|expected_i|, tiny)`` for ``(n, 2)`` point arrays.
+
+    The differences at the working precision; on balls the lengths and the quotient, which
+    only round a result reported as a float, at ``Arithmetic.residual_precision``.
+    """
+    dx, dy = computed[:, 0] - expected[:, 0], computed[:, 1] - expected[:, 1]
+    with ar.residual_precision():
+        scale = ar.hypot(expected[:, 0], expected[:, 1])
+        tiny = ar.scalar(np.finfo(np.float64).tiny)
+        scale = np.where(scale > tiny, scale, tiny)
+        return ar.hypot(dx, dy) / scale
 
 
 def printed_residual(ar: Arithmetic, residuals: Array) -> float | None:

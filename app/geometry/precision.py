@@ -19,7 +19,8 @@ functions apply to object arrays through ``app.geometry.mp_elementwise``.
 from __future__ import annotations
 
 import time
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
+from contextlib import contextmanager
 from functools import partial
 from typing import Any, Literal
 
@@ -211,6 +212,22 @@ class Arithmetic:
                 "use a shorter range or fewer digits",
             )
 
+    undecided: int = 0
+    """Checks left undecided on balls (``checks.check_residuals`` counts them on ``Ball``)."""
+
+    @contextmanager
+    def recursion(self) -> Iterator[None]:
+        """Around a sequential construction (a recursion along the range): on balls, computed
+        with the extra digits its growing radii need (``Ball.recursion``); here nothing."""
+        yield
+
+    @contextmanager
+    def residual_precision(self) -> Iterator[None]:
+        """Around the last operations of a residual (its differences already taken): a residual
+        is reported as a float, so on balls these run at ``RESIDUAL_BITS`` (rigorous all the
+        same, and about twice as fast for a square root); here nothing."""
+        yield
+
     def tolerance(self, steps: int = 1) -> float:
         """The tolerance for a residual built from ``steps`` elementary operations in sequence."""
         return TOLERANCE_SAFETY * self.eps * max(1, steps)
@@ -305,27 +322,62 @@ class MultiPrecision(Arithmetic):
         self.digits = digits
         self.eps = 10.0 ** (-digits)
         self.working_eps = 10.0 ** (-digits - GUARD_DIGITS)
-        self.ctx = mpmath.MPContext()
-        self.ctx.dps = digits + GUARD_DIGITS
-        ctx = self.ctx
+
+    # The mpmath context and its functions are made when first used: an mp request served on
+    # balls (``balls.serve``) reads only ``digits`` and the clock of this object, and a new
+    # MPContext costs about 3 ms (a quarter of a 1000-vertex recursion at 50 digits).
+    _LAZY = frozenset(
+        (
+            "ctx",
+            "exp",
+            "expm1",
+            "log",
+            "log1p",
+            "sqrt",
+            "cos",
+            "sin",
+            "cosh",
+            "sinh",
+            "tanh",
+            "atanh",
+            "asinh",
+            "acosh",
+            "atan2",
+            "hypot",
+            "_isfinite",
+        )
+    )
+
+    def __getattr__(self, name: str) -> Any:
+        # only called for names not set yet: the lazy ones are set all at once by _build
+        if name in MultiPrecision._LAZY and "ctx" not in self.__dict__:
+            self._build()
+            return getattr(self, name)
+        raise AttributeError(name)
+
+    def _build(self) -> None:
+        """The private mpmath context at ``digits`` + guard digits, and its functions."""
+        ctx = mpmath.MPContext()
+        ctx.dps = self.digits + GUARD_DIGITS
         ctx.npconvert = array_aware_npconvert(ctx.npconvert)
-        self._elementwise = partial(elementwise, clock=self.check_time)
-        self.exp = self._elementwise(ctx.exp)
-        self.expm1 = self._elementwise(ctx.expm1)
-        self.log = self._elementwise(ctx.log)
-        self.log1p = self._elementwise(ctx.log1p)
-        self.sqrt = self._elementwise(ctx.sqrt)
-        self.cos = self._elementwise(ctx.cos)
-        self.sin = self._elementwise(ctx.sin)
-        self.cosh = self._elementwise(ctx.cosh)
-        self.sinh = self._elementwise(ctx.sinh)
-        self.tanh = self._elementwise(ctx.tanh)
-        self.atanh = self._elementwise(ctx.atanh)
-        self.asinh = self._elementwise(ctx.asinh)
-        self.acosh = self._elementwise(ctx.acosh)
-        self.atan2 = self._elementwise(ctx.atan2, 2)
-        self.hypot = self._elementwise(ctx.hypot, 2)
+        elementwise_ = partial(elementwise, clock=self.check_time)
+        self.exp = elementwise_(ctx.exp)
+        self.expm1 = elementwise_(ctx.expm1)
+        self.log = elementwise_(ctx.log)
+        self.log1p = elementwise_(ctx.log1p)
+        self.sqrt = elementwise_(ctx.sqrt)
+        self.cos = elementwise_(ctx.cos)
+        self.sin = elementwise_(ctx.sin)
+        self.cosh = elementwise_(ctx.cosh)
+        self.sinh = elementwise_(ctx.sinh)
+        self.tanh = elementwise_(ctx.tanh)
+        self.atanh = elementwise_(ctx.atanh)
+        self.asinh = elementwise_(ctx.asinh)
+        self.acosh = elementwise_(ctx.acosh)
+        self.atan2 = elementwise_(ctx.atan2, 2)
+        self.hypot = elementwise_(ctx.hypot, 2)
         self._isfinite = np.frompyfunc(ctx.isfinite, 1, 1)
+        self.ctx = ctx
 
     def scalar(self, value: float | int | str) -> Any:
         # An ExactReal is read as the decimal the client wrote; any other float through repr(),

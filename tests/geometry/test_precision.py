@@ -108,3 +108,13 @@ def test_stack_points_is_numpy_stack() -> None:
     assert got.dtype == object and got.tolist() == [[1, 3], [2, 4]]
     with pytest.raises(ValueError, match="same shape"):
         precision.stack_points(x, y[:3])
+
+
+def test_the_mpmath_context_is_made_when_first_used() -> None:
+    mp = MultiPrecision(25)
+    assert "ctx" not in mp.__dict__  # a request served on balls never needs it
+    assert mp.digits == 25 and mp.eps == 1e-25
+    assert abs(mp.sqrt(mp.scalar(2)) ** 2 - 2) < 1e-30
+    assert mp.ctx.dps == 35 and "ctx" in mp.__dict__
+    with pytest.raises(AttributeError):
+        mp.not_a_function  # noqa: B018

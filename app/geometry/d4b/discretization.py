@@ -144,7 +144,8 @@ class D4bPolygons:
         """The construction on the hull of 0 and i_min − 1 .. i_max + 2 (it starts at stick 0
         anyway): the Gauss image n starts at index 0, and m_i needs p_{i−1} .. p_{i+1}."""
         lo, hi = min(0, self.i_min - 1), max(0, self.i_max + 2)
-        return lo, construct(self.ar, *self.parameters, self.beta0, lo, hi)
+        with self.ar.recursion():  # on balls: with the digits its growing radii need
+            return lo, construct(self.ar, *self.parameters, self.beta0, lo, hi)
 
     def _window(self, points: Array) -> Array:
         lo = self._hull[0]

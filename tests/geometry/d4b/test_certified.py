@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import threading
 from typing import Any
 
@@ -13,7 +14,7 @@ import pytest
 from app.geometry import balls
 from app.geometry.ball_arithmetic import Ball
 from app.geometry.checks import check_residuals, printed_residual
-from app.geometry.curve import Curve
+from app.geometry.curve import NOTHING, Curve
 from app.geometry.d4b import certified, discretization as d4b
 from app.geometry.d4b.discretization import STATEMENTS
 from app.geometry.precision import ExactReal, Float64, MultiPrecision
@@ -77,7 +78,7 @@ def test_long_ranges_raise_the_precision() -> None:
     short = balls.certificate(_served(30, i_min=-5, i_max=5).arithmetic)
     long = balls.certificate(_served(30, i_min=-300, i_max=300).arithmetic)
     assert short is not None and long is not None
-    assert long.working_digits > short.working_digits + 50
+    assert long.working_digits > short.working_digits + 40  # 300 sticks lose about 48 digits
     assert long.resolved and short.resolved
 
 
@@ -141,3 +142,82 @@ def test_float64_and_ids_not_on_balls_are_untouched() -> None:
     assert isinstance(calls[-1], Float64)
     assert balls.serve("not-on-balls", MultiPrecision(30), compute, {}) == "curve"
     assert isinstance(calls[-1], MultiPrecision)
+
+
+def test_the_extra_digits_are_carried_in_the_construction_only() -> None:
+    seen: list[tuple[int, int]] = []
+    construct = d4b.construct
+
+    def recording(ar: Any, *arguments: Any) -> Any:
+        seen.append((flint.ctx.prec, ar.bits))
+        return construct(ar, *arguments)
+
+    arguments: dict[str, Any] = {"h": 1.0, "d": 0.1, "beta0": None, "i_min": -100, "i_max": 100}
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(d4b, "construct", recording)
+        curve = balls.serve(
+            "d4b", MultiPrecision(40), lambda ar: d4b.compute(ar, **arguments), arguments
+        )
+    ar = curve.arithmetic
+    assert isinstance(ar, Ball) and ar.recursions_only
+    assert ar.bits == math.ceil(50 * math.log2(10)) < ar.recursion_bits
+    assert seen == [(ar.recursion_bits, ar.bits)]  # once, with the extra digits
+    certificate = balls.certificate(ar)
+    assert certificate is not None and certificate.resolved
+    assert certificate.working_digits == 50 + certified.extra_digits(arguments)  # no raise
+    assert all(check.holds is True for check in curve.checks)
+
+
+def test_a_check_undecided_without_the_extra_digits_is_computed_again_with_them() -> None:
+    seen: list[bool] = []
+    arguments: dict[str, Any] = {"h": 1.0, "d": 0.1, "beta0": None, "i_min": -5, "i_max": 5}
+
+    def compute(ar: Any) -> Curve:
+        seen.append(ar.recursions_only)
+        if ar.recursions_only:
+            ar.undecided += 1  # as check_residuals counts a check it cannot decide
+        return d4b.compute(ar, **arguments)
+
+    curve = balls.serve("d4b", MultiPrecision(30), compute, arguments)
+    assert seen == [True, False]
+    ar = curve.arithmetic
+    assert isinstance(ar, Ball) and ar.bits == ar.recursion_bits
+
+
+def test_a_tolerance_below_the_float_range_is_not_computed_again() -> None:
+    # 400 digits: the tolerance 64·10^-400 underflows to 0.0 (docs/checks.md); more digits
+    # cannot decide such a check, so the balls are not computed a second time
+    ar = Ball(400, 0, recursions_only=True)
+    with balls.working_precision(ar.bits):
+        residual = ar.array([ar.scalar(1) / 3 - ar.scalar(1) / 3])
+        check = check_residuals(STATEMENTS[1], ar, np.arange(1), residual, 0.0, False)
+    assert check.holds is None and ar.undecided == 0
+
+
+@pytest.mark.parametrize(
+    ("h", "d", "i_min", "i_max", "beta0"),
+    [(1.0, 0.9, -20, 20, None), (1.0, 0.01, -1500, 1500, None), (2.0, 0.3, -100, 300, 0.3)],
+)
+def test_the_extra_digits_estimate_is_not_short(
+    h: float, d: float, i_min: int, i_max: int, beta0: float | None
+) -> None:
+    arguments: dict[str, Any] = {"h": h, "d": d, "beta0": beta0, "i_min": i_min, "i_max": i_max}
+    curve = balls.serve(
+        "d4b",
+        MultiPrecision(20),
+        lambda ar: d4b.compute(ar, **arguments, selection=NOTHING),
+        arguments,
+    )
+    certificate = balls.certificate(curve.arithmetic)
+    assert certificate is not None and certificate.resolved
+    # resolved at the first attempt: the estimate was enough
+    assert certificate.working_digits == 30 + certified.extra_digits(arguments)
+
+
+def test_the_extra_digits_estimate() -> None:
+    # per stick about log10((h + 3d)/(h − d)): 0.1597 digits for d = h/10
+    needed = certified.extra_digits_needed(1, 0.1, -500, 499)
+    assert needed == math.ceil(502 * math.log10(1.3 / 0.9)) + 2 == 83
+    assert certified.extra_digits_needed(1, 0.1, -5, 5) == 4
+    closed = {"h": 1.0, "d": 0.1, "i_min": 0, "i_max": 9, "method": "closed-form"}
+    assert certified.extra_digits(closed) == 5

@@ -1,0 +1,245 @@
+"""precision=mp on balls: where the time of 10^3 D4b vertices with every check goes, and its floor.
+
+For the served computation of ``bench/mp.py`` (50 digits, h = 1, d = 0.1, i = −500 … 499), each
+statement of (D4b) is evaluated in the response's order on one shared context, so a statement
+pays for the shared quantities it is the first to need (the fits (D1), (D3), (2) with Theorem 4
+(i); the closed forms with Theorems 5, 6; the Gauss images, their closed forms and the ring
+curvatures with Section 5, which is evaluated as one block). For each: its CPU time and the
+elementwise operations on ``arb`` object arrays per vertex, counted by a numpy subclass that sees
+every ufunc call (``+ − × ÷``, ``abs``, comparisons, reductions, and ``Ball``'s functions; a
+hypot counts as its ×, +, part ≥ 0 and √), plus the float conversions of residuals.
+
+The floor: the operations counted times the cost of the cheapest one (a negation or a
+comparison at the checks' working precision, measured here: a Python call on an ``arb``, since
+python-flint 0.9 has no elementwise vector type), plus the square roots and transcendental
+functions at their own cost. No rewrite of the arithmetic below these definitions of the checks
+gets under it; only fewer operations do.
+"""
+
+from __future__ import annotations
+
+import collections
+import os
+import statistics
+import sys
+import time
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+import flint
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+from app.geometry import balls
+from app.geometry.ball_arithmetic import Ball
+from app.geometry.curve import EVERYTHING
+from app.geometry.d4b import (
+    certified,
+    checks as d4b_checks,
+    construction,
+    curvature as d4b_curvature,
+    discretization as d4b,
+)
+from app.geometry.d4b.closed_forms import tilt_shift
+from bench.mp import HI, LO, D, H, plain_script
+
+DIGITS = 50
+COUNTS: collections.Counter[str] = collections.Counter()
+TRANSCENDENTAL = (
+    "exp",
+    "expm1",
+    "log",
+    "log1p",
+    "cos",
+    "sin",
+    "cosh",
+    "sinh",
+    "tanh",
+    "atan2",
+    "power",  # x ** y of balls: exp(y log x)
+)
+
+
+class Counted(np.ndarray):  # type: ignore[type-arg]
+    """An object array that counts the entries of every ufunc applied to it."""
+
+    def __array_ufunc__(self, ufunc: Any, method: str, *inputs: Any, **kwargs: Any) -> Any:
+        plain = [np.asarray(x) if isinstance(x, Counted) else x for x in inputs]
+        if "out" in kwargs:
+            kwargs["out"] = tuple(np.asarray(x) for x in kwargs["out"])
+        result = getattr(ufunc, method)(*plain, **kwargs)
+        if any(isinstance(x, np.ndarray) and x.dtype == object for x in plain):
+            size = max(np.size(x) for x in plain if isinstance(x, np.ndarray))
+            name = ufunc.__name__.replace(" (vectorized)", "")
+            COUNTS[name if method == "__call__" else f"{name}.{method}"] += size
+        return _counted(result)
+
+
+def _counted(value: Any) -> Any:
+    if isinstance(value, np.ndarray) and value.dtype == object:
+        return value.view(Counted)
+    if isinstance(value, tuple):
+        return tuple(_counted(v) for v in value)
+    return value
+
+
+def _instrument() -> None:
+    """Every object array ``Ball`` makes, and every polygon of the construction, counted."""
+    for name in ("array", "indices", "zeros", "empty"):
+        method = getattr(Ball, name)
+        setattr(Ball, name, lambda self, *a, _m=method: _counted(_m(self, *a)))
+    for name in ("to_floats", "lower_floats"):
+        method = getattr(Ball, name)
+
+        def convert(self: Ball, values: Any, _m: Any = method, _name: str = name) -> Any:
+            if isinstance(values, np.ndarray) and values.dtype == object:
+                COUNTS[_name] += values.size
+            return _m(self, np.asarray(values))
+
+        setattr(Ball, name, convert)
+    for name in ("empty", "stack", "concatenate", "where", "full_like", "empty_like", "array"):
+        make = getattr(np, name)
+        setattr(np, name, lambda *a, _m=make, **k: _counted(_m(*a, **k)))
+    construct = construction.construct
+
+    def counted_construct(*arguments: Any) -> Any:
+        built = construct(*arguments)
+        for name in ("axis_points", "centres", "tractrix", "directions"):
+            built.__dict__[name] = _counted(getattr(built, name))
+        return built
+
+    d4b.construct = counted_construct  # type: ignore[assignment]
+
+
+def _timed(function: Callable[[], object]) -> tuple[float, dict[str, int]]:
+    COUNTS.clear()
+    start = time.process_time()
+    function()
+    return time.process_time() - start, dict(COUNTS)
+
+
+def _unit_costs(bits: int) -> list[dict[str, float]]:
+    """Seconds per entry of arb operations on 1000 entries at ``bits``, each set of them
+    measured right after a run of the script (``"script"``, seconds): 15 pairs, so that a
+    floor is a ratio to the script taken under the same load."""
+    with balls.working_precision(bits):
+        x = [flint.arb(k) / 7 + flint.arb(1) / 3 for k in range(1000)]
+        y = [flint.arb(k) / 3 + flint.arb(2) for k in range(1000)]
+        operations: dict[str, Callable[[], object]] = {
+            "product": lambda: [a * b for a, b in zip(x, y, strict=True)],
+            "negation": lambda: [-a for a in x],
+            "comparison": lambda: [a < b for a, b in zip(x, y, strict=True)],
+            "sqrt": lambda: [a.sqrt() for a in x],
+            "transcendental": lambda: [(a / 1000).cosh() for a in x],
+        }
+        pairs = []
+        for _ in range(15):
+            costs = {"script": _timed(lambda: plain_script(DIGITS))[0]}
+            for name, run in operations.items():
+                start = time.process_time()
+                run()
+                costs[name] = (time.process_time() - start) / 1000
+            costs["transcendental"] -= costs["product"]  # the division by 1000 inside
+            costs["cheapest"] = min(costs["negation"], costs["comparison"])
+            pairs.append(costs)
+    return pairs
+
+
+def _parts(ar: Ball) -> list[tuple[str, float, dict[str, int]]]:
+    """Each part of the served computation in order: (label, seconds, counts)."""
+    rows: list[tuple[str, float, dict[str, int]]] = []
+    with balls.working_precision(ar.bits):
+        data = d4b.polygons(ar, H, D, None, LO, HI)
+        rows.append(("construction (recursion bits)", *_timed(lambda: data.p)))
+        ctx = d4b_checks._Context(ar, ar.scalar(H), ar.scalar(D), data, False)
+        for statement, evaluator in d4b_checks._EVALUATORS:
+            rows.append((statement.id, *_timed(lambda e=evaluator: e(ctx))))  # type: ignore[misc]
+
+        def section_5() -> object:
+            shift = tilt_shift(ar, ctx.h, ctx.d, None)
+            printed = d4b_curvature.printed_forms(ar, ctx.h, ctx.d, shift, LO, LO + ctx.n - 1)
+            return d4b_curvature.evaluate(
+                ar,
+                ctx.h,
+                data.p,
+                data.tractrix,
+                data.gauss,
+                printed,
+                ctx.indices,
+                ctx.n,
+                ctx.tolerance,
+                ctx.construction_tolerance,
+                False,
+            )
+
+        rows.append(("Section 5 (9 statements, Gauss images)", *_timed(section_5)))
+        curve = d4b.compute(ar, H, D, None, LO, HI, selection=EVERYTHING)
+        rows.append(("certificate radii", *_timed(lambda: balls._radii(curve, DIGITS))))
+    return rows
+
+
+def main() -> None:
+    arguments = {"h": H, "d": D, "beta0": None, "i_min": LO, "i_max": HI}
+    extra = certified.extra_digits(arguments)
+    n = HI - LO + 1
+    script = statistics.median(_timed(lambda: plain_script(DIGITS))[0] for _ in range(7))
+    # times without the counting (median of 3), then the counts
+    runs = [_parts(Ball(DIGITS, extra, recursions_only=True)) for _ in range(3)]
+    seconds_of = [statistics.median(run[k][1] for run in runs) for k in range(len(runs[0]))]
+    _instrument()
+    ar = Ball(DIGITS, extra, recursions_only=True)
+    rows = [
+        (label, seconds, counts)
+        for (label, _, counts), seconds in zip(_parts(ar), seconds_of, strict=True)
+    ]
+    print(
+        f"precision=mp on balls, D4b {n} vertices at {DIGITS} digits (checks at {ar.bits} bits, "
+        f"construction at {ar.recursion_bits}); the script {script * 1e3:.1f} ms; load average "
+        f"{os.getloadavg()[0]:.2f}"
+    )
+    print(f"  {'part':<42} {'ms':>7} {'ops/vertex':>11} {'√':>5} {'transc.':>8} {'→ float':>8}")
+    total_ops = total_sqrt = total_transcendental = 0.0
+    total_time = 0.0
+    for label, seconds, counts in rows:
+        sqrt = counts.get("sqrt", 0) / n
+        transcendental = sum(counts.get(name, 0) for name in TRANSCENDENTAL) / n
+        conversions = (counts.get("to_floats", 0) + counts.get("lower_floats", 0)) / n
+        ops = sum(counts.values()) / n - conversions
+        print(
+            f"  {label:<42} {seconds * 1e3:7.1f} {ops:11.0f} {sqrt:5.0f} {transcendental:8.0f} "
+            f"{conversions:8.0f}"
+        )
+        total_time += seconds
+        if label != "construction (recursion bits)":
+            total_ops += ops
+            total_sqrt += sqrt
+            total_transcendental += transcendental
+    pairs = _unit_costs(ar.bits)
+
+    def floor(costs: dict[str, float]) -> float:
+        return n * (
+            (total_ops - total_sqrt - total_transcendental) * costs["cheapest"]
+            + total_sqrt * costs["sqrt"]
+            + total_transcendental * costs["transcendental"]
+        )
+
+    ratio = statistics.median(floor(costs) / costs["script"] for costs in pairs)
+    typical = {k: statistics.median(c[k] for c in pairs) for k in pairs[0]}
+    print(
+        f"  {'total':<42} {total_time * 1e3:7.1f} {total_ops:11.0f}   ({total_time / script:.1f}× "
+        "the script)"
+    )
+    print(
+        f"  floor of the checks and the certificate: {total_ops:.0f} operations a vertex, each at "
+        f"least {typical['cheapest'] * 1e9:.0f} ns (a negation or a comparison; a product "
+        f"{typical['product'] * 1e9:.0f} ns), √ at {typical['sqrt'] * 1e9:.0f} ns, "
+        f"transcendental functions at {typical['transcendental'] * 1e9:.0f} ns (medians): "
+        f"{ratio:.1f}× the script (median of 15 pairs, each floor over the script run next to "
+        "it; target 5×)"
+    )
+
+
+if __name__ == "__main__":
+    main()
