@@ -216,6 +216,42 @@ def test_each_surface_path_documents_exactly_the_parameters_it_takes(client: Tes
     assert pseudo == ["catenoid", "catenoid-gauss-image"]
 
 
+def test_every_explorer_module_is_type_checked() -> None:
+    """`make contract` compiles every module of the explorer with tsc --strict --checkJs against
+    the generated types: a new module, or a check switched off, fails here."""
+    explorer = ROOT / "app" / "static" / "explorer"
+    config = json.loads((ROOT / "tools" / "contract" / "tsconfig.explorer.json").read_text())
+    assert config["compilerOptions"]["strict"] and config["compilerOptions"]["checkJs"]
+    listed = {Path(f).name for f in config["files"] if f.startswith("../../app/static/explorer/")}
+    assert listed == {p.name for p in explorer.glob("*.js")}
+    for module in explorer.glob("*.js"):
+        text = module.read_text(encoding="utf-8")
+        assert "// @ts-check" in text, module.name
+        assert "@ts-nocheck" not in text and "@ts-ignore" not in text, module.name
+
+
+def test_every_schema_option_has_a_type() -> None:
+    """A JSON Schema option without a `type` (say `{"minimum": 1e-100}` under `anyOf`) is
+    `unknown` for openapi-typescript, and `number | unknown` is `unknown`: a typed client could
+    then send any value. Every option of every parameter and body field names its type."""
+
+    def untyped(schema: Any, where: str) -> list[str]:
+        found: list[str] = []
+        if isinstance(schema, dict):
+            for option in schema.get("anyOf", []):
+                if not ({"type", "$ref", "const", "enum", "anyOf"} & option.keys()):
+                    found.append(f"{where}: {option}")
+            for key, value in schema.items():
+                found += untyped(value, f"{where}.{key}")
+        elif isinstance(schema, list):
+            for k, value in enumerate(schema):
+                found += untyped(value, f"{where}[{k}]")
+        return found
+
+    assert untyped(SPEC["paths"], "paths") == []
+    assert untyped(SCHEMAS, "schemas") == []
+
+
 def test_every_real_parameter_documents_and_gets_the_smallest_magnitude(client: TestClient) -> None:
     """The schema's rule (0 or at least 1e-100 in magnitude) is the server's, on every endpoint."""
     checked = 0
@@ -229,7 +265,12 @@ def test_every_real_parameter_documents_and_gets_the_smallest_magnitude(client: 
             if not any(s.get("type") == "number" for s in numbers):
                 continue
             assert any(
-                s.get("anyOf") == [{"const": 0}, {"minimum": 1e-100}, {"maximum": -1e-100}]
+                s.get("anyOf")
+                == [
+                    {"const": 0},
+                    {"type": "number", "minimum": 1e-100},
+                    {"type": "number", "maximum": -1e-100},
+                ]
                 for s in numbers
             ), (path, parameter["name"])
             if "{" in url:
