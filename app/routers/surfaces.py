@@ -75,9 +75,17 @@ def documented_parameters(identifier: str, in_path: bool) -> list[dict[str, Any]
             schema = dict(schema)
             description = schema.pop("description", "")
             schema.pop("title", None)
-            schema.pop("x-domain", None)
             if name == "checks" and owner == "surface":
                 schema = selection_schema(schema, "checks", checks_of(surfaces_of(identifier)))
+            if name == "companions" and owner != "surface":
+                # the discretization's own names, as on /discretizations/{id} (a bare string
+                # declared `companions=` valid, which the server refuses)
+                companions = list(DISCRETIZATIONS[identifier].info.companions)
+                schema = selection_schema(schema, "companions", companions)
+            if name == "i_max" and owner != "surface":
+                # a mesh needs a meridian edge: one more vertex than a polygon
+                description += " On a surface, i_max >= i_min + 1 (at least one meridian edge)."
+                schema["x-domain"] = "i_min + 1 <= i_max"
             if name == "discretization":
                 schema["enum"] = [identifier]
                 description = (

@@ -128,7 +128,11 @@ class D2aQuadQuery(CurveQuery):
     f1: ConformalNext = 1.5
     r: QuadStartHeight = None
     i_min: Index = Field(-10, description="First index i (inclusive).")
-    i_max: Index = Field(10, description="Last index i (inclusive), >= i_min.")
+    i_max: Index = Field(
+        10,
+        description="Last index i (inclusive), >= i_min.",
+        json_schema_extra={"x-domain": "i_min <= i_max"},
+    )
 
 
 class D2aHexQuery(CurveQuery):
@@ -144,4 +148,8 @@ class D2aHexQuery(CurveQuery):
     lam: HexWeight = 0.5
     r: HexStartHeight = None
     i_min: Index = Field(-10, description="First index i (inclusive).")
-    i_max: Index = Field(10, description="Last index i (inclusive), >= i_min.")
+    i_max: Index = Field(
+        10,
+        description="Last index i (inclusive), >= i_min.",
+        json_schema_extra={"x-domain": "i_min <= i_max"},
+    )

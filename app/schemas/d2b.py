@@ -80,6 +80,7 @@ class D2bQuery(CurveQuery):
         ge=-10_000_000,
         le=10_000_000,
         description="Last index i, >= i_min (custom: i_min + len(s) − 1).",
+        json_schema_extra={"x-domain": "i_min <= i_max"},
     )
 
     def core_arguments(self) -> dict[str, Any]:

@@ -5,6 +5,7 @@ the settings, closed POST bodies, examples that fit their schemas. (`make contra
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 from typing import Any
 
@@ -214,6 +215,38 @@ def test_each_surface_path_documents_exactly_the_parameters_it_takes(client: Tes
         assert refused.json()["errors"][0]["constraint"] == "not a parameter of this endpoint"
     pseudo = SPEC["paths"]["/surfaces/{surface_id}/d1"]["get"]["parameters"][0]["schema"]["enum"]
     assert pseudo == ["catenoid", "catenoid-gauss-image"]
+
+
+def _parameter(path: str, name: str) -> dict[str, Any]:
+    found = [p for p in SPEC["paths"][path]["get"]["parameters"] if p["name"] == name]
+    assert len(found) == 1, (path, name)
+    return found[0]
+
+
+def test_a_surface_takes_the_companions_and_range_its_schema_declares(client: TestClient) -> None:
+    """Found by `make fuzz`: `companions=` (a string, so schema-valid) was refused on every
+    surface path, and i_max = i_min (valid for a polygon) is refused for a mesh."""
+    from app.registry import DISCRETIZATIONS
+
+    for identifier in DISCRETIZATIONS:
+        own = _parameter(f"/discretizations/{identifier}", "companions")["schema"]
+        for path in (f"/surfaces/{{surface_id}}/{identifier}",) + (
+            ("/surfaces/{surface_id}",) if identifier == "d4b" else ()
+        ):
+            schema = _parameter(path, "companions")["schema"]
+            assert {k: schema.get(k) for k in ("enum", "pattern")} == {
+                k: own.get(k) for k in ("enum", "pattern")
+            }, path
+            i_max = _parameter(path, "i_max")
+            assert i_max["schema"]["x-domain"] == "i_min + 1 <= i_max", path
+            assert "i_max >= i_min + 1" in i_max["description"], path
+    refused = client.get("/surfaces/catenoid?companions=")
+    assert refused.status_code == 422
+    pattern = _parameter("/surfaces/{surface_id}", "companions")["schema"]["pattern"]
+    assert re.fullmatch(pattern, "") is None and re.fullmatch(pattern, "tractrix,darboux")
+    assert client.get("/surfaces/catenoid?companions=tractrix,darboux&m=3").status_code == 200
+    mesh = client.get("/surfaces/catenoid?i_min=2&i_max=2")
+    assert mesh.status_code == 422 and mesh.json()["errors"][0]["parameter"] == "i_max"
 
 
 def test_every_explorer_module_is_type_checked() -> None:
