@@ -249,6 +249,24 @@ def test_a_surface_takes_the_companions_and_range_its_schema_declares(client: Te
     assert mesh.status_code == 422 and mesh.json()["errors"][0]["parameter"] == "i_max"
 
 
+def test_the_float64_resolution_bounds_stated_are_the_servers(client: TestClient) -> None:
+    """Found by `make fuzz`: D4b's text said d/h ≥ 1e-6 and D2a's a relative gap of 1e-6 while
+    the server refuses below 100·√ε ≈ 1.49e-6 and 1e-4; a value between was documented valid."""
+    from app.geometry.d2a.common import FLOAT64_MIN_GAP
+    from app.geometry.tolerances import RESOLUTION_MARGIN
+
+    d4b = SPEC["paths"]["/discretizations/d4b"]["get"]["description"]
+    assert "d/h ≥ 1.5e-6" in d4b
+    assert f"{RESOLUTION_MARGIN * (2.0**-52) ** 0.5:.2g}" == "1.5e-06"
+    assert client.get("/discretizations/d4b?d=1.4e-6&checks=none").status_code == 422
+    assert client.get("/discretizations/d4b?d=1.5e-6&checks=none").status_code == 200
+    for path in ("/discretizations/d2a-quad", "/discretizations/d2a-hex"):
+        assert "a relative 1e-4" in SPEC["paths"][path]["get"]["description"], path
+    assert FLOAT64_MIN_GAP == 1e-4
+    assert client.get("/discretizations/d2a-quad?f0=1&f1=1.00009").status_code == 422
+    assert client.get("/discretizations/d2a-quad?f0=1&f1=1.00011&checks=none").status_code == 200
+
+
 def test_every_explorer_module_is_type_checked() -> None:
     """`make contract` compiles every module of the explorer with tsc --strict --checkJs against
     the generated types: a new module, or a check switched off, fails here."""
