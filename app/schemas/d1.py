@@ -61,8 +61,8 @@ class D1Query(CurveQuery):
         1.0,
         ge=-1e100,
         le=1e100,
-        description="Height of p_1 = (delta, y1).",
-        json_schema_extra={"x-domain": "any real number"},
+        description="Height of p_1 = (delta, y1); in float64 |y1 − y0|/delta <= 1e150.",
+        json_schema_extra={"x-domain": "any real number (float64: |y1 − y0|/delta <= 1e150)"},
     )
     i_min: int = Field(-10, ge=-10_000_000, le=10_000_000, description="First index i (inclusive).")
     i_max: int = Field(

@@ -61,7 +61,8 @@ class SurfaceQuery(StrictModel):
         "json",
         description="`json`; `obj` (quads, no per-face values); `ply` (ASCII, float64, K, H "
         "and planarity as face properties: meshio, trimesh, plyfile); `vtu` (VTK XML, "
-        "ParaView: K, H and planarity as cell data); `glb` (glTF binary, float32, for viewers).",
+        "ParaView: K, H and planarity as cell data); `glb` (glTF binary, float32, for viewers; "
+        "a mesh with values beyond float32's range, about 3.4e38, is refused).",
     )
     checks: str = Field(
         "all",

@@ -267,6 +267,15 @@ def test_the_float64_resolution_bounds_stated_are_the_servers(client: TestClient
     assert client.get("/discretizations/d2a-quad?f0=1&f1=1.00011&checks=none").status_code == 200
 
 
+def test_a_bound_of_one_parameter_is_in_its_schema(client: TestClient) -> None:
+    """Found by `make fuzz`: theorem-11's `i_max >= 1` was only an x-domain (schema minimum
+    -10^6), so schema-valid values were refused; a bound on one parameter belongs in the schema."""
+    i_max = _parameter("/convergence/theorem-11", "i_max")["schema"]
+    assert i_max["minimum"] == 1 and i_max["x-domain"] == "i_max >= 1"
+    refused = client.get("/convergence/theorem-11?i_max=0")
+    assert refused.status_code == 422 and refused.json()["errors"][0]["parameter"] == "i_max"
+
+
 def test_every_explorer_module_is_type_checked() -> None:
     """`make contract` compiles every module of the explorer with tsc --strict --checkJs against
     the generated types: a new module, or a check switched off, fails here."""
