@@ -24,6 +24,7 @@ from app.schemas.surfaces import (
     SurfaceResponse,
 )
 from app.services import surfaces as surface_service
+from app.services.selection import chosen
 
 router = APIRouter(prefix="/surfaces", tags=["surfaces"])
 
@@ -176,7 +177,11 @@ def parse(
     kind = surface_service.kind_of(identifier)
     surface, rest = _split(values, strict)
     entry = discretization(surface.discretization)
-    return kind, surface, parse_query(entry.body if strict else entry.query, rest)
+    curve_query = parse_query(entry.body if strict else entry.query, rest)
+    # a mesh uses no companion, but the names are the discretization's, as documented: an
+    # unknown one is refused here as on /discretizations/{id} (it was ignored)
+    chosen("companions", curve_query.companions, entry.info.companions)
+    return kind, surface, curve_query
 
 
 def _build(identifier: str, values: dict[str, Any], request: Request) -> tuple[Any, Any]:

@@ -245,6 +245,13 @@ def test_a_surface_takes_the_companions_and_range_its_schema_declares(client: Te
     pattern = _parameter("/surfaces/{surface_id}", "companions")["schema"]["pattern"]
     assert re.fullmatch(pattern, "") is None and re.fullmatch(pattern, "tractrix,darboux")
     assert client.get("/surfaces/catenoid?companions=tractrix,darboux&m=3").status_code == 200
+    # an unknown name, schema-invalid now, is refused as on /discretizations (it was ignored)
+    for unknown in (
+        client.get("/surfaces/catenoid/d4a?companions=xyz&m=3"),
+        client.post("/surfaces/catenoid/d1", json={"companions": "tractrix", "m": 3}),
+    ):
+        assert unknown.status_code == 422, unknown.text
+        assert unknown.json()["errors"][0]["parameter"] == "companions"
     mesh = client.get("/surfaces/catenoid?i_min=2&i_max=2")
     assert mesh.status_code == 422 and mesh.json()["errors"][0]["parameter"] == "i_max"
 
