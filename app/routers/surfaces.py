@@ -24,6 +24,7 @@ from app.schemas.surfaces import (
     SurfaceResponse,
 )
 from app.services import surfaces as surface_service
+from app.services.selection import chosen
 
 router = APIRouter(prefix="/surfaces", tags=["surfaces"])
 
@@ -75,9 +76,17 @@ def documented_parameters(identifier: str, in_path: bool) -> list[dict[str, Any]
             schema = dict(schema)
             description = schema.pop("description", "")
             schema.pop("title", None)
-            schema.pop("x-domain", None)
             if name == "checks" and owner == "surface":
                 schema = selection_schema(schema, "checks", checks_of(surfaces_of(identifier)))
+            if name == "companions" and owner != "surface":
+                # the discretization's own names, as on /discretizations/{id} (a bare string
+                # declared `companions=` valid, which the server refuses)
+                companions = list(DISCRETIZATIONS[identifier].info.companions)
+                schema = selection_schema(schema, "companions", companions)
+            if name == "i_max" and owner != "surface":
+                # a mesh needs a meridian edge: one more vertex than a polygon
+                description += " On a surface, i_max >= i_min + 1 (at least one meridian edge)."
+                schema["x-domain"] = "i_min + 1 <= i_max"
             if name == "discretization":
                 schema["enum"] = [identifier]
                 description = (
@@ -168,7 +177,11 @@ def parse(
     kind = surface_service.kind_of(identifier)
     surface, rest = _split(values, strict)
     entry = discretization(surface.discretization)
-    return kind, surface, parse_query(entry.body if strict else entry.query, rest)
+    curve_query = parse_query(entry.body if strict else entry.query, rest)
+    # a mesh uses no companion, but the names are the discretization's, as documented: an
+    # unknown one is refused here as on /discretizations/{id} (it was ignored)
+    chosen("companions", curve_query.companions, entry.info.companions)
+    return kind, surface, curve_query
 
 
 def _build(identifier: str, values: dict[str, Any], request: Request) -> tuple[Any, Any]:

@@ -106,7 +106,7 @@ class CatenoidStudyQuery(StudyQuery):
     )
     i_max: int = Field(
         8,
-        ge=-1_000_000,
+        ge=1,  # Example 12 is defined for i >= 0 (the study's own check, in the schema too)
         le=1_000_000,
         description="End of the compact set in indices of level 0: t = i/j up to i_max/j0.",
         json_schema_extra={"x-domain": "i_max >= 1"},

@@ -61,12 +61,16 @@ class D1Query(CurveQuery):
         1.0,
         ge=-1e100,
         le=1e100,
-        description="Height of p_1 = (delta, y1).",
-        json_schema_extra={"x-domain": "any real number"},
+        description="Height of p_1 = (delta, y1); in float64 |y1 − y0|/delta <= 1e150.",
+        json_schema_extra={"x-domain": "any real number (float64: |y1 − y0|/delta <= 1e150)"},
     )
     i_min: int = Field(-10, ge=-10_000_000, le=10_000_000, description="First index i (inclusive).")
     i_max: int = Field(
-        10, ge=-10_000_000, le=10_000_000, description="Last index i (inclusive), >= i_min."
+        10,
+        ge=-10_000_000,
+        le=10_000_000,
+        description="Last index i (inclusive), >= i_min.",
+        json_schema_extra={"x-domain": "i_min <= i_max"},
     )
     method: Literal["construction", "closed-form"] = Field(
         "construction",

@@ -20,8 +20,10 @@ signed areas A_i are negative and Δ²p_i^y < 0. Δ²y_i = y_{i+2} − 2y_{i+1} 
 l_i = |p_{i+1} − p_i|; A_i is the signed trapezoid area under the edge p_i p_{i+1}.
 Only `method=construction` exists: vertices are cumulative sums of the dual edges from p_0, so a
 range far from 0 costs max(|i_min|, |i_max|) edges. In float64, every f_i and 1/f_i must stay
-below 1e50 and consecutive f_i must differ by a relative 1e-6 (float64 error grows like
-1e-16·f_i/(f_{i+1} − f_i)); beyond, use precision=mp.
+below 1e50, and consecutive f_i must differ by a relative 1e-4: (f1 − f0)/f1, (b − a)/b,
+λ(b − a)/f_1 and (1 − λ)(b − a)/b at least 1e-4 (float64 error grows like
+1e-16·f_i/(f_{i+1} − f_i)); beyond, use precision=mp, where these gaps must be at least √ε of the
+digits asked (the 422 gives the bound).
 """
 
 D2A_QUAD_DESCRIPTION = (
@@ -128,7 +130,11 @@ class D2aQuadQuery(CurveQuery):
     f1: ConformalNext = 1.5
     r: QuadStartHeight = None
     i_min: Index = Field(-10, description="First index i (inclusive).")
-    i_max: Index = Field(10, description="Last index i (inclusive), >= i_min.")
+    i_max: Index = Field(
+        10,
+        description="Last index i (inclusive), >= i_min.",
+        json_schema_extra={"x-domain": "i_min <= i_max"},
+    )
 
 
 class D2aHexQuery(CurveQuery):
@@ -144,4 +150,8 @@ class D2aHexQuery(CurveQuery):
     lam: HexWeight = 0.5
     r: HexStartHeight = None
     i_min: Index = Field(-10, description="First index i (inclusive).")
-    i_max: Index = Field(10, description="Last index i (inclusive), >= i_min.")
+    i_max: Index = Field(
+        10,
+        description="Last index i (inclusive), >= i_min.",
+        json_schema_extra={"x-domain": "i_min <= i_max"},
+    )

@@ -73,13 +73,16 @@ class D2bQuery(CurveQuery):
         None,
         ge=-10_000_000,
         le=10_000_000,
-        description="First index i (default: see the description; custom: index of s[0], 0).",
+        description="First index i (default: see the description; custom: index of s[0], 0). "
+        "example-12: i_min >= 0; remark-13: i_min > −j/2.",
+        json_schema_extra={"x-domain": "i_min >= 0 (example-12), i_min > −j/2 (remark-13)"},
     )
     i_max: int | None = Field(
         None,
         ge=-10_000_000,
         le=10_000_000,
         description="Last index i, >= i_min (custom: i_min + len(s) − 1).",
+        json_schema_extra={"x-domain": "i_min <= i_max"},
     )
 
     def core_arguments(self) -> dict[str, Any]:

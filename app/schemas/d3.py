@@ -65,7 +65,11 @@ class D3Query(CurveQuery):
     )
     i_min: int = Field(-10, ge=-10_000_000, le=10_000_000, description="First index i (inclusive).")
     i_max: int = Field(
-        10, ge=-10_000_000, le=10_000_000, description="Last index i (inclusive), >= i_min."
+        10,
+        ge=-10_000_000,
+        le=10_000_000,
+        description="Last index i (inclusive), >= i_min.",
+        json_schema_extra={"x-domain": "i_min <= i_max"},
     )
     method: Literal["construction", "closed-form"] = Field(
         "construction",

@@ -64,7 +64,11 @@ class D4aQuery(CurveQuery):
     s: SauerStep = 0.1
     beta0: StickAngle = math.pi / 2
     i_min: Index = Field(-10, description="First index i (inclusive).")
-    i_max: Index = Field(10, description="Last index i (inclusive), >= i_min.")
+    i_max: Index = Field(
+        10,
+        description="Last index i (inclusive), >= i_min.",
+        json_schema_extra={"x-domain": "i_min <= i_max"},
+    )
     method: Literal["construction", "closed-form"] = Field(
         "construction",
         description="`construction`: stick by stick (compared with the explicit form). "

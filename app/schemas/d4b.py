@@ -25,7 +25,8 @@ the edge p_i p_{i+1}.
 `method=construction` (default) builds the polygon from the definition and compares it with the
 closed forms (14) and (16) of Theorems 5 and 6; `method=closed-form` evaluates the closed forms
 (in a form that does not overflow early) for very long ranges, and skips that comparison.
-In float64, coordinates are kept below 1e150 and d/h ≥ 1e-6; beyond, use precision=mp.
+In float64, coordinates are kept below 1e150 and d/h ≥ 1.5e-6 (100·√ε, ε = 2.2e-16); beyond,
+use precision=mp, where d/h must be at least 100·√ε of the digits asked (the 422 gives it).
 """
 
 
@@ -77,7 +78,11 @@ class D4bQuery(CurveQuery):
     d: HalfStep = 0.1
     beta0: StickAngle = math.pi / 2
     i_min: Index = Field(-10, description="First index i (inclusive).")
-    i_max: Index = Field(10, description="Last index i (inclusive), >= i_min.")
+    i_max: Index = Field(
+        10,
+        description="Last index i (inclusive), >= i_min.",
+        json_schema_extra={"x-domain": "i_min <= i_max"},
+    )
     method: Literal["construction", "closed-form"] = Field(
         "construction",
         description="`construction`: from the definition (compared with Theorems 5, 6). "

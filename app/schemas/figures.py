@@ -69,7 +69,9 @@ class Figure3Query(FigureQuery):
     beta0: StickAngle = math.pi / 2
     i_min: Index = Field(-4, description="First index i drawn.")
     i_max: Index = Field(
-        3, description="Last index i drawn (p_{−1−i} mirrors p_i for the vertical start)."
+        3,
+        description="Last index i drawn (p_{−1−i} mirrors p_i for the vertical start).",
+        json_schema_extra={"x-domain": "i_min <= i_max"},
     )
 
 
@@ -80,7 +82,11 @@ class Figure4Query(FigureQuery):
     d: HalfStep = 0.2
     beta0: StickAngle = math.pi / 2
     i_min: Index = Field(-4, description="First index i drawn.")
-    i_max: Index = Field(4, description="Last index i drawn.")
+    i_max: Index = Field(
+        4,
+        description="Last index i drawn.",
+        json_schema_extra={"x-domain": "i_min <= i_max"},
+    )
 
 
 class Figure5Query(FigureQuery):
@@ -90,14 +96,18 @@ class Figure5Query(FigureQuery):
     f1: ConformalNext = 1.5
     r: QuadStartHeight = None
     i_min: MeshIndex = Field(-4, description="First index i drawn (mesh rings and p).")
-    i_max: MeshIndex = Field(4, description="Last index i drawn (mesh rings and p).")
+    i_max: MeshIndex = Field(
+        4,
+        description="Last index i drawn (mesh rings and p).",
+        json_schema_extra={"x-domain": "i_min <= i_max"},
+    )
     columns: int | None = Field(
         None,
         ge=1,
         le=120,
         description="Quads drawn around the centre (default: as many as fit in one turn, at "
         "most 120). Their angle v is fixed by conformality: sin(v/2) = (f1 − f0)/(2√(f0·f1)).",
-        json_schema_extra={"x-domain": "1 <= columns <= 120"},
+        json_schema_extra={"x-domain": "1 <= columns <= 120, columns·v <= 2π"},
     )
 
 
@@ -109,7 +119,11 @@ class Figure6Query(FigureQuery):
     lam: HexWeight = 0.5
     r: HexStartHeight = None
     i_min: MeshIndex = Field(-4, description="First index i drawn (mesh and p).")
-    i_max: MeshIndex = Field(4, description="Last index i drawn (mesh and p).")
+    i_max: MeshIndex = Field(
+        4,
+        description="Last index i drawn (mesh and p).",
+        json_schema_extra={"x-domain": "i_min <= i_max"},
+    )
     m: int | None = Field(
         None,
         ge=2,
@@ -134,7 +148,11 @@ class Figure7Query(FigureQuery):
     h: StickLength = 1.0
     d: HalfStep = 0.2
     i_min: Index = Field(-4, description="First index i drawn.")
-    i_max: Index = Field(4, description="Last index i drawn.")
+    i_max: Index = Field(
+        4,
+        description="Last index i drawn.",
+        json_schema_extra={"x-domain": "i_min <= i_max"},
+    )
 
 
 def _integers(value: Any) -> Any:

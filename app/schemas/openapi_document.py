@@ -177,11 +177,12 @@ def selection_schema(schema: dict[str, Any], name: str, ids: list[str]) -> dict[
 
 
 #: A real parameter is 0 or at least ``SMALLEST_MAGNITUDE`` in magnitude (app.schemas.common):
-#: the same rule in JSON Schema, added to every number a request takes.
+#: the same rule in JSON Schema, added to every number a request takes. Each range names its type:
+#: an option without one is `unknown` to generated TypeScript (and `number | unknown` is `unknown`).
 MAGNITUDE: list[dict[str, Any]] = [
     {"const": 0},
-    {"minimum": SMALLEST_MAGNITUDE},
-    {"maximum": -SMALLEST_MAGNITUDE},
+    {"type": "number", "minimum": SMALLEST_MAGNITUDE},
+    {"type": "number", "maximum": -SMALLEST_MAGNITUDE},
 ]
 
 

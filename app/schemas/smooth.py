@@ -41,7 +41,13 @@ SampleStart = Annotated[
     Field(ge=-1e100, le=1e100, description="First sample abscissa (the leader's position)."),
 ]
 SampleEnd = Annotated[
-    float, Field(ge=-1e100, le=1e100, description="Last sample abscissa, > x_min.")
+    float,
+    Field(
+        ge=-1e100,
+        le=1e100,
+        description="Last sample abscissa, > x_min.",
+        json_schema_extra={"x-domain": "x_min < x_max"},
+    ),
 ]
 SampleCount = Annotated[
     int,

@@ -25,12 +25,13 @@ Layout: vertex (i, j) is number k·columns + j with k = i − i_min; the quad of
 step j is number k·steps + j, with corners (k, j), (k, j+1), (k+1, j+1), (k+1, j). A closed
 surface (steps = 2m, the default) has 2m columns, an open one steps + 1.
 
-Formats: `json`; `obj` (quads kept, geometry only); `ply` (binary little-endian, float64
-vertices, per-face float64 K, H, planarity); `glb` (glTF 2.0 binary, triangulated, float32, four
-vertices per face, attributes POSITION, NORMAL, `_K`, `_H`; three.js's GLTFLoader shows them as
-`geometry.attributes._k` and `._h`). Besides the parameters below, every parameter of the
-chosen discretization is accepted (see GET /discretizations). Mesh size (meridian vertices ×
-vertices around) is limited by DCOSH_MAX_MESH_VERTICES (default 10^6).
+Formats: `json`; `obj` (quads kept, geometry only); `ply` (ASCII, float64 vertices, per-face
+K, H, planarity); `vtu` (VTK XML unstructured grid, K, H and planarity as cell data); `glb`
+(glTF 2.0 binary, triangulated, float32, four vertices per face, attributes POSITION, NORMAL,
+`_K`, `_H`; three.js's GLTFLoader shows them as `geometry.attributes._k` and `._h`). Besides
+the parameters below, every parameter of the chosen discretization is accepted (see GET
+/discretizations). Mesh size (meridian vertices × vertices around) is limited by
+DCOSH_MAX_MESH_VERTICES (default 10^6).
 """
 
 
@@ -42,18 +43,26 @@ class SurfaceQuery(StrictModel):
         16, ge=1, le=1_000_000, description="Rotation step π/m of eq. (15); 2m steps close it."
     )
     steps: int | None = Field(
-        None, ge=1, le=2_000_000, description="Rotation steps, 1 <= steps <= 2m (default 2m)."
+        None,
+        ge=1,
+        le=2_000_000,
+        description="Rotation steps, 1 <= steps <= 2m (default 2m).",
+        json_schema_extra={"x-domain": "1 <= steps <= 2m"},
     )
     gauss_image: Literal["auto", "circumscribed"] = Field(
         "auto",
         description="Catenoid only: `auto` (the discretization's own Gauss image, else the "
-        "circumscribed one) or `circumscribed`.",
+        "circumscribed one) or `circumscribed`. The circumscribed one is built from p on "
+        "i_min − 1 .. i_max + 1: the discretization's parameters must allow those two indices "
+        "too.",
+        json_schema_extra={"x-domain": "p defined on i_min − 1 .. i_max + 1 (circumscribed)"},
     )
     format: Literal["json", "obj", "ply", "vtu", "glb"] = Field(
         "json",
         description="`json`; `obj` (quads, no per-face values); `ply` (ASCII, float64, K, H "
         "and planarity as face properties: meshio, trimesh, plyfile); `vtu` (VTK XML, "
-        "ParaView: K, H and planarity as cell data); `glb` (glTF binary, float32, for viewers).",
+        "ParaView: K, H and planarity as cell data); `glb` (glTF binary, float32, for viewers; "
+        "a mesh with values beyond float32's range, about 3.4e38, is refused).",
     )
     checks: str = Field(
         "all",

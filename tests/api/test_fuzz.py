@@ -23,6 +23,7 @@ import pytest
 import schemathesis
 from hypothesis import HealthCheck, settings
 from schemathesis.config import PositiveDataAcceptanceConfig
+from schemathesis.schemas import BaseSchema
 
 from app.main import create_app
 from app.settings import Settings
@@ -54,9 +55,13 @@ FUZZ_SETTINGS = Settings(
 #: up to the 20 s time limit each: for `make fuzz`, not for `make test`).
 LIMITS = os.environ.get("FUZZ_LIMITS", "tight")
 assert LIMITS in {"tight", "production"}, f"FUZZ_LIMITS is tight or production, not {LIMITS!r}"
-schema = schemathesis.openapi.from_asgi(
+schema: BaseSchema = schemathesis.openapi.from_asgi(
     "/openapi.json", create_app(Settings() if LIMITS == "production" else FUZZ_SETTINGS)
 )
+#: ``FUZZ_PATHS=regex``: only the operations whose path matches (a rerun after a fix).
+PATHS = os.environ.get("FUZZ_PATHS")
+if PATHS:
+    schema = schema.include(path_regex=PATHS)
 schema.config.generation.update(
     modes=[schemathesis.GenerationMode.POSITIVE, schemathesis.GenerationMode.NEGATIVE]
 )

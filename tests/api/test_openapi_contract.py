@@ -5,6 +5,7 @@ the settings, closed POST bodies, examples that fit their schemas. (`make contra
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 from typing import Any
 
@@ -216,6 +217,108 @@ def test_each_surface_path_documents_exactly_the_parameters_it_takes(client: Tes
     assert pseudo == ["catenoid", "catenoid-gauss-image"]
 
 
+def _parameter(path: str, name: str) -> dict[str, Any]:
+    found = [p for p in SPEC["paths"][path]["get"]["parameters"] if p["name"] == name]
+    assert len(found) == 1, (path, name)
+    return found[0]
+
+
+def test_a_surface_takes_the_companions_and_range_its_schema_declares(client: TestClient) -> None:
+    """Found by `make fuzz`: `companions=` (a string, so schema-valid) was refused on every
+    surface path, and i_max = i_min (valid for a polygon) is refused for a mesh."""
+    from app.registry import DISCRETIZATIONS
+
+    for identifier in DISCRETIZATIONS:
+        own = _parameter(f"/discretizations/{identifier}", "companions")["schema"]
+        for path in (f"/surfaces/{{surface_id}}/{identifier}",) + (
+            ("/surfaces/{surface_id}",) if identifier == "d4b" else ()
+        ):
+            schema = _parameter(path, "companions")["schema"]
+            assert {k: schema.get(k) for k in ("enum", "pattern")} == {
+                k: own.get(k) for k in ("enum", "pattern")
+            }, path
+            i_max = _parameter(path, "i_max")
+            assert i_max["schema"]["x-domain"] == "i_min + 1 <= i_max", path
+            assert "i_max >= i_min + 1" in i_max["description"], path
+    refused = client.get("/surfaces/catenoid?companions=")
+    assert refused.status_code == 422
+    pattern = _parameter("/surfaces/{surface_id}", "companions")["schema"]["pattern"]
+    assert re.fullmatch(pattern, "") is None and re.fullmatch(pattern, "tractrix,darboux")
+    assert client.get("/surfaces/catenoid?companions=tractrix,darboux&m=3").status_code == 200
+    # an unknown name, schema-invalid now, is refused as on /discretizations (it was ignored)
+    for unknown in (
+        client.get("/surfaces/catenoid/d4a?companions=xyz&m=3"),
+        client.post("/surfaces/catenoid/d1", json={"companions": "tractrix", "m": 3}),
+    ):
+        assert unknown.status_code == 422, unknown.text
+        assert unknown.json()["errors"][0]["parameter"] == "companions"
+    mesh = client.get("/surfaces/catenoid?i_min=2&i_max=2")
+    assert mesh.status_code == 422 and mesh.json()["errors"][0]["parameter"] == "i_max"
+
+
+def test_the_float64_resolution_bounds_stated_are_the_servers(client: TestClient) -> None:
+    """Found by `make fuzz`: D4b's text said d/h ≥ 1e-6 and D2a's a relative gap of 1e-6 while
+    the server refuses below 100·√ε ≈ 1.49e-6 and 1e-4; a value between was documented valid."""
+    from app.geometry.d2a.common import FLOAT64_MIN_GAP
+    from app.geometry.tolerances import RESOLUTION_MARGIN
+
+    d4b = SPEC["paths"]["/discretizations/d4b"]["get"]["description"]
+    assert "d/h ≥ 1.5e-6" in d4b
+    assert f"{RESOLUTION_MARGIN * (2.0**-52) ** 0.5:.2g}" == "1.5e-06"
+    assert client.get("/discretizations/d4b?d=1.4e-6&checks=none").status_code == 422
+    assert client.get("/discretizations/d4b?d=1.5e-6&checks=none").status_code == 200
+    for path in ("/discretizations/d2a-quad", "/discretizations/d2a-hex"):
+        assert "a relative 1e-4" in SPEC["paths"][path]["get"]["description"], path
+    assert FLOAT64_MIN_GAP == 1e-4
+    assert client.get("/discretizations/d2a-quad?f0=1&f1=1.00009").status_code == 422
+    assert client.get("/discretizations/d2a-quad?f0=1&f1=1.00011&checks=none").status_code == 200
+
+
+def test_a_bound_of_one_parameter_is_in_its_schema(client: TestClient) -> None:
+    """Found by `make fuzz`: theorem-11's `i_max >= 1` was only an x-domain (schema minimum
+    -10^6), so schema-valid values were refused; a bound on one parameter belongs in the schema."""
+    i_max = _parameter("/convergence/theorem-11", "i_max")["schema"]
+    assert i_max["minimum"] == 1 and i_max["x-domain"] == "i_max >= 1"
+    refused = client.get("/convergence/theorem-11?i_max=0")
+    assert refused.status_code == 422 and refused.json()["errors"][0]["parameter"] == "i_max"
+
+
+def test_every_explorer_module_is_type_checked() -> None:
+    """`make contract` compiles every module of the explorer with tsc --strict --checkJs against
+    the generated types: a new module, or a check switched off, fails here."""
+    explorer = ROOT / "app" / "static" / "explorer"
+    config = json.loads((ROOT / "tools" / "contract" / "tsconfig.explorer.json").read_text())
+    assert config["compilerOptions"]["strict"] and config["compilerOptions"]["checkJs"]
+    listed = {Path(f).name for f in config["files"] if f.startswith("../../app/static/explorer/")}
+    assert listed == {p.name for p in explorer.glob("*.js")}
+    for module in explorer.glob("*.js"):
+        text = module.read_text(encoding="utf-8")
+        assert "// @ts-check" in text, module.name
+        assert "@ts-nocheck" not in text and "@ts-ignore" not in text, module.name
+
+
+def test_every_schema_option_has_a_type() -> None:
+    """A JSON Schema option without a `type` (say `{"minimum": 1e-100}` under `anyOf`) is
+    `unknown` for openapi-typescript, and `number | unknown` is `unknown`: a typed client could
+    then send any value. Every option of every parameter and body field names its type."""
+
+    def untyped(schema: Any, where: str) -> list[str]:
+        found: list[str] = []
+        if isinstance(schema, dict):
+            for option in schema.get("anyOf", []):
+                if not ({"type", "$ref", "const", "enum", "anyOf"} & option.keys()):
+                    found.append(f"{where}: {option}")
+            for key, value in schema.items():
+                found += untyped(value, f"{where}.{key}")
+        elif isinstance(schema, list):
+            for k, value in enumerate(schema):
+                found += untyped(value, f"{where}[{k}]")
+        return found
+
+    assert untyped(SPEC["paths"], "paths") == []
+    assert untyped(SCHEMAS, "schemas") == []
+
+
 def test_every_real_parameter_documents_and_gets_the_smallest_magnitude(client: TestClient) -> None:
     """The schema's rule (0 or at least 1e-100 in magnitude) is the server's, on every endpoint."""
     checked = 0
@@ -229,7 +332,12 @@ def test_every_real_parameter_documents_and_gets_the_smallest_magnitude(client: 
             if not any(s.get("type") == "number" for s in numbers):
                 continue
             assert any(
-                s.get("anyOf") == [{"const": 0}, {"minimum": 1e-100}, {"maximum": -1e-100}]
+                s.get("anyOf")
+                == [
+                    {"const": 0},
+                    {"type": "number", "minimum": 1e-100},
+                    {"type": "number", "maximum": -1e-100},
+                ]
                 for s in numbers
             ), (path, parameter["name"])
             if "{" in url:

@@ -2,10 +2,65 @@
 // /figures, /smooth/{catenary,tractrix} and /surfaces); it never loads the OpenAPI document.
 // Every value from the API is inserted as text (textContent), never as HTML.
 
+// @ts-check
+// Type-checked by `make contract` (tsc --strict --checkJs, tools/contract/tsconfig.explorer.json)
+// against the types generated from the OpenAPI document.
+
 import { plotSVG, widthFor, PALETTE } from './plot.js';
 import { Animation } from './animation.js';
 
-const $ = (id) => document.getElementById(id);
+/** @typedef {import('../../../tools/contract/api-types').components['schemas']} Schemas */
+/** A curve response, float64 or mp. @typedef {Schemas['CurveResponse'] | Schemas['CurveResponseMP']} Curve */
+/** @typedef {Schemas['DiscretizationEntry']} Entry */
+/** @typedef {Schemas['ParameterInfo']} Parameter */
+/** @typedef {Schemas['SurfaceEntry']} Surface */
+/** @typedef {Schemas['FigureEntry']} Figure */
+/** @typedef {Schemas['StatementInfo']} Statement */
+/** What the page shows of a problem (a fetched problem+json, or one made up for a bare status). */
+/** @typedef {Pick<Schemas['Problem'], 'title' | 'detail' | 'errors'>} ProblemText */
+/** @typedef {import('./plot.js').Point} Point */
+/** @typedef {import('./plot.js').Series} Series */
+/** A drawn overlay (another discretization, a smooth curve). @typedef {{label: string, points: Point[]}} Overlay */
+/** KaTeX's global, as far as the explorer uses it. */
+/** @typedef {{render: (tex: string, node: HTMLElement, options: Record<string, unknown>) => void}} Katex */
+/** A form field that differs from its default: name, value as typed, kind. */
+/** @typedef {[name: string, value: string, kind: string]} Changed */
+/** A form field (the sliders excepted). @typedef {HTMLInputElement | HTMLSelectElement | HTMLTextAreaElement} Field */
+/**
+ * The part of a parameter's JSON Schema (`json_schema` in GET /discretizations) the form reads.
+ * @typedef {{type?: string, enum?: (string | number)[], anyOf?: FieldSchema[], nullable?: boolean,
+ *   minimum?: number, maximum?: number, exclusiveMinimum?: number, exclusiveMaximum?: number}} FieldSchema
+ */
+
+/** An element of the page, which is always there. @param {string} id @returns {HTMLElement} */
+const $ = (id) => {
+  const node = document.getElementById(id);
+  if (!node) throw new Error(`#${id} is not on the page`);
+  return node;
+};
+/** An element that may be absent (a field of another discretization). @param {string} id */
+const maybe = (id) => document.getElementById(id);
+/** @param {string} id */
+const $input = (id) => /** @type {HTMLInputElement} */ ($(id));
+/** @param {string} id */
+const $select = (id) => /** @type {HTMLSelectElement} */ ($(id));
+/** @param {string} id */
+const $button = (id) => /** @type {HTMLButtonElement} */ ($(id));
+/** @param {string} id */
+const $tbody = (id) => /** @type {HTMLTableSectionElement} */ ($(id).querySelector('tbody'));
+/** A property of what was thrown (an Error, a DOMException, anything). @param {unknown} error @param {string} key */
+const thrown = (error, key) => (typeof error === 'object' && error !== null ? /** @type {Record<string, unknown>} */ (error)[key] : undefined);
+/** @param {unknown} error */
+const messageOf = (error) => String(thrown(error, 'message'));
+/** @param {number | undefined} value @returns {value is number} */
+const finite = (value) => Number.isFinite(value);
+
+/**
+ * @type {{catalog: Entry[], entry: Entry | null, curve: Curve | null,
+ *   controller: AbortController | null, hidden: Set<string>, smooth: Record<string, Overlay>,
+ *   surfaces: Surface[], figures: Figure[], katex: Katex | null, compare: Record<string, Overlay>,
+ *   claimTex: Map<string, string>, errataTex: Map<string, [string, string]>}}
+ */
 const state = {
   catalog: [],
   entry: null,
@@ -21,6 +76,19 @@ const state = {
   errataTex: new Map(),
 };
 
+/** The discretization shown (set by selectDiscretization before anything reads it). @returns {Entry} */
+function currentEntry() {
+  if (!state.entry) throw new Error('no discretization is selected');
+  return state.entry;
+}
+
+/**
+ * @template {keyof HTMLElementTagNameMap} K
+ * @param {K} tag
+ * @param {Record<string, string | number | boolean | null | undefined>} [attributes]
+ * @param {string | null} [text]
+ * @returns {HTMLElementTagNameMap[K]}
+ */
 function html(tag, attributes = {}, text = null) {
   const node = document.createElement(tag);
   for (const [key, value] of Object.entries(attributes)) {
@@ -33,6 +101,7 @@ function html(tag, attributes = {}, text = null) {
 
 // TeX from the API typeset by KaTeX (vendored, loaded on first use); the plain text stands in
 // until KaTeX has loaded, and for good if it cannot be.
+/** @param {string | null | undefined} tex @param {string} text @param {boolean} [display] */
 function math(tex, text, display = false) {
   const node = html('span', { class: display ? 'math display' : 'math' });
   if (tex && state.katex) {
@@ -41,7 +110,7 @@ function math(tex, text, display = false) {
       node.dataset.tex = tex;
       return node;
     } catch (error) {
-      node.dataset.texError = String(error.message || error);
+      node.dataset.texError = String(thrown(error, 'message') || error);
     }
   }
   node.textContent = text;
@@ -50,6 +119,7 @@ function math(tex, text, display = false) {
 
 // KaTeX's minified build (a classic script from this origin, as the page's CSP allows): half the
 // size of its ES module.
+/** @param {string} src @returns {Promise<unknown>} */
 function loadScript(src) {
   return new Promise((resolve, reject) => {
     const script = html('script', { src });
@@ -62,7 +132,7 @@ function loadScript(src) {
 async function loadKatex() {
   try {
     await loadScript('/static/vendor/katex/dist/katex.min.js');
-    state.katex = window.katex || null;
+    state.katex = /** @type {Window & {katex?: Katex}} */ (window).katex || null;
   } catch {
     state.katex = null; // not built (make assets): the plain text stays
   }
@@ -70,6 +140,7 @@ async function loadKatex() {
 
 // GET /theorems carries each statement's claim and each erratum as TeX.
 async function loadStatementTex() {
+  /** @type {Statement[]} */
   let statements = [];
   try { statements = await getJSON('/theorems'); } catch { return; }
   for (const statement of statements) {
@@ -78,6 +149,12 @@ async function loadStatementTex() {
   }
 }
 
+// The answer's type is the caller's (the generated type of the endpoint it asks).
+/**
+ * @template T
+ * @param {string} url
+ * @returns {Promise<T>}
+ */
 async function getJSON(url) {
   const response = await fetch(url, { headers: { Accept: 'application/json' } });
   if (!response.ok) throw new Error(`${url}: HTTP ${response.status}`);
@@ -86,8 +163,9 @@ async function getJSON(url) {
 
 // ---- the parameter form, built from the catalog ------------------------------------------------
 
+/** @param {Parameter} parameter @returns {FieldSchema} */
 function schemaOf(parameter) {
-  const schema = parameter.json_schema || {};
+  const schema = /** @type {FieldSchema} */ (parameter.json_schema || {});
   if (schema.anyOf) {
     const concrete = schema.anyOf.find((s) => s.type !== 'null') || {};
     return { ...concrete, ...schema, anyOf: undefined, nullable: true };
@@ -95,6 +173,7 @@ function schemaOf(parameter) {
   return schema;
 }
 
+/** @param {Parameter} parameter */
 function defaultText(parameter) {
   const value = parameter.default;
   if (value === null || value === undefined) return '';
@@ -102,6 +181,7 @@ function defaultText(parameter) {
   return String(value);
 }
 
+/** @param {Parameter} parameter */
 function fieldKind(parameter) {
   const schema = schemaOf(parameter);
   if (schema.enum) return 'enum';
@@ -112,6 +192,7 @@ function fieldKind(parameter) {
   return 'text';
 }
 
+/** @param {Parameter} parameter @param {string} [initial] the value from the shared URL */
 function buildField(parameter, initial) {
   const name = parameter.name;
   const kind = fieldKind(parameter);
@@ -121,14 +202,17 @@ function buildField(parameter, initial) {
   if (parameter.domain) help.append(math(parameter.domain_tex, parameter.domain), ' — ');
   help.append(parameter.description || '');
   const error = html('p', { class: 'field-error', id: `error-${name}`, hidden: true, role: 'alert' });
+  /** @type {Field} */
   let input;
   if (kind === 'enum') {
-    input = html('select', { id, name });
-    for (const option of schemaOf(parameter).enum) input.append(html('option', { value: option }, String(option)));
-    input.value = initial ?? defaultText(parameter);
+    const select = html('select', { id, name });
+    for (const option of schemaOf(parameter).enum ?? []) select.append(html('option', { value: option }, String(option)));
+    select.value = initial ?? defaultText(parameter);
+    input = select;
   } else if (kind === 'boolean') {
-    input = html('input', { id, name, type: 'checkbox' });
-    input.checked = initial !== undefined ? initial === 'true' : parameter.default === true;
+    const box = html('input', { id, name, type: 'checkbox' });
+    box.checked = initial !== undefined ? initial === 'true' : parameter.default === true;
+    input = box;
   } else if (kind === 'array') {
     input = html('textarea', { id, name, rows: 3, placeholder: 'numbers separated by commas' });
     input.value = initial ?? defaultText(parameter);
@@ -173,6 +257,7 @@ function buildField(parameter, initial) {
   return wrap;
 }
 
+/** @param {Entry} entry @param {URLSearchParams} values */
 function buildForm(entry, values) {
   const paper = $('paper-parameters');
   const common = $('common-parameters');
@@ -188,16 +273,18 @@ function buildForm(entry, values) {
   $('reference').textContent = `Paper: ${entry.reference}`;
 }
 
+/** @returns {Field[]} */
 function inputs() {
-  return [...document.querySelectorAll('#form [data-parameter] input:not([type="range"]), #form [data-parameter] select, #form [data-parameter] textarea')];
+  return [.../** @type {NodeListOf<Field>} */ (document.querySelectorAll('#form [data-parameter] input:not([type="range"]), #form [data-parameter] select, #form [data-parameter] textarea'))];
 }
 
 // A slider's range for a number of the paper: the schema's bounds where they are close, else a
 // range around the default (the service refuses what the domain excludes, and says so).
+/** @param {Parameter} parameter @returns {{min: number, max: number, step: number} | null} */
 function sliderRange(parameter) {
   const schema = schemaOf(parameter);
   const value = Number(parameter.default);
-  if (parameter.kind !== 'paper' || !['number', 'integer'].includes(schema.type)) return null;
+  if (parameter.kind !== 'paper' || !['number', 'integer'].includes(schema.type ?? '')) return null;
   if (parameter.default === null || parameter.default === undefined || !Number.isFinite(value)) return null;
   const lowBound = schema.minimum ?? schema.exclusiveMinimum;
   const highBound = schema.maximum ?? schema.exclusiveMaximum;
@@ -205,9 +292,9 @@ function sliderRange(parameter) {
     return { min: Math.max(lowBound ?? -Infinity, value - 40), max: Math.min(highBound ?? Infinity, value + 40), step: 1 };
   }
   let min, max;
-  if (Number.isFinite(lowBound) && Number.isFinite(highBound) && highBound - lowBound <= 1e3) {
+  if (finite(lowBound) && finite(highBound) && highBound - lowBound <= 1e3) {
     [min, max] = [lowBound, highBound];
-  } else if (Number.isFinite(lowBound) && lowBound >= 0 && lowBound < value) {
+  } else if (finite(lowBound) && lowBound >= 0 && lowBound < value) {
     [min, max] = [lowBound, Math.max(10 * value, lowBound + 1)];
   } else {
     const spread = Math.max(4 * Math.abs(value), 1);
@@ -220,6 +307,7 @@ function sliderRange(parameter) {
   return { min, max, step };
 }
 
+/** @param {number | string} value @param {number} step */
 function sliderText(value, step) {
   const decimals = Math.max(0, -Math.floor(Math.log10(step)) + 1);
   return String(Number(Number(value).toFixed(decimals)));
@@ -238,21 +326,30 @@ async function liveCompute() {
 }
 
 // The parameters that differ from their defaults (what the request and the shared URL carry).
+/** @returns {Changed[]} */
 function changedValues() {
+  /** @type {Changed[]} */
   const values = [];
   for (const input of inputs()) {
-    const value = input.dataset.kind === 'boolean' ? String(input.checked) : input.value.trim();
+    const value = input.dataset.kind === 'boolean' ? String(/** @type {HTMLInputElement} */ (input).checked) : input.value.trim();
     if (value === '' || value === input.dataset.default) continue;
-    values.push([input.name, value, input.dataset.kind]);
+    values.push([input.name, value, input.dataset.kind ?? 'text']);
   }
   return values;
 }
 
+/**
+ * The request for the form's values: a GET, or a POST with a JSON body when a list is given.
+ * @param {Changed[]} values
+ * @returns {{method: 'GET' | 'POST', url: string, query: URLSearchParams,
+ *   body?: Record<string, string | number | boolean | number[]>}}
+ */
 function requestFor(values) {
-  const id = state.entry.id;
+  const id = currentEntry().id;
   const needsBody = values.some(([, , kind]) => kind === 'array');
   const query = new URLSearchParams(values.filter(([, , kind]) => kind !== 'array').map(([n, v]) => [n, v]));
   if (!needsBody) return { method: 'GET', url: `/discretizations/${id}?${query}`, query };
+  /** @type {Record<string, string | number | boolean | number[]>} */
   const body = {};
   for (const [name, value, kind] of values) {
     if (kind === 'array') body[name] = value.split(/[\s,;]+/).filter(Boolean).map(Number);
@@ -266,21 +363,23 @@ function requestFor(values) {
 // ---- errors from the API, shown by the field they name ----------------------------------------
 
 function clearErrors() {
-  for (const node of document.querySelectorAll('.field-error')) { node.hidden = true; node.textContent = ''; }
+  for (const node of /** @type {NodeListOf<HTMLElement>} */ (document.querySelectorAll('.field-error'))) { node.hidden = true; node.textContent = ''; }
   for (const input of inputs()) input.removeAttribute('aria-invalid');
   $('form-error').hidden = true;
   $('form-error').textContent = '';
 }
 
+/** @param {ProblemText} problem @returns {number} how many errors were placed by their field */
 function showProblem(problem) {
   let placed = 0;
+  /** @type {string[]} */
   const unplaced = [];
   for (const error of problem.errors || []) {
     // "d", "s.3" (an entry of a list), "d4b.h" (a prefixed name): the first part that is a field
     const parts = String(error.parameter || '').split('.');
-    const name = parts.find((part) => $(`param-${part}`)) || parts[0];
-    const box = $(`error-${name}`);
-    const input = $(`param-${name}`);
+    const name = parts.find((part) => maybe(`param-${part}`)) || parts[0];
+    const box = maybe(`error-${name}`);
+    const input = maybe(`param-${name}`);
     const received = error.value === null || error.value === undefined ? '' : ` (received ${JSON.stringify(error.value)})`;
     const message = `${error.constraint}${received}`;
     if (box && input) {
@@ -302,11 +401,14 @@ function showProblem(problem) {
 
 // ---- computing and drawing -------------------------------------------------------------------
 
+/** @param {ReadonlyArray<readonly [number | string, number | string]>} points @returns {Point[]} */
 function numbers(points) {
   return points.map(([x, y]) => [Number(x), Number(y)]);
 }
 
+/** The polygon p, its companions, the compared polygons and the smooth curves. @param {Curve} curve */
 function curveSeries(curve) {
+  /** @type {Series[]} */
   const series = [{ name: 'p', label: 'p — the discrete hyperbolic cosine', points: numbers(curve.vertices), color: PALETTE[0], width: 2 }];
   let k = 1;
   for (const [name, polyline] of Object.entries(curve.companions || {})) {
@@ -350,6 +452,7 @@ function drawPlot() {
   }
 }
 
+/** @param {number | string | null | undefined} value */
 function formatNumber(value) {
   if (value === null || value === undefined) return '—';
   if (typeof value === 'string') return value;
@@ -357,8 +460,9 @@ function formatNumber(value) {
   return Math.abs(value) < 1e-3 || Math.abs(value) >= 1e6 ? value.toExponential(2) : value.toPrecision(4);
 }
 
+/** @param {Curve} curve */
 function drawChecks(curve) {
-  const body = $('checks-table').querySelector('tbody');
+  const body = $tbody('checks-table');
   body.replaceChildren();
   let holds = 0, fails = 0, na = 0;
   for (const check of curve.checks) {
@@ -367,7 +471,7 @@ function drawChecks(curve) {
     statement.append(html('strong', {}, check.id), html('br'), html('span', {}, check.reference));
     const tex = state.claimTex.get(check.id);
     if (tex) statement.append(html('div', { class: 'claim-tex' }, null));
-    if (tex) statement.lastChild.append(math(tex, ''));
+    if (tex) /** @type {HTMLElement} */ (statement.lastChild).append(math(tex, ''));
     statement.append(html('div', { class: 'claim' }, check.claim));
     if (check.note) statement.append(html('div', { class: 'claim' }, `Note: ${check.note}`));
     const verdict = check.holds === true ? ['holds', '✓ holds'] : check.holds === false ? ['fails', '✗ fails'] : ['na', 'n/a'];
@@ -393,12 +497,12 @@ function drawChecks(curve) {
   $('checks-summary').textContent = `${holds} hold, ${fails} fail, ${na} not applicable (${curve.precision.mode}, ${curve.precision.digits} digits).`;
   const constants = $('constants');
   constants.replaceChildren();
-  const described = state.entry.constants || {};
+  const described = currentEntry().constants || {};
   for (const [name, value] of Object.entries(curve.constants || {})) {
     const dd = html('dd', {}, String(value));
     if (described[name]) dd.append(` — ${described[name]}`);
     const dt = html('dt', { title: described[name] || '' }, name);
-    const tex = state.entry.constants_tex?.[name];
+    const tex = currentEntry().constants_tex?.[name];
     if (tex) dt.append(html('br'), math(tex, ''));
     constants.append(dt, dd);
   }
@@ -414,19 +518,20 @@ function getQuery() {
 function updateDownloads() {
   const list = $('downloads');
   list.replaceChildren();
-  const id = state.entry.id;
+  const id = currentEntry().id;
   for (const format of ['json', 'csv', 'svg']) {
     const query = getQuery();
     query.set('format', format);
     const a = html('a', { href: `/discretizations/${id}?${query}`, download: `${id}.${format}`, 'data-format': format }, `${format.toUpperCase()} of this curve`);
     list.append(html('li', {}, null));
-    list.lastChild.append(a);
+    /** @type {HTMLElement} */ (list.lastChild).append(a);
   }
 }
 
 // Nothing from a previous answer stays on the page once the parameters shown have no answer:
 // the plot is marked stale, and the checks, constants, downloads and figures are emptied with a
 // sentence saying why (what is shown always belongs to the parameters shown).
+/** @param {string} reason */
 function clearResult(reason) {
   state.curve = null;
   state.smooth = {};
@@ -435,7 +540,7 @@ function clearResult(reason) {
   animation.update(null, getJSON); // no frames of the refused parameters' predecessor
   $('plot').classList.add('stale');
   $('plot').setAttribute('aria-describedby', 'status');
-  $('checks-table').querySelector('tbody').replaceChildren();
+  $tbody('checks-table').replaceChildren();
   $('checks-summary').textContent = `No checks: ${reason}`;
   $('constants').replaceChildren();
   const downloads = $('downloads');
@@ -448,7 +553,7 @@ function clearResult(reason) {
 }
 
 function shareURL() {
-  const query = new URLSearchParams([['id', state.entry.id], ...changedValues().map(([n, v]) => [n, v])]);
+  const query = new URLSearchParams([['id', currentEntry().id], ...changedValues().map(([n, v]) => [n, v])]);
   return `${location.pathname}?${query}`;
 }
 
@@ -473,8 +578,8 @@ async function compute() {
       signal: controller.signal,
     });
   } catch (error) {
-    if (error.name === 'AbortError') return;
-    $('status').textContent = `The service did not answer: ${error.message}`;
+    if (thrown(error, 'name') === 'AbortError') return;
+    $('status').textContent = `The service did not answer: ${messageOf(error)}`;
     clearResult('the service did not answer.');
     document.body.dataset.state = 'error';
     return;
@@ -482,6 +587,7 @@ async function compute() {
   if (controller !== state.controller) return;
   history.replaceState(null, '', shareURL());
   if (!response.ok) {
+    /** @type {ProblemText} */
     let problem = { title: `HTTP ${response.status}`, detail: '', errors: [] };
     try { problem = await response.json(); } catch { /* not JSON */ }
     const placed = showProblem(problem);
@@ -492,9 +598,10 @@ async function compute() {
     document.body.dataset.state = 'error';
     return;
   }
+  /** @type {Curve} */
   let curve;
   try { curve = await response.json(); } catch (error) {
-    $('status').textContent = `The answer could not be read: ${error.message}`;
+    $('status').textContent = `The answer could not be read: ${messageOf(error)}`;
     clearResult('the answer could not be read.');
     document.body.dataset.state = 'error';
     return;
@@ -525,13 +632,18 @@ async function compute() {
 
 const COMPARE_COLOURS = ['#7B3294', '#A6611A', '#018571', '#D01C8B'];
 
+/** @param {Curve} curve @param {number} index @returns {Point | null} */
 function vertexAt(curve, index) {
   const k = curve.indices.indexOf(index);
-  return k < 0 ? null : curve.vertices[k].map(Number);
+  return k < 0 ? null : [Number(curve.vertices[k][0]), Number(curve.vertices[k][1])];
 }
 
 // The request that should redraw this polygon as (D1) or (D3), or null when nothing matches:
 // (D1) from p_0, p_1 and its constant; (D3) from p_0 and its constant (both branches tried).
+/**
+ * @param {string} target @param {Curve} curve
+ * @returns {{text: string, shift: number, queries: URLSearchParams[]} | null}
+ */
 function matchedRequests(target, curve) {
   const p0 = vertexAt(curve, 0), p1 = vertexAt(curve, 1);
   const range = [['i_min', String(curve.indices[0])], ['i_max', String(curve.indices[curve.indices.length - 1])]];
@@ -546,31 +658,41 @@ function matchedRequests(target, curve) {
   return null;
 }
 
+/** @param {Point[]} a @param {Point[]} b */
 function distance(a, b) {
   if (a.length !== b.length) return Infinity;
   return Math.max(...a.map(([x, y], k) => Math.hypot(x - b[k][0], y - b[k][1])));
 }
 
+// The closest of the matched requests' answers is drawn; one refused (a D3 branch) does not
+// hide another's answer.
+/** @param {Curve} curve */
 async function loadCompare(curve) {
   state.compare = {};
-  const chosen = [...document.querySelectorAll('#compare input:checked')].map((box) => box.value);
+  const chosen = [.../** @type {NodeListOf<HTMLInputElement>} */ (document.querySelectorAll('#compare input:checked'))].map((box) => box.value);
+  /** @type {string[]} */
   const notes = [];
   for (const id of chosen) {
     const matched = matchedRequests(id, curve);
     const queries = matched ? matched.queries : [new URLSearchParams()];
+    /** @type {{points: Point[], gap: number, query: URLSearchParams} | null} */
     let best = null;
+    /** @type {string | null} */
+    let failure = null;
     for (const query of queries) {
       try {
         // an overlay draws the polygon alone: nothing else is computed for it (issue 12)
+        /** @type {Curve} */
         const body = await getJSON(`/discretizations/${id}?${query}&checks=none&companions=none`);
+        /** @type {Point[]} */
         const points = numbers(body.vertices).map(([x, y]) => [x + (matched ? matched.shift : 0), y]);
         const gap = distance(points, numbers(curve.vertices));
         if (!best || gap < best.gap) best = { points, gap, query };
       } catch (error) {
-        if (!best) best = { error: error.message };
+        failure ??= messageOf(error);
       }
     }
-    if (!best || best.error) { notes.push(`${id}: not drawn (${best ? best.error : 'no answer'})`); continue; }
+    if (!best) { notes.push(`${id}: not drawn (${failure ?? 'no answer'})`); continue; }
     const how = matched ? `${matched.text}${matched.queries.length > 1 ? `, branch=${best.query.get('branch')}` : ''}` : 'its own defaults';
     state.compare[`compare-${id}`] = { label: `${id} with ${how}`, points: best.points };
     const same = matched && best.gap <= 1e-9 * Math.max(1, ...curve.vertices.map(([, y]) => Math.abs(Number(y))));
@@ -583,7 +705,7 @@ function setupCompare() {
   const box = $('compare');
   for (const node of [...box.children]) if (node.tagName !== 'LEGEND') node.remove();
   for (const entry of state.catalog) {
-    if (entry.id === state.entry.id) continue;
+    if (entry.id === currentEntry().id) continue;
     const id = `compare-${entry.id}`;
     const label = html('label', { for: id });
     const input = html('input', { type: 'checkbox', id, value: entry.id });
@@ -596,50 +718,55 @@ function setupCompare() {
 
 // ---- smooth references (/smooth/catenary, /smooth/tractrix), when the service has them ---------
 
+/** @param {Curve} body GET /smooth/{catenary,tractrix} @returns {Point[] | null} */
 function smoothPoints(body) {
   if (Array.isArray(body.vertices)) return numbers(body.vertices);
-  if (Array.isArray(body.points)) return numbers(body.points);
-  if (Array.isArray(body.x) && Array.isArray(body.y)) return body.x.map((x, k) => [Number(x), Number(body.y[k])]);
   return null;
 }
 
 // A polygon below the x-axis (D2a: p_i^y < 0) is compared with the mirrored catenary −h·cosh(x/h).
+/** @param {Curve} curve */
 function mirrored(curve) {
   return curve.vertices.every(([, y]) => Number(y) < 0);
 }
 
+/** @param {Curve} curve */
 function overlayH(curve) {
-  const typed = Number($('overlay-h').value);
-  if ($('overlay-h').value.trim() !== '' && Number.isFinite(typed) && typed > 0) return typed;
+  const typed = Number($input('overlay-h').value);
+  if ($input('overlay-h').value.trim() !== '' && Number.isFinite(typed) && typed > 0) return typed;
   if (typeof curve.parameters.h === 'number') return curve.parameters.h;
   if (curve.constants.d3 !== undefined) return Number(Number(curve.constants.d3).toPrecision(12)); // c of (D3) is h for h·cosh(x/h)
   const lowest = Math.min(...curve.vertices.map(([, y]) => Math.abs(Number(y))));
   return Number(lowest.toPrecision(6)); // the height at the vertex of h·cosh(x/h)
 }
 
+/** @param {Curve} curve */
 async function loadSmooth(curve) {
   state.smooth = {};
   const flip = mirrored(curve);
+  /** @type {[string, string, boolean][]} */
   const wanted = [['catenary', flip ? 'mirrored smooth catenary −h·cosh(x/h)' : 'smooth catenary h·cosh(x/h)', true]];
   if (curve.companions?.tractrix) wanted.push(['tractrix', 'smooth tractrix', false]);
   const available = wanted;
   $('overlay').hidden = false;
   const h = overlayH(curve);
-  if ($('overlay-h').value.trim() === '') $('overlay-h').placeholder = String(h);
+  if ($input('overlay-h').value.trim() === '') $input('overlay-h').placeholder = String(h);
   const xs = curve.vertices.map(([x]) => Number(x));
   const [xMin, xMax] = [Math.min(...xs), Math.max(...xs)];
+  /** @type {string[]} */
   const notes = [];
   for (const [name, label] of available) {
     // GET /smooth/{catenary,tractrix}: h and the sampled range x_min … x_max, count samples
     const query = new URLSearchParams([['h', String(h)], ['x_min', String(xMin)], ['x_max', String(xMax)], ['count', '200']]);
     try {
+      /** @type {Curve} */
       const body = await getJSON(`/smooth/${name}?${query}`);
       let points = smoothPoints(body);
       if (points && flip) points = points.map(([x, y]) => [x, -y]);
       if (points) state.smooth[`smooth-${name}`] = { label: `${label}, h = ${h}`, points };
       else notes.push(`${name}: unexpected response shape`);
     } catch (error) {
-      notes.push(`${name}: ${error.message}`);
+      notes.push(`${name}: ${messageOf(error)}`);
     }
   }
   const how = flip ? ' and mirrored in the x-axis, as this polygon lies below it' : '';
@@ -650,8 +777,9 @@ async function loadSmooth(curve) {
 
 // GET /surfaces lists the meshes; each takes the surface's own parameters, the discretization
 // giving the meridian and that discretization's parameters (the form's).
+/** @param {Surface} surface @param {string} format */
 function surfaceURL(surface, format) {
-  const query = new URLSearchParams([['discretization', state.entry.id]]);
+  const query = new URLSearchParams([['discretization', currentEntry().id]]);
   for (const [name, value] of getQuery()) if (!['format', 'detail'].includes(name)) query.set(name, value);
   query.set('format', format);
   return `${surface.url}?${query}`;
@@ -659,7 +787,7 @@ function surfaceURL(surface, format) {
 
 async function setupSurfaces() {
   try { state.surfaces = await getJSON('/surfaces'); } catch { state.surfaces = []; }
-  const select = $('surface');
+  const select = $select('surface');
   select.replaceChildren();
   if (!state.surfaces.length) {
     $('surface-status').textContent = 'The 3D view needs GET /surfaces, which this service does not offer.';
@@ -667,7 +795,7 @@ async function setupSurfaces() {
   }
   for (const surface of state.surfaces) select.append(html('option', { value: surface.id }, surface.id));
   select.disabled = false;
-  $('show-3d').disabled = false;
+  $button('show-3d').disabled = false;
   $('surface-status').textContent = `${state.surfaces.length} surface${state.surfaces.length === 1 ? '' : 's'} available.`;
   select.addEventListener('change', updateSurfaceDownloads);
   updateSurfaceDownloads();
@@ -676,7 +804,7 @@ async function setupSurfaces() {
 function updateSurfaceDownloads() {
   const list = $('surface-downloads');
   list.replaceChildren();
-  const surface = state.surfaces.find((s) => s.id === $('surface').value);
+  const surface = state.surfaces.find((s) => s.id === $select('surface').value);
   if (!surface) return;
   for (const format of ['json', 'obj', 'ply', 'glb']) {
     const li = html('li');
@@ -686,7 +814,7 @@ function updateSurfaceDownloads() {
 }
 
 async function show3D() {
-  const surface = state.surfaces.find((s) => s.id === $('surface').value);
+  const surface = state.surfaces.find((s) => s.id === $select('surface').value);
   if (!surface) return;
   const status = $('surface-status');
   status.textContent = 'Loading the 3D view…';
@@ -694,11 +822,12 @@ async function show3D() {
   try {
     view = await import('./view3d.js');
   } catch (error) {
-    status.textContent = `The 3D view is unavailable: three.js was not built into /static/vendor (run make assets). ${error.message}`;
+    status.textContent = `The 3D view is unavailable: three.js was not built into /static/vendor (run make assets). ${messageOf(error)}`;
     return;
   }
   const response = await fetch(surfaceURL(surface, 'glb'));
   if (!response.ok) {
+    /** @type {Partial<ProblemText>} */
     let problem = {};
     try { problem = await response.json(); } catch { /* not JSON */ }
     // no stale picture under a refusal: the old surface and its legend go
@@ -706,7 +835,7 @@ async function show3D() {
     $('view3d-keys').hidden = true;
     $('colour-legend').textContent = '';
     const named = (problem.errors || []).map((e) => `${e.parameter}: ${e.constraint}`).join('; ');
-    status.textContent = `No ${surface.id} for ${state.entry.id}: ${named || problem.detail || `HTTP ${response.status}`}.`;
+    status.textContent = `No ${surface.id} for ${currentEntry().id}: ${named || problem.detail || `HTTP ${response.status}`}.`;
     document.body.dataset.surface = 'error';
     return;
   }
@@ -714,13 +843,13 @@ async function show3D() {
   container.hidden = false;
   $('view3d-keys').hidden = false;
   try {
-    const info = await view.showSurface(container, await response.arrayBuffer(), $('colour-by').value);
+    const info = await view.showSurface(container, await response.arrayBuffer(), $select('colour-by').value);
     $('colour-legend').textContent = info.legend;
     status.textContent = `${surface.id}: ${info.triangles} triangles. Drag or use the arrow keys to rotate.`;
     document.body.dataset.surface = 'ready';
     updateSurfaceDownloads();
   } catch (error) {
-    status.textContent = `The surface could not be drawn: ${error.message}`;
+    status.textContent = `The surface could not be drawn: ${messageOf(error)}`;
   }
 }
 
@@ -728,6 +857,7 @@ async function show3D() {
 
 // A figure follows the form: the values that differ from their defaults and that the figure
 // also takes (same names, same domains) go into its URL.
+/** @param {Figure} figure */
 function figureURL(figure) {
   const names = new Set(figure.parameters.map((p) => p.name));
   const query = new URLSearchParams([...getQuery()].filter(([name]) => names.has(name)));
@@ -735,6 +865,7 @@ function figureURL(figure) {
   return text ? `${figure.url}?${text}` : figure.url;
 }
 
+/** @param {Figure} figure @param {string} url */
 function figureItem(figure, url) {
   const li = html('li', { 'data-figure': figure.id });
   const link = html('a', { href: url, class: 'figure-frame' });
@@ -761,9 +892,10 @@ function figureItem(figure, url) {
 
 function updateFigures() {
   if (!state.entry) return;
-  const own = state.figures.filter((f) => (f.discretizations || []).includes(state.entry.id));
+  const entry = state.entry;
+  const own = state.figures.filter((f) => (f.discretizations || []).includes(entry.id));
   const list = $('figure-list');
-  const wanted = own.map((f) => [f, figureURL(f)]);
+  const wanted = own.map((f) => /** @type {[Figure, string]} */ ([f, figureURL(f)]));
   const shown = [...list.querySelectorAll('li')].map((li) => li.querySelector('a')?.getAttribute('href'));
   if (JSON.stringify(shown) !== JSON.stringify(wanted.map(([, url]) => url))) {
     list.replaceChildren(...wanted.map(([f, url]) => figureItem(f, url)));
@@ -790,19 +922,21 @@ async function setupFigures() {
 // ---- start ----------------------------------------------------------------------------------
 
 const animation = new Animation({
-  section: $('animation'), title: $('animation-title'), plot: $('animation-plot'), play: $('anim-play'),
-  back: $('anim-back'), forward: $('anim-forward'), slider: $('anim-frame'), text: $('anim-text'),
+  section: $('animation'), title: $('animation-title'), plot: $('animation-plot'), play: $button('anim-play'),
+  back: $button('anim-back'), forward: $button('anim-forward'), slider: $input('anim-frame'), text: $('anim-text'),
 });
 
-let timer = null;
+/** @type {ReturnType<typeof setTimeout> | undefined} */
+let timer;
 function scheduleCompute() {
   clearTimeout(timer);
   timer = setTimeout(compute, 350);
 }
 
+/** @param {string} id @param {URLSearchParams} [values] from the shared URL */
 function selectDiscretization(id, values = new URLSearchParams()) {
   state.entry = state.catalog.find((e) => e.id === id) || state.catalog[0];
-  $('discretization').value = state.entry.id;
+  $select('discretization').value = state.entry.id;
   state.hidden.clear();
   state.compare = {};
   buildForm(state.entry, values);
@@ -811,12 +945,12 @@ function selectDiscretization(id, values = new URLSearchParams()) {
 
 async function start() {
   try {
-    [state.catalog] = await Promise.all([getJSON('/discretizations'), loadKatex()]);
+    [state.catalog] = await Promise.all([/** @type {Promise<Entry[]>} */ (getJSON('/discretizations')), loadKatex()]);
   } catch (error) {
-    $('status').textContent = `The catalog could not be loaded: ${error.message}`;
+    $('status').textContent = `The catalog could not be loaded: ${messageOf(error)}`;
     return;
   }
-  const select = $('discretization');
+  const select = $select('discretization');
   for (const entry of state.catalog) select.append(html('option', { value: entry.id }, `${entry.id} — ${entry.title}`));
   const params = new URLSearchParams(location.search);
   // Wunderlich's (D4b) opens first: the construction the paper proves the most about
@@ -828,14 +962,14 @@ async function start() {
   form.addEventListener('submit', (event) => { event.preventDefault(); clearTimeout(timer); compute(); });
   form.addEventListener('input', (event) => { if (event.target !== select) scheduleCompute(); });
   form.addEventListener('change', (event) => { if (event.target !== select) { clearTimeout(timer); compute(); } });
-  $('defaults').addEventListener('click', () => { selectDiscretization(state.entry.id); compute(); });
+  $('defaults').addEventListener('click', () => { selectDiscretization(currentEntry().id); compute(); });
   $('copy-link').addEventListener('click', async () => {
     const url = new URL(shareURL(), location.href).href;
     try { await navigator.clipboard.writeText(url); $('copy-status').textContent = 'Copied.'; } catch { $('copy-status').textContent = url; }
   });
   $('overlay-h').addEventListener('change', async () => { if (state.curve) { await loadSmooth(state.curve); drawPlot(); } });
   $('show-3d').addEventListener('click', show3D);
-  $('colour-by').addEventListener('change', () => { if (!$('view3d').hidden) show3D(); });
+  $select('colour-by').addEventListener('change', () => { if (!$('view3d').hidden) show3D(); });
   await Promise.all([setupSurfaces(), setupFigures()]);
   await compute();
   // the typeset claims and errata come after the first plot, then the checks are drawn again
