@@ -129,29 +129,33 @@ class FastLane:
                     return None
                 accept_encoding = value
         query_string: bytes = scope["query_string"]
-        pairs = parse_qsl(query_string.decode("latin-1"), keep_blank_values=True)
-        values: dict[str, Any] = dict(pairs)
-        if len(values) != len(pairs):
-            return None  # a repeated parameter: the chain's 422
-        if accept is not None and "format" not in values:
-            endpoint = endpoint_of(scope)
-            if endpoint is None:
-                return None
-            if choose(accept.decode("latin-1"), endpoint.formats) != next(iter(endpoint.formats)):
-                return None  # another format, or a 406
-        if not self._digits_allowed(values):
-            return None
         raw = (scope["path"], query_string)
-        found = self.cache.lookup(raw)
-        if found is not None:
-            key, entry = found
-        else:
+        # a raw request answered before passed every check below (only Accept may send the
+        # same raw request elsewhere)
+        found = self.cache.lookup(raw) if accept is None else None
+        if found is None:
+            pairs = parse_qsl(query_string.decode("latin-1"), keep_blank_values=True)
+            values: dict[str, Any] = dict(pairs)
+            if len(values) != len(pairs):
+                return None  # a repeated parameter: the chain's 422
+            if accept is not None and "format" not in values:
+                endpoint = endpoint_of(scope)
+                if endpoint is None:
+                    return None
+                chosen = choose(accept.decode("latin-1"), endpoint.formats)
+                if chosen != next(iter(endpoint.formats)):
+                    return None  # another format, or a 406
+            if not self._digits_allowed(values):
+                return None
+            if accept is not None:
+                found = self.cache.lookup(raw)
+        if found is None:
             if self.cache.max_bytes and raw in self.flights:
                 return None  # an identical request is computing: the chain waits for it
-            computed = self._compute(scope, route, values)
-            if computed is None:
+            found = self._compute(scope, route, values)
+            if found is None:
                 return None
-            key, entry = computed
+        key, entry = found
         answer = reply(
             self.cache,
             key,
