@@ -151,3 +151,18 @@ def test_the_lane_charges_admission_and_gives_it_back(
     assert admission.admitted == 0
     assert admission.seconds == pytest.approx(0.0, abs=1e-12)
     assert admission.bytes == 0
+
+
+@pytest.mark.parametrize(
+    "settings",
+    [{"response_cache_bytes": 0}, {"gzip_level": 0}, {"cors_origins": ["https://example.org"]}],
+)
+def test_the_lane_answers_as_the_chain_in_other_settings(settings: dict[str, Any]) -> None:
+    lane = TestClient(create_app(Settings(**settings)))
+    chain = TestClient(create_app(Settings(**settings, fast_lane_seconds=0)))
+    for url in (f"{D4B}?{SMALL}", f"{D4B}?{SMALL}&format=csv", f"{D4B}?{SMALL}&d=2"):
+        for _ in range(2):
+            headers = {"Accept-Encoding": "gzip"}
+            assert raw(lane, "GET", url, headers) == raw(chain, "GET", url, headers)
+    fast = lane_of(lane.app)  # type: ignore[arg-type]
+    assert fast is not None and fast.served == 4
