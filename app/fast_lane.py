@@ -34,11 +34,11 @@ deadline) has nothing to watch in them, and a longer one goes to the thread pool
 
 from __future__ import annotations
 
-from collections.abc import Container
-from typing import Any
+import types
+from collections.abc import Container, Sequence
+from typing import Annotated, Any, Union, get_args, get_origin
 from urllib.parse import parse_qsl
 
-from fastapi._compat.shared import field_annotation_is_sequence
 from starlette.types import ASGIApp, Receive, Scope, Send
 
 from app.admission import Admission, current
@@ -59,6 +59,20 @@ MAX_STEPS = 5_000
 _UNUSUAL = frozenset({b"origin", b"if-none-match"})
 
 
+def is_sequence(annotation: Any) -> bool:
+    """Whether FastAPI reads a query field of this annotation as a list (every value of the
+    parameter): a list, tuple or set, also inside ``Optional`` or ``Annotated``."""
+    origin = get_origin(annotation)
+    if origin in (Union, types.UnionType):
+        return any(is_sequence(a) for a in get_args(annotation) if a is not type(None))
+    if origin is Annotated:
+        return is_sequence(get_args(annotation)[0])
+    kind = origin or annotation
+    if not isinstance(kind, type) or issubclass(kind, str | bytes):
+        return False
+    return issubclass(kind, list | tuple | set | frozenset | Sequence)
+
+
 class _Route:
     """One discretization's GET as the lane serves it."""
 
@@ -69,7 +83,7 @@ class _Route:
         self.sequences = frozenset(
             name
             for name, field in entry.query.model_fields.items()
-            if field_annotation_is_sequence(field.annotation)
+            if is_sequence(field.annotation)
         )
 
 

@@ -12,10 +12,12 @@ from typing import Any
 
 import pytest
 from fastapi import FastAPI
+from fastapi._compat.shared import field_annotation_is_sequence
 from fastapi.testclient import TestClient
 
-from app.fast_lane import FastLane
+from app.fast_lane import FastLane, is_sequence
 from app.main import create_app
+from app.registry import DISCRETIZATIONS
 from app.settings import Settings
 
 D4B = "/discretizations/d4b"
@@ -166,3 +168,13 @@ def test_the_lane_answers_as_the_chain_in_other_settings(settings: dict[str, Any
             assert raw(lane, "GET", url, headers) == raw(chain, "GET", url, headers)
     fast = lane_of(lane.app)  # type: ignore[arg-type]
     assert fast is not None and fast.served == 4
+
+
+def test_sequence_fields_are_those_fastapi_reads_as_lists() -> None:
+    seen = set()
+    for entry in DISCRETIZATIONS.values():
+        for name, field in entry.query.model_fields.items():
+            expected = field_annotation_is_sequence(field.annotation)
+            assert is_sequence(field.annotation) == expected, (entry.info.id, name)
+            seen.add(expected)
+    assert seen == {True, False}
