@@ -151,6 +151,11 @@ def test_the_lane_charges_admission_and_gives_it_back(
     response = lane.get(f"{D4B}?i_min=-3&i_max=3&d=0.321")
     assert response.status_code == 200
     assert admission.admitted == 0
+    # an error after the charge (d >= h is found by the core): given back before the chain
+    # answers it, and the chain's own charge at the end of the response
+    response = lane.get(f"{D4B}?i_min=-3&i_max=3&d=1.5")
+    assert response.status_code == 422
+    assert admission.admitted == 0
     assert admission.seconds == pytest.approx(0.0, abs=1e-12)
     assert admission.bytes == 0
 
