@@ -13,8 +13,8 @@ directly:
   (``app.negotiation``; a ``format`` in the query wins as there);
 - the raw request seen before: answered from the response cache (as ``FastPath``);
 - otherwise the query is parsed once with the endpoint's request model, as FastAPI reads it
-  (``field`` values; a sequence field gets the one value as a list), and a float64 request
-  whose estimated cost (``app.limits.curve_cost``) is at most ``DCOSH_FAST_LANE_SECONDS``
+  (one value per parameter; a sequence field gets its value as a one-item list), and a float64
+  request whose estimated cost (``app.limits.curve_cost``) is at most ``DCOSH_FAST_LANE_SECONDS``
   (and at most ``MAX_STEPS`` construction steps, whatever the estimate says) is computed here,
   on the event loop, by the same ``compute`` and ``curve_response`` as the route, charged to
   admission by the same budget check, kept in the response cache under the same key and
