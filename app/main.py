@@ -5,6 +5,7 @@ from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
 from typing import Any
 
+import anyio
 import anyio.to_thread
 from fastapi import Depends, FastAPI
 from fastapi.middleware.cors import CORSMiddleware
@@ -19,6 +20,7 @@ from app.admission import (
 )
 from app.bounded_io import BoundedIO
 from app.compression import Compress
+from app.fast_lane import FastLane
 from app.negotiation import Negotiation
 from app.response_cache import FastPath, ResponseCache
 from app.routers import (
@@ -114,7 +116,10 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     # innermost: the gate bounds the computational requests that the cache does not answer
     app.add_middleware(AdmissionGate, admission=app.state.admission)
     # cached answers still pass CORS and the security headers
-    app.add_middleware(FastPath, cache=app.state.response_cache, settings=app.state.settings)
+    flights: dict[tuple[str, bytes], anyio.Event] = {}
+    app.add_middleware(
+        FastPath, cache=app.state.response_cache, settings=app.state.settings, flights=flights
+    )
     app.add_middleware(Negotiation)  # Accept → format, before the cache sees the query
     app.add_middleware(Compress, settings=app.state.settings)  # what the cache did not compress
     app.add_middleware(
@@ -126,6 +131,15 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     )
     app.add_middleware(SecurityHeaders)
     app.add_middleware(errors.HeadAsGet)  # HEAD is GET everywhere inside
+    if app.state.settings.fast_lane_seconds > 0:
+        # small computed curve GETs, answered here with the chain's exact bytes (app/fast_lane.py)
+        app.add_middleware(
+            FastLane,
+            cache=app.state.response_cache,
+            settings=app.state.settings,
+            admission=app.state.admission,
+            flights=flights,
+        )
     # outermost: deadlines from arrival, capped bodies, body and send timeouts
     app.add_middleware(BoundedIO, admission=app.state.admission)
     errors.install(app)

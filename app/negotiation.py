@@ -148,18 +148,36 @@ def endpoints(spec: dict[str, Any]) -> list[Endpoint]:
     return found
 
 
+def endpoint_of(scope: Scope) -> Endpoint | None:
+    """The negotiable endpoint of the request's path, or None (the table is read from the
+    app's OpenAPI document once per app and kept on ``app.state``)."""
+    state = scope["app"].state
+    table: list[Endpoint] | None = getattr(state, "negotiable_endpoints", None)
+    if table is None:
+        table = endpoints(scope["app"].openapi())
+        state.negotiable_endpoints = table
+    path = scope["path"]
+    return next((e for e in table if e.pattern.match(path)), None)
+
+
+def with_accept(present: str | None) -> str:
+    """The Vary value of a negotiated response whose Vary was ``present``."""
+    if not present:
+        return "Accept"
+    if "accept" not in [v.strip().lower() for v in present.split(",")]:
+        return f"Accept, {present}"
+    return present
+
+
 class Negotiation:
     """ASGI middleware: ``Accept`` → ``format`` on the GETs that have one (see the module doc)."""
 
     def __init__(self, app: ASGIApp) -> None:
         self.app = app
-        self._endpoints: list[Endpoint] | None = None
 
-    def _endpoint(self, scope: Scope) -> Endpoint | None:
-        if self._endpoints is None:
-            self._endpoints = endpoints(scope["app"].openapi())
-        path = scope["path"]
-        return next((e for e in self._endpoints if e.pattern.match(path)), None)
+    @staticmethod
+    def _endpoint(scope: Scope) -> Endpoint | None:
+        return endpoint_of(scope)
 
     async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
         if scope["type"] != "http" or scope["method"] != "GET":
@@ -185,10 +203,9 @@ class Negotiation:
             if message["type"] == "http.response.start":
                 headers = MutableHeaders(scope=message)
                 present = headers.get("vary")
-                if not present:
-                    headers["Vary"] = "Accept"
-                elif "accept" not in [v.strip().lower() for v in present.split(",")]:
-                    headers["Vary"] = f"Accept, {present}"
+                vary = with_accept(present)
+                if vary != present:
+                    headers["Vary"] = vary
             await send(message)
 
         await self.app(scope, receive, vary)

@@ -321,13 +321,20 @@ def reply(
 class FastPath:
     """ASGI middleware: repeated GETs answered from the response cache (see the module doc)."""
 
-    def __init__(self, app: ASGIApp, cache: ResponseCache, settings: Settings) -> None:
+    def __init__(
+        self,
+        app: ASGIApp,
+        cache: ResponseCache,
+        settings: Settings,
+        flights: dict[tuple[str, bytes], anyio.Event] | None = None,
+    ) -> None:
         self.app = app
         self.cache = cache
         self.settings = settings
-        self._flights: dict[tuple[str, bytes], anyio.Event] = {}
+        self._flights = {} if flights is None else flights
         """The raw GETs being computed now, each with the event set when it is answered (only
-        touched on the event loop)."""
+        touched on the event loop; shared with ``app.fast_lane.FastLane``, which leaves a raw
+        GET in flight to this middleware)."""
 
     async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
         if scope["type"] != "http" or scope["method"] != "GET":

@@ -47,6 +47,20 @@ def page_policy(html: str, *, inline_styles: bool = False, workers: bool = False
     return "; ".join(directives)
 
 
+_DEFAULTS = (
+    (b"content-security-policy", API_POLICY.encode()),
+    (b"x-content-type-options", b"nosniff"),
+    (b"referrer-policy", b"no-referrer"),
+)
+
+
+def with_defaults(headers: list[tuple[bytes, bytes]]) -> list[tuple[bytes, bytes]]:
+    """``headers`` (raw ASGI pairs) plus each default header they do not set, in place."""
+    names = {name.lower() for name, _ in headers}
+    headers.extend(pair for pair in _DEFAULTS if pair[0] not in names)
+    return headers
+
+
 class SecurityHeaders:
     """ASGI middleware adding the default headers to every HTTP response (cheap: no body copy)."""
 
@@ -60,15 +74,7 @@ class SecurityHeaders:
 
         async def with_headers(message: Message) -> None:
             if message["type"] == "http.response.start":
-                headers = list(message.get("headers", []))
-                names = {name.lower() for name, _ in headers}
-                if b"content-security-policy" not in names:
-                    headers.append((b"content-security-policy", API_POLICY.encode()))
-                if b"x-content-type-options" not in names:
-                    headers.append((b"x-content-type-options", b"nosniff"))
-                if b"referrer-policy" not in names:
-                    headers.append((b"referrer-policy", b"no-referrer"))
-                message["headers"] = headers
+                message["headers"] = with_defaults(list(message.get("headers", [])))
             await send(message)
 
         await self.app(scope, receive, with_headers)

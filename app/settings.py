@@ -146,6 +146,12 @@ class Settings(BaseSettings):
         ge=0,
         description="Largest encoded response the cache keeps (bigger ones are served, not kept).",
     )
+    fast_lane_seconds: float = Field(
+        0.002,
+        ge=0,
+        description="Estimated seconds up to which a small float64 curve GET is computed on the "
+        "event loop by the fast lane (app/fast_lane.py); 0 turns the lane off.",
+    )
     gzip_level: int = Field(
         1, ge=0, le=9, description="gzip level for clients that accept it (0: never compress)."
     )

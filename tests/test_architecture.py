@@ -90,6 +90,7 @@ HTTP_PLUMBING = {
     "admission.py",
     "bounded_io.py",
     "compression.py",
+    "fast_lane.py",
     "negotiation.py",
     "problem_types.py",
     "response_cache.py",

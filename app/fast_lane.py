@@ -1,0 +1,238 @@
+"""The fast lane: small computed curve GETs answered without the middleware chain or a thread.
+
+A GET of ``/discretizations/{id}`` goes through seven middlewares, Starlette's routing,
+FastAPI's dependency solving and a hop to the thread pool before ``compute`` runs, and the
+answer back through the same wrappers; for a 100-vertex curve that is several times the
+computation itself (docs/performance.md). ``FastLane``, an ASGI middleware right inside
+``BoundedIO`` (which has handed out the request's admission ticket), answers the common case
+directly:
+
+- a GET (not HEAD) of a discretization's path, no ``Origin`` (CORS), no ``If-None-Match``
+  (conditional requests), no ``root_path``, no parameter given twice, ``digits`` within
+  ``DCOSH_MAX_DIGITS``, and an ``Accept`` that is absent or chooses the default format
+  (``app.negotiation``; a ``format`` in the query wins as there);
+- the raw request seen before: answered from the response cache (as ``FastPath``);
+- otherwise the query is parsed once with the endpoint's request model, as FastAPI reads it
+  (one value per parameter; a sequence field gets its value as a one-item list), and a float64
+  request whose estimated cost (``app.limits.curve_cost``) is at most ``DCOSH_FAST_LANE_SECONDS``
+  (and at most ``MAX_STEPS`` construction steps, whatever the estimate says) is computed here,
+  on the event loop, by the same ``compute`` and ``curve_response`` as the route, charged to
+  admission by the same budget check, kept in the response cache under the same key and
+  answered by the same ``reply``.
+
+Everything else, and every request whose parsing, computation or admission raises, goes on to
+the full chain, which answers it as before (an error is computed again there: errors are
+rare, and so their answers stay those of the exception handlers). The response's headers are
+those the chain adds to a computed 200 (``Vary`` from negotiation and CORS, the security
+headers; gzip is negotiated by ``reply`` exactly as the chain's ``Compress`` would leave it):
+tests/api/test_fast_lane.py compares status, headers and body with the full chain's.
+
+A request computed here holds the event loop while it runs, so only requests estimated at a
+few milliseconds take the lane; the watchdog (which stops computations long past their
+deadline) has nothing to watch in them, and a longer one goes to the thread pool as before.
+"""
+
+from __future__ import annotations
+
+import types
+from collections.abc import Container, Sequence
+from typing import Annotated, Any, Union, get_args, get_origin
+from urllib.parse import parse_qsl
+
+from starlette.types import ASGIApp, Receive, Scope, Send
+
+from app.admission import Admission, current
+from app.limits import curve_cost
+from app.negotiation import choose, endpoint_of, with_accept
+from app.registry import DISCRETIZATIONS, Discretization
+from app.response_cache import Entry, ResponseCache, entry_of, reply
+from app.responses import canonical_key
+from app.routers.common import compute, curve_response
+from app.security import with_defaults
+from app.settings import Settings
+
+#: Most construction steps (or vertices) of a request computed on the event loop, whatever its
+#: estimate: a wrong estimate must not hold the loop for long.
+MAX_STEPS = 5_000
+
+#: Request headers that send a request to the full chain.
+_UNUSUAL = frozenset({b"origin", b"if-none-match"})
+
+
+def is_sequence(annotation: Any) -> bool:
+    """Whether FastAPI reads a query field of this annotation as a list (every value of the
+    parameter): a list, tuple or set, also inside ``Optional`` or ``Annotated``."""
+    origin = get_origin(annotation)
+    if origin in (Union, types.UnionType):
+        return any(is_sequence(a) for a in get_args(annotation) if a is not type(None))
+    if origin is Annotated:
+        return is_sequence(get_args(annotation)[0])
+    kind = origin or annotation
+    if not isinstance(kind, type) or issubclass(kind, str | bytes):
+        return False
+    return issubclass(kind, list | tuple | set | frozenset | Sequence)
+
+
+class _Route:
+    """One discretization's GET as the lane serves it."""
+
+    __slots__ = ("entry", "sequences")
+
+    def __init__(self, entry: Discretization) -> None:
+        self.entry = entry
+        self.sequences = frozenset(
+            name
+            for name, field in entry.query.model_fields.items()
+            if is_sequence(field.annotation)
+        )
+
+
+class FastLane:
+    """ASGI middleware: small computed curve GETs (see the module doc)."""
+
+    def __init__(
+        self,
+        app: ASGIApp,
+        cache: ResponseCache,
+        settings: Settings,
+        admission: Admission,
+        flights: Container[tuple[str, bytes]] = (),
+    ) -> None:
+        self.app = app
+        self.cache = cache
+        self.settings = settings
+        self.admission = admission
+        self.flights = flights
+        """The raw GETs ``FastPath`` is computing now (identical ones wait for them there)."""
+        self.routes = {
+            f"/discretizations/{identifier}": _Route(entry)
+            for identifier, entry in DISCRETIZATIONS.items()
+        }
+        self.served = 0
+        """Requests answered here (computed or from the cache)."""
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        answer = None
+        if scope["type"] == "http" and scope["method"] == "GET":
+            route = self.routes.get(scope["path"])
+            if route is not None and not scope.get("root_path"):
+                answer = self._answer(scope, route)
+        if answer is None:
+            await self.app(scope, receive, send)
+            return
+        self.served += 1
+        status, headers, body = answer
+        await send({"type": "http.response.start", "status": status, "headers": headers})
+        await send({"type": "http.response.body", "body": body})
+
+    def _answer(
+        self, scope: Scope, route: _Route
+    ) -> tuple[int, list[tuple[bytes, bytes]], bytes] | None:
+        """Status, raw headers and body, or None for the full chain."""
+        accept = accept_encoding = None
+        for name, value in scope["headers"]:
+            name = name.lower()
+            if name in _UNUSUAL:
+                return None
+            if name == b"accept":
+                if accept is not None:
+                    return None  # given twice: the chain's middlewares disagree on which
+                accept = value
+            elif name == b"accept-encoding":
+                if accept_encoding is not None:
+                    return None
+                accept_encoding = value
+        query_string: bytes = scope["query_string"]
+        raw = (scope["path"], query_string)
+        # a raw request answered before passed every check below (only Accept may send the
+        # same raw request elsewhere)
+        found = self.cache.lookup(raw) if accept is None else None
+        if found is None:
+            pairs = parse_qsl(query_string.decode("latin-1"), keep_blank_values=True)
+            values: dict[str, Any] = dict(pairs)
+            if len(values) != len(pairs):
+                return None  # a repeated parameter: the chain's 422
+            if accept is not None and "format" not in values:
+                endpoint = endpoint_of(scope)
+                if endpoint is None:
+                    return None
+                chosen = choose(accept.decode("latin-1"), endpoint.formats)
+                if chosen != next(iter(endpoint.formats)):
+                    return None  # another format, or a 406
+            if not self._digits_allowed(values):
+                return None
+            if accept is not None:
+                found = self.cache.lookup(raw)
+        if found is None:
+            if self.cache.max_bytes and raw in self.flights:
+                return None  # an identical request is computing: the chain waits for it
+            found = self._compute(scope, route, values)
+            if found is None:
+                return None
+        key, entry = found
+        answer = reply(
+            self.cache,
+            key,
+            entry,
+            self.settings,
+            True,
+            None if accept_encoding is None else accept_encoding.decode("latin-1"),
+        )
+        headers = answer.response().raw_headers
+        for index, (name, value) in enumerate(headers):
+            if name == b"vary":
+                # Negotiation's Vary, then CORS's for a request without Origin
+                vary = with_accept(value.decode("latin-1")) + ", Origin"
+                headers[index] = (name, vary.encode("latin-1"))
+        return answer.status, with_defaults(headers), answer.body
+
+    def _digits_allowed(self, values: dict[str, Any]) -> bool:
+        """Whether ``digits`` (if given) passes the app-wide limit without a doubt."""
+        digits = values.get("digits")
+        if digits is None:
+            return True
+        try:
+            return float(digits) <= self.settings.max_digits
+        except ValueError:
+            return False
+
+    def _compute(
+        self, scope: Scope, route: _Route, values: dict[str, Any]
+    ) -> tuple[str, Entry] | None:
+        """Parse, price, compute and keep a small request; None for the chain."""
+        entry = route.entry
+        for name in route.sequences.intersection(values):
+            values[name] = [values[name]]
+        admission = self.admission
+        settings = self.settings
+        ticket = current()
+        if ticket is None or admission.draining:
+            return None
+        if admission.in_flight >= settings.compute_threads + settings.admission_queue:
+            return None  # the gate's 503
+        try:
+            query = entry.query.model_validate(values)
+            if query.precision != "float64":
+                return None
+            arguments = query.core_arguments()
+            i_min, i_max = arguments["i_min"], arguments["i_max"]
+            vertices = max(0, i_max - i_min + 1)
+            steps = vertices
+            if arguments.get("method", "construction") == "construction":
+                steps = max(abs(i_min), abs(i_max), vertices) + 1
+            seconds, _ = curve_cost(vertices, steps, "float64", query.digits, entry.info.id)
+            if seconds > settings.fast_lane_seconds or steps > MAX_STEPS:
+                return None
+            key = canonical_key(scope["path"], query.model_dump())
+            kept = self.cache.get(key)
+            if kept is None:
+                kept = entry_of(curve_response(compute(entry, query, settings), query.format))
+                if kept is None:
+                    return None
+                self.cache.put(key, kept)
+        except Exception:  # the chain answers every error as it always has
+            admission.release(ticket)
+            return None
+        if key in self.cache:
+            self.cache.alias((scope["path"], scope["query_string"]), key)
+        return key, kept
