@@ -39,6 +39,7 @@ import pickle
 import queue
 import resource
 import signal
+import stat
 import threading
 import time
 from collections.abc import Callable
@@ -51,7 +52,7 @@ from app import admission
 from app.settings import Settings
 
 #: Niceness of the children (the serving processes keep 0).
-NICENESS = 10
+NICENESS = 5
 
 #: Address space a child may map beyond its size at start and DCOSH_ADMISSION_BYTES (numpy's
 #: temporaries beyond the estimate, mpmath caches, a kernel numba has to compile).
@@ -110,12 +111,24 @@ def _rebuilt(data: bytes) -> BaseException:
     return exc
 
 
-def _child(conn: Connection, memory_limit: int, close_fds: tuple[int, ...]) -> None:
+def _close_sockets(keep: int) -> None:
+    """Close every socket this child inherited but ``keep``: the worker's listening socket,
+    its clients' connections (a replacement child is forked while they are open: its copy
+    would keep a connection the worker closed open, and reset it when the child is killed)
+    and the other children's pipes."""
+    for name in os.listdir("/proc/self/fd"):
+        fd = int(name)
+        if fd == keep:
+            continue
+        with contextlib.suppress(OSError):
+            if stat.S_ISSOCK(os.fstat(fd).st_mode):
+                os.close(fd)
+
+
+def _child(conn: Connection, memory_limit: int) -> None:
     """A child's loop: receive a job, compute and render it, send the answer back."""
     _die_with_parent()
-    for fd in close_fds:  # the worker's listening socket
-        with contextlib.suppress(OSError):
-            os.close(fd)
+    _close_sockets(keep=conn.fileno())
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C reaches the worker, which ends us
     with contextlib.suppress(OSError):
@@ -152,11 +165,11 @@ def _child(conn: Connection, memory_limit: int, close_fds: tuple[int, ...]) -> N
 
 
 class _Child:
-    def __init__(self, memory_limit: int, close_fds: tuple[int, ...]) -> None:
+    def __init__(self, memory_limit: int) -> None:
         self.conn, child_end = _FORK.Pipe(duplex=True)
         self.process: BaseProcess = _FORK.Process(
             target=_child,
-            args=(child_end, memory_limit, close_fds),
+            args=(child_end, memory_limit),
             daemon=True,
             name="dcosh-compute",
         )
@@ -174,12 +187,13 @@ class _Child:
 class ComputePool:
     """``size`` child processes of one worker that compute and render heavy requests."""
 
-    def __init__(self, settings: Settings, close_fds: tuple[int, ...] = ()) -> None:
+    def __init__(self, settings: Settings) -> None:
         self.settings = settings
-        self.close_fds = close_fds
         self.size = settings.compute_processes
         self._idle: queue.LifoQueue[_Child] = queue.LifoQueue()
         self._children: list[_Child] = []
+        self._wanted: queue.SimpleQueue[bool] = queue.SimpleQueue()
+        """One True per child to fork (False: stop)."""
         self._lock = threading.Lock()
         self.jobs = 0
         """Requests sent to a child."""
@@ -192,12 +206,21 @@ class ComputePool:
     def start(self) -> None:
         for _ in range(self.size):
             self._idle.put(self._spawn())
+        # replacements are forked by one thread that lives as long as the worker: Linux sends
+        # a child its PR_SET_PDEATHSIG when the *thread* that forked it ends, and the request
+        # threads that find a child dead end when idle
+        threading.Thread(target=self._respawn, name="compute-pool", daemon=True).start()
+
+    def _respawn(self) -> None:
+        while self._wanted.get():
+            if not self.closed:
+                self._idle.put(self._spawn())
 
     def _spawn(self) -> _Child:
         # one fork at a time: a child forked while another's pipe end is still open here
         # would hold it, and the worker would not see that other child die
         with self._lock:
-            child = _Child(self.settings.admission_bytes, self.close_fds)
+            child = _Child(self.settings.admission_bytes)
             self._children.append(child)
         return child
 
@@ -207,7 +230,7 @@ class ComputePool:
             if child in self._children:
                 self._children.remove(child)
         if not self.closed:
-            self._idle.put(self._spawn())
+            self._wanted.put(True)
 
     def pids(self) -> list[int]:
         with self._lock:
@@ -215,6 +238,7 @@ class ComputePool:
 
     def close(self) -> None:
         self.closed = True
+        self._wanted.put(False)
         with self._lock:
             children, self._children = self._children, []
         for child in children:

@@ -123,19 +123,19 @@ def serve(sock: socket.socket, options: Sequence[str]) -> None:
     config = uvicorn_config(options)
     config.load()  # imports the app: everything it holds for good exists from here on
     tune_gc()
-    start_pool(sock)
+    start_pool()
     uvicorn_server(config).run(sockets=[sock])
 
 
-def start_pool(sock: socket.socket) -> None:
+def start_pool() -> None:
     """Fork the worker's compute processes (app/compute_pool.py) now: the app and its kernels
-    are loaded, and no other thread runs yet. They leave ``sock`` to the worker."""
+    are loaded, and no other thread runs yet."""
     from app.compute_pool import ComputePool
     from app.main import app
 
     admission = app.state.admission
     if admission.settings.compute_processes > 0:
-        admission.pool = ComputePool(admission.settings, close_fds=(sock.fileno(),))
+        admission.pool = ComputePool(admission.settings)
         admission.pool.start()
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import os
 import signal
+import socket
 import time
 from collections.abc import Iterator
 from typing import Any
@@ -29,6 +30,17 @@ def pooled(settings: Settings) -> tuple[TestClient, ComputePool]:
     pool.start()
     app.state.admission.pool = pool
     return TestClient(app), pool
+
+
+def children(pool: ComputePool) -> list[int]:
+    """The pool's children once it has all of them again (replacements fork in the
+    background)."""
+    for _ in range(200):
+        pids = pool.pids()
+        if len(pids) == pool.size:
+            return pids
+        time.sleep(0.05)
+    raise AssertionError(f"{pool.size} children expected, {len(pool.pids())} found")
 
 
 @pytest.fixture
@@ -102,7 +114,7 @@ def test_an_overrunning_child_is_killed_and_replaced_with_the_time_limit_problem
     pool = app.state.admission.pool = ComputePool(settings)
     pool.start()
     try:
-        (before,) = pool.pids()
+        (before,) = children(pool)
         response = client.get(CURVE, params=HEAVY)
         assert response.status_code == 422, response.text
         body = response.json()
@@ -110,7 +122,7 @@ def test_an_overrunning_child_is_killed_and_replaced_with_the_time_limit_problem
         assert "stopped past its deadline" in body["detail"]
         assert body["errors"][0]["parameter"] == "i_max"
         assert pool.kills == 1
-        (after,) = pool.pids()
+        (after,) = children(pool)
         assert after != before
         with pytest.raises(ProcessLookupError):
             os.kill(before, 0)  # killed and reaped
@@ -125,13 +137,13 @@ def test_a_child_that_dies_computing_is_a_503_and_is_replaced(
     monkeypatch.setattr(common, "curve_response", failure)
     client, pool = pooled(Settings(compute_processes=1))
     try:
-        (before,) = pool.pids()
+        (before,) = children(pool)
         response = client.get(CURVE, params=HEAVY)
         assert response.status_code == 503
         assert response.json()["type"] == "/problems/overloaded"
         assert int(response.headers["retry-after"]) >= 1
         assert pool.crashes == 1
-        (after,) = pool.pids()
+        (after,) = children(pool)
         assert after != before
     finally:
         pool.close()
@@ -141,13 +153,25 @@ def test_a_child_killed_while_idle_is_replaced_and_the_request_is_answered(
     pool_client: tuple[TestClient, ComputePool],
 ) -> None:
     client, pool = pool_client
-    (before,) = pool.pids()
+    (before,) = children(pool)
     os.kill(before, signal.SIGKILL)
-    response = client.get(CURVE, params=HEAVY)
-    assert response.status_code == 200
-    assert len(response.json()["vertices"]) == 30_001
-    (after,) = pool.pids()
-    assert after != before and pool.crashes == 1
+    connection = socket.socketpair()  # open in the worker while the successor forks
+    try:
+        response = client.get(CURVE, params=HEAVY)
+        assert response.status_code == 200
+        assert len(response.json()["vertices"]) == 30_001
+        (after,) = children(pool)
+        assert after != before and pool.crashes == 1
+        # the successor holds no socket of the worker's but its own pipe
+        sockets = [
+            fd
+            for fd in os.listdir(f"/proc/{after}/fd")
+            if os.readlink(f"/proc/{after}/fd/{fd}").startswith("socket:")
+        ]
+        assert len(sockets) == 1, sockets
+    finally:
+        for end in connection:
+            end.close()
 
 
 def test_a_cheap_request_stays_in_the_worker(
