@@ -144,11 +144,12 @@ def pool_rss_mib(pid: int) -> float:
     (pages they still share with their worker are counted in both)."""
     total = 0.0
     for worker in worker_pids(pid):
-        children = Path(f"/proc/{worker}/task/{worker}/children")
-        try:
-            pids = [int(p) for p in children.read_text().split()]
-        except FileNotFoundError:
-            continue
+        pids = []  # children of any of its threads (replacements fork from a thread of the pool)
+        for children in Path(f"/proc/{worker}/task").glob("*/children"):
+            try:
+                pids += [int(p) for p in children.read_text().split()]
+            except FileNotFoundError:
+                continue
         for p in pids:
             try:
                 for line in Path(f"/proc/{p}/status").read_text().splitlines():
