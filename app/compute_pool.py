@@ -24,8 +24,10 @@ where the round trip would cost more than it saves.
   gets a 503 with Retry-After.
 
 Replacement children are forked from a worker that runs threads by then; a lock another
-thread held at that moment stays locked in the child, which then never answers: it is killed at
-its first request's deadline like any overrunning child, and replaced again.
+thread held at that moment stays locked in the child. The core's one module lock (the balls'
+precision, app/geometry/balls.py) is made anew in every child; a child stuck on another one
+never answers: it is killed at its first request's deadline like any overrunning child, and
+replaced again.
 """
 
 from __future__ import annotations
@@ -125,9 +127,18 @@ def _close_sockets(keep: int) -> None:
                 os.close(fd)
 
 
+def _fresh_locks() -> None:
+    """New module locks that a thread of the worker may have held when a replacement forked
+    (only the forking thread exists in the child, so nobody would release them)."""
+    from app.geometry import balls
+
+    balls.LOCK = threading.RLock()
+
+
 def _child(conn: Connection, memory_limit: int) -> None:
     """A child's loop: receive a job, compute and render it, send the answer back."""
     _die_with_parent()
+    _fresh_locks()
     _close_sockets(keep=conn.fileno())
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C reaches the worker, which ends us

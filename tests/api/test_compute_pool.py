@@ -6,6 +6,7 @@ from __future__ import annotations
 import os
 import signal
 import socket
+import threading
 import time
 from collections.abc import Iterator
 from typing import Any
@@ -14,6 +15,7 @@ import pytest
 from fastapi.testclient import TestClient
 
 from app.compute_pool import ComputePool
+from app.geometry import balls
 from app.main import create_app
 from app.routers import common
 from app.settings import Settings
@@ -199,3 +201,29 @@ def test_a_refinement_study_from_a_child_is_the_workers_answer() -> None:
         assert pool.jobs == 2
     finally:
         pool.close()
+
+
+def test_a_child_forked_while_a_worker_thread_holds_the_balls_lock_computes_mp(
+    pool_client: tuple[TestClient, ComputePool],
+) -> None:
+    """A replacement forks while an in-worker mp request holds the core's precision lock."""
+    client, pool = pool_client
+    held, release = threading.Event(), threading.Event()
+
+    def hold() -> None:
+        with balls.LOCK:
+            held.set()
+            release.wait(60)
+
+    thread = threading.Thread(target=hold)
+    thread.start()
+    try:
+        held.wait(10)
+        os.kill(children(pool)[0], signal.SIGKILL)
+        body = {"precision": "mp", "digits": 30, "i_max": 200}
+        response = client.post(CURVE, json=body)
+        assert response.status_code == 200
+        assert pool.jobs == 1 and pool.crashes == 1
+    finally:
+        release.set()
+        thread.join()
