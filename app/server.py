@@ -22,6 +22,8 @@ The limits (docs/reliability.md):
   app/admission.py answers overload with 503 problems long before).
 
 Request bodies, body and send timeouts and the cost budget are the app's (app/admission.py).
+Each worker forks its compute processes (app/compute_pool.py) once the app is imported, before
+uvicorn starts.
 Usage: python -m app.server [--host H] [--port P] [--workers N] [uvicorn options…]
 """
 
