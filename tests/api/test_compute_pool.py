@@ -45,6 +45,20 @@ def children(pool: ComputePool) -> list[int]:
     raise AssertionError(f"{pool.size} children expected, {len(pool.pids())} found")
 
 
+def kill(pid: int) -> None:
+    """SIGKILL ``pid`` and wait until it has died (a zombie until the pool reaps it)."""
+    os.kill(pid, signal.SIGKILL)
+    for _ in range(200):
+        try:
+            with open(f"/proc/{pid}/stat") as stat:
+                if stat.read().rsplit(")", 1)[1].split()[0] in ("Z", "X"):
+                    return
+        except FileNotFoundError:
+            return
+        time.sleep(0.05)
+    raise AssertionError(f"{pid} still runs")
+
+
 @pytest.fixture
 def pool_client() -> Iterator[tuple[TestClient, ComputePool]]:
     client, pool = pooled(Settings(compute_processes=1))
@@ -156,7 +170,7 @@ def test_a_child_killed_while_idle_is_replaced_and_the_request_is_answered(
 ) -> None:
     client, pool = pool_client
     (before,) = children(pool)
-    os.kill(before, signal.SIGKILL)
+    kill(before)
     connection = socket.socketpair()  # open in the worker while the successor forks
     try:
         response = client.get(CURVE, params=HEAVY)
@@ -219,7 +233,7 @@ def test_a_child_forked_while_a_worker_thread_holds_the_balls_lock_computes_mp(
     thread.start()
     try:
         held.wait(10)
-        os.kill(children(pool)[0], signal.SIGKILL)
+        kill(children(pool)[0])
         body = {"precision": "mp", "digits": 30, "i_max": 200}
         response = client.post(CURVE, json=body)
         assert response.status_code == 200
