@@ -129,6 +129,8 @@ class Admission:
     slowdown: float = 1.0
     """Wall seconds per estimated second of recent computations (≥ 1): the host's load, which
     the estimates (CPU seconds on a free core) do not know."""
+    pool: Any = None
+    """The worker's ``app.compute_pool.ComputePool`` (None: every request computes here)."""
     _lock: threading.Lock = field(default_factory=threading.Lock)
 
     def retry_after(self) -> int:
@@ -222,6 +224,11 @@ def charge(seconds: float, nbytes: int, parameter: str = "request") -> None:
         return
     admission.charge(ticket, seconds, nbytes)
     ticket.parameter = parameter
+
+
+def current_admission() -> Admission | None:
+    """The admission state of the worker serving the current request."""
+    return _ADMISSION.get()
 
 
 def current() -> Ticket | None:

@@ -22,6 +22,8 @@ The limits (docs/reliability.md):
   app/admission.py answers overload with 503 problems long before).
 
 Request bodies, body and send timeouts and the cost budget are the app's (app/admission.py).
+Each worker forks its compute processes (app/compute_pool.py) once the app is imported, before
+uvicorn starts.
 Usage: python -m app.server [--host H] [--port P] [--workers N] [uvicorn options…]
 """
 
@@ -123,7 +125,20 @@ def serve(sock: socket.socket, options: Sequence[str]) -> None:
     config = uvicorn_config(options)
     config.load()  # imports the app: everything it holds for good exists from here on
     tune_gc()
+    start_pool()
     uvicorn_server(config).run(sockets=[sock])
+
+
+def start_pool() -> None:
+    """Fork the worker's compute processes (app/compute_pool.py) now: the app and its kernels
+    are loaded, and no other thread runs yet."""
+    from app.compute_pool import ComputePool
+    from app.main import app
+
+    admission = app.state.admission
+    if admission.settings.compute_processes > 0:
+        admission.pool = ComputePool(admission.settings)
+        admission.pool.start()
 
 
 #: The cyclic garbage collector's thresholds in a worker (Python's default: 700, 10, 10).

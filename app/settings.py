@@ -76,6 +76,21 @@ class Settings(BaseSettings):
         description="Threads per worker that run requests (computations hold the GIL, so more "
         "threads add memory, not throughput; requests beyond wait their turn).",
     )
+    compute_processes: int = Field(
+        2,
+        ge=0,
+        le=64,
+        description="Child processes per worker that compute and render heavy requests (those "
+        "estimated at DCOSH_POOL_MIN_SECONDS or more), so that the worker's event loop keeps "
+        "answering; a child past its deadline is killed and replaced (0: every request computes "
+        "in the worker).",
+    )
+    pool_min_seconds: float = Field(
+        0.05,
+        ge=0,
+        description="Estimated seconds from which a request computes in a child process "
+        "(cheaper ones compute in the worker: the round trip would cost more than it saves).",
+    )
     time_limit: float = Field(
         20.0,
         gt=0,

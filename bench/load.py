@@ -139,6 +139,27 @@ def worker_rss_mib(pid: int) -> dict[int, float]:
     return out
 
 
+def pool_rss_mib(pid: int) -> float:
+    """Resident memory of the workers' compute processes (app/compute_pool.py) together, MiB
+    (pages they still share with their worker are counted in both)."""
+    total = 0.0
+    for worker in worker_pids(pid):
+        pids = []  # children of any of its threads (replacements fork from a thread of the pool)
+        for children in Path(f"/proc/{worker}/task").glob("*/children"):
+            try:
+                pids += [int(p) for p in children.read_text().split()]
+            except FileNotFoundError:
+                continue
+        for p in pids:
+            try:
+                for line in Path(f"/proc/{p}/status").read_text().splitlines():
+                    if line.startswith("VmRSS:"):
+                        total += int(line.split()[1]) / 1024
+            except FileNotFoundError:
+                pass
+    return total
+
+
 def worker_pids(pid: int) -> list[int]:
     """The worker processes of the server (app/server.py's children, or the server itself)."""
     children = Path(f"/proc/{pid}/task/{pid}/children")
@@ -188,6 +209,7 @@ async def burst(
     results: list[tuple[int, float, bool]] = []
     health: list[float] = []
     peaks: dict[int, float] = defaultdict(float)
+    pool_peak = 0.0
     spread: dict[int, int] = defaultdict(int)
     done = asyncio.Event()
     limits = httpx.Limits(max_connections=40, max_keepalive_connections=0)
@@ -205,6 +227,7 @@ async def burst(
             results.append((status, time.perf_counter() - start, retry))
 
         async def probe() -> None:
+            nonlocal pool_peak
             async with httpx.AsyncClient(base_url=base, timeout=10) as prober:
                 while not done.is_set():
                     start = time.perf_counter()
@@ -215,6 +238,7 @@ async def burst(
                         health.append(10.0)
                     for worker, rss in worker_rss_mib(pid).items():
                         peaks[worker] = max(peaks[worker], rss)
+                    pool_peak = max(pool_peak, pool_rss_mib(pid))
                     for worker, held in connections_per_worker(pid, port).items():
                         spread[worker] = max(spread[worker], held)
                     await asyncio.sleep(0.05)
@@ -235,6 +259,7 @@ async def burst(
         f"(p50 {statistics.median(refused) * 1e3 if refused else 0:6.1f} ms, "
         f"> 100 ms: {slow_refusals})  other: {sorted(set(other))}  late: {late}  "
         f"/health p99 {h99:5.1f} ms  peak RSS {', '.join(f'{v:.0f}' for v in peaks.values())} MiB"
+        f" (compute processes {pool_peak:.0f} MiB)"
         f"  connections per worker {'/'.join(str(v) for v in spread.values())}"
         f"  load {os.getloadavg()[0]:.1f}"
     )

@@ -11,6 +11,7 @@ from fastapi.exceptions import RequestValidationError
 from fastapi.routing import APIRoute
 from pydantic import BaseModel, ValidationError
 
+from app import compute_pool
 from app.errors import UnknownIdError
 from app.geometry import balls
 from app.geometry.curve import Curve, Selection
@@ -193,8 +194,10 @@ def selection_of(
     return selection(query.checks, query.companions, statements, companions, query.format)
 
 
-def compute(entry: Discretization, query: CurveQuery, settings: Settings) -> Curve:
-    """Check the work budget, then run the core on what the request selects."""
+def admit_curve(
+    entry: Discretization, query: CurveQuery, settings: Settings
+) -> tuple[Selection, dict[str, Any]]:
+    """Check the request's limits and charge its estimated cost; its selection and arguments."""
     selection = selection_of(query, (s.id for s in entry.info.statements), entry.info.companions)
     arguments = query.core_arguments()
     enforce_range(
@@ -211,11 +214,53 @@ def compute(entry: Discretization, query: CurveQuery, settings: Settings) -> Cur
     )
     if query.format == "svg":
         enforce_drawing(settings, arguments["i_min"], arguments["i_max"])
+    return selection, arguments
+
+
+def _computed(
+    entry: Discretization,
+    query: CurveQuery,
+    settings: Settings,
+    selection: Selection,
+    arguments: dict[str, Any],
+) -> Curve:
     ar = timed_arithmetic(settings, query.precision, query.digits)
     # precision=mp on rigorous balls where the discretization is served on them (issue 15)
     return balls.serve(
         entry.info.id, ar, lambda a: entry.compute(a, **arguments, selection=selection), arguments
     )
+
+
+def compute(entry: Discretization, query: CurveQuery, settings: Settings) -> Curve:
+    """Check the work budget, then run the core on what the request selects."""
+    return _computed(entry, query, settings, *admit_curve(entry, query, settings))
+
+
+def curve_answer(entry: Discretization, query: CurveQuery, settings: Settings) -> Response:
+    """The curve rendered in the request's format: computed here, or in a child process of
+    the worker's pool when its estimate is heavy (app/compute_pool.py)."""
+    selection, arguments = admit_curve(entry, query, settings)
+    pool = compute_pool.offload()
+    if pool is not None:
+        # the validated values travel (a POST's body model is built at run time: no pickling)
+        values = dict(query)
+        return in_child(pool, render_curve, entry.info.id, values, query.model_fields_set, settings)
+    return curve_response(_computed(entry, query, settings, selection, arguments), query.format)
+
+
+def in_child(pool: compute_pool.ComputePool, function: Callable[..., Any], *args: Any) -> Response:
+    """``function(*args)``, a module-level function rendering a response, run in a child."""
+    rendered = pool.run(function, *args)
+    return Response(rendered.body, rendered.status, rendered.headers, rendered.media_type)
+
+
+def render_curve(
+    identifier: str, values: dict[str, Any], fields_set: set[str], settings: Settings
+) -> Response:
+    """What a pool child runs for ``curve_answer`` (its charge is a no-op there)."""
+    entry = discretization(identifier)
+    query = entry.query.model_construct(fields_set, **values)
+    return curve_response(compute(entry, query, settings), query.format)
 
 
 def curve_response(curve: Curve, response_format: str) -> Response:

@@ -4,16 +4,25 @@ from typing import Annotated, Any
 
 from fastapi import APIRouter, Depends, Query, Request, Response
 
+from app import compute_pool
 from app.errors import UnknownIdError
+from app.geometry.studies.common import Study
 from app.registry import STUDIES, ConvergenceStudy
 from app.rendering.convergence import study_svg
 from app.rendering.curves import SVG_MEDIA_TYPE
 from app.responses import CSV_MEDIA_TYPE, canonical_key, encode_json, study_csv, study_document
 from app.routers.caching import JSONBytesResponse, cached
-from app.routers.common import SVG_HEADERS, prepare_study, reject_repeated_parameters, settings_of
+from app.routers.common import (
+    SVG_HEADERS,
+    in_child,
+    prepare_study,
+    reject_repeated_parameters,
+    settings_of,
+)
 from app.routers.discretizations import parameter_infos
 from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES
 from app.schemas.convergence import ConvergenceResponse, MeasureInfo, StudyEntry, StudyQuery
+from app.settings import Settings
 
 router = APIRouter(prefix="/convergence", tags=["convergence"])
 
@@ -68,14 +77,31 @@ def study_response(entry: ConvergenceStudy, query: StudyQuery, request: Request)
     run = prepare_study(entry, query, settings)
 
     def build() -> Response:
-        study = run()
-        if query.format == "csv":
-            return Response(study_csv(study), media_type=CSV_MEDIA_TYPE)
-        if query.format == "svg":
-            return Response(study_svg(study), media_type=SVG_MEDIA_TYPE, headers=SVG_HEADERS)
-        return JSONBytesResponse(encode_json(study_document(study)))
+        pool = compute_pool.offload()  # heavy: computed and rendered in a child process
+        if pool is not None:
+            values = dict(query)
+            fields = query.model_fields_set
+            return in_child(pool, render_study, entry.info.id, values, fields, settings)
+        return study_answer(run(), query.format)
 
     return cached(request, canonical_key(request.url.path, query.model_dump()), settings, build)
+
+
+def study_answer(study: Study, response_format: str) -> Response:
+    if response_format == "csv":
+        return Response(study_csv(study), media_type=CSV_MEDIA_TYPE)
+    if response_format == "svg":
+        return Response(study_svg(study), media_type=SVG_MEDIA_TYPE, headers=SVG_HEADERS)
+    return JSONBytesResponse(encode_json(study_document(study)))
+
+
+def render_study(
+    identifier: str, values: dict[str, Any], fields_set: set[str], settings: Settings
+) -> Response:
+    """What a pool child runs for ``study_response`` (its charge is a no-op there)."""
+    entry = STUDIES[identifier]
+    query = entry.query.model_construct(fields_set, **values)
+    return study_answer(prepare_study(entry, query, settings)(), query.format)
 
 
 def _register(entry: ConvergenceStudy) -> None:

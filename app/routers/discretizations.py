@@ -13,8 +13,7 @@ from app.routers.caching import cached
 from app.routers.common import (
     CURVE_RESPONSES,
     ExactJSONRoute,
-    compute,
-    curve_response,
+    curve_answer,
     example_of,
     reject_repeated_parameters,
     settings_of,
@@ -102,7 +101,7 @@ def _register(entry: Discretization) -> None:
             request,
             canonical_key(request.url.path, parsed.model_dump()),
             settings,
-            lambda: curve_response(compute(entry, parsed, settings), parsed.format),
+            lambda: curve_answer(entry, parsed, settings),
         )
 
     def post_curve(request: Request, query: body) -> Response:  # type: ignore[valid-type]
@@ -112,7 +111,7 @@ def _register(entry: Discretization) -> None:
             request,
             canonical_key(request.url.path, parsed.model_dump()),
             settings,
-            lambda: curve_response(compute(entry, parsed, settings), parsed.format),
+            lambda: curve_answer(entry, parsed, settings),
         )
 
     common = {

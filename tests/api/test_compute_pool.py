@@ -1,0 +1,243 @@
+"""Heavy requests computed in a worker's child processes (app/compute_pool.py): the same answers
+as in the worker, the same problems, and children that overrun or die are replaced."""
+
+from __future__ import annotations
+
+import os
+import signal
+import socket
+import threading
+import time
+from collections.abc import Iterator
+from typing import Any
+
+import pytest
+from fastapi.testclient import TestClient
+
+from app.compute_pool import ComputePool
+from app.geometry import balls
+from app.main import create_app
+from app.routers import common
+from app.settings import Settings
+
+CURVE = "/discretizations/d4b"
+#: Estimated well above DCOSH_POOL_MIN_SECONDS (0.05 s): computed in a child by default.
+HEAVY = {"d": 1e-3, "i_min": -15_000, "i_max": 15_000}
+
+
+def pooled(settings: Settings) -> tuple[TestClient, ComputePool]:
+    """A client of an app whose worker has a pool, as app/server.py starts it."""
+    app = create_app(settings)
+    pool = ComputePool(settings)
+    pool.start()
+    app.state.admission.pool = pool
+    return TestClient(app), pool
+
+
+def children(pool: ComputePool) -> list[int]:
+    """The pool's children once it has all of them again (replacements fork in the
+    background)."""
+    for _ in range(200):
+        pids = pool.pids()
+        if len(pids) == pool.size:
+            return pids
+        time.sleep(0.05)
+    raise AssertionError(f"{pool.size} children expected, {len(pool.pids())} found")
+
+
+def kill(pid: int) -> None:
+    """SIGKILL ``pid`` and wait until it has died (a zombie until the pool reaps it)."""
+    os.kill(pid, signal.SIGKILL)
+    for _ in range(200):
+        try:
+            with open(f"/proc/{pid}/stat") as stat:
+                if stat.read().rsplit(")", 1)[1].split()[0] in ("Z", "X"):
+                    return
+        except FileNotFoundError:
+            return
+        time.sleep(0.05)
+    raise AssertionError(f"{pid} still runs")
+
+
+@pytest.fixture
+def pool_client() -> Iterator[tuple[TestClient, ComputePool]]:
+    client, pool = pooled(Settings(compute_processes=1))
+    yield client, pool
+    pool.close()
+
+
+@pytest.mark.parametrize("response_format", ["json", "npy", "csv"])
+def test_a_heavy_request_from_a_child_is_the_workers_answer_byte_for_byte(
+    pool_client: tuple[TestClient, ComputePool], response_format: str
+) -> None:
+    client, pool = pool_client
+    params = {**HEAVY, "format": response_format}
+    here = TestClient(create_app(Settings(compute_processes=0))).get(CURVE, params=params)
+    there = client.get(CURVE, params=params)
+    assert here.status_code == there.status_code == 200
+    assert there.content == here.content
+    for header in ("content-type", "etag", "x-first-index", "content-length"):
+        assert there.headers.get(header) == here.headers.get(header), header
+    assert pool.jobs == 1  # a child computed and rendered it
+
+
+def test_precision_mp_from_a_child_is_the_workers_answer(
+    pool_client: tuple[TestClient, ComputePool],
+) -> None:
+    client, pool = pool_client
+    body = {"precision": "mp", "digits": 30, "d": 0.12345678901234567890123, "i_max": 200}
+    here = TestClient(create_app(Settings(compute_processes=0))).post(CURVE, json=body)
+    there = client.post(CURVE, json=body)
+    assert here.status_code == there.status_code == 200
+    assert there.content == here.content
+    assert pool.jobs == 1
+
+
+def test_a_domain_error_in_a_child_is_the_same_422(
+    pool_client: tuple[TestClient, ComputePool],
+) -> None:
+    client, _ = pool_client
+    params = {**HEAVY, "d": 2}  # the core refuses d >= h, in the child
+    here = TestClient(create_app(Settings(compute_processes=0))).get(CURVE, params=params)
+    there = client.get(CURVE, params=params)
+    assert here.status_code == there.status_code == 422
+    assert there.headers["content-type"] == "application/problem+json"
+    assert there.json() == here.json()
+    assert there.json()["errors"][0]["parameter"] == "d"
+
+
+def _hang(*args: Any) -> Any:
+    time.sleep(600)
+
+
+def _die(*args: Any) -> Any:
+    os.kill(os.getpid(), signal.SIGKILL)
+
+
+def _out_of_memory(*args: Any) -> Any:
+    raise MemoryError
+
+
+def test_an_overrunning_child_is_killed_and_replaced_with_the_time_limit_problem(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    settings = Settings(compute_processes=1, time_limit=2.0, hard_stop_grace=0.2)
+    app = create_app(settings)
+    client = TestClient(app)
+    client.get(CURVE, params={"i_max": 3})  # the first request pays the app's lazy set-up
+    # the children are forked with a renderer that never returns (nothing checks the clock)
+    monkeypatch.setattr(common, "curve_response", _hang)
+    pool = app.state.admission.pool = ComputePool(settings)
+    pool.start()
+    try:
+        (before,) = children(pool)
+        response = client.get(CURVE, params=HEAVY)
+        assert response.status_code == 422, response.text
+        body = response.json()
+        assert body["type"] == "/problems/time-limit"
+        assert "stopped past its deadline" in body["detail"]
+        assert body["errors"][0]["parameter"] == "i_max"
+        assert pool.kills == 1
+        (after,) = children(pool)
+        assert after != before
+        with pytest.raises(ProcessLookupError):
+            os.kill(before, 0)  # killed and reaped
+    finally:
+        pool.close()
+
+
+@pytest.mark.parametrize("failure", [_die, _out_of_memory], ids=["killed", "out-of-memory"])
+def test_a_child_that_dies_computing_is_a_503_and_is_replaced(
+    monkeypatch: pytest.MonkeyPatch, failure: Any
+) -> None:
+    monkeypatch.setattr(common, "curve_response", failure)
+    client, pool = pooled(Settings(compute_processes=1))
+    try:
+        (before,) = children(pool)
+        response = client.get(CURVE, params=HEAVY)
+        assert response.status_code == 503
+        assert response.json()["type"] == "/problems/overloaded"
+        assert int(response.headers["retry-after"]) >= 1
+        assert pool.crashes == 1
+        (after,) = children(pool)
+        assert after != before
+    finally:
+        pool.close()
+
+
+def test_a_child_killed_while_idle_is_replaced_and_the_request_is_answered(
+    pool_client: tuple[TestClient, ComputePool],
+) -> None:
+    client, pool = pool_client
+    (before,) = children(pool)
+    kill(before)
+    connection = socket.socketpair()  # open in the worker while the successor forks
+    try:
+        response = client.get(CURVE, params=HEAVY)
+        assert response.status_code == 200
+        assert len(response.json()["vertices"]) == 30_001
+        (after,) = children(pool)
+        assert after != before and pool.crashes == 1
+        # the successor holds no socket of the worker's but its own pipe
+        sockets = [
+            fd
+            for fd in os.listdir(f"/proc/{after}/fd")
+            if os.readlink(f"/proc/{after}/fd/{fd}").startswith("socket:")
+        ]
+        assert len(sockets) == 1, sockets
+    finally:
+        for end in connection:
+            end.close()
+
+
+def test_a_cheap_request_stays_in_the_worker(
+    pool_client: tuple[TestClient, ComputePool],
+) -> None:
+    client, pool = pool_client
+    os.kill(pool.pids()[0], signal.SIGSTOP)  # a child that would never answer
+    try:
+        assert client.get(CURVE, params={"i_max": 5}).status_code == 200
+        assert pool.jobs == 0
+    finally:
+        os.kill(pool.pids()[0], signal.SIGCONT)
+
+
+def test_a_refinement_study_from_a_child_is_the_workers_answer() -> None:
+    client, pool = pooled(Settings(compute_processes=1, pool_min_seconds=0))
+    try:
+        here = TestClient(create_app(Settings(compute_processes=0)))
+        for response_format in ("json", "csv"):
+            params = {"levels": 4, "format": response_format}
+            expected = here.get("/convergence/theorem-14", params=params)
+            answer = client.get("/convergence/theorem-14", params=params)
+            assert expected.status_code == answer.status_code == 200
+            assert answer.content == expected.content
+        assert pool.jobs == 2
+    finally:
+        pool.close()
+
+
+def test_a_child_forked_while_a_worker_thread_holds_the_balls_lock_computes_mp(
+    pool_client: tuple[TestClient, ComputePool],
+) -> None:
+    """A replacement forks while an in-worker mp request holds the core's precision lock."""
+    client, pool = pool_client
+    held, release = threading.Event(), threading.Event()
+
+    def hold() -> None:
+        with balls.LOCK:
+            held.set()
+            release.wait(60)
+
+    thread = threading.Thread(target=hold)
+    thread.start()
+    try:
+        held.wait(10)
+        kill(children(pool)[0])
+        body = {"precision": "mp", "digits": 30, "i_max": 200}
+        response = client.post(CURVE, json=body)
+        assert response.status_code == 200
+        assert pool.jobs == 1 and pool.crashes == 1
+    finally:
+        release.set()
+        thread.join()
