@@ -295,6 +295,20 @@ class Watchdog:
 WATCHDOG = Watchdog()
 
 
+def stopped_inside(exc: BaseException) -> bool:
+    """Whether the watchdog's ``HardStopError`` is in ``exc``'s chain: raised asynchronously, it
+    can land inside a C extension calling back into Python (numba loading or running a kernel),
+    which then reports it as a ``SystemError`` caused by it."""
+    seen: set[int] = set()
+    link: BaseException | None = exc
+    while link is not None and id(link) not in seen:
+        if isinstance(link, HardStopError):
+            return True
+        seen.add(id(link))
+        link = link.__cause__ or link.__context__
+    return False
+
+
 @contextmanager
 def computing(grace: float | None = None) -> Iterator[None]:
     """Mark the current thread as computing for the current request: the watchdog may stop it
@@ -314,6 +328,10 @@ def computing(grace: float | None = None) -> Iterator[None]:
     generation = admission.generation
     try:
         yield
+    except SystemError as exc:
+        if stopped_inside(exc):  # the stop landed inside a kernel: answer it as a stop
+            raise HardStopError from exc
+        raise
     finally:
         ticket.thread = None
         # only a computation that ran alone on this worker measures the host, not the GIL

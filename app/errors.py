@@ -31,7 +31,13 @@ from starlette.exceptions import HTTPException as StarletteHTTPException
 from starlette.routing import Match
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
-from app.admission import HardStopError, OverloadedError, current, overloaded_headers
+from app.admission import (
+    HardStopError,
+    OverloadedError,
+    current,
+    overloaded_headers,
+    stopped_inside,
+)
 from app.geometry.errors import DomainError, GeometryError, TimeLimitError
 from app.limits import LimitExceededError
 from app.problem_types import (
@@ -248,22 +254,8 @@ def allowed_methods(request: Request) -> list[str]:
     return sorted(methods)
 
 
-def _stopped_inside(exc: BaseException) -> bool:
-    """Whether the watchdog's ``HardStopError`` is in ``exc``'s chain: raised asynchronously, it
-    can land inside a C extension calling back into Python (numba loading a kernel), which then
-    reports it as a ``SystemError`` caused by it."""
-    seen: set[int] = set()
-    link: BaseException | None = exc
-    while link is not None and id(link) not in seen:
-        if isinstance(link, HardStopError):
-            return True
-        seen.add(id(link))
-        link = link.__cause__ or link.__context__
-    return False
-
-
 async def _unexpected_handler(request: Request, exc: Exception) -> Response:
-    if _stopped_inside(exc):
+    if stopped_inside(exc):
         return await _hard_stop_handler(request, exc)
     logger.exception("unexpected error on %s", request.url.path)
     return problem(500, "Internal error", "The service failed on this request; it was logged.")

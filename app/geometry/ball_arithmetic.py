@@ -20,6 +20,7 @@ from app.geometry.errors import DomainError
 from app.geometry.exact import ExactReal
 from app.geometry.precision import (
     GUARD_DIGITS,
+    UNARY_FUNCTIONS,
     Arithmetic,
     Array,
     PrecisionMode,
@@ -100,21 +101,7 @@ class Ball(Arithmetic):
         self.certificate: Any = None
         """What the served curve's balls guarantee (``balls.Certificate``), set by
         ``balls.serve``."""
-        for name in (
-            "exp",
-            "expm1",
-            "log",
-            "log1p",
-            "sqrt",
-            "cos",
-            "sin",
-            "cosh",
-            "sinh",
-            "tanh",
-            "atanh",
-            "asinh",
-            "acosh",
-        ):
+        for name in UNARY_FUNCTIONS:
             setattr(self, name, _ball_function(name, self.check_time))
         atan2 = np.frompyfunc(flint.arb.atan2, 2, 1)
         self.atan2 = lambda y, x: atan2(y, x)

@@ -32,6 +32,23 @@ from app.geometry.errors import DomainError, TimeLimitError
 from app.geometry.exact import ExactReal as ExactReal
 from app.geometry.mp_elementwise import array_aware_npconvert, elementwise
 
+#: The elementary functions of one argument every arithmetic offers (float64, mpmath, balls).
+UNARY_FUNCTIONS = (
+    "exp",
+    "expm1",
+    "log",
+    "log1p",
+    "sqrt",
+    "cos",
+    "sin",
+    "cosh",
+    "sinh",
+    "tanh",
+    "atanh",
+    "asinh",
+    "acosh",
+)
+
 Array = np.ndarray[Any, np.dtype[Any]]
 """``(n,)`` float64 array in float64 mode, ``(n,)`` object array of ``mpf`` in mp mode."""
 
@@ -326,27 +343,7 @@ class MultiPrecision(Arithmetic):
     # The mpmath context and its functions are made when first used: an mp request served on
     # balls (``balls.serve``) reads only ``digits`` and the clock of this object, and a new
     # MPContext costs about 3 ms (a quarter of a 1000-vertex recursion at 50 digits).
-    _LAZY = frozenset(
-        (
-            "ctx",
-            "exp",
-            "expm1",
-            "log",
-            "log1p",
-            "sqrt",
-            "cos",
-            "sin",
-            "cosh",
-            "sinh",
-            "tanh",
-            "atanh",
-            "asinh",
-            "acosh",
-            "atan2",
-            "hypot",
-            "_isfinite",
-        )
-    )
+    _LAZY = frozenset((*UNARY_FUNCTIONS, "ctx", "atan2", "hypot", "_isfinite"))
 
     def __getattr__(self, name: str) -> Any:
         # only called for names not set yet: the lazy ones are set all at once by _build
@@ -361,19 +358,8 @@ class MultiPrecision(Arithmetic):
         ctx.dps = self.digits + GUARD_DIGITS
         ctx.npconvert = array_aware_npconvert(ctx.npconvert)
         elementwise_ = partial(elementwise, clock=self.check_time)
-        self.exp = elementwise_(ctx.exp)
-        self.expm1 = elementwise_(ctx.expm1)
-        self.log = elementwise_(ctx.log)
-        self.log1p = elementwise_(ctx.log1p)
-        self.sqrt = elementwise_(ctx.sqrt)
-        self.cos = elementwise_(ctx.cos)
-        self.sin = elementwise_(ctx.sin)
-        self.cosh = elementwise_(ctx.cosh)
-        self.sinh = elementwise_(ctx.sinh)
-        self.tanh = elementwise_(ctx.tanh)
-        self.atanh = elementwise_(ctx.atanh)
-        self.asinh = elementwise_(ctx.asinh)
-        self.acosh = elementwise_(ctx.acosh)
+        for name in UNARY_FUNCTIONS:
+            setattr(self, name, elementwise_(getattr(ctx, name)))
         self.atan2 = elementwise_(ctx.atan2, 2)
         self.hypot = elementwise_(ctx.hypot, 2)
         self._isfinite = np.frompyfunc(ctx.isfinite, 1, 1)

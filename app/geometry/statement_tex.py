@@ -337,6 +337,13 @@ PARAMETER_TEX: dict[str, str] = {
     "0 < s < h": r"0 < s < h",
     "0 < beta0 < π": r"0 < \beta_0 < \pi",
     "0 < d < h": r"0 < d < h",
+    "any real number (float64: |y1 − y0|/delta <= 1e150)": (
+        r"y_1 \in \mathbb{R}\ (\text{float64: } \lvert y_1 - y_0\rvert/\delta \le 10^{150})"
+    ),
+    "i_min <= i_max": r"i_{\min} \le i_{\max}",
+    "i_min >= 0 (example-12), i_min > −j/2 (remark-13)": (
+        r"i_{\min} \ge 0\ (\text{example-12}),\ i_{\min} > -j/2\ (\text{remark-13})"
+    ),
 }
 
 #: A fitted or derived constant of the curve responses (``constants``) -> what it is, as TeX.
