@@ -33,8 +33,6 @@ replaced again.
 from __future__ import annotations
 
 import contextlib
-import ctypes
-import ctypes.util
 import multiprocessing
 import os
 import pickle
@@ -51,6 +49,7 @@ from multiprocessing.process import BaseProcess
 from typing import Any
 
 from app import admission
+from app.server import end_with_parent
 from app.settings import Settings
 
 #: Niceness of the children (the serving processes keep 0).
@@ -78,16 +77,6 @@ class Rendered:
 
 class PoolCrashError(admission.OverloadedError):
     """The child computing a request died (out of memory, killed): a 503 with Retry-After."""
-
-
-def _die_with_parent() -> None:
-    """Ask Linux to kill this child when the worker that forked it dies."""
-    name = ctypes.util.find_library("c")
-    if name is None:
-        return
-    with contextlib.suppress(OSError, AttributeError):
-        pr_set_pdeathsig = 1
-        ctypes.CDLL(name, use_errno=True).prctl(pr_set_pdeathsig, signal.SIGKILL)
 
 
 def _mapped_bytes() -> int:
@@ -137,7 +126,7 @@ def _fresh_locks() -> None:
 
 def _child(conn: Connection, memory_limit: int) -> None:
     """A child's loop: receive a job, compute and render it, send the answer back."""
-    _die_with_parent()
+    end_with_parent(signal.SIGKILL)  # when the worker that forked it dies
     _fresh_locks()
     _close_sockets(keep=conn.fileno())
     signal.signal(signal.SIGTERM, signal.SIG_DFL)

@@ -166,15 +166,16 @@ def uvicorn_server(config: Any) -> Any:
     return uvicorn.Server(config)
 
 
-def end_with_parent() -> None:
-    """Ask Linux to send this worker SIGTERM when the server process dies (so a worker is never
-    left serving alone after a ``kill -9`` of the server)."""
+def end_with_parent(signum: int = signal.SIGTERM) -> None:
+    """Ask Linux to send this process ``signum`` when the thread that started it dies: SIGTERM
+    for a worker (never left serving alone after a ``kill -9`` of the server), SIGKILL for a
+    compute process (app/compute_pool.py)."""
     name = ctypes.util.find_library("c")
     if name is None:
         return
     with contextlib.suppress(OSError, AttributeError):
         pr_set_pdeathsig = 1
-        ctypes.CDLL(name, use_errno=True).prctl(pr_set_pdeathsig, signal.SIGTERM)
+        ctypes.CDLL(name, use_errno=True).prctl(pr_set_pdeathsig, signum)
 
 
 @dataclass
