@@ -267,10 +267,15 @@ class Watchdog:
         with self._lock:
             self._count += 1
             heapq.heappush(self._heap, (at, self._count, ticket))
+            # the thread sleeps until the earliest time in the heap: only a new earliest one
+            # needs to wake it (deadlines mostly come in order, so a computation rarely costs
+            # the thread a wake-up and a turn with the GIL)
+            earliest = self._heap[0][1] == self._count
             if self._thread is None:
                 self._thread = threading.Thread(target=self._run, name="watchdog", daemon=True)
                 self._thread.start()
-        self._wake.set()
+        if earliest:
+            self._wake.set()
 
     def _run(self) -> None:
         while True:

@@ -34,6 +34,7 @@ deadline) has nothing to watch in them, and a longer one goes to the thread pool
 
 from __future__ import annotations
 
+import functools
 import types
 from collections.abc import Container, Sequence
 from typing import Annotated, Any, Union, get_args, get_origin
@@ -45,7 +46,7 @@ from app.admission import Admission, current
 from app.limits import curve_cost
 from app.negotiation import choose, endpoint_of, with_accept
 from app.registry import DISCRETIZATIONS, Discretization
-from app.response_cache import Entry, ResponseCache, entry_of, reply
+from app.response_cache import Entry, ResponseCache, entry_of, get_reply
 from app.responses import canonical_key
 from app.routers.common import compute, curve_response
 from app.security import with_defaults
@@ -85,6 +86,13 @@ class _Route:
             for name, field in entry.query.model_fields.items()
             if is_sequence(field.annotation)
         )
+
+
+@functools.lru_cache(maxsize=16)
+def _vary(value: bytes) -> bytes:
+    """The Vary of a reply as the chain sends it: negotiation's, then CORS's for a request
+    without Origin (the cache's replies have one or two values: kept once)."""
+    return (with_accept(value.decode("latin-1")) + ", Origin").encode("latin-1")
 
 
 class FastLane:
@@ -170,20 +178,11 @@ class FastLane:
             if found is None:
                 return None
         key, entry = found
-        answer = reply(
-            self.cache,
-            key,
-            entry,
-            self.settings,
-            True,
-            None if accept_encoding is None else accept_encoding.decode("latin-1"),
-        )
-        headers = answer.response().raw_headers
+        answer = get_reply(self.cache, key, entry, self.settings, accept_encoding)
+        headers = answer.raw_headers()
         for index, (name, value) in enumerate(headers):
             if name == b"vary":
-                # Negotiation's Vary, then CORS's for a request without Origin
-                vary = with_accept(value.decode("latin-1")) + ", Origin"
-                headers[index] = (name, vary.encode("latin-1"))
+                headers[index] = (name, _vary(value))
         return answer.status, with_defaults(headers), answer.body
 
     def _digits_allowed(self, values: dict[str, Any]) -> bool:
@@ -226,7 +225,8 @@ class FastLane:
             key = canonical_key(scope["path"], query.model_dump())
             kept = self.cache.get(key)
             if kept is None:
-                kept = entry_of(curve_response(compute(entry, query, settings), query.format))
+                curve = compute(entry, query, settings, arguments)
+                kept = entry_of(curve_response(curve, query.format))
                 if kept is None:
                     return None
                 self.cache.put(key, kept)

@@ -277,6 +277,21 @@ class Reply:
     def response(self) -> Response:
         return Response(self.body, status_code=self.status, headers=self.headers)
 
+    def raw_headers(self) -> list[tuple[bytes, bytes]]:
+        """The raw ASGI headers of ``response()`` (the same pairs in the same order: lower-case
+        names, then Content-Length), without building the Response."""
+        headers = [
+            (name.lower().encode("latin-1"), value.encode("latin-1"))
+            for name, value in self.headers.items()
+        ]
+        if (
+            self.status >= 200
+            and self.status not in (204, 304)
+            and all(name != b"content-length" for name, _ in headers)
+        ):
+            headers.append((b"content-length", str(len(self.body)).encode("latin-1")))
+        return headers
+
 
 def caching_headers(settings: Settings) -> dict[str, str]:
     return {"Cache-Control": f"public, max-age={settings.cache_max_age}", "Vary": "Accept-Encoding"}
@@ -318,6 +333,19 @@ def reply(
     return Reply(entry.status, headers, body)
 
 
+def get_reply(
+    cache: ResponseCache,
+    key: str,
+    entry: Entry,
+    settings: Settings,
+    accept_encoding: bytes | None,
+) -> Reply:
+    """``reply`` to a GET from a kept entry, given the request's raw Accept-Encoding header
+    (``FastPath`` and ``app.fast_lane.FastLane``)."""
+    encodings = None if accept_encoding is None else accept_encoding.decode("latin-1")
+    return reply(cache, key, entry, settings, True, encodings)
+
+
 class FastPath:
     """ASGI middleware: repeated GETs answered from the response cache (see the module doc)."""
 
@@ -354,18 +382,12 @@ class FastPath:
         key, entry = found
         request_headers = {k.lower(): v for k, v in scope["headers"]}
         inm = request_headers.get(b"if-none-match")
-        accept = request_headers.get(b"accept-encoding")
         answer = not_modified(
             etag_for(key), None if inm is None else inm.decode("latin-1"), self.settings
         )
         if answer is None:
-            answer = reply(
-                self.cache,
-                key,
-                entry,
-                self.settings,
-                True,
-                None if accept is None else accept.decode("latin-1"),
+            answer = get_reply(
+                self.cache, key, entry, self.settings, request_headers.get(b"accept-encoding")
             )
         await answer.response()(scope, receive, send)
 

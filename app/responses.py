@@ -7,6 +7,7 @@ validation on the way out (see the serving-path facts in design.md and bench/).
 from __future__ import annotations
 
 import io
+import math
 from typing import Any
 
 import numpy as np
@@ -59,15 +60,35 @@ def number(ar: Arithmetic, value: Any) -> float | str:
 def ensure_finite(curve: Curve) -> None:
     """Last line of defence: no NaN or Infinity ever reaches a response."""
     ar = curve.arithmetic
-    for name, polyline in [("p", curve.polygon), *curve.companions.items()]:
-        if not ar.all_finite(polyline.vertices.reshape(-1)):
-            raise NotRepresentableError(
-                "precision",
-                "values representable in the chosen precision",
-                ar.mode,
-                f"the polygon {name!r} leaves the float64 range on this index range; "
-                "use precision=mp or a shorter range",
-            )
+    polylines = [("p", curve.polygon), *curve.companions.items()]
+    name = not_finite(ar, [(name, polyline.vertices) for name, polyline in polylines])
+    if name is not None:
+        raise NotRepresentableError(
+            "precision",
+            "values representable in the chosen precision",
+            ar.mode,
+            f"the polygon {name!r} leaves the float64 range on this index range; "
+            "use precision=mp or a shorter range",
+        )
+
+
+def not_finite(ar: Arithmetic, named: list[tuple[str, Any]]) -> str | None:
+    """The name of the first array with a NaN or an infinity, or None.
+
+    A float64 array whose sum is finite has neither (either makes the sum NaN or infinite): one
+    reduction, about half the cost of ``isfinite`` and ``all`` on the arrays of a small curve;
+    only an array whose sum is not finite (or overflows) is tested value by value."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        for name, values in named:
+            if (
+                isinstance(values, np.ndarray)
+                and values.dtype == np.float64
+                and math.isfinite(values.sum())
+            ):
+                continue
+            if not ar.all_finite(values.reshape(-1)):
+                return name
+    return None
 
 
 def polyline_document(ar: Arithmetic, polyline: Polyline) -> dict[str, Any]:

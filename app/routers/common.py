@@ -195,11 +195,15 @@ def selection_of(
 
 
 def admit_curve(
-    entry: Discretization, query: CurveQuery, settings: Settings
+    entry: Discretization,
+    query: CurveQuery,
+    settings: Settings,
+    arguments: dict[str, Any] | None = None,
 ) -> tuple[Selection, dict[str, Any]]:
     """Check the request's limits and charge its estimated cost; its selection and arguments."""
     selection = selection_of(query, (s.id for s in entry.info.statements), entry.info.companions)
-    arguments = query.core_arguments()
+    if arguments is None:
+        arguments = query.core_arguments()
     enforce_range(
         settings,
         arguments["i_min"],
@@ -231,9 +235,15 @@ def _computed(
     )
 
 
-def compute(entry: Discretization, query: CurveQuery, settings: Settings) -> Curve:
-    """Check the work budget, then run the core on what the request selects."""
-    return _computed(entry, query, settings, *admit_curve(entry, query, settings))
+def compute(
+    entry: Discretization,
+    query: CurveQuery,
+    settings: Settings,
+    arguments: dict[str, Any] | None = None,
+) -> Curve:
+    """Check the work budget, then run the core on what the request selects (``arguments``:
+    the query's ``core_arguments()`` when the caller has them already)."""
+    return _computed(entry, query, settings, *admit_curve(entry, query, settings, arguments))
 
 
 def curve_answer(entry: Discretization, query: CurveQuery, settings: Settings) -> Response:
