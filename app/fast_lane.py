@@ -45,11 +45,13 @@ from starlette.types import ASGIApp, Receive, Scope, Send
 from app.admission import Admission, current
 from app.limits import curve_cost
 from app.negotiation import choose, endpoint_of, with_accept
-from app.registry import DISCRETIZATIONS, Discretization
+from app.registry import DISCRETIZATIONS, STATEMENTS, Discretization, StatementEntry
 from app.response_cache import Entry, ResponseCache, entry_of, get_reply
 from app.responses import canonical_key
 from app.routers.common import compute, curve_response
+from app.routers.theorems import theorem_response
 from app.security import with_defaults
+from app.services import theorems
 from app.settings import Settings
 
 #: Most construction steps (or vertices) of a request computed on the event loop, whatever its
@@ -75,12 +77,14 @@ def is_sequence(annotation: Any) -> bool:
 
 
 class _Route:
-    """One discretization's GET as the lane serves it."""
+    """One GET path as the lane serves it: a discretization's curve, or a statement's check
+    (``statement``; computed on a discretization's curve, its default one or the one asked)."""
 
-    __slots__ = ("entry", "sequences")
+    __slots__ = ("entry", "sequences", "statement")
 
-    def __init__(self, entry: Discretization) -> None:
+    def __init__(self, entry: Discretization, statement: StatementEntry | None = None) -> None:
         self.entry = entry
+        self.statement = statement
         self.sequences = frozenset(
             name
             for name, field in entry.query.model_fields.items()
@@ -88,11 +92,32 @@ class _Route:
         )
 
 
+def _theorem_routes() -> dict[str, _Route]:
+    """The statements whose default source is a discretization's curve."""
+    routes = {}
+    for identifier, statement in STATEMENTS.items():
+        kind, owner = theorems.default_source(identifier, statement)
+        if kind == "discretization":
+            routes[f"/theorems/{identifier}"] = _Route(DISCRETIZATIONS[owner], statement)
+    return routes
+
+
+#: The values the theorem route's own ``detail`` parameter takes here (FastAPI reads more
+#: spellings of a bool: those go to the chain).
+_DETAIL = frozenset({"true", "false"})
+
+
+def _plain_digits(value: str) -> bool:
+    """Whether ``digits`` is a plain decimal integer within the theorem route's own bounds."""
+    return value.isascii() and value.isdigit() and 1 <= int(value) <= 100_000
+
+
 @functools.lru_cache(maxsize=16)
-def _vary(value: bytes) -> bytes:
-    """The Vary of a reply as the chain sends it: negotiation's, then CORS's for a request
-    without Origin (the cache's replies have one or two values: kept once)."""
-    return (with_accept(value.decode("latin-1")) + ", Origin").encode("latin-1")
+def _vary(value: bytes, negotiable: bool) -> bytes:
+    """The Vary of a reply as the chain sends it: negotiation's (on a path with formats), then
+    CORS's for a request without Origin (the cache's replies have one or two values)."""
+    present = value.decode("latin-1")
+    return ((with_accept(present) if negotiable else present) + ", Origin").encode("latin-1")
 
 
 class FastLane:
@@ -116,6 +141,7 @@ class FastLane:
             f"/discretizations/{identifier}": _Route(entry)
             for identifier, entry in DISCRETIZATIONS.items()
         }
+        self.routes.update(_theorem_routes())
         self.served = 0
         """Requests answered here (computed or from the cache)."""
 
@@ -142,7 +168,7 @@ class FastLane:
             name = name.lower()
             if name in _UNUSUAL:
                 return None
-            if name == b"accept":
+            if name == b"accept" and route.statement is None:  # a statement has one format
                 if accept is not None:
                     return None  # given twice: the chain's middlewares disagree on which
                 accept = value
@@ -182,7 +208,7 @@ class FastLane:
         headers = answer.raw_headers()
         for index, (name, value) in enumerate(headers):
             if name == b"vary":
-                headers[index] = (name, _vary(value))
+                headers[index] = (name, _vary(value, route.statement is None))
         return answer.status, with_defaults(headers), answer.body
 
     def _digits_allowed(self, values: dict[str, Any]) -> bool:
@@ -200,8 +226,29 @@ class FastLane:
     ) -> tuple[str, Entry] | None:
         """Parse, price, compute and keep a small request; None for the chain."""
         entry = route.entry
-        for name in route.sequences.intersection(values):
-            values[name] = [values[name]]
+        statement = route.statement
+        fixed: dict[str, Any] = {}
+        if statement is None:
+            for name in route.sequences.intersection(values):
+                values[name] = [values[name]]
+        else:
+            # the theorem route's own parameters, read as it reads them (the rest goes to the
+            # discretization's model with the statement's defaults under it)
+            if "study" in values or values.get("detail", "false") not in _DETAIL:
+                return None
+            if "digits" in values and not _plain_digits(values["digits"]):
+                return None
+            asked = values.pop("discretization", None)
+            identifier = statement.statement.id
+            try:
+                kind, owner = theorems.resolve_source(identifier, statement, asked, None)
+            except Exception:  # the chain's 404 or 422
+                return None
+            if kind != "discretization":
+                return None
+            entry = DISCRETIZATIONS[owner]
+            values = {**dict(statement.statement.defaults), **values}
+            fixed = {"discretization": owner}
         admission = self.admission
         settings = self.settings
         ticket = current()
@@ -222,11 +269,15 @@ class FastLane:
             seconds, _ = curve_cost(vertices, steps, "float64", query.digits, entry.info.id)
             if seconds > settings.fast_lane_seconds or steps > MAX_STEPS:
                 return None
-            key = canonical_key(scope["path"], query.model_dump())
+            key = canonical_key(scope["path"], {**fixed, **query.model_dump()})
             kept = self.cache.get(key)
             if kept is None:
                 curve = compute(entry, query, settings, arguments)
-                kept = entry_of(curve_response(curve, query.format))
+                if statement is None:
+                    response = curve_response(curve, query.format)
+                else:
+                    response = theorem_response(statement, fixed["discretization"], curve)
+                kept = entry_of(response)
                 if kept is None:
                     return None
                 self.cache.put(key, kept)

@@ -343,18 +343,38 @@ def gzip_levels(count: int) -> None:
         )
 
 
-def start_service(port: int, env: dict[str, str] | None = None) -> subprocess.Popen[bytes]:
-    """The server as ``make run`` starts it (``python -m app.server``), access log off."""
+def start_service(
+    port: int, env: dict[str, str] | None = None, tree: Path = ROOT
+) -> subprocess.Popen[bytes]:
+    """The server as ``make run`` starts it (``python -m app.server``), access log off;
+    ``tree``: the checkout whose ``app`` it serves (this one by default)."""
     from app.server import command
 
     argv = command("127.0.0.1", port, 1, ["--log-level", "warning", "--no-access-log"])
     environment = {**os.environ, **SERVER_ENV, **(env or {})}
-    return _serving(subprocess.Popen(argv, cwd=ROOT, env=environment), port)
+    if (
+        tree != ROOT
+    ):  # its own compiled kernels (warm them there first: python -m app.geometry.warm)
+        environment["NUMBA_CACHE_DIR"] = str(tree / ".numba-cache")
+    return _serving(subprocess.Popen(argv, cwd=tree, env=environment), port)
 
 
 #: The served configuration, and the same without the fast lane (app/fast_lane.py): every
 #: request through the whole middleware chain, routing and the thread pool.
-CONFIGURATIONS = {"lane": {}, "chain": {"DCOSH_FAST_LANE_SECONDS": "0"}}
+CONFIGURATIONS: dict[str, dict[str, str]] = {
+    "lane": {},
+    "chain": {"DCOSH_FAST_LANE_SECONDS": "0"},
+}
+
+#: ``BENCH_BEFORE=<directory>``: also a third server, the served configuration of another
+#: checkout (an export of an earlier commit, its kernels warmed there), in the same rounds:
+#: before and after side by side.
+BEFORE = os.environ.get("BENCH_BEFORE")
+TITLES = {
+    "lane": "fast lane (served)",
+    "chain": "full chain (DCOSH_FAST_LANE_SECONDS=0)",
+    "before": f"before ({BEFORE})",
+}
 
 
 def computed_gets(rounds: int = ROUNDS) -> dict[str, float]:
@@ -365,9 +385,12 @@ def computed_gets(rounds: int = ROUNDS) -> dict[str, float]:
     scripts: dict[str, str] = {}
     runs: dict[str, dict[str, list[Load]]] = {}
     try:
-        for name, env in CONFIGURATIONS.items():
+        trees = {name: (env, ROOT) for name, env in CONFIGURATIONS.items()}
+        if BEFORE:
+            trees["before"] = ({}, Path(BEFORE).resolve())
+        for name, (env, tree) in trees.items():
             port = free_port()
-            servers[name] = (f"http://127.0.0.1:{port}", start_service(port, env))
+            servers[name] = (f"http://127.0.0.1:{port}", start_service(port, env, tree))
             fetch(port, SMALL)
         for label, query in (("every check", ""), ("checks=none", "&checks=none")):
             descriptor, scripts[label] = tempfile.mkstemp(suffix=".lua")
@@ -394,7 +417,7 @@ def computed_gets(rounds: int = ROUNDS) -> dict[str, float]:
         "  per variant: requests/s, p50, ratio to /health (requests/s), server CPU ms per "
         "request, and ratio to /health in server CPU"
     )
-    print(f"  {'':<14}{'fast lane (served)':>52}   {'full chain (DCOSH_FAST_LANE_SECONDS=0)':>52}")
+    print(f"  {'':<14}" + "   ".join(f"{TITLES[name]:>52}" for name in servers))
     ratios = {}
     for variant in runs["lane"]:
         cells = []
@@ -420,7 +443,7 @@ def computed_gets(rounds: int = ROUNDS) -> dict[str, float]:
             label = f"computed 100-vertex D4b GET, {variant}, × /health"
             verdict = "   " + record_target(label, ratios[variant], target, "≥")
         title = "GET /health" if variant == "bare" else variant
-        print(f"  {title:<14}{cells[0]:>52}   {cells[1]:>52}{verdict}")
+        print(f"  {title:<14}" + "   ".join(f"{cell:>52}" for cell in cells) + verdict)
     return ratios
 
 

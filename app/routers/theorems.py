@@ -7,9 +7,10 @@ from fastapi import APIRouter, Depends, Path, Query, Request, Response
 from app.errors import UnknownIdError
 from app.geometry import balls
 from app.geometry.checks import Check
+from app.geometry.curve import Curve
 from app.geometry.precision import arithmetic
 from app.geometry.statement_tex import CLAIM_TEX, ERRATUM_TEX
-from app.registry import SMOOTH, STATEMENTS
+from app.registry import SMOOTH, STATEMENTS, StatementEntry
 from app.responses import canonical_key, encode_json
 from app.routers import surfaces
 from app.routers.caching import JSONBytesResponse, cached
@@ -115,11 +116,7 @@ def check_statement(
     settings = settings_of(request)
 
     def respond(checks: list[Check], parameters: dict[str, Any], ar: Any) -> Response:
-        certified = balls.certificate(ar) is not None  # mp curves: on rigorous balls
-        document = theorems.document(
-            entry, kind, owner, checks, parameters, ar.describe(), certified
-        )
-        return JSONBytesResponse(encode_json(document))
+        return checked_response(entry, kind, owner, checks, parameters, ar)
 
     if kind == "study":
         source = study(owner)
@@ -167,8 +164,28 @@ def check_statement(
     query = parse_query(target.query, {**dict(entry.statement.defaults), **values})
 
     def build() -> Response:
-        curve = compute(target, query, settings)
-        return respond(curve.checks, curve.parameters, curve.arithmetic)
+        return theorem_response(entry, owner, compute(target, query, settings))
 
     key = canonical_key(request.url.path, {"discretization": owner, **query.model_dump()})
     return cached(request, key, settings, build)
+
+
+def checked_response(
+    entry: StatementEntry,
+    kind: str,
+    owner: str,
+    checks: list[Check],
+    parameters: dict[str, Any],
+    ar: Any,
+) -> Response:
+    """The statement's document from the checks of its source, as JSON bytes."""
+    certified = balls.certificate(ar) is not None  # mp curves: on rigorous balls
+    document = theorems.document(entry, kind, owner, checks, parameters, ar.describe(), certified)
+    return JSONBytesResponse(encode_json(document))
+
+
+def theorem_response(entry: StatementEntry, owner: str, curve: Curve) -> Response:
+    """The statement checked on the curve of discretization ``owner`` (also the fast lane's)."""
+    return checked_response(
+        entry, "discretization", owner, curve.checks, curve.parameters, curve.arithmetic
+    )
