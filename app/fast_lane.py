@@ -1,4 +1,5 @@
-"""The fast lane: small computed curve GETs answered without the middleware chain or a thread.
+"""The fast lane: small computed curve (and theorem) GETs answered without the middleware chain
+or a thread.
 
 A GET of ``/discretizations/{id}`` goes through seven middlewares, Starlette's routing,
 FastAPI's dependency solving and a hop to the thread pool before ``compute`` runs, and the
@@ -19,6 +20,12 @@ directly:
   on the event loop, by the same ``compute`` and ``curve_response`` as the route, charged to
   admission by the same budget check, kept in the response cache under the same key and
   answered by the same ``reply``.
+
+A GET of ``/theorems/{id}`` whose statement is checked on a discretization's curve (by default,
+or on the one ``discretization`` names) takes the same way with the theorem route's own reading
+of its parameters (the statement's defaults under the query, the curve's model, the route's
+``detail`` and ``digits`` only in their plain spellings, no ``study``) and its document
+(``app.routers.theorems.theorem_response``); ``Accept`` plays no part there (one format).
 
 Everything else, and every request whose parsing, computation or admission raises, goes on to
 the full chain, which answers it as before (an error is computed again there: errors are
@@ -276,7 +283,8 @@ class FastLane:
                 if statement is None:
                     response = curve_response(curve, query.format)
                 else:
-                    response = theorem_response(statement, fixed["discretization"], curve)
+                    owner = fixed["discretization"]
+                    response = theorem_response(statement, owner, curve, query.checks)
                 kept = entry_of(response)
                 if kept is None:
                     return None

@@ -8,6 +8,7 @@ from app.errors import UnknownIdError
 from app.geometry import balls
 from app.geometry.checks import Check
 from app.geometry.curve import Curve
+from app.geometry.errors import DomainError
 from app.geometry.precision import arithmetic
 from app.geometry.statement_tex import CLAIM_TEX, ERRATUM_TEX
 from app.registry import SMOOTH, STATEMENTS, StatementEntry
@@ -164,7 +165,7 @@ def check_statement(
     query = parse_query(target.query, {**dict(entry.statement.defaults), **values})
 
     def build() -> Response:
-        return theorem_response(entry, owner, compute(target, query, settings))
+        return theorem_response(entry, owner, compute(target, query, settings), query.checks)
 
     key = canonical_key(request.url.path, {"discretization": owner, **query.model_dump()})
     return cached(request, key, settings, build)
@@ -184,8 +185,19 @@ def checked_response(
     return JSONBytesResponse(encode_json(document))
 
 
-def theorem_response(entry: StatementEntry, owner: str, curve: Curve) -> Response:
-    """The statement checked on the curve of discretization ``owner`` (also the fast lane's)."""
+def theorem_response(entry: StatementEntry, owner: str, curve: Curve, checks: str) -> Response:
+    """The statement checked on the curve of discretization ``owner`` (also the fast lane's).
+
+    ``checks`` is the request's: one that leaves this statement's check out (``none``, a list
+    without it, ``failed`` when it holds) is a 422 naming it, not a missing check."""
+    identifier = entry.statement.id
+    if all(check.id != identifier for check in curve.checks):
+        raise DomainError(
+            "checks",
+            f"all, or a list naming {identifier} (the statement checked here)",
+            checks,
+            f"the check of {identifier} is not in the selection",
+        )
     return checked_response(
         entry, "discretization", owner, curve.checks, curve.parameters, curve.arithmetic
     )

@@ -103,6 +103,9 @@ CASES: list[tuple[str, str, str, dict[str, str], int]] = [
     ("GET", "/theorems/theorem-5", f"{SMALL}&digits=0", {}, 0),
     ("GET", "/theorems/theorem-5", f"{SMALL}&digits=abc", {}, 0),
     ("GET", "/theorems/theorem-5", f"{SMALL}&d=2", {}, 0),
+    ("GET", "/theorems/theorem-5", f"{SMALL}&checks=none", {}, 0),
+    ("GET", "/theorems/theorem-5", f"{SMALL}&checks=theorem-6", {}, 0),
+    ("GET", "/theorems/theorem-5", f"{SMALL}&checks=theorem-5,theorem-6", {}, 2),
     ("GET", "/theorems/theorem-5", f"{SMALL}&d=0.2&d=0.3", {}, 0),
     ("GET", "/theorems/theorem-5", f"{SMALL}&nonsense=1", {}, 0),
     ("GET", "/theorems/theorem-5", "discretization=d1", {}, 0),
@@ -214,3 +217,19 @@ def test_sequence_fields_are_those_fastapi_reads_as_lists() -> None:
             assert is_sequence(field.annotation) == expected, (entry.info.id, name)
             seen.add(expected)
     assert seen == {True, False}
+
+
+@pytest.mark.parametrize("checks", ["none", "theorem-6", "failed"])
+def test_a_theorem_whose_check_is_left_out_is_a_422_naming_checks(
+    clients: tuple[TestClient, TestClient], checks: str
+) -> None:
+    """``checks`` that leaves the statement's own check out (``failed``: theorem 5 holds) was a
+    500 (a missing check); now the chain's 422, the same with and without the lane."""
+    for client in clients:
+        response = client.get(f"/theorems/theorem-5?{SMALL}&checks={checks}")
+        assert response.status_code == 422
+        assert response.headers["content-type"] == "application/problem+json"
+        [error] = response.json()["errors"]
+        assert error["parameter"] == "checks"
+        assert error["value"] == checks
+        assert "theorem-5" in error["constraint"]
