@@ -217,7 +217,7 @@ def admit_curve(
     return selection, arguments
 
 
-def _computed(
+def computed(
     entry: Discretization,
     query: CurveQuery,
     settings: Settings,
@@ -233,7 +233,7 @@ def _computed(
 
 def compute(entry: Discretization, query: CurveQuery, settings: Settings) -> Curve:
     """Check the work budget, then run the core on what the request selects."""
-    return _computed(entry, query, settings, *admit_curve(entry, query, settings))
+    return computed(entry, query, settings, *admit_curve(entry, query, settings))
 
 
 def curve_answer(entry: Discretization, query: CurveQuery, settings: Settings) -> Response:
@@ -245,7 +245,7 @@ def curve_answer(entry: Discretization, query: CurveQuery, settings: Settings) -
         # the validated values travel (a POST's body model is built at run time: no pickling)
         values = dict(query)
         return in_child(pool, render_curve, entry.info.id, values, query.model_fields_set, settings)
-    return curve_response(_computed(entry, query, settings, selection, arguments), query.format)
+    return curve_response(computed(entry, query, settings, selection, arguments), query.format)
 
 
 def in_child(pool: compute_pool.ComputePool, function: Callable[..., Any], *args: Any) -> Response:
