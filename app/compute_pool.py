@@ -23,6 +23,12 @@ where the round trip would cost more than it saves.
   (``HardStopError``). A child that dies (out of memory, killed) is replaced and its request
   gets a 503 with Retry-After.
 
+Every computation on rigorous balls (precision=mp of a curve, app/geometry/balls.py) goes to a
+child, however cheap: it holds the balls' precision lock for its whole run, and the worker's
+watchdog (app/admission.py) stops a thread with an asynchronous exception, which may land
+between the lock's acquisition and the code that releases it (a lock left held, or released
+later by another thread). A child has no watchdog: it is stopped by being killed, lock and all.
+
 Replacement children are forked from a worker that runs threads by then; a lock another
 thread held at that moment stays locked in the child. The core's one module lock (the balls'
 precision, app/geometry/balls.py) is made anew in every child; a child stuck on another one
@@ -292,13 +298,16 @@ class ComputePool:
         return Rendered(status, media_type, dict(headers), body)
 
 
-def offload() -> ComputePool | None:
-    """The current worker's pool if the current request is heavy enough to compute there."""
+def offload(balls: bool = False) -> ComputePool | None:
+    """The current worker's pool if the current request is heavy enough to compute there, or
+    computes on rigorous balls (``balls``: precision=mp of a curve, however cheap)."""
     state = admission.current_admission()
     ticket = admission.current()
     if state is None or ticket is None:
         return None
     pool: ComputePool | None = state.pool
-    if pool is None or pool.closed or ticket.seconds < state.settings.pool_min_seconds:
+    if pool is None or pool.closed:
+        return None
+    if not balls and ticket.seconds < state.settings.pool_min_seconds:
         return None
     return pool

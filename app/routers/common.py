@@ -240,7 +240,7 @@ def curve_answer(entry: Discretization, query: CurveQuery, settings: Settings) -
     """The curve rendered in the request's format: computed here, or in a child process of
     the worker's pool when its estimate is heavy (app/compute_pool.py)."""
     selection, arguments = admit_curve(entry, query, settings)
-    pool = compute_pool.offload()
+    pool = compute_pool.offload(balls=query.precision == "mp")
     if pool is not None:
         # the validated values travel (a POST's body model is built at run time: no pickling)
         values = dict(query)

@@ -244,7 +244,8 @@ def get_relations(
     run = _prepare(parsed, settings)
 
     def build() -> Response:
-        pool = compute_pool.offload()  # heavy: computed and rendered in a child process
+        # heavy or on balls (mp): computed and rendered in a child process
+        pool = compute_pool.offload(balls=parsed.precision == "mp")
         if pool is not None:
             values = dict(parsed)
             return in_child(pool, render_relations, values, parsed.model_fields_set, settings)

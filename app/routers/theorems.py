@@ -177,7 +177,8 @@ def check_statement(
 
     def build() -> Response:
         chosen, arguments = admit_curve(target, query, settings)
-        pool = compute_pool.offload()  # heavy: computed and rendered in a child process
+        # heavy or on balls (mp): computed and rendered in a child process
+        pool = compute_pool.offload(balls=query.precision == "mp")
         if pool is not None:
             job = (dict(query), query.model_fields_set)
             return in_child(pool, render_curve_check, statement_id, owner, *job, settings)

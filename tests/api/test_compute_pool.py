@@ -202,6 +202,22 @@ def test_a_cheap_request_stays_in_the_worker(
         os.kill(pool.pids()[0], signal.SIGCONT)
 
 
+def test_a_cheap_mp_curve_is_computed_in_a_child_never_under_the_watchdog(
+    pool_client: tuple[TestClient, ComputePool],
+) -> None:
+    """Balls hold their precision lock throughout: the worker's asynchronous stop could land
+    inside it, so precision=mp curves, however cheap, are computed in a child."""
+    client, pool = pool_client
+    params = {"precision": "mp", "digits": 20, "i_max": 3}
+    expected = TestClient(create_app(Settings(compute_processes=0))).get(CURVE, params=params)
+    for path in (CURVE, "/theorems/theorem-5"):
+        jobs = pool.jobs
+        answer = client.get(path, params=params)
+        assert answer.status_code == 200, answer.text
+        assert pool.jobs == jobs + 1
+    assert client.get(CURVE, params=params).content == expected.content  # now from the cache
+
+
 def test_a_refinement_study_from_a_child_is_the_workers_answer() -> None:
     client, pool = pooled(Settings(compute_processes=1, pool_min_seconds=0))
     try:
