@@ -198,8 +198,8 @@ class ComputePool:
         self.size = settings.compute_processes
         self._idle: queue.LifoQueue[_Child] = queue.LifoQueue()
         self._children: list[_Child] = []
-        self._wanted: queue.SimpleQueue[bool] = queue.SimpleQueue()
-        """One True per child to fork (False: stop)."""
+        self._wanted: queue.SimpleQueue[_Child | None] = queue.SimpleQueue()
+        """A killed child to reap and replace (None: stop)."""
         self._lock = threading.Lock()
         self.jobs = 0
         """Requests sent to a child."""
@@ -218,7 +218,8 @@ class ComputePool:
         threading.Thread(target=self._respawn, name="compute-pool", daemon=True).start()
 
     def _respawn(self) -> None:
-        while self._wanted.get():
+        while (dead := self._wanted.get()) is not None:
+            dead.kill()  # reaped here: a large child takes a while to exit on a busy host
             if not self.closed:
                 self._idle.put(self._spawn())
 
@@ -231,12 +232,17 @@ class ComputePool:
         return child
 
     def _replace(self, child: _Child) -> None:
-        child.kill()
+        """Kill ``child`` now; the pool's thread reaps it and forks its successor, so that
+        the request answers at once (not after a large child's exit)."""
+        with contextlib.suppress(OSError, ValueError, AttributeError):
+            child.process.kill()
         with self._lock:
             if child in self._children:
                 self._children.remove(child)
-        if not self.closed:
-            self._wanted.put(True)
+        if self.closed:
+            child.kill()
+        else:
+            self._wanted.put(child)
 
     def pids(self) -> list[int]:
         with self._lock:
@@ -244,7 +250,7 @@ class ComputePool:
 
     def close(self) -> None:
         self.closed = True
-        self._wanted.put(False)
+        self._wanted.put(None)
         with self._lock:
             children, self._children = self._children, []
         for child in children:
