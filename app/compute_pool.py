@@ -21,7 +21,8 @@ where the round trip would cost more than it saves.
 - A child still computing ``DCOSH_HARD_STOP_GRACE`` seconds past its request's deadline is
   killed (SIGKILL) and replaced, and the request gets the time-limit problem
   (``HardStopError``). A child that dies (out of memory, killed) is replaced and its request
-  gets a 503 with Retry-After.
+  gets a 503 with Retry-After, as does a request that waits for a free child until it could
+  no longer finish by its deadline.
 
 Every computation on rigorous balls (precision=mp of a curve, app/geometry/balls.py) goes to a
 child, however cheap: it holds the balls' precision lock for its whole run, and the worker's
@@ -83,6 +84,10 @@ class Rendered:
 
 class PoolCrashError(admission.OverloadedError):
     """The child computing a request died (out of memory, killed): a 503 with Retry-After."""
+
+
+class PoolBusyError(admission.OverloadedError):
+    """No child became free in time for the request to finish by its deadline: a 503."""
 
 
 def _mapped_bytes() -> int:
@@ -270,11 +275,20 @@ class ComputePool:
         if ticket is not None:
             ticket.thread = None  # this thread only waits: the pool stops the child instead
         stop_at = deadline + self.settings.hard_stop_grace
+        # waiting for a free child ends when the request could no longer finish in time: then
+        # it is refused (503 with Retry-After), before any work, not stopped at its deadline
+        state = admission.current_admission()
+        slowdown = 1.0 if state is None else state.slowdown
+        need = 0.0 if ticket is None else ticket.seconds * slowdown
         while True:
             try:
-                child = self._idle.get(timeout=max(0.0, stop_at - time.monotonic()))
+                child = self._idle.get(timeout=max(0.0, deadline - need - time.monotonic()))
             except queue.Empty:
-                raise admission.HardStopError from None
+                raise PoolBusyError(
+                    "no compute process became free early enough for it to finish within "
+                    f"{self.settings.time_limit:g} s of its arrival",
+                    1 if state is None else state.retry_after(),
+                ) from None
             if child.process.is_alive():
                 break
             # it died while idle (killed from outside): nothing of this request was lost

@@ -357,3 +357,33 @@ def test_an_overrunning_child_of_every_routed_endpoint_is_the_time_limit_problem
         assert after != before
     finally:
         pool.close()
+
+
+def test_a_request_waiting_for_a_busy_pool_is_refused_before_its_deadline(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """No child frees up in time: a 503 with Retry-After before the deadline, no work done."""
+    settings = Settings(compute_processes=1, time_limit=2.0, hard_stop_grace=0.2)
+    app = create_app(settings)
+    client = TestClient(app)
+    client.get(CURVE, params={"i_max": 3})  # the first request pays the app's lazy set-up
+    monkeypatch.setattr(common, "curve_response", _hang)  # the one child never answers
+    pool = app.state.admission.pool = ComputePool(settings)
+    pool.start()
+    try:
+        first = threading.Thread(target=client.get, args=(CURVE,), kwargs={"params": HEAVY})
+        first.start()
+        for _ in range(200):
+            if pool.jobs:
+                break
+            time.sleep(0.01)
+        response = client.get(CURVE, params={**HEAVY, "d": 2e-3})
+        assert response.status_code == 503, response.text
+        assert response.json()["type"] == "/problems/overloaded"
+        assert "no compute process became free" in response.json()["detail"]
+        assert int(response.headers["retry-after"]) >= 1
+        assert pool.jobs == 1  # never handed to a child
+        first.join()
+        assert pool.kills == 1
+    finally:
+        pool.close()
