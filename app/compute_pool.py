@@ -21,7 +21,14 @@ where the round trip would cost more than it saves.
 - A child still computing ``DCOSH_HARD_STOP_GRACE`` seconds past its request's deadline is
   killed (SIGKILL) and replaced, and the request gets the time-limit problem
   (``HardStopError``). A child that dies (out of memory, killed) is replaced and its request
-  gets a 503 with Retry-After.
+  gets a 503 with Retry-After, as does a request that waits for a free child until it could
+  no longer finish by its deadline.
+
+Every computation on rigorous balls (precision=mp of a curve, app/geometry/balls.py) goes to a
+child, however cheap: it holds the balls' precision lock for its whole run, and the worker's
+watchdog (app/admission.py) stops a thread with an asynchronous exception, which may land
+between the lock's acquisition and the code that releases it (a lock left held, or released
+later by another thread). A child has no watchdog: it is stopped by being killed, lock and all.
 
 Replacement children are forked from a worker that runs threads by then; a lock another
 thread held at that moment stays locked in the child. The core's one module lock (the balls'
@@ -77,6 +84,10 @@ class Rendered:
 
 class PoolCrashError(admission.OverloadedError):
     """The child computing a request died (out of memory, killed): a 503 with Retry-After."""
+
+
+class PoolBusyError(admission.OverloadedError):
+    """No child became free in time for the request to finish by its deadline: a 503."""
 
 
 def _mapped_bytes() -> int:
@@ -192,8 +203,8 @@ class ComputePool:
         self.size = settings.compute_processes
         self._idle: queue.LifoQueue[_Child] = queue.LifoQueue()
         self._children: list[_Child] = []
-        self._wanted: queue.SimpleQueue[bool] = queue.SimpleQueue()
-        """One True per child to fork (False: stop)."""
+        self._wanted: queue.SimpleQueue[_Child | None] = queue.SimpleQueue()
+        """A killed child to reap and replace (None: stop)."""
         self._lock = threading.Lock()
         self.jobs = 0
         """Requests sent to a child."""
@@ -212,7 +223,8 @@ class ComputePool:
         threading.Thread(target=self._respawn, name="compute-pool", daemon=True).start()
 
     def _respawn(self) -> None:
-        while self._wanted.get():
+        while (dead := self._wanted.get()) is not None:
+            dead.kill()  # reaped here: a large child takes a while to exit on a busy host
             if not self.closed:
                 self._idle.put(self._spawn())
 
@@ -225,12 +237,17 @@ class ComputePool:
         return child
 
     def _replace(self, child: _Child) -> None:
-        child.kill()
+        """Kill ``child`` now; the pool's thread reaps it and forks its successor, so that
+        the request answers at once (not after a large child's exit)."""
+        with contextlib.suppress(OSError, ValueError, AttributeError):
+            child.process.kill()
         with self._lock:
             if child in self._children:
                 self._children.remove(child)
-        if not self.closed:
-            self._wanted.put(True)
+        if self.closed:
+            child.kill()
+        else:
+            self._wanted.put(child)
 
     def pids(self) -> list[int]:
         with self._lock:
@@ -238,7 +255,7 @@ class ComputePool:
 
     def close(self) -> None:
         self.closed = True
-        self._wanted.put(False)
+        self._wanted.put(None)
         with self._lock:
             children, self._children = self._children, []
         for child in children:
@@ -258,11 +275,20 @@ class ComputePool:
         if ticket is not None:
             ticket.thread = None  # this thread only waits: the pool stops the child instead
         stop_at = deadline + self.settings.hard_stop_grace
+        # waiting for a free child ends when the request could no longer finish in time: then
+        # it is refused (503 with Retry-After), before any work, not stopped at its deadline
+        state = admission.current_admission()
+        slowdown = 1.0 if state is None else state.slowdown
+        need = 0.0 if ticket is None else ticket.seconds * slowdown
         while True:
             try:
-                child = self._idle.get(timeout=max(0.0, stop_at - time.monotonic()))
+                child = self._idle.get(timeout=max(0.0, deadline - need - time.monotonic()))
             except queue.Empty:
-                raise admission.HardStopError from None
+                raise PoolBusyError(
+                    "no compute process became free early enough for it to finish within "
+                    f"{self.settings.time_limit:g} s of its arrival",
+                    1 if state is None else state.retry_after(),
+                ) from None
             if child.process.is_alive():
                 break
             # it died while idle (killed from outside): nothing of this request was lost
@@ -292,13 +318,16 @@ class ComputePool:
         return Rendered(status, media_type, dict(headers), body)
 
 
-def offload() -> ComputePool | None:
-    """The current worker's pool if the current request is heavy enough to compute there."""
+def offload(balls: bool = False) -> ComputePool | None:
+    """The current worker's pool if the current request is heavy enough to compute there, or
+    computes on rigorous balls (``balls``: precision=mp of a curve, however cheap)."""
     state = admission.current_admission()
     ticket = admission.current()
     if state is None or ticket is None:
         return None
     pool: ComputePool | None = state.pool
-    if pool is None or pool.closed or ticket.seconds < state.settings.pool_min_seconds:
+    if pool is None or pool.closed:
+        return None
+    if not balls and ticket.seconds < state.settings.pool_min_seconds:
         return None
     return pool

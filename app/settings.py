@@ -89,7 +89,8 @@ class Settings(BaseSettings):
         0.05,
         ge=0,
         description="Estimated seconds from which a request computes in a child process "
-        "(cheaper ones compute in the worker: the round trip would cost more than it saves).",
+        "(cheaper ones compute in the worker: the round trip would cost more than it saves; "
+        "precision=mp curves always compute in a child).",
     )
     time_limit: float = Field(
         20.0,

@@ -221,7 +221,7 @@ def admit_curve(
     return selection, arguments
 
 
-def _computed(
+def computed(
     entry: Discretization,
     query: CurveQuery,
     settings: Settings,
@@ -243,19 +243,19 @@ def compute(
 ) -> Curve:
     """Check the work budget, then run the core on what the request selects (``arguments``:
     the query's ``core_arguments()`` when the caller has them already)."""
-    return _computed(entry, query, settings, *admit_curve(entry, query, settings, arguments))
+    return computed(entry, query, settings, *admit_curve(entry, query, settings, arguments))
 
 
 def curve_answer(entry: Discretization, query: CurveQuery, settings: Settings) -> Response:
     """The curve rendered in the request's format: computed here, or in a child process of
     the worker's pool when its estimate is heavy (app/compute_pool.py)."""
     selection, arguments = admit_curve(entry, query, settings)
-    pool = compute_pool.offload()
+    pool = compute_pool.offload(balls=query.precision == "mp")
     if pool is not None:
         # the validated values travel (a POST's body model is built at run time: no pickling)
         values = dict(query)
         return in_child(pool, render_curve, entry.info.id, values, query.model_fields_set, settings)
-    return curve_response(_computed(entry, query, settings, selection, arguments), query.format)
+    return curve_response(computed(entry, query, settings, selection, arguments), query.format)
 
 
 def in_child(pool: compute_pool.ComputePool, function: Callable[..., Any], *args: Any) -> Response:

@@ -9,6 +9,7 @@ from urllib.parse import urlencode
 from fastapi import APIRouter, Depends, Query, Request, Response
 from pydantic import Field, create_model
 
+from app import compute_pool
 from app.geometry import balls, relations
 from app.geometry.curve import Curve
 from app.geometry.errors import DomainError
@@ -19,7 +20,9 @@ from app.responses import canonical_key, encode_json, number
 from app.routers.caching import JSONBytesResponse, cached
 from app.routers.common import (
     SVG_HEADERS,
-    compute,
+    admit_curve,
+    computed,
+    in_child,
     parse_query,
     reject_repeated_parameters,
     settings_of,
@@ -97,11 +100,12 @@ def _prefixed(error: DomainError | LimitExceededError, prefix: str) -> Exception
 def _prepare(
     query: RelationsBase, settings: Settings
 ) -> Callable[[], list[tuple[Discretization, Curve]]]:
-    """Validate every row's parameters and check its limits now; return the computation."""
+    """Validate every row's parameters, check its limits and charge its cost now, before any
+    row is computed; return the computation."""
     if query.precision == "mp":
         enforce_digits(settings, query.digits)
     given = query.model_fields_set
-    prepared = []
+    queries = []
     for entry in DISCRETIZATIONS.values():
         prefix = f"{entry.info.id}."
         values: dict[str, Any] = {"precision": query.precision, "digits": query.digits}
@@ -114,13 +118,19 @@ def _prepare(
             enforce_relation_row(settings, "i_max", arguments["i_min"], arguments["i_max"])
         except LimitExceededError as error:
             raise _prefixed(error, prefix) from None
-        prepared.append((entry, row_query, prefix))
+        queries.append((entry, row_query, prefix))
+    prepared = []
+    for entry, row_query, prefix in queries:
+        try:
+            prepared.append((entry, row_query, prefix, *admit_curve(entry, row_query, settings)))
+        except (DomainError, LimitExceededError) as error:
+            raise _prefixed(error, prefix) from None
 
     def run() -> list[tuple[Discretization, Curve]]:
         curves = []
-        for entry, row_query, prefix in prepared:
+        for entry, row_query, prefix, chosen, arguments in prepared:
             try:
-                curves.append((entry, compute(entry, row_query, settings)))
+                curves.append((entry, computed(entry, row_query, settings, chosen, arguments)))
             except (DomainError, LimitExceededError) as error:
                 raise _prefixed(error, prefix) from None
         return curves
@@ -234,20 +244,36 @@ def get_relations(
     run = _prepare(parsed, settings)
 
     def build() -> Response:
-        document = relations_document(run())
-        if parsed.format == "html":
-            return Response(
-                table_html(relations_table(document)),
-                media_type=HTML_MEDIA_TYPE,
-                headers=SVG_HEADERS,
-            )
-        if parsed.format == "svg":
-            return Response(
-                table_svg(relations_table(document)),
-                media_type="image/svg+xml",
-                headers=SVG_HEADERS,
-            )
-        return JSONBytesResponse(encode_json(document))
+        # heavy or on balls (mp): computed and rendered in a child process
+        pool = compute_pool.offload(balls=parsed.precision == "mp")
+        if pool is not None:
+            values = dict(parsed)
+            return in_child(pool, render_relations, values, parsed.model_fields_set, settings)
+        return relations_answer(run(), parsed.format)
 
     key = canonical_key(request.url.path, parsed.model_dump(by_alias=True))
     return cached(request, key, settings, build)
+
+
+def relations_answer(curves: list[tuple[Discretization, Curve]], response_format: str) -> Response:
+    """The matrix of the computed rows in the request's format."""
+    document = relations_document(curves)
+    if response_format == "html":
+        return Response(
+            table_html(relations_table(document)),
+            media_type=HTML_MEDIA_TYPE,
+            headers=SVG_HEADERS,
+        )
+    if response_format == "svg":
+        return Response(
+            table_svg(relations_table(document)),
+            media_type="image/svg+xml",
+            headers=SVG_HEADERS,
+        )
+    return JSONBytesResponse(encode_json(document))
+
+
+def render_relations(values: dict[str, Any], fields_set: set[str], settings: Settings) -> Response:
+    """What a pool child runs for ``get_relations`` (its charges are no-ops there)."""
+    parsed: RelationsBase = RelationsQuery.model_construct(fields_set, **values)
+    return relations_answer(_prepare(parsed, settings)(), parsed.format)

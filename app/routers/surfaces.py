@@ -5,12 +5,14 @@ from typing import Annotated, Any
 from fastapi import APIRouter, Body, Depends, Path, Request, Response
 from fastapi.exceptions import RequestValidationError
 
+from app import compute_pool
 from app.geometry.surfaces import rotational
 from app.registry import DISCRETIZATIONS
 from app.responses import canonical_key
 from app.routers.caching import cached
 from app.routers.common import (
     discretization,
+    in_child,
     parse_query,
     reject_repeated_parameters,
     settings_of,
@@ -25,6 +27,7 @@ from app.schemas.surfaces import (
 )
 from app.services import surfaces as surface_service
 from app.services.selection import chosen
+from app.settings import Settings
 
 router = APIRouter(prefix="/surfaces", tags=["surfaces"])
 
@@ -194,6 +197,63 @@ def _file(result: surface_service.SurfaceResult, file_format: str) -> Response:
     return Response(body, media_type=media_type, headers=headers)
 
 
+def surface_answer(
+    kind: surface_service.SurfaceKind,
+    surface: SurfaceQuery,
+    curve_query: CurveQuery,
+    settings: Settings,
+) -> Response:
+    """The surface in its format: checked and charged here, then computed here or, when its
+    estimate is heavy, in a child process of the worker's pool (app/compute_pool.py)."""
+    plan = surface_service.admit(kind, surface, curve_query, settings)
+    pool = compute_pool.offload()
+    if pool is not None:
+        return in_child(pool, render_surface, *portable(kind, surface, curve_query), settings)
+    return _file(surface_service.build(plan, settings), surface.format)
+
+
+def portable(
+    kind: surface_service.SurfaceKind, surface: SurfaceQuery, curve_query: CurveQuery
+) -> tuple[str, dict[str, Any], set[str], dict[str, Any], set[str]]:
+    """A surface request as values a child process can receive (the models are rebuilt)."""
+    return (
+        kind.id,
+        dict(surface),
+        surface.model_fields_set,
+        dict(curve_query),
+        curve_query.model_fields_set,
+    )
+
+
+def rebuilt(
+    identifier: str,
+    surface_values: dict[str, Any],
+    surface_fields: set[str],
+    curve_values: dict[str, Any],
+    curve_fields: set[str],
+) -> tuple[surface_service.SurfaceKind, SurfaceQuery, CurveQuery]:
+    """The request ``_portable`` sent, as the models it was validated into."""
+    surface = SurfaceQuery.model_construct(surface_fields, **surface_values)
+    entry = discretization(surface.discretization)
+    curve_query = entry.query.model_construct(curve_fields, **curve_values)
+    return surface_service.kind_of(identifier), surface, curve_query
+
+
+def render_surface(
+    identifier: str,
+    surface_values: dict[str, Any],
+    surface_fields: set[str],
+    curve_values: dict[str, Any],
+    curve_fields: set[str],
+    settings: Settings,
+) -> Response:
+    """What a pool child runs for ``surface_answer`` (its charge is a no-op there)."""
+    kind, surface, curve_query = rebuilt(
+        identifier, surface_values, surface_fields, curve_values, curve_fields
+    )
+    return _file(surface_service.compute(kind, surface, curve_query, settings), surface.format)
+
+
 def _get(request: Request, surface_id: str, values: dict[str, Any]) -> Response:
     kind, (surface, curve_query) = _build(surface_id, values, request)
     settings = settings_of(request)
@@ -204,12 +264,7 @@ def _get(request: Request, surface_id: str, values: dict[str, Any]) -> Response:
         {"surface": surface.model_dump(), "curve": curve_query.model_dump()},
     )
     return cached(
-        request,
-        key,
-        settings,
-        lambda: _file(
-            surface_service.compute(kind, surface, curve_query, settings), surface.format
-        ),
+        request, key, settings, lambda: surface_answer(kind, surface, curve_query, settings)
     )
 
 

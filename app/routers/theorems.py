@@ -4,6 +4,7 @@ from typing import Annotated, Any, Literal
 
 from fastapi import APIRouter, Depends, Path, Query, Request, Response
 
+from app import compute_pool
 from app.errors import UnknownIdError
 from app.geometry import balls
 from app.geometry.checks import Check
@@ -11,13 +12,17 @@ from app.geometry.curve import Curve
 from app.geometry.errors import DomainError
 from app.geometry.precision import arithmetic
 from app.geometry.statement_tex import CLAIM_TEX, ERRATUM_TEX
+from app.geometry.studies.common import Study
 from app.registry import SMOOTH, STATEMENTS, StatementEntry
 from app.responses import canonical_key, encode_json
 from app.routers import surfaces
 from app.routers.caching import JSONBytesResponse, cached
 from app.routers.common import (
+    admit_curve,
     compute,
+    computed,
     discretization,
+    in_child,
     parse_query,
     prepare_study,
     reject_repeated_parameters,
@@ -29,6 +34,7 @@ from app.routers.smooth import enforce_samples
 from app.schemas.catalog import ErratumTeX, StatementInfo, TheoremResponse
 from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES
 from app.services import surfaces as surface_service, theorems
+from app.settings import Settings
 
 router = APIRouter(prefix="/theorems", tags=["theorems"])
 
@@ -116,9 +122,6 @@ def check_statement(
     values.pop("study", None)
     settings = settings_of(request)
 
-    def respond(checks: list[Check], parameters: dict[str, Any], ar: Any) -> Response:
-        return checked_response(entry, kind, owner, checks, parameters, ar)
-
     if kind == "study":
         source = study(owner)
         values.pop("detail", None)
@@ -126,8 +129,12 @@ def check_statement(
         run = prepare_study(source, study_query, settings)
 
         def build_study() -> Response:
+            pool = compute_pool.offload()  # heavy: computed and rendered in a child process
+            if pool is not None:
+                job = (dict(study_query), study_query.model_fields_set)
+                return in_child(pool, render_study, statement_id, owner, *job, settings)
             result = run()
-            return respond(result.checks, result.parameters, result.arithmetic)
+            return answer(statement_id, kind, owner, result)
 
         key = canonical_key(request.url.path, {"study": owner, **study_query.model_dump()})
         return cached(request, key, settings, build_study)
@@ -140,7 +147,7 @@ def check_statement(
             enforce_samples(settings, smooth_query)
             ar = arithmetic(smooth_query.precision, smooth_query.digits)
             curve = reference.compute(ar, **smooth_query.core_arguments())
-            return respond(curve.checks, curve.parameters, curve.arithmetic)
+            return answer(statement_id, kind, owner, curve)
 
         key = canonical_key(request.url.path, {"smooth": owner, **smooth_query.model_dump()})
         return cached(request, key, settings, build_smooth)
@@ -152,8 +159,13 @@ def check_statement(
         surface_kind, surface_query, curve_query = surfaces.parse(owner, values)
 
         def build_surface() -> Response:
-            result = surface_service.compute(surface_kind, surface_query, curve_query, settings)
-            return respond(result.surface.checks, result.parameters, result.surface.arithmetic)
+            plan = surface_service.admit(surface_kind, surface_query, curve_query, settings)
+            pool = compute_pool.offload()  # heavy: computed and rendered in a child process
+            if pool is not None:
+                job = surfaces.portable(surface_kind, surface_query, curve_query)
+                return in_child(pool, render_surface, statement_id, *job, settings)
+            result = surface_service.build(plan, settings)
+            return surface_respond(statement_id, result)
 
         key = canonical_key(
             request.url.path,
@@ -165,24 +177,38 @@ def check_statement(
     query = parse_query(target.query, {**dict(entry.statement.defaults), **values})
 
     def build() -> Response:
-        return theorem_response(entry, owner, compute(target, query, settings), query.checks)
+        chosen, arguments = admit_curve(target, query, settings)
+        # heavy or on balls (mp): computed and rendered in a child process
+        pool = compute_pool.offload(balls=query.precision == "mp")
+        if pool is not None:
+            job = (dict(query), query.model_fields_set)
+            return in_child(pool, render_curve_check, statement_id, owner, *job, settings)
+        curve = computed(target, query, settings, chosen, arguments)
+        return theorem_response(entry, owner, curve, query.checks)
 
     key = canonical_key(request.url.path, {"discretization": owner, **query.model_dump()})
     return cached(request, key, settings, build)
 
 
-def checked_response(
-    entry: StatementEntry,
+def respond(
+    statement_id: str,
     kind: str,
     owner: str,
     checks: list[Check],
     parameters: dict[str, Any],
     ar: Any,
 ) -> Response:
-    """The statement's document from the checks of its source, as JSON bytes."""
+    """The statement's check as its JSON document."""
     certified = balls.certificate(ar) is not None  # mp curves: on rigorous balls
-    document = theorems.document(entry, kind, owner, checks, parameters, ar.describe(), certified)
+    document = theorems.document(
+        STATEMENTS[statement_id], kind, owner, checks, parameters, ar.describe(), certified
+    )
     return JSONBytesResponse(encode_json(document))
+
+
+def answer(statement_id: str, kind: str, owner: str, source: Curve | Study) -> Response:
+    """The statement's check on a computed curve or study."""
+    return respond(statement_id, kind, owner, source.checks, source.parameters, source.arithmetic)
 
 
 def theorem_response(entry: StatementEntry, owner: str, curve: Curve, checks: str) -> Response:
@@ -198,6 +224,39 @@ def theorem_response(entry: StatementEntry, owner: str, curve: Curve, checks: st
             checks,
             f"the check of {identifier} is not in the selection",
         )
-    return checked_response(
-        entry, "discretization", owner, curve.checks, curve.parameters, curve.arithmetic
+    return answer(identifier, "discretization", owner, curve)
+
+
+def surface_respond(statement_id: str, result: surface_service.SurfaceResult) -> Response:
+    owner = result.kind.id
+    built = result.surface
+    return respond(
+        statement_id, "surface", owner, built.checks, result.parameters, built.arithmetic
     )
+
+
+# What a pool child runs for ``check_statement`` (the charges are no-ops there).
+
+
+def render_curve_check(
+    statement_id: str, owner: str, values: dict[str, Any], fields: set[str], settings: Settings
+) -> Response:
+    target = discretization(owner)
+    query = target.query.model_construct(fields, **values)
+    curve = compute(target, query, settings)
+    return theorem_response(STATEMENTS[statement_id], owner, curve, query.checks)
+
+
+def render_study(
+    statement_id: str, owner: str, values: dict[str, Any], fields: set[str], settings: Settings
+) -> Response:
+    source = study(owner)
+    result = prepare_study(source, source.query.model_construct(fields, **values), settings)()
+    return answer(statement_id, "study", owner, result)
+
+
+def render_surface(statement_id: str, *job: Any) -> Response:
+    *request, settings = job
+    kind, surface_query, curve_query = surfaces.rebuilt(*request)
+    result = surface_service.compute(kind, surface_query, curve_query, settings)
+    return surface_respond(statement_id, result)

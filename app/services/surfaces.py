@@ -100,13 +100,24 @@ def kind_of(identifier: str) -> SurfaceKind:
         raise UnknownIdError("surface", identifier, sorted(KINDS)) from None
 
 
-def compute(
-    kind: SurfaceKind,
-    surface: SurfaceQuery,
-    curve_query: CurveQuery,
-    settings: Settings,
-) -> SurfaceResult:
-    """Check the budgets, compute the meridian curve, then the meshes and their checks."""
+@dataclass(frozen=True)
+class SurfacePlan:
+    """A surface request checked and charged (``admit``), not yet computed (``build``)."""
+
+    kind: SurfaceKind
+    surface: SurfaceQuery
+    curve_query: CurveQuery
+    arguments: dict[str, Any]
+    """The meridian's arguments (one index wider on each side for a circumscribed image)."""
+    circumscribed: bool
+    wanted: frozenset[str] | None
+    steps: int
+
+
+def admit(
+    kind: SurfaceKind, surface: SurfaceQuery, curve_query: CurveQuery, settings: Settings
+) -> SurfacePlan:
+    """Validate the mesh, check its budgets and charge its estimated cost; no geometry yet."""
     claim = "constant-curvature" if kind.meridian == "tractrix" else "minimal"
     wanted = chosen("checks", surface.checks, (s.id for s in rotational_surface.STATEMENTS[claim]))
     entry = DISCRETIZATIONS[surface.discretization]
@@ -146,6 +157,16 @@ def compute(
             "a discretization with a tractrix and its Gauss image: " + ", ".join(with_tractrix),
             surface.discretization,
         )
+    return SurfacePlan(kind, surface, curve_query, arguments, circumscribed, wanted, steps)
+
+
+def build(plan: SurfacePlan, settings: Settings) -> SurfaceResult:
+    """Compute an admitted surface: the meridian curve, then the meshes and their checks."""
+    kind, surface, curve_query = plan.kind, plan.surface, plan.curve_query
+    entry = DISCRETIZATIONS[surface.discretization]
+    arguments, circumscribed, m, steps = plan.arguments, plan.circumscribed, surface.m, plan.steps
+    given = curve_query.core_arguments()
+    i_min, i_max = given["i_min"], given["i_max"]
     ar = timed_arithmetic(settings, curve_query.precision, curve_query.digits)
     if kind.meridian == "tractrix":
         needed = frozenset({"tractrix", "tractrix_gauss_image"})
@@ -186,7 +207,7 @@ def compute(
         K,
         ar.tolerance(max(recursion, LOCAL_STEPS)),
     )
-    selected = Selection(wanted, failed_only=surface.checks == "failed")
+    selected = Selection(plan.wanted, failed_only=surface.checks == "failed")
     built = replace(built, checks=selected.keep(built.checks))
     parameters = {**curve.parameters, "i_min": i_min, "i_max": i_max}
     parameters.update({"m": m, "steps": steps, "gauss_image": resolved})
@@ -197,6 +218,16 @@ def compute(
         np.arange(i_min, i_max + 1, dtype=np.int64),
         built,
     )
+
+
+def compute(
+    kind: SurfaceKind,
+    surface: SurfaceQuery,
+    curve_query: CurveQuery,
+    settings: Settings,
+) -> SurfaceResult:
+    """Check the budgets, compute the meridian curve, then the meshes and their checks."""
+    return build(admit(kind, surface, curve_query, settings), settings)
 
 
 def _vertices(result: SurfaceResult) -> Any:

@@ -202,6 +202,22 @@ def test_a_cheap_request_stays_in_the_worker(
         os.kill(pool.pids()[0], signal.SIGCONT)
 
 
+def test_a_cheap_mp_curve_is_computed_in_a_child_never_under_the_watchdog(
+    pool_client: tuple[TestClient, ComputePool],
+) -> None:
+    """Balls hold their precision lock throughout: the worker's asynchronous stop could land
+    inside it, so precision=mp curves, however cheap, are computed in a child."""
+    client, pool = pool_client
+    params = {"precision": "mp", "digits": 20, "i_max": 3}
+    expected = TestClient(create_app(Settings(compute_processes=0))).get(CURVE, params=params)
+    for path in (CURVE, "/theorems/theorem-5"):
+        jobs = pool.jobs
+        answer = client.get(path, params=params)
+        assert answer.status_code == 200, answer.text
+        assert pool.jobs == jobs + 1
+    assert client.get(CURVE, params=params).content == expected.content  # now from the cache
+
+
 def test_a_refinement_study_from_a_child_is_the_workers_answer() -> None:
     client, pool = pooled(Settings(compute_processes=1, pool_min_seconds=0))
     try:
@@ -241,3 +257,133 @@ def test_a_child_forked_while_a_worker_thread_holds_the_balls_lock_computes_mp(
     finally:
         release.set()
         thread.join()
+
+
+#: (path, parameters) of every other endpoint that computes in a child when heavy enough
+#: (``pool_min_seconds=0`` sends every one there); small, so that both sides stay quick.
+ROUTED = [
+    ("/surfaces/catenoid", {"m": 8, "i_min": -5, "i_max": 5}),
+    ("/surfaces/catenoid", {"m": 8, "i_min": -5, "i_max": 5, "format": "glb"}),
+    ("/surfaces/pseudosphere/d4b", {"m": 6, "i_max": 6, "format": "obj"}),
+    ("/surfaces/catenoid-gauss-image", {"m": 6, "precision": "mp", "digits": 20, "i_max": 4}),
+    ("/relations", {}),
+    ("/relations", {"format": "html", "d4b.d": 0.25}),
+    ("/theorems/theorem-5", {"d": 0.2}),
+    ("/theorems/theorem-5", {"precision": "mp", "digits": 25, "i_max": 30}),
+    ("/theorems/theorem-14", {"levels": 4}),
+]
+
+
+@pytest.fixture(scope="module")
+def both() -> Iterator[tuple[TestClient, TestClient, ComputePool]]:
+    """A client whose worker computes everything in one child, and one without a pool."""
+    client, pool = pooled(Settings(compute_processes=1, pool_min_seconds=0))
+    yield client, TestClient(create_app(Settings(compute_processes=0))), pool
+    pool.close()
+
+
+@pytest.mark.parametrize(("path", "params"), ROUTED, ids=[f"{p} {q}" for p, q in ROUTED])
+def test_every_routed_endpoint_from_a_child_is_the_workers_answer_byte_for_byte(
+    both: tuple[TestClient, TestClient, ComputePool], path: str, params: dict[str, Any]
+) -> None:
+    client, plain, pool = both
+    jobs = pool.jobs
+    here = plain.get(path, params=params)
+    there = client.get(path, params=params)
+    assert here.status_code == there.status_code == 200, there.text
+    assert there.content == here.content
+    for header in ("content-type", "etag", "content-disposition", "content-length"):
+        assert there.headers.get(header) == here.headers.get(header), header
+    assert pool.jobs == jobs + 1  # a child computed and rendered it
+
+
+def test_a_surface_theorem_from_a_child_is_the_workers_answer(
+    both: tuple[TestClient, TestClient, ComputePool],
+) -> None:
+    client, plain, pool = both
+    jobs = pool.jobs
+    catalog = plain.get("/theorems").json()
+    path = next(s["url"] for s in catalog if s["surfaces"] and not s["discretizations"])
+    params = {"m": 6, "i_max": 4}
+    expected = plain.get(path, params=params)
+    answer = client.get(path, params=params)
+    assert expected.status_code == answer.status_code == 200, answer.text
+    assert answer.content == expected.content
+    assert pool.jobs == jobs + 1
+
+
+def test_a_domain_error_of_a_surface_in_a_child_is_the_same_422(
+    both: tuple[TestClient, TestClient, ComputePool],
+) -> None:
+    client, plain, pool = both
+    jobs = pool.jobs
+    params = {"m": 6, "d": 2}  # the core refuses d >= h, in the child
+    expected = plain.get("/surfaces/catenoid", params=params)
+    answer = client.get("/surfaces/catenoid", params=params)
+    assert expected.status_code == answer.status_code == 422
+    assert answer.json() == expected.json()
+    assert pool.jobs == jobs + 1
+
+
+@pytest.mark.parametrize(
+    ("module", "name", "path", "params", "parameter"),
+    [
+        ("app.routers.surfaces", "_file", "/surfaces/catenoid", {"m": 8}, "i_max"),
+        ("app.routers.relations", "relations_answer", "/relations", {}, "i_max"),
+        ("app.routers.theorems", "respond", "/theorems/theorem-5", {"d": 0.2}, "i_max"),
+    ],
+)
+def test_an_overrunning_child_of_every_routed_endpoint_is_the_time_limit_problem(
+    monkeypatch: pytest.MonkeyPatch, module: str, name: str, path: str, params: Any, parameter: str
+) -> None:
+    settings = Settings(
+        compute_processes=1, time_limit=2.0, hard_stop_grace=0.2, pool_min_seconds=0
+    )
+    app = create_app(settings)
+    client = TestClient(app)
+    client.get(CURVE, params={"i_max": 3})  # the first request pays the app's lazy set-up
+    monkeypatch.setattr(f"{module}.{name}", _hang)  # the child renders forever
+    pool = app.state.admission.pool = ComputePool(settings)
+    pool.start()
+    try:
+        (before,) = children(pool)
+        response = client.get(path, params=params)
+        assert response.status_code == 422, response.text
+        body = response.json()
+        assert body["type"] == "/problems/time-limit"
+        assert body["errors"][0]["parameter"] == parameter
+        assert pool.kills == 1
+        (after,) = children(pool)
+        assert after != before
+    finally:
+        pool.close()
+
+
+def test_a_request_waiting_for_a_busy_pool_is_refused_before_its_deadline(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """No child frees up in time: a 503 with Retry-After before the deadline, no work done."""
+    settings = Settings(compute_processes=1, time_limit=2.0, hard_stop_grace=0.2)
+    app = create_app(settings)
+    client = TestClient(app)
+    client.get(CURVE, params={"i_max": 3})  # the first request pays the app's lazy set-up
+    monkeypatch.setattr(common, "curve_response", _hang)  # the one child never answers
+    pool = app.state.admission.pool = ComputePool(settings)
+    pool.start()
+    try:
+        first = threading.Thread(target=client.get, args=(CURVE,), kwargs={"params": HEAVY})
+        first.start()
+        for _ in range(200):
+            if pool.jobs:
+                break
+            time.sleep(0.01)
+        response = client.get(CURVE, params={**HEAVY, "d": 2e-3})
+        assert response.status_code == 503, response.text
+        assert response.json()["type"] == "/problems/overloaded"
+        assert "no compute process became free" in response.json()["detail"]
+        assert int(response.headers["retry-after"]) >= 1
+        assert pool.jobs == 1  # never handed to a child
+        first.join()
+        assert pool.kills == 1
+    finally:
+        pool.close()
