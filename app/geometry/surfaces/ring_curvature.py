@@ -77,8 +77,13 @@ def equation_17_check(
     for k, (meridian, gauss) in enumerate(pairs):
         curvature = ring_curvatures(ar, meridian, gauss) if curvatures is None else curvatures[k]
         k_res, h_res, defined = equation_17_residuals(ar, meridian[:, 1], gauss[:, 1], curvature)
-        both = np.maximum(ar.to_floats(k_res), ar.to_floats(h_res))
-        per_pair.append(np.where(defined, both, 0.0))
+        # balls stay balls (floats of their bounds would underflow from 324 digits on)
+        both = (
+            ar.maximum(k_res, h_res)
+            if ar.certified
+            else np.maximum(ar.to_floats(k_res), ar.to_floats(h_res))
+        )
+        per_pair.append(np.where(defined, both, ar.scalar(0) if ar.certified else 0.0))
         skipped += int(np.count_nonzero(~defined))
     return equation_17_result(ar, indices, per_pair, skipped, tolerance, detail)
 
@@ -106,7 +111,7 @@ def equation_17_result(
     """The check of (17) from each pair's residuals per face (0 where 0/0, ``skipped`` such)."""
     worst = per_pair[0]
     for both in per_pair[1:]:
-        worst = np.maximum(worst, both)
+        worst = ar.maximum(worst, both)  # on balls a ball holding each maximum
     if skipped == len(worst) * len(per_pair):
         return not_applicable(EQUATION_17, tolerance, "(17) is 0/0 on every face of the range")
     note = (
