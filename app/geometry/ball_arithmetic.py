@@ -268,15 +268,18 @@ class Ball(Arithmetic):
         radii = [v.rad() for v in values.reshape(-1)]
         return upper_float(max(radii, default=flint.arb(0)))
 
-    def bounds(self, values: Array) -> tuple[Any, Any]:
-        """(upper, lower): exact numbers (radius 0) with upper >= max |v| >= lower for every v
-        in the balls; for a float array (bounds converted already) its largest |value| and 0."""
+    def largest_upper(self, values: Array) -> Any:
+        """An exact number (radius 0) >= |v| for every v in every ball: a rigorous upper bound of
+        the largest |value| (a float array, of bounds converted already: its largest |value|)."""
         if values.dtype != object:
-            largest = float(np.max(np.abs(values))) if len(values) else 0.0
-            return flint.arb(largest), flint.arb(0)
-        flat = values.reshape(-1)
-        zero = flint.arb(0)
-        return max(_ABS_UPPER(flat), default=zero), max(_ABS_LOWER(flat), default=zero)
+            return flint.arb(float(np.max(np.abs(values))) if len(values) else 0.0)
+        return max(_ABS_UPPER(values.reshape(-1)), default=flint.arb(0))
+
+    def largest_lower(self, values: Array) -> Any:
+        """An exact number <= the largest |value| (0 for a float array: no lower bounds)."""
+        if values.dtype != object:
+            return flint.arb(0)
+        return max(_ABS_LOWER(values.reshape(-1)), default=flint.arb(0))
 
     def upper(self, values: Array) -> float:
         """A float >= every number in every ball of ``|values|`` (a rigorous residual bound)."""

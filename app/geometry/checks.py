@@ -104,15 +104,22 @@ def check_residuals(
         return not_applicable(
             statement, tolerance, note or "not enough vertices in the range to evaluate it"
         )
+    if ar.certified and not detail and residuals.dtype == object:
+        # balls: the largest upper bound alone (floats of every residual are for per_index)
+        upper = ar.largest_upper(residuals)  # type: ignore[attr-defined]
+        if upper.is_finite():
+            return _certified(
+                statement, ar, indices, residuals, upper, None, tolerance, erratum, note
+            )
     floats = ar.to_floats(residuals)
     holds: bool | None
     worst = largest_magnitude(floats)
     residual: float | Decimal | None = worst
     values = np.abs(floats) if detail else floats  # |values| only where they are shown
     if math.isfinite(worst) and ar.certified:
-        return _certified(
-            statement, ar, indices, residuals, values, tolerance, detail, erratum, note
-        )
+        upper = ar.largest_upper(residuals)  # type: ignore[attr-defined]
+        shown = values if detail else None
+        return _certified(statement, ar, indices, residuals, upper, shown, tolerance, erratum, note)
     if math.isfinite(worst):  # the largest is finite only when every value is
         holds = worst <= tolerance
     else:
@@ -150,9 +157,9 @@ def _certified(
     ar: Arithmetic,
     indices: np.ndarray[Any, np.dtype[np.int64]],
     residuals: Array,
-    values: np.ndarray[Any, np.dtype[np.float64]],
+    upper: Any,
+    values: np.ndarray[Any, np.dtype[np.float64]] | None,
     tolerance: Any,
-    detail: bool,
     erratum: Erratum | None,
     note: str | None,
 ) -> Check:
@@ -165,10 +172,10 @@ def _certified(
     exceeds the tolerance, and ``None`` (undecided, with a note) in between: more digits
     narrow the bounds, and ``balls.serve`` computes such a curve again with every digit.
     """
-    upper, lower = ar.bounds(residuals)  # type: ignore[attr-defined]
     shown_tolerance = decimal_tolerance(tolerance)
     residual = decimal_bound(upper, upward=True)
     holds: bool | None = residual <= shown_tolerance
+    lower = None if holds else ar.largest_lower(residuals)  # type: ignore[attr-defined]
     if not holds and not lower > decimal_ball(shown_tolerance):
         holds = None
         ar.undecided += 1
@@ -184,7 +191,7 @@ def _certified(
         residual=residual,
         tolerance=shown_tolerance,
         holds=holds,
-        per_index=PerIndex(np.asarray(indices, dtype=np.int64), values) if detail else None,
+        per_index=None if values is None else PerIndex(np.asarray(indices, dtype=np.int64), values),
         erratum=erratum,
         note=note,
     )
@@ -251,8 +258,9 @@ def printed_residual(ar: Arithmetic, residuals: Array) -> float | Decimal | None
         return None
     # on balls, a rigorous lower bound: positive certifies that the printed formula is false
     if ar.certified:
-        upper, lower = ar.bounds(residuals)  # type: ignore[attr-defined]
-        return decimal_bound(lower, upward=False) if upper.is_finite() else None
+        if not ar.largest_upper(residuals).is_finite():  # type: ignore[attr-defined]
+            return None
+        return decimal_bound(ar.largest_lower(residuals), upward=False)  # type: ignore[attr-defined]
     else:
         worst = largest_magnitude(ar.to_floats(residuals))
     return worst if math.isfinite(worst) else None

@@ -91,8 +91,7 @@ def _residual(ar: Arithmetic, residuals: Array) -> Any:
     if not len(values):
         return None
     if ar.certified and bool(np.all(np.isfinite(values))):
-        upper, _ = ar.bounds(residuals)  # type: ignore[attr-defined]
-        return decimal_bound(upper, upward=True)
+        return decimal_bound(ar.largest_upper(residuals), upward=True)  # type: ignore[attr-defined]
     values = np.where(np.isfinite(values), values, np.finfo(np.float64).max)
     worst = float(np.max(values))
     return decimal_bound(worst, upward=True) if ar.certified else worst
