@@ -78,8 +78,9 @@ def _ring_curvatures_in_the_meridian_plane(
     gauss_area = s_n * inner / (2 * length)
     mixed = (s_f * inner + s_n * length * length) / (4 * length)
     cs = cos + sin
-    ax, ay, bx, by = abs(x[:-1]), abs(y[:-1]), abs(x[1:]), abs(y[1:])
-    au, av, bu, bv = abs(u[:-1]), abs(v[:-1]), abs(u[1:]), abs(v[1:])
+    x_abs, y_abs, u_abs, v_abs = abs(x), abs(y), abs(u), abs(v)  # each vertex once
+    ax, ay, bx, by = x_abs[:-1], y_abs[:-1], x_abs[1:], y_abs[1:]
+    au, av, bu, bv = u_abs[:-1], v_abs[:-1], u_abs[1:], v_abs[1:]
     f1, f2 = ax + ay + bx + by * cs, ax + ay * cs + bx + by
     n1, n2 = au + av + bu + bv * cs, au + av * cs + bu + bv
     mag_f, mag_n = f1 * f2 / 2, n1 * n2 / 2
