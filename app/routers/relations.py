@@ -188,13 +188,18 @@ def relations_table(document: dict[str, Any]) -> Table:
             state = "none" if cell["holds"] is None else "holds" if cell["holds"] else "fails"
             lines = []
             if cell["residual"] is not None:
-                lines.append(f"residual {Decimal(str(cell['residual'])):.2e}")  # mp: a string
+                lines.append(f"residual {_residual_text(cell['residual'])}")
             lines.extend(f"{k} = {_short(v)}" for k, v in cell["constants"].items())
             if cell["holds"] is None and cell["residual"] is None:
                 lines.append("not applicable")
             cells.append(TableCell(state, tuple(lines), cell["note"] or ""))  # type: ignore[arg-type]
         table.rows.append((heading, cells))
     return table
+
+
+def _residual_text(value: float | str) -> str:
+    """A cell's residual in the tables: mp residuals are decimal strings (beyond floats)."""
+    return f"{Decimal(value):.2e}" if isinstance(value, str) else f"{value:.2e}"
 
 
 def _short(value: Any) -> str:
