@@ -8,13 +8,14 @@ from __future__ import annotations
 
 import io
 import math
+from decimal import Decimal
 from typing import Any
 
 import numpy as np
 import orjson
 
 from app.geometry import balls
-from app.geometry.ball_arithmetic import Ball
+from app.geometry.ball_arithmetic import Ball, decimal_text
 from app.geometry.checks import Check
 from app.geometry.curve import Curve, Polyline
 from app.geometry.errors import NotRepresentableError
@@ -99,16 +100,25 @@ def polyline_document(ar: Arithmetic, polyline: Polyline) -> dict[str, Any]:
     }
 
 
+def bound(value: Any, certified: bool) -> Any:
+    """A residual, tolerance or printed residual: a number, or on balls (``certified``) the
+    decimal string of its bound (``checks``: they leave the float range from 324 digits on)."""
+    if not certified or value is None:
+        return value
+    return decimal_text(value if isinstance(value, Decimal) else Decimal(repr(float(value))))
+
+
 def check_document(check: Check, certified: bool = False) -> dict[str, Any]:
     """One check; ``certified``: computed on balls, so that a positive printed residual (a
-    rigorous lower bound) certifies the printed formula false."""
+    rigorous lower bound) certifies the printed formula false, and the bounds are decimal
+    strings."""
     erratum = check.erratum
     return {
         "id": check.id,
         "reference": check.reference,
         "claim": check.claim,
-        "residual": check.residual,
-        "tolerance": check.tolerance,
+        "residual": bound(check.residual, certified),
+        "tolerance": bound(check.tolerance, certified),
         "holds": check.holds,
         "per_index": None
         if check.per_index is None
@@ -119,7 +129,7 @@ def check_document(check: Check, certified: bool = False) -> dict[str, Any]:
             "id": erratum.id,
             "printed": erratum.printed,
             "corrected": erratum.corrected,
-            "printed_residual": erratum.printed_residual,
+            "printed_residual": bound(erratum.printed_residual, certified),
             "certified": _erratum_certified(erratum.printed_residual) if certified else None,
             "link": erratum.link,
         },
@@ -127,7 +137,7 @@ def check_document(check: Check, certified: bool = False) -> dict[str, Any]:
     }
 
 
-def _erratum_certified(printed_residual: float | None) -> str:
+def _erratum_certified(printed_residual: float | Decimal | None) -> str:
     """``"false"`` when the printed residual's lower bound is > 0, else ``"undecided"``."""
     return "false" if printed_residual is not None and printed_residual > 0 else "undecided"
 
@@ -226,6 +236,8 @@ def checks_csv(checks: list[Check]) -> bytes:
             return "true" if value else "false"
         if isinstance(value, float):
             return repr(value)
+        if isinstance(value, Decimal):
+            return decimal_text(value)
         text = str(value)
         return '"' + text.replace('"', '""') + '"' if any(c in text for c in ',"\n') else text
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterable, Iterator
 from contextlib import contextmanager
+from decimal import Context, Decimal
 from typing import Any
 
 import flint
@@ -20,6 +21,7 @@ from app.geometry.errors import DomainError
 from app.geometry.exact import ExactReal
 from app.geometry.precision import (
     GUARD_DIGITS,
+    TOLERANCE_SAFETY,
     UNARY_FUNCTIONS,
     Arithmetic,
     Array,
@@ -30,6 +32,13 @@ from app.geometry.precision import (
 
 #: Bits of one decimal digit, for the ball arithmetic's working precision.
 BITS_PER_DIGIT = math.log2(10)
+
+#: Significant digits of a residual, tolerance or printed residual reported on balls (decimal
+#: strings: from 324 digits on their sizes leave the float range).
+BOUND_DIGITS = 10
+
+#: Decimal arithmetic for those bounds: exponents far beyond any working precision.
+_BOUNDS = Context(prec=BOUND_DIGITS, Emin=-(10**9), Emax=10**9)
 
 #: Bits of a residual's last operations (``Ball.residual_precision``): more than a float's 53,
 #: so that the float it is reported as is the bound, not the rounding.
@@ -135,6 +144,13 @@ class Ball(Arithmetic):
             yield
         finally:
             flint.ctx.prec = saved
+
+    def tolerance(self, steps: int = 1) -> Any:
+        """``Arithmetic.tolerance`` as a ball: 10^−digits leaves the float range from 324 digits
+        on (a float tolerance was 0 there, and every check with a nonzero bound undecided).
+        Factors multiply it as they multiply a float; ``checks`` compares it through
+        ``decimal_bound``."""
+        return TOLERANCE_SAFETY * max(1, steps) * flint.arb(10) ** (-self.digits)
 
     def scalar(self, value: Any) -> Any:
         kind = type(value)
@@ -252,6 +268,19 @@ class Ball(Arithmetic):
         radii = [v.rad() for v in values.reshape(-1)]
         return upper_float(max(radii, default=flint.arb(0)))
 
+    def largest_upper(self, values: Array) -> Any:
+        """An exact number (radius 0) >= |v| for every v in every ball: a rigorous upper bound of
+        the largest |value| (a float array, of bounds converted already: its largest |value|)."""
+        if values.dtype != object:
+            return flint.arb(float(np.max(np.abs(values))) if len(values) else 0.0)
+        return max(_ABS_UPPER(values.reshape(-1)), default=flint.arb(0))
+
+    def largest_lower(self, values: Array) -> Any:
+        """An exact number <= the largest |value| (0 for a float array: no lower bounds)."""
+        if values.dtype != object:
+            return flint.arb(0)
+        return max(_ABS_LOWER(values.reshape(-1)), default=flint.arb(0))
+
     def upper(self, values: Array) -> float:
         """A float >= every number in every ball of ``|values|`` (a rigorous residual bound)."""
         bounds = [abs(v).upper() for v in values.reshape(-1)]
@@ -262,6 +291,51 @@ class Ball(Arithmetic):
         lower bound of the largest |value| (positive: the values certainly are not all 0)."""
         bounds = [abs(v).lower() for v in values.reshape(-1)]
         return lower_float(max(bounds, default=flint.arb(0)))
+
+
+def decimal_bound(value: Any, upward: bool) -> Decimal:
+    """A decimal of ``BOUND_DIGITS`` significant digits >= every number of the ball ``value``
+    (``upward``) or <= every one (a float, an int or a Decimal is one exact number).
+
+    Residuals are reported rounded up, printed residuals rounded down; holding is decided on
+    the decimals shown (``checks.check_residuals``, with ``decimal_tolerance``), so what is
+    shown is what was compared. Exact: each candidate is compared with the bound as a ball.
+    """
+    if isinstance(value, Decimal):
+        value = flint.arb(str(value))
+    elif not isinstance(value, flint.arb):
+        value = flint.arb(value)  # floats and ints convert exactly
+    if not value.is_finite():
+        raise ValueError("an unbounded ball has no decimal bound")
+    end = value.upper() if upward else value.lower()
+    if end.is_zero():
+        return Decimal(0)
+    candidate = _BOUNDS.create_decimal(end.str(BOUND_DIGITS + 2, radius=False))
+    step = _BOUNDS.next_plus if upward else _BOUNDS.next_minus
+    while not (flint.arb(str(candidate)) >= end if upward else flint.arb(str(candidate)) <= end):
+        candidate = step(candidate)
+    return candidate
+
+
+def decimal_tolerance(value: Any) -> Decimal:
+    """A tolerance as checks on balls use and show it: the decimal of ``BOUND_DIGITS``
+    significant digits nearest to its midpoint (a tolerance is a chosen threshold, not a
+    bound: its ball only carries the rounding of 10^−digits, so 1.024e-27 is shown as such)."""
+    if isinstance(value, Decimal):
+        return _BOUNDS.plus(value)
+    if isinstance(value, float | int):
+        return _BOUNDS.create_decimal(repr(value))
+    return _BOUNDS.create_decimal(value.mid().str(BOUND_DIGITS + 5, radius=False))
+
+
+def decimal_ball(value: Decimal) -> Any:
+    """The ball of a decimal (exact where it is dyadic), at the working precision."""
+    return flint.arb(str(value))
+
+
+def decimal_text(value: Decimal) -> str:
+    """A bound as the response shows it (``6.4e-499``, ``0.5``)."""
+    return format(_BOUNDS.normalize(value), "g")
 
 
 def _decimal(value: Any, digits: int) -> str:

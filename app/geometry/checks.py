@@ -10,10 +10,12 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from decimal import Decimal
 from typing import Any
 
 import numpy as np
 
+from app.geometry.ball_arithmetic import decimal_ball, decimal_bound, decimal_tolerance
 from app.geometry.precision import Arithmetic, Array
 
 ERRATA_DOCUMENT = "docs/errata.md"
@@ -46,7 +48,8 @@ class Erratum:
     """Anchor in docs/errata.md, e.g. ``"E3"``."""
     printed: str
     corrected: str
-    printed_residual: float | None
+    printed_residual: float | Decimal | None
+    """On balls a decimal rounded down: a rigorous lower bound (``printed_residual``)."""
 
     @property
     def link(self) -> str:
@@ -68,8 +71,11 @@ class Check:
     id: str
     reference: str
     claim: str
-    residual: float | None
-    tolerance: float
+    residual: float | Decimal | None
+    """On balls a decimal rounded up: a rigorous upper bound of the largest residual."""
+    tolerance: float | Decimal
+    """On balls a decimal (``decimal_tolerance``): they leave the float range from 324 digits
+    on."""
     holds: bool | None
     """``None`` when the statement is not applicable (e.g. too few vertices)."""
     per_index: PerIndex | None = None
@@ -82,39 +88,40 @@ def check_residuals(
     ar: Arithmetic,
     indices: np.ndarray[Any, np.dtype[np.int64]],
     residuals: Array,
-    tolerance: float,
+    tolerance: Any,
     detail: bool,
     erratum: Erratum | None = None,
     note: str | None = None,
 ) -> Check:
     """A check whose residual is the largest of the per-index ``residuals`` (all >= 0).
 
-    On balls (``ar.certified``) the residual is a rigorous upper bound: ``holds`` is true when
-    it is <= the tolerance, false when a rigorous lower bound exceeds the tolerance, and
-    ``None`` (undecided, with a note) in between.
+    ``tolerance`` is a float, or on balls (``ar.certified``) a ball or a float: there the
+    residual is a rigorous upper bound, ``holds`` is true when it is <= the tolerance, false
+    when a rigorous lower bound exceeds the tolerance, and ``None`` (undecided, with a note) in
+    between (``_certified``).
     """
     if len(residuals) == 0:
         return not_applicable(
             statement, tolerance, note or "not enough vertices in the range to evaluate it"
         )
+    if ar.certified and not detail and residuals.dtype == object:
+        # balls: the largest upper bound alone (floats of every residual are for per_index)
+        upper = ar.largest_upper(residuals)  # type: ignore[attr-defined]
+        if upper.is_finite():
+            return _certified(
+                statement, ar, indices, residuals, upper, None, tolerance, erratum, note
+            )
     floats = ar.to_floats(residuals)
     holds: bool | None
     worst = largest_magnitude(floats)
-    residual: float | None = worst
+    residual: float | Decimal | None = worst
     values = np.abs(floats) if detail else floats  # |values| only where they are shown
+    if math.isfinite(worst) and ar.certified:
+        upper = ar.largest_upper(residuals)  # type: ignore[attr-defined]
+        shown = values if detail else None
+        return _certified(statement, ar, indices, residuals, upper, shown, tolerance, erratum, note)
     if math.isfinite(worst):  # the largest is finite only when every value is
         holds = worst <= tolerance
-        if not holds and ar.certified and not _exceeds(ar, residuals, tolerance):
-            # on balls ``worst`` is an upper bound: failing needs a lower bound above the
-            # tolerance; in between the verdict is undecided, never guessed
-            holds = None
-            if tolerance > 0:  # more digits may decide it (balls.serve); a tolerance
-                ar.undecided += 1  # below the float range (digits > 300) stays undecided
-            undecided = (
-                "undecided: the residual's rigorous bounds enclose the tolerance "
-                "(more digits narrow them)"
-            )
-            note = f"{note}; {undecided}" if note else undecided
     else:
         values = np.abs(floats)
         finite = np.isfinite(values)
@@ -125,6 +132,9 @@ def check_residuals(
         worst = float(np.max(computed)) if len(computed) else np.finfo(np.float64).max
         holds = False if worst > tolerance else None
         residual = worst if holds is not None else None
+        if ar.certified:
+            tolerance = decimal_tolerance(tolerance)
+            residual = None if residual is None else decimal_bound(residual, upward=True)
         missing = f"{int(np.count_nonzero(~finite))} of {len(values)} residuals could not be "
         missing += "computed (not finite)"
         note = f"{note}; {missing}" if note else missing
@@ -142,14 +152,56 @@ def check_residuals(
     )
 
 
-def _exceeds(ar: Arithmetic, residuals: Array, tolerance: float) -> bool:
-    """Whether a rigorous lower bound of the largest residual exceeds the tolerance."""
-    lower = ar.lower_floats(residuals)
-    return bool(len(lower)) and float(np.max(lower)) > tolerance
+def _certified(
+    statement: Statement,
+    ar: Arithmetic,
+    indices: np.ndarray[Any, np.dtype[np.int64]],
+    residuals: Array,
+    upper: Any,
+    values: np.ndarray[Any, np.dtype[np.float64]] | None,
+    tolerance: Any,
+    erratum: Erratum | None,
+    note: str | None,
+) -> Check:
+    """``check_residuals`` on balls: the verdict from the decimals shown, exactly.
+
+    The residual is a decimal >= the exact upper bound of the largest residual, the tolerance
+    the decimal nearest to it (``decimal_bound``, ``decimal_tolerance``: decimal strings in the
+    response, since both leave the float range from 324 digits on); ``holds`` is true when
+    the one is <= the other, false when a rigorous lower bound of the largest residual
+    exceeds the tolerance, and ``None`` (undecided, with a note) in between: more digits
+    narrow the bounds, and ``balls.serve`` computes such a curve again with every digit.
+    """
+    shown_tolerance = decimal_tolerance(tolerance)
+    residual = decimal_bound(upper, upward=True)
+    holds: bool | None = residual <= shown_tolerance
+    lower = None if holds else ar.largest_lower(residuals)  # type: ignore[attr-defined]
+    if not holds and not lower > decimal_ball(shown_tolerance):
+        holds = None
+        ar.undecided += 1
+        undecided = (
+            "undecided: the residual's rigorous bounds enclose the tolerance "
+            "(more digits narrow them)"
+        )
+        note = f"{note}; {undecided}" if note else undecided
+    return Check(
+        id=statement.id,
+        reference=statement.reference,
+        claim=statement.claim,
+        residual=residual,
+        tolerance=shown_tolerance,
+        holds=holds,
+        per_index=None if values is None else PerIndex(np.asarray(indices, dtype=np.int64), values),
+        erratum=erratum,
+        note=note,
+    )
 
 
-def not_applicable(statement: Statement, tolerance: float, note: str) -> Check:
-    """A check that could not be evaluated, with the reason."""
+def not_applicable(statement: Statement, tolerance: Any, note: str) -> Check:
+    """A check that could not be evaluated, with the reason (on balls the tolerance is shown as
+    a decimal, as ``check_residuals`` shows it)."""
+    if not isinstance(tolerance, float | int):
+        tolerance = decimal_tolerance(tolerance)
     return Check(
         id=statement.id,
         reference=statement.reference,
@@ -198,14 +250,17 @@ def relative_point_difference(ar: Arithmetic, computed: Array, expected: Array) 
         return ar.hypot(dx, dy) / scale
 
 
-def printed_residual(ar: Arithmetic, residuals: Array) -> float | None:
+def printed_residual(ar: Arithmetic, residuals: Array) -> float | Decimal | None:
     """The largest printed-formula residual as a float (``None`` if it is not a number); on
-    balls (``ar.certified``) a rigorous lower bound of it."""
+    balls (``ar.certified``) a rigorous lower bound of it, a decimal rounded down (``None`` if
+    a ball is unbounded)."""
     if len(residuals) == 0:
         return None
     # on balls, a rigorous lower bound: positive certifies that the printed formula is false
     if ar.certified:
-        worst = float(ar.lower_floats(residuals).max())
+        if not ar.largest_upper(residuals).is_finite():  # type: ignore[attr-defined]
+            return None
+        return decimal_bound(ar.largest_lower(residuals), upward=False)  # type: ignore[attr-defined]
     else:
         worst = largest_magnitude(ar.to_floats(residuals))
     return worst if math.isfinite(worst) else None

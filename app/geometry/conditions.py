@@ -51,6 +51,12 @@ def fit(
     if ar.mode == "float64":  # the same operations, the elementwise ones in compiled passes
         return _fit_float64(lhs, rhs, lhs_magnitude, rhs_magnitude)
     weight = np.where(lhs_magnitude > tiny, lhs_magnitude, tiny)
+    if not ar.may_overflow:  # mp numbers do not overflow: no scaling (a third of the operations)
+        u, v = lhs / weight, rhs / weight
+        vv = np.sum(v * v) if len(v) else ar.scalar(0)
+        constant = np.sum(u * v) / vv if vv > 0 else None
+        c = constant if constant is not None else ar.scalar(0)
+        return ConditionFit(constant, misfit(ar, lhs, rhs, lhs_magnitude, rhs_magnitude, c))
     # each side scaled to at most 1 before and after the weighting, so that neither the
     # quotients (weights can be as small as the smallest normal float) nor the squares can
     # overflow; the constant scales back

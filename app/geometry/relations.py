@@ -25,10 +25,13 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from decimal import Decimal
+from typing import Any
 
 import numpy as np
 
 from app.geometry import conditions, gauss_image
+from app.geometry.ball_arithmetic import decimal_bound, decimal_tolerance
 from app.geometry.curvature import FaceCurvatures
 from app.geometry.curve import Curve
 from app.geometry.errors import DomainError
@@ -47,8 +50,10 @@ class Cell:
     """One property tested on one polygon."""
 
     property: str
-    residual: float | None
-    tolerance: float
+    residual: float | Decimal | None
+    """On balls a decimal rounded up (a rigorous upper bound of the largest residual)."""
+    tolerance: float | Decimal
+    """On balls a decimal rounded down."""
     holds: bool | None
     """``None``: not applicable (too few vertices, or no way to evaluate it yet)."""
     constants: dict[str, Scalar] = field(default_factory=dict)
@@ -66,20 +71,30 @@ class Property:
     evaluate: Callable[[Curve], Cell]
 
 
-def tolerance_of(curve: Curve) -> float:
-    """The tolerance of a local condition on this curve's polygon."""
+def tolerance_of(curve: Curve) -> Any:
+    """The tolerance of a local condition on this curve's polygon (on balls a decimal)."""
     if curve.local_tolerance is not None:
-        return curve.local_tolerance
-    return curve.arithmetic.tolerance(LOCAL_STEPS)
+        return _shown(curve.arithmetic, curve.local_tolerance)
+    return _shown(curve.arithmetic, curve.arithmetic.tolerance(LOCAL_STEPS))
 
 
-def _residual(ar: Arithmetic, residuals: Array) -> float | None:
-    """The largest residual; a residual that is not a number counts as the largest float."""
+def _shown(ar: Arithmetic, tolerance: Any) -> Any:
+    """A tolerance as a cell holds it: on balls a decimal (``decimal_tolerance``: from 324
+    digits on a float tolerance is 0), compared with residuals rounded up; else as is."""
+    return decimal_tolerance(tolerance) if ar.certified else tolerance
+
+
+def _residual(ar: Arithmetic, residuals: Array) -> Any:
+    """The largest residual; a residual that is not a number counts as the largest float. On
+    balls a decimal >= its rigorous upper bound (``decimal_bound``)."""
     values = ar.to_floats(residuals)
     if not len(values):
         return None
+    if ar.certified and bool(np.all(np.isfinite(values))):
+        return decimal_bound(ar.largest_upper(residuals), upward=True)  # type: ignore[attr-defined]
     values = np.where(np.isfinite(values), values, np.finfo(np.float64).max)
-    return float(np.max(values))
+    worst = float(np.max(values))
+    return decimal_bound(worst, upward=True) if ar.certified else worst
 
 
 def _one_constant(
@@ -165,7 +180,7 @@ def surface_pair(curve: Curve, claim: str) -> SurfacePair | str:
             curve.companions["tractrix"].vertices,
             curve.companions["tractrix_gauss_image"].vertices,
             "the tractrix with its Gauss image tractrix_gauss_image (Theorem 7)",
-            max(local, curve.companion_tolerances.get("tractrix_gauss_image", local)),
+            max(local, _shown(ar, curve.companion_tolerances.get("tractrix_gauss_image", local))),
         )
     p = curve.polygon.vertices
     if "gauss_image" in curve.companions:
@@ -173,7 +188,7 @@ def surface_pair(curve: Curve, claim: str) -> SurfacePair | str:
             p,
             curve.companions["gauss_image"].vertices,
             "p with its own Gauss image (companion gauss_image)",
-            max(local, curve.companion_tolerances.get("gauss_image", local)),
+            max(local, _shown(ar, curve.companion_tolerances.get("gauss_image", local))),
         )
     if len(p) < 4:
         return "needs 4 vertices (the circumscribed Gauss image uses the interior vertices)"
@@ -196,7 +211,13 @@ def _curvatures(pair: SurfacePair, ar: Arithmetic) -> FaceCurvatures:
 
 
 def _scaled(ar: Arithmetic, pair: SurfacePair, *residuals: Array) -> Array:
-    """The largest of the residuals per face, times the pair's resolution where it has one."""
+    """The largest of the residuals per face, times the pair's resolution where it has one (on
+    balls as balls: floats of their bounds underflow from 324 digits on)."""
+    if ar.certified:
+        largest = residuals[0]
+        for more in residuals[1:]:
+            largest = ar.maximum(largest, more)
+        return largest if pair.resolution is None else largest * pair.resolution
     worst = ar.to_floats(residuals[0])
     for more in residuals[1:]:
         worst = np.maximum(worst, ar.to_floats(more))

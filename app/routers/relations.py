@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Callable
+from decimal import Decimal
 from typing import Annotated, Any, Literal
 from urllib.parse import urlencode
 
@@ -16,7 +17,7 @@ from app.geometry.errors import DomainError
 from app.limits import LimitExceededError, enforce_digits, enforce_relation_row
 from app.registry import DISCRETIZATIONS, Discretization
 from app.rendering.tables import Table, TableCell, table_html, table_svg
-from app.responses import canonical_key, encode_json, number
+from app.responses import bound, canonical_key, encode_json, number
 from app.routers.caching import JSONBytesResponse, cached
 from app.routers.common import (
     SVG_HEADERS,
@@ -141,6 +142,7 @@ def _prepare(
 def relations_document(curves: list[tuple[Discretization, Curve]]) -> dict[str, Any]:
     """The JSON document of ``RelationsResponse``."""
     ar = curves[0][1].arithmetic
+    certified = ar.certified  # mp rows are computed on balls: bounds as decimal strings
     rows = []
     for entry, curve in curves:
         shown = {k: v for k, v in curve.parameters.items() if v is not None}
@@ -156,8 +158,8 @@ def relations_document(curves: list[tuple[Discretization, Curve]]) -> dict[str, 
                 "cells": [
                     {
                         "property": cell.property,
-                        "residual": cell.residual,
-                        "tolerance": cell.tolerance,
+                        "residual": bound(cell.residual, certified),
+                        "tolerance": bound(cell.tolerance, certified),
                         "holds": cell.holds,
                         "constants": {k: number(ar, v) for k, v in cell.constants.items()},
                         "note": cell.note,
@@ -196,13 +198,18 @@ def relations_table(document: dict[str, Any]) -> Table:
             state = "none" if cell["holds"] is None else "holds" if cell["holds"] else "fails"
             lines = []
             if cell["residual"] is not None:
-                lines.append(f"residual {cell['residual']:.2e}")
+                lines.append(f"residual {_residual_text(cell['residual'])}")
             lines.extend(f"{k} = {_short(v)}" for k, v in cell["constants"].items())
             if cell["holds"] is None and cell["residual"] is None:
                 lines.append("not applicable")
             cells.append(TableCell(state, tuple(lines), cell["note"] or ""))  # type: ignore[arg-type]
         table.rows.append((heading, cells))
     return table
+
+
+def _residual_text(value: float | str) -> str:
+    """A cell's residual in the tables: mp residuals are decimal strings (beyond floats)."""
+    return f"{Decimal(value):.2e}" if isinstance(value, str) else f"{value:.2e}"
 
 
 def _short(value: Any) -> str:

@@ -7,7 +7,7 @@ from typing import Literal
 from pydantic import BaseModel, Field
 
 from app.schemas.common import JSONValue
-from app.schemas.curve import CheckModel, ParameterValue, PrecisionInfo
+from app.schemas.curve import CheckModel, CheckModelMP, ParameterValue, PrecisionInfo
 
 
 class ParameterInfo(BaseModel):
@@ -126,7 +126,10 @@ class TheoremResponse(BaseModel):
     conditions: list[str] = Field(
         default_factory=list, description="Hypotheses the text leaves implicit (see /theorems)."
     )
-    check: CheckModel
+    check: CheckModel | CheckModelMP = Field(
+        description="The check; on rigorous balls (precision=mp of a discretization) its bounds "
+        "are decimal strings (`CheckModelMP`)."
+    )
 
 
 class Readiness(BaseModel):

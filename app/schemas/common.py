@@ -148,7 +148,9 @@ class CurveQuery(StrictModel):
         "float64",
         description="`float64`: IEEE doubles with numpy, coordinates as JSON numbers; every "
         "real parameter is its nearest double. `mp`: `digits` significant digits, coordinates "
-        "as decimal strings; every real parameter is the decimal written (GET: the query text; "
+        "as decimal strings, and so are the checks' rigorous bounds (`residual`, `tolerance`, "
+        "`printed_residual`: beyond the float range from 324 digits on); every real parameter "
+        "is the decimal written (GET: the query text; "
         'POST: a JSON string such as "0.1234567890123456789", or a JSON number, which '
         "arrives as a double and is read as its shortest decimal), carried at the working "
         "precision and echoed exactly in `parameters`. A malformed decimal is a 422 naming "

@@ -57,6 +57,16 @@ class ErratumModel(BaseModel):
     )
 
 
+class ErratumModelMP(ErratumModel):
+    """An erratum of a precision=mp answer computed on rigorous balls."""
+
+    printed_residual: str | None = Field(  # type: ignore[assignment]
+        description="A rigorous lower bound of the printed formula's residual, a decimal string "
+        "rounded down (10 significant digits; a string: from 324 digits on it leaves the float "
+        "range). Greater than 0: the printed formula is false on this polygon (`certified`)."
+    )
+
+
 class PerIndexModel(BaseModel):
     indices: list[int] = Field(description="Index i of each residual.")
     residuals: list[float] = Field(description="Residual at each index.")
@@ -77,6 +87,22 @@ class CheckModel(BaseModel):
     per_index: PerIndexModel | None = Field(description="Residual per index (detail=true).")
     erratum: ErratumModel | None = Field(description="Set when the printed formula is wrong.")
     note: str | None = Field(None, description="Context for the verdict.")
+
+
+class CheckModelMP(CheckModel):
+    """A check of a precision=mp answer computed on rigorous balls (the curve's `certified` is
+    set): `residual` and `tolerance` are decimal strings, since from 324 digits on they leave
+    the float range (10^−digits is 0 as a float)."""
+
+    residual: str | None = Field(  # type: ignore[assignment]
+        description="A rigorous upper bound of the largest residual, a decimal string rounded up "
+        "(10 significant digits); null when not applicable."
+    )
+    tolerance: str = Field(  # type: ignore[assignment]
+        description="Largest residual that counts as holding, a decimal string (10 significant "
+        "digits). `holds` is true when `residual` <= `tolerance` as these decimals."
+    )
+    erratum: ErratumModelMP | None = Field(description="Set when the printed formula is wrong.")
 
 
 class CertificateModel(BaseModel):
@@ -128,7 +154,8 @@ class CurveResponse(BaseModel):
 
 class CurveResponseMP(CurveResponse):
     """One discretization in mp (`precision.mode` = `mp`): as `CurveResponse`, with coordinates
-    and constants as decimal strings of `precision.digits` significant digits."""
+    and constants as decimal strings of `precision.digits` significant digits, and each check's
+    `residual`, `tolerance` and `printed_residual` as decimal strings (rigorous bounds)."""
 
     vertices: list[tuple[str, str]] = Field(description="p_i = (x, y), decimal strings.")  # type: ignore[assignment]
     companions: dict[str, PolylineModelMP] = Field(  # type: ignore[assignment]
@@ -136,4 +163,7 @@ class CurveResponseMP(CurveResponse):
     )
     constants: dict[str, str] = Field(  # type: ignore[assignment]
         description="Fitted constants (c of D1, D3, (2)), decimal strings."
+    )
+    checks: list[CheckModelMP] = Field(  # type: ignore[assignment]
+        description="Every statement checked on this polygon; bounds as decimal strings."
     )

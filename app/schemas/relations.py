@@ -38,8 +38,15 @@ where the image is built by a long recursion, such as d4b's inscribed n).
 
 class CellModel(BaseModel):
     property: str = Field(description="Column id.")
-    residual: float | None = Field(description="Largest residual; null when not evaluated.")
-    tolerance: float = Field(description="Largest residual that counts as holding.")
+    residual: float | str | None = Field(
+        description="Largest residual; null when not evaluated. precision=mp (rigorous balls): "
+        "a decimal string >= its rigorous upper bound (10 significant digits; from 324 digits "
+        "on it leaves the float range)."
+    )
+    tolerance: float | str = Field(
+        description="Largest residual that counts as holding; precision=mp: a decimal string "
+        "(10 significant digits)."
+    )
     holds: bool | None = Field(description="The verdict; null when not evaluated.")
     constants: dict[str, Coordinate] = Field(
         description="Fitted constant(s): c; c1 and c2 (eq. (7)); a (H = 0: p_i^y n_i^y); K (K "

@@ -126,14 +126,11 @@ def assert_curvature_cells_agree(
             got = float(cell["constants"][name])
             assert got == pytest.approx(float(constant), rel=constant_tol), (row["id"], column)
         ref = float(residual)
-        slack = max(residual_tol * ref, 4 * math.ulp(ref))  # mp: an upper bound rounded up
-        assert abs(cell["residual"] - ref) <= cell["tolerance"] + slack, (
-            row["id"],
-            column,
-            cell["residual"],
-            ref,
-        )
-        assert cell["holds"] is (ref <= cell["tolerance"]), (row["id"], column)
+        # mp: an upper bound rounded up to 10 digits, a decimal string (as the tolerance)
+        slack = max(residual_tol * ref, 4 * math.ulp(ref), 1e-9 * ref)
+        got, tolerance = float(cell["residual"]), float(cell["tolerance"])
+        assert abs(got - ref) <= tolerance + slack, (row["id"], column, got, ref)
+        assert cell["holds"] is (ref <= tolerance), (row["id"], column)
 
 
 def assert_cells_agree(
@@ -154,12 +151,11 @@ def assert_cells_agree(
             ref = float(residual)
             # residuals at rounding level agree within the tolerance; real misfits relatively
             # (in mp a residual is a rigorous upper bound rounded up to a float: 4 ulp)
-            slack = max(residual_tol * ref, 4 * math.ulp(ref))
-            assert abs(cell["residual"] - ref) <= cell["tolerance"] + slack, (
-                row["id"],
-                key,
-            )
-            verdict = ref <= cell["tolerance"] and (key not in POSITIVE or float(constants[0]) > 0)
+            # (mp: decimal strings, the residual rounded up to 10 digits)
+            slack = max(residual_tol * ref, 4 * math.ulp(ref), 1e-9 * ref)
+            got, tolerance = float(cell["residual"]), float(cell["tolerance"])
+            assert abs(got - ref) <= tolerance + slack, (row["id"], key)
+            verdict = ref <= tolerance and (key not in POSITIVE or float(constants[0]) > 0)
             assert cell["holds"] is verdict, (row["id"], key)
 
 

@@ -330,7 +330,7 @@ def evaluate(
         else:
             residuals = relative_point_difference(ar, built[:n], formula[:n])
             if scale is not None:
-                residuals = ar.to_floats(residuals) * ar.to_floats(scale[:n])
+                residuals = _scaled(ar, residuals, scale[:n])
         return check(statement, residuals, tolerance, erratum)
 
     def printed_erratum(entry: tuple[str, str, str], built: Array, formula: Array) -> Erratum:
@@ -366,9 +366,8 @@ def evaluate(
             residuals = fused[0]
         else:
             pseudo = curvatures(True)
-            residuals = np.maximum(
-                ar.to_floats(constant_curvature_residuals(pseudo, -1 / (h * h))),
-                ar.to_floats(pseudo.parallel),
+            residuals = ar.maximum(
+                constant_curvature_residuals(pseudo, -1 / (h * h)), pseudo.parallel
             )
         return check(THEOREM_7, residuals[:n], n_tolerance)
 
@@ -378,9 +377,7 @@ def evaluate(
             residuals = fused[0]
         else:
             catenoid = curvatures(False)
-            residuals = np.maximum(
-                ar.to_floats(minimal_residuals(catenoid)), ar.to_floats(catenoid.parallel)
-            )
+            residuals = ar.maximum(minimal_residuals(catenoid), catenoid.parallel)
         return check(THEOREM_8, residuals[:n], construction_tolerance)
 
     def equation_17() -> Check:
@@ -413,6 +410,8 @@ def evaluate(
         def make() -> Array:
             assert images.contact_edges_before is not None
             before = _edge_resolution(ar, images.contact_edges_before)
+            if ar.certified:  # balls: a ball holding each minimum (residuals stay balls)
+                return _ball_minimum(np.concatenate([before, resolution()[:-1]]), resolution())
             return np.minimum(
                 ar.to_floats(np.concatenate([before, resolution()[:-1]])),
                 ar.to_floats(resolution()),
@@ -433,8 +432,7 @@ def evaluate(
         rotated = stack_points(-nt()[:, 1], nt()[:, 0])
         return check(
             EQUATION_19_ROTATION,
-            ar.to_floats(point_distance(ar, c()[1 : n + 1], rotated[:n]))
-            * ar.to_floats(resolution()[:n]),
+            _scaled(ar, point_distance(ar, c()[1 : n + 1], rotated[:n]), resolution()[:n]),
             n_tolerance,
         )
 
@@ -442,8 +440,9 @@ def evaluate(
         inverted = kinematic_closed_forms.pole_by_inversion(c()[:-1], c()[1:])  # i_min .. +1
         return check(
             EQUATION_20_INVERSION,
-            ar.to_floats(relative_point_difference(ar, m()[:n], inverted[:n]))
-            * pole_resolution()[:n],
+            _scaled(
+                ar, relative_point_difference(ar, m()[:n], inverted[:n]), pole_resolution()[:n]
+            ),
             local_tolerance,
         )
 
@@ -514,3 +513,15 @@ def _along(ar: Arithmetic, vectors: Array, points: Array) -> Array:
     residual = crossed / magnitude(points[:-1], points[1:])
     backwards = vectors[:, 0] * edges[:, 0] + vectors[:, 1] * edges[:, 1] < 0
     return np.where(backwards, ar.scalar(1), residual)
+
+
+def _scaled(ar: Arithmetic, residuals: Array, scale: Array) -> Array:
+    """Residuals times their resolution factors: floats (each a bound on balls would round the
+    product down, and underflow from 324 digits on), except on balls, where the product of the
+    balls is kept, so that its bounds stay rigorous (``checks.check_residuals``)."""
+    if ar.certified:
+        return residuals * scale
+    return ar.to_floats(residuals) * ar.to_floats(scale)
+
+
+_ball_minimum: Any = np.frompyfunc(lambda a, b: a.min(b), 2, 1)

@@ -310,7 +310,7 @@ def theorem_11(
                     relative_point_difference(ar, p[where][negative], printed_points[negative]),
                 )
                 if worst is not None:
-                    lemma_printed.append(worst)
+                    lemma_printed.append(float(worst))  # mpmath here: a float already
             hypotheses = d2b.hypothesis_residuals(ar, name, j, indices, n)
             if name == "example-12":
                 example.add(ar, hypotheses)

@@ -94,16 +94,20 @@ def face_residuals(
     """
     if ar.mode == "float64":  # the same operations in one compiled pass
         return equation_17_kernel.face_residuals(p0, p1, n0, n1, areas)
-    # (17) is homogeneous in the radii p: divide them by c = max(|p0|, |p1|) per face, and
-    # A(f) by c² (K equation) or c (H equation), so that no product overflows
     tiny = ar.scalar(np.finfo(np.float64).tiny)
-    c = np.maximum(abs(p0), abs(p1))
-    c = np.where(c > tiny, c, ar.scalar(1))
-    q0, q1 = p0 / c, p1 / c
+    if ar.may_overflow:
+        # (17) is homogeneous in the radii p: divide them by c = max(|p0|, |p1|) per face, and
+        # A(f) by c² (K equation) or c (H equation), so that no product overflows
+        c = np.maximum(abs(p0), abs(p1))
+        c = np.where(c > tiny, c, ar.scalar(1))
+        q0, q1 = p0 / c, p1 / c
+        area_k, mag_k = areas.area / c / c, areas.area_magnitude / c / c
+        area_h, mag_h = areas.area / c, areas.area_magnitude / c
+    else:  # mp numbers do not overflow: the same ratios unscaled (a fifth of the operations)
+        q0, q1 = p0, p1
+        area_k, mag_k = area_h, mag_h = areas.area, areas.area_magnitude
     dp = q1 * q1 - q0 * q0
     sp = q1 * q1 + q0 * q0
-    area_k, mag_k = areas.area / c / c, areas.area_magnitude / c / c
-    area_h, mag_h = areas.area / c, areas.area_magnitude / c
     k_scale = areas.gauss_area_magnitude * sp + mag_k * (n1 * n1 + n0 * n0)
     h_scale = areas.mixed_area_magnitude * sp + mag_h * (abs(q0 * n0) + abs(q1 * n1))
     k_res = abs(areas.gauss_area * dp - area_k * (n1 * n1 - n0 * n0))

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 import threading
+from decimal import Decimal
 from typing import Any
 
 import flint
@@ -184,14 +185,25 @@ def test_a_check_undecided_without_the_extra_digits_is_computed_again_with_them(
     assert isinstance(ar, Ball) and ar.bits == ar.recursion_bits
 
 
-def test_a_tolerance_below_the_float_range_is_not_computed_again() -> None:
-    # 400 digits: the tolerance 64·10^-400 underflows to 0.0 (docs/checks.md); more digits
-    # cannot decide such a check, so the balls are not computed a second time
+def test_a_tolerance_below_the_float_range_still_decides() -> None:
+    # 400 digits: 64·10^-400 is 0.0 as a float; the tolerance and the residual are compared as
+    # decimals (a float tolerance left every check with a nonzero bound undecided)
     ar = Ball(400, 0, recursions_only=True)
+    tolerance = ar.tolerance(1)
     with balls.working_precision(ar.bits):
-        residual = ar.array([ar.scalar(1) / 3 - ar.scalar(1) / 3])
-        check = check_residuals(STATEMENTS[1], ar, np.arange(1), residual, 0.0, False)
-    assert check.holds is None and ar.undecided == 0
+        exact = ar.array([ar.scalar(1) / 3 - ar.scalar(1) / 3])
+        tiny = ar.array([flint.arb("1e-420")])
+        large = ar.array([flint.arb("1e-395")])
+        wide = ar.array([flint.arb("1e-398", "1e-397")])  # holds 0 and 1.1e-397
+        checks = [
+            check_residuals(STATEMENTS[1], ar, np.arange(1), r, tolerance, False)
+            for r in (exact, tiny, large, wide)
+        ]
+    assert [c.holds for c in checks] == [True, True, False, None]
+    assert checks[0].tolerance == Decimal("6.4e-399") and checks[0].residual < Decimal("1e-400")
+    assert Decimal("1e-420") <= checks[1].residual <= Decimal("1.000000001e-420")
+    assert checks[2].residual >= Decimal("1e-395") and ar.undecided == 1
+    assert "undecided" in (checks[3].note or "")
 
 
 @pytest.mark.parametrize(
