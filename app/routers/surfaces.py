@@ -54,6 +54,14 @@ def checks_of(kinds: list[str]) -> list[str]:
     return ids
 
 
+#: ``x-domain`` of ``checks`` where the path serves both claims (a JSON Schema of a query
+#: parameter cannot depend on the path's ``surface_id``).
+CHECKS_BY_SURFACE = (
+    "ids of surface_id's own statements: vanishing-mean-curvature only on catenoid and "
+    "catenoid-gauss-image, theorem-7 only on pseudosphere and pseudosphere-gauss-image"
+)
+
+
 def documented_parameters(identifier: str, in_path: bool) -> list[dict[str, Any]]:
     """Query parameters for OpenAPI: the surface's own, then the discretization's.
 
@@ -77,7 +85,14 @@ def documented_parameters(identifier: str, in_path: bool) -> list[dict[str, Any]
             description = schema.pop("description", "")
             schema.pop("title", None)
             if name == "checks" and owner == "surface":
-                schema = selection_schema(schema, "checks", checks_of(surfaces_of(identifier)))
+                kinds = surfaces_of(identifier)
+                schema = selection_schema(schema, "checks", checks_of(kinds))
+                if len(checks_of(kinds)) > len(checks_of(kinds[:1])):
+                    # one path for both claims: which ids apply depends on surface_id
+                    schema["x-domain"] = CHECKS_BY_SURFACE
+            if owner != "surface" and surface_service.MERIDIAN_PARAMETERS.get(owner) == name:
+                schema["x-domain"] = surface_service.DEGENERATE_MERIDIAN[owner]
+                description += f" On a surface, {schema['x-domain']}."
             if name == "companions" and owner != "surface":
                 # the discretization's own names, as on /discretizations/{id} (a bare string
                 # declared `companions=` valid, which the server refuses)
