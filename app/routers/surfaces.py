@@ -305,31 +305,39 @@ def _add_discretization_routes(identifier: str) -> None:
     ) -> Response:
         return _get(request, surface_id, _with_discretization(identifier, body))
 
-    router.add_api_route(
-        path,
-        get,
-        methods=["GET"],
-        name=f"get_surface_{identifier}",
-        summary=f"One discrete surface of revolution with a {identifier} meridian",
-        description=f"As `GET /surfaces/{{surface_id}}` with `discretization={identifier}`; the "
-        f"query takes the surface's parameters and those of {identifier}.",
-        response_model=SurfaceResponse,
-        responses=RESPONSES,
-        dependencies=[Depends(reject_repeated_parameters)],
-        openapi_extra={"parameters": documented_parameters(identifier, in_path=True)},
-    )
-    router.add_api_route(
-        path,
-        post,
-        methods=["POST"],
-        name=f"post_surface_{identifier}",
-        summary=f"One discrete surface of revolution with a {identifier} meridian (JSON body)",
-        description=f"As GET /surfaces/{{surface_id}}/{identifier}, with the parameters in a "
-        "JSON object.",
-        response_model=SurfaceResponse,
-        responses=RESPONSES,
-        openapi_extra=documented_body(identifier, in_path=True),
-    )
+    meridian = f"One discrete surface of revolution with a {identifier} meridian"
+    routes: list[tuple[str, Any, str, str, dict[str, Any], list[Any]]] = [
+        (
+            "GET",
+            get,
+            meridian,
+            f"As `GET /surfaces/{{surface_id}}` with `discretization={identifier}`; the query "
+            f"takes the surface's parameters and those of {identifier}.",
+            {"parameters": documented_parameters(identifier, in_path=True)},
+            [Depends(reject_repeated_parameters)],
+        ),
+        (
+            "POST",
+            post,
+            f"{meridian} (JSON body)",
+            f"As GET /surfaces/{{surface_id}}/{identifier}, with the parameters in a JSON object.",
+            documented_body(identifier, in_path=True),
+            [],
+        ),
+    ]
+    for method, endpoint, summary, description, extra, dependencies in routes:
+        router.add_api_route(
+            path,
+            endpoint,
+            methods=[method],
+            name=f"{method.lower()}_surface_{identifier}",
+            summary=summary,
+            description=description,
+            response_model=SurfaceResponse,
+            responses=RESPONSES,
+            dependencies=dependencies,
+            openapi_extra=extra,
+        )
 
 
 for _identifier in DISCRETIZATIONS:
