@@ -62,6 +62,9 @@ __all__ = [
     "problem",
 ]
 logger = logging.getLogger("app.errors")
+#: ``request.state`` attribute: the ``precision`` member of a JSON body (the numerical-warning
+#: handler names it; its own request object no longer holds the body).
+BODY_PRECISION = "body_precision"
 
 
 _BOUNDS = {
@@ -264,18 +267,28 @@ async def _unexpected_handler(request: Request, exc: Exception) -> Response:
 async def _numerical_handler(request: Request, exc: Exception) -> Response:
     """A numerical warning of the core (overflow, 0/0), raised as an error: a 422, never a
     result computed from infinities (the tests turn the same warnings into errors)."""
+    precision = _request_precision(request)
     entry = {
         "parameter": "precision",
         "constraint": "values representable in the chosen precision",
-        "value": request.query_params.get("precision"),
+        "value": precision,
     }
+    advice = "a shorter range" if precision == "mp" else "precision=mp or a shorter range"
     return problem(
         422,
         "Outside the domain",
-        f"A value of this computation cannot be represented ({exc}); use precision=mp or a "
-        "shorter range.",
+        f"A value of this computation cannot be represented ({exc}); use {advice}.",
         [entry],
     )
+
+
+def _request_precision(request: Request) -> Any:
+    """The ``precision`` the request carried, in its query or its JSON body (noted by
+    `enforce_digits_limit`, which reads the body), or the default ``float64`` when it gave none."""
+    given = request.query_params.get("precision")
+    if given is None:
+        given = getattr(request.state, BODY_PRECISION, None)
+    return "float64" if given is None else json_safe(given)
 
 
 async def refuse_undeclared_query(request: Request) -> None:
@@ -323,6 +336,8 @@ async def enforce_digits_limit(request: Request) -> None:
             body = None
         if isinstance(body, dict) and "digits" in body:
             values.append(body["digits"])
+        if isinstance(body, dict) and "precision" in body:
+            setattr(request.state, BODY_PRECISION, body["precision"])
     for value in values:
         try:
             number = float(value)

@@ -160,12 +160,13 @@ def glb_bytes(
 ) -> bytes:
     """glTF 2.0 binary: per-face vertices, triangulated, float32, custom ``_NAME`` attributes."""
     corners = vertices[faces]  # (F, 4, 3)
+    # float32 first: the normals of larger coordinates would overflow float64 before the check
+    positions = _float32("vertices", corners.reshape(-1, 3))
     normal = np.cross(corners[:, 2] - corners[:, 0], corners[:, 3] - corners[:, 1])
     length = np.linalg.norm(normal, axis=1)
     normal = np.where(
         length[:, None] > 0, normal / np.where(length > 0, length, 1)[:, None], [0.0, 0.0, 1.0]
     )
-    positions = _float32("vertices", corners.reshape(-1, 3))
     normals = normal.repeat(4, axis=0).astype("<f4")
     count = len(faces)
     base = (4 * np.arange(count, dtype=np.uint32))[:, None]

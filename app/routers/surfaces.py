@@ -57,6 +57,14 @@ def checks_of(kinds: list[str]) -> list[str]:
     return ids
 
 
+#: ``x-domain`` of ``checks`` where the path serves both claims (a JSON Schema of a query
+#: parameter cannot depend on the path's ``surface_id``).
+CHECKS_BY_SURFACE = (
+    "ids of surface_id's own statements: vanishing-mean-curvature only on catenoid and "
+    "catenoid-gauss-image, theorem-7 only on pseudosphere and pseudosphere-gauss-image"
+)
+
+
 def documented_parameters(identifier: str, in_path: bool) -> list[dict[str, Any]]:
     """Query parameters for OpenAPI: the surface's own, then the discretization's.
 
@@ -80,7 +88,14 @@ def documented_parameters(identifier: str, in_path: bool) -> list[dict[str, Any]
             description = schema.pop("description", "")
             schema.pop("title", None)
             if name == "checks" and owner == "surface":
-                schema = selection_schema(schema, "checks", checks_of(surfaces_of(identifier)))
+                kinds = surfaces_of(identifier)
+                schema = selection_schema(schema, "checks", checks_of(kinds))
+                if len(checks_of(kinds)) > len(checks_of(kinds[:1])):
+                    # one path for both claims: which ids apply depends on surface_id
+                    schema["x-domain"] = CHECKS_BY_SURFACE
+            if owner != "surface" and surface_service.MERIDIAN_PARAMETERS.get(owner) == name:
+                schema["x-domain"] = surface_service.DEGENERATE_MERIDIAN[owner]
+                description += f" On a surface, {schema['x-domain']}."
             if name == "companions" and owner != "surface":
                 # the discretization's own names, as on /discretizations/{id} (a bare string
                 # declared `companions=` valid, which the server refuses)
@@ -345,31 +360,39 @@ def _add_discretization_routes(identifier: str) -> None:
     ) -> Response:
         return _get(request, surface_id, _with_discretization(identifier, body))
 
-    router.add_api_route(
-        path,
-        get,
-        methods=["GET"],
-        name=f"get_surface_{identifier}",
-        summary=f"One discrete surface of revolution with a {identifier} meridian",
-        description=f"As `GET /surfaces/{{surface_id}}` with `discretization={identifier}`; the "
-        f"query takes the surface's parameters and those of {identifier}.",
-        response_model=SurfaceResponse,
-        responses=RESPONSES,
-        dependencies=[Depends(reject_repeated_parameters)],
-        openapi_extra={"parameters": documented_parameters(identifier, in_path=True)},
-    )
-    router.add_api_route(
-        path,
-        post,
-        methods=["POST"],
-        name=f"post_surface_{identifier}",
-        summary=f"One discrete surface of revolution with a {identifier} meridian (JSON body)",
-        description=f"As GET /surfaces/{{surface_id}}/{identifier}, with the parameters in a "
-        "JSON object.",
-        response_model=SurfaceResponse,
-        responses=RESPONSES,
-        openapi_extra=documented_body(identifier, in_path=True),
-    )
+    meridian = f"One discrete surface of revolution with a {identifier} meridian"
+    routes: list[tuple[str, Any, str, str, dict[str, Any], list[Any]]] = [
+        (
+            "GET",
+            get,
+            meridian,
+            f"As `GET /surfaces/{{surface_id}}` with `discretization={identifier}`; the query "
+            f"takes the surface's parameters and those of {identifier}.",
+            {"parameters": documented_parameters(identifier, in_path=True)},
+            [Depends(reject_repeated_parameters)],
+        ),
+        (
+            "POST",
+            post,
+            f"{meridian} (JSON body)",
+            f"As GET /surfaces/{{surface_id}}/{identifier}, with the parameters in a JSON object.",
+            documented_body(identifier, in_path=True),
+            [],
+        ),
+    ]
+    for method, endpoint, summary, description, extra, dependencies in routes:
+        router.add_api_route(
+            path,
+            endpoint,
+            methods=[method],
+            name=f"{method.lower()}_surface_{identifier}",
+            summary=summary,
+            description=description,
+            response_model=SurfaceResponse,
+            responses=RESPONSES,
+            dependencies=dependencies,
+            openapi_extra=extra,
+        )
 
 
 for _identifier in DISCRETIZATIONS:

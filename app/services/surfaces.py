@@ -100,6 +100,33 @@ def kind_of(identifier: str) -> SurfaceKind:
         raise UnknownIdError("surface", identifier, sorted(KINDS)) from None
 
 
+#: The request parameters that place a discretization's meridian where a face of its surface
+#: can degenerate (zero area: a meridian edge on or across the axis, or of zero length): (D1)'s
+#: free start heights. Other meridians stay off the axis; there the range is named.
+MERIDIAN_PARAMETERS = {"d1": "y0"}
+DEGENERATE_MERIDIAN = {
+    "d1": "y0, y1 give a meridian p with every face of positive area (no edge of p on or "
+    "across the axis p^y = 0, none of zero length)",
+}
+
+
+def degenerate_meridian(
+    discretization: str, parameters: dict[str, Any], i_min: int, steps: int, error: DomainError
+) -> DomainError:
+    """The geometry's refusal of a zero-area face (``meridian``, a face number) as the request
+    parameter that causes it, with the meridian edge of that face."""
+    face = int(error.value)
+    start = i_min + face // max(steps, 1)
+    where = f"face {face}, the meridian edge p_{start} p_{start + 1} revolved,"
+    name = MERIDIAN_PARAMETERS.get(discretization, "i_min")
+    constraint = DEGENERATE_MERIDIAN.get(
+        discretization,
+        "i_min .. i_max give a meridian with every face of positive area (no edge on or "
+        "across the axis, none of zero length)",
+    )
+    return DomainError(name, constraint, parameters.get(name), f"{where} has no area")
+
+
 @dataclass(frozen=True)
 class SurfacePlan:
     """A surface request checked and charged (``admit``), not yet computed (``build``)."""
@@ -197,16 +224,23 @@ def build(plan: SurfacePlan, settings: Settings) -> SurfaceResult:
         gauss = curve.companions["gauss_image"].vertices
         claim, K, resolved = "minimal", None, "auto"
     recursion = max(abs(i_min), abs(i_max)) + 2
-    built = rotational_surface.build(
-        ar,
-        meridian,
-        gauss,
-        m,
-        steps,
-        claim,  # type: ignore[arg-type]
-        K,
-        ar.tolerance(max(recursion, LOCAL_STEPS)),
-    )
+    try:
+        built = rotational_surface.build(
+            ar,
+            meridian,
+            gauss,
+            m,
+            steps,
+            claim,  # type: ignore[arg-type]
+            K,
+            ar.tolerance(max(recursion, LOCAL_STEPS)),
+        )
+    except DomainError as error:
+        if error.parameter != "meridian":
+            raise
+        raise degenerate_meridian(
+            surface.discretization, curve.parameters, i_min, steps, error
+        ) from None
     selected = Selection(plan.wanted, failed_only=surface.checks == "failed")
     built = replace(built, checks=selected.keep(built.checks))
     parameters = {**curve.parameters, "i_min": i_min, "i_max": i_max}

@@ -277,7 +277,7 @@ def compute(
         # p is resolved to about h/s units of rounding: keep at least half of the digits
         raise NotRepresentableError(
             "s",
-            f"s/h >= 1e-{ar.digits // 2} with digits={ar.digits}",
+            f"s/h >= {10.0 ** -(ar.digits // 2):.2g} with digits={ar.digits}",
             s,
             "p is resolved to about h/s units of rounding; use more digits",
         )
