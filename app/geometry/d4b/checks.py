@@ -184,9 +184,21 @@ class _Context:
         return residual_kernels.recursion_residuals(self.d, self.data.p[:, 1])
 
     @cached_property
+    def columns(self) -> conditions.Columns:
+        """Float64: the columns of (D1), (D3) and eq. (2) on p_{i_min} .. p_{i_max}, once."""
+        return conditions.Columns(self.data.p[: self.n])
+
+    @cached_property
     def fits(self) -> dict[str, conditions.ConditionFit]:
         """Least-squares fits of (D1), (D3) and (2) on p_{i_min} .. p_{i_max}."""
         p = self.data.p[: self.n]
+        if self.ar.mode == "float64":  # the three from one set of columns
+            columns = self.columns
+            return {
+                "d1": columns.fit(conditions.D1),
+                "d3": columns.fit(conditions.D3),
+                "eq2": columns.fit(conditions.EQUATION_2),
+            }
         return {
             "d1": conditions.d1(self.ar, p),
             "d3": conditions.d3(self.ar, p),
@@ -245,7 +257,11 @@ def _equation_2(ctx: _Context, fits: dict[str, conditions.ConditionFit], p: Arra
     c, c1, c2 = (fits[k].constant for k in ("eq2", "d1", "d3"))
     residuals = fits["eq2"].residuals
     if c1 is not None and c2 is not None and c2 != 0 and len(residuals):
-        residuals = ctx.ar.maximum(residuals, conditions.equation_2_misfit(ctx.ar, p, c1 / c2))
+        if ctx.ar.mode == "float64":  # p is ctx.data.p[: n], whose columns the fits used
+            misfit = ctx.columns.misfit(conditions.EQUATION_2, c1 / c2)
+        else:
+            misfit = conditions.equation_2_misfit(ctx.ar, p, c1 / c2)
+        residuals = ctx.ar.maximum(residuals, misfit)
     return _fitted(ctx, THEOREM_4_III, conditions.ConditionFit(c, residuals))
 
 
