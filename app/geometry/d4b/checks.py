@@ -36,6 +36,7 @@ from app.geometry.catalog.section4 import (
 from app.geometry.checks import (
     Check,
     Erratum,
+    Largest,
     Statement,
     check_residuals,
     not_applicable,
@@ -179,8 +180,11 @@ class _Context:
         return self._tolerances[2]
 
     @cached_property
-    def compiled_recursion(self) -> tuple[Array, Array]:
-        """Float64 residuals of (13) and of its two-step form, both from one compiled pass."""
+    def compiled_recursion(self) -> tuple[Array | Largest, Array | Largest]:
+        """Float64 residuals of (13) and of its two-step form, both from one compiled pass (their
+        largest values alone without ``detail``)."""
+        if not self.detail:
+            return residual_kernels.recursion_largest(self.d, self.data.p[:, 1])
         return residual_kernels.recursion_residuals(self.d, self.data.p[:, 1])
 
     @cached_property
@@ -209,7 +213,7 @@ class _Context:
         self,
         statement: Statement,
         first: int,
-        residuals: Array,
+        residuals: Array | Largest,
         erratum: Erratum | None = None,
         factor: int = 1,
     ) -> Check:
@@ -280,6 +284,9 @@ def _ratio_erratum(ctx: _Context, p: Array) -> Erratum | None:
 
 def _rotation_angle(ctx: _Context, p: Array, axis: Array) -> Check:
     ar, n = ctx.ar, ctx.n
+    if ar.mode == "float64" and not ctx.detail:  # the largest residuals in one compiled pass
+        largest, worst = residual_kernels.rotation_angle_largest(ctx.d, p, axis, n)
+        return ctx.check(ROTATION_ANGLE, 1, largest, Erratum(*ERRATUM_ANGLE, worst))
     if ar.mode == "float64":  # the same residuals in one compiled pass
         corrected, printed_angles = residual_kernels.rotation_angles(ctx.d, p, axis, n)
         erratum = Erratum(*ERRATUM_ANGLE, printed_residual=printed_residual(ar, printed_angles))
@@ -312,10 +319,8 @@ def _two_step(ctx: _Context, p: Array) -> Check:
     y = p[:, 1]
     ar = ctx.ar
     if ar.mode == "float64" and float(np.max(abs(y))) < 1e60:  # the same, compiled
-        printed_residuals = residual_kernels.two_step_printed_residuals(ctx.d, y)
-        erratum = Erratum(
-            *ERRATUM_TWO_STEP, printed_residual=printed_residual(ar, printed_residuals)
-        )
+        worst = residual_kernels.largest_two_step_printed_residual(ctx.d, y)
+        erratum = Erratum(*ERRATUM_TWO_STEP, printed_residual=worst)
     elif ar.mode == "mp" or float(np.max(abs(y))) < 1e60:  # the printed form has 7th powers
         printed = kinematic_closed_forms.two_step_printed(ctx.d, y[:-3], y[1:-2])
         erratum = Erratum(
@@ -366,6 +371,10 @@ def _closed_form(
 def _nikolaides(ctx: _Context, p: Array, tractrix: Array, axis: Array) -> Check:
     n = ctx.n
     if ctx.ar.mode == "float64":  # the same residuals in one compiled pass
+        if not ctx.detail:  # the largest alone
+            return ctx.check(
+                NIKOLAIDES, 0, residual_kernels.right_angle_largest(tractrix, axis, p, n)
+            )
         return ctx.check(
             NIKOLAIDES, 0, residual_kernels.right_angle_residuals(tractrix, axis, p, n)
         )

@@ -35,6 +35,7 @@ from app.geometry.catalog.section5 import (
 from app.geometry.checks import (
     Check,
     Erratum,
+    Largest,
     Statement,
     check_residuals,
     not_applicable,
@@ -51,6 +52,7 @@ from app.geometry.surfaces.ring_curvature import (
     minimal_residuals,
     ring_checks,
     ring_curvatures,
+    ring_largest,
 )
 
 S = Statement
@@ -348,11 +350,14 @@ def evaluate(
             memo[name] = make()
         return memo[name]
 
-    def rings(pseudosphere: bool) -> tuple[Array, Array, int] | None:
-        """Float64: the ring's theorem and (17) residuals in one pass (``ring_checks``)."""
+    def rings(pseudosphere: bool) -> tuple[Any, Any, int] | None:
+        """Float64: the ring's theorem and (17) residuals in one pass (``ring_checks``); their
+        largest values alone (``ring_largest``) when no residual is shown per index."""
+        exact = not detail and len(tractrix) == len(p) == n + 1  # n faces each
+        fused = ring_largest if exact else ring_checks
         if pseudosphere:
-            return shared("pseudo", lambda: ring_checks(ar, tractrix, nt(), -1 / (h * h)))
-        return shared("catenoid", lambda: ring_checks(ar, p, m(), None))
+            return shared("pseudo", lambda: fused(ar, tractrix, nt(), -1 / (h * h)))
+        return shared("catenoid", lambda: fused(ar, p, m(), None))
 
     def curvatures(pseudosphere: bool) -> Any:
         """The ring's curvatures, numpy (mp, or a face without area to name)."""
@@ -363,14 +368,14 @@ def evaluate(
     def theorem_7() -> Check:
         fused = rings(True)
         if fused is not None:
-            residuals = fused[0]
+            residuals = fused[0]  # n faces: tractrix and n on i_min .. i_max + 1
         else:
             pseudo = curvatures(True)
             residuals = np.maximum(
                 ar.to_floats(constant_curvature_residuals(pseudo, -1 / (h * h))),
                 ar.to_floats(pseudo.parallel),
             )
-        return check(THEOREM_7, residuals[:n], n_tolerance)
+        return check(THEOREM_7, _first(residuals, n), n_tolerance)
 
     def theorem_8() -> Check:
         fused = rings(False)
@@ -381,7 +386,7 @@ def evaluate(
             residuals = np.maximum(
                 ar.to_floats(minimal_residuals(catenoid)), ar.to_floats(catenoid.parallel)
             )
-        return check(THEOREM_8, residuals[:n], construction_tolerance)
+        return check(THEOREM_8, _first(residuals, n), construction_tolerance)
 
     def equation_17() -> Check:
         pseudo, catenoid = rings(True), rings(False)
@@ -491,6 +496,11 @@ def evaluate(
         (THEOREM_8, theorem_8),
     )
     return [evaluate() for statement, evaluate in evaluators if wanted(statement.id)]
+
+
+def _first(residuals: Any, n: int) -> Any:
+    """The first n residuals (a ``checks.Largest`` holds exactly n, see ``rings``)."""
+    return residuals if isinstance(residuals, Largest) else residuals[:n]
 
 
 def _edge_resolution(ar: Arithmetic, points: Array) -> Array:
