@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from functools import cached_property
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 
@@ -254,17 +254,39 @@ def companion_tolerances(
     }
 
 
-def printed_forms(
-    ar: Arithmetic, h: Scalar, d: Scalar, shift: Scalar, i_min: int, i_max: int
-) -> Callable[[str], Array]:
+class PrintedForms:
     """The printed (18), (19), (20) on i_min .. i_max (for the errata's printed residuals), by
-    ``"18"``, ``"19"``, ``"20"``, each computed when asked for."""
-    forms = {
+    ``"18"``, ``"19"``, ``"20"``, each computed when asked for; in float64 ``largest`` compares
+    one with built points in a compiled pass, neither stored (``residual_kernels``)."""
+
+    FORMS: ClassVar[dict[str, Callable[..., Array]]] = {
         "18": kinematic_closed_forms.tractrix_gauss_image_printed,
         "19": kinematic_closed_forms.contact_points_printed,
         "20": kinematic_closed_forms.circumscribed_gauss_image_printed,
     }
-    return lambda key: forms[key](ar, h, d, ar.indices(i_min, i_max), shift)
+
+    def __init__(
+        self, ar: Arithmetic, h: Scalar, d: Scalar, shift: Scalar, i_min: int, i_max: int
+    ) -> None:
+        self.ar, self.h, self.d, self.shift, self.i_min, self.i_max = ar, h, d, shift, i_min, i_max
+
+    def __call__(self, key: str) -> Array:
+        ar = self.ar
+        return self.FORMS[key](ar, self.h, self.d, ar.indices(self.i_min, self.i_max), self.shift)
+
+    def largest(self, key: str, built: Array) -> float | None:
+        """Float64: the printed residual of form ``key`` against ``built`` (rows from i_min)."""
+        L = kinematic_closed_forms.log_ratio(self.ar, self.h, self.d)
+        return residual_kernels.largest_printed_gauss_difference(
+            int(key), built, self.i_min, self.shift, L, self.h, self.d
+        )
+
+
+def printed_forms(
+    ar: Arithmetic, h: Scalar, d: Scalar, shift: Scalar, i_min: int, i_max: int
+) -> PrintedForms:
+    """The printed (18), (19), (20) on i_min .. i_max (``PrintedForms``)."""
+    return PrintedForms(ar, h, d, shift, i_min, i_max)
 
 
 def evaluate(
@@ -335,7 +357,10 @@ def evaluate(
                 residuals = ar.to_floats(residuals) * ar.to_floats(scale[:n])
         return check(statement, residuals, tolerance, erratum)
 
-    def printed_erratum(entry: tuple[str, str, str], built: Array, formula: Array) -> Erratum:
+    def printed_erratum(entry: tuple[str, str, str], built: Array, key: str) -> Erratum:
+        if ar.mode == "float64" and isinstance(printed, PrintedForms):  # one pass, no arrays
+            return Erratum(*entry, printed_residual=printed.largest(key, built[:n]))
+        formula = printed(key)
         if ar.mode == "float64":  # the largest alone, in one pass
             worst = residual_kernels.largest_relative_point_difference(built[:n], formula[:n])
             return Erratum(*entry, printed_residual=worst)
@@ -426,6 +451,9 @@ def evaluate(
         return shared("pole resolution", make)
 
     def slope_erratum() -> Erratum:
+        if ar.mode == "float64":  # the same numbers in one pass, the largest alone
+            worst = residual_kernels.largest_along_printed_slope(min(n, len(p) - 1), p)
+            return Erratum(*ERRATUM_18_SLOPE, printed_residual=worst)
         edges = p[1:] - p[:-1]
         slope = edges[:, 1] / edges[:, 0]  # k_{i+1} of the edge p_i p_{i+1}, eq. (12)
         slope_printed = kinematic_closed_forms.normal_from_slope_printed(ar, slope)
@@ -460,7 +488,7 @@ def evaluate(
                 EQUATION_18,
                 nt(),
                 images.closed_tractrix_gauss,
-                printed_erratum(ERRATUM_18, nt(), printed("18")),
+                printed_erratum(ERRATUM_18, nt(), "18"),
                 n_tolerance,
             ),
         ),
@@ -476,7 +504,7 @@ def evaluate(
                 EQUATION_19,
                 c()[1:],
                 images.closed_contact[1:],
-                printed_erratum(ERRATUM_19, c()[1:], printed("19")),
+                printed_erratum(ERRATUM_19, c()[1:], "19"),
                 scale=resolution(),
             ),
         ),
@@ -488,7 +516,7 @@ def evaluate(
                 EQUATION_20,
                 m(),
                 images.closed_gauss,
-                printed_erratum(ERRATUM_20, m(), printed("20")),
+                printed_erratum(ERRATUM_20, m(), "20"),
                 scale=pole_resolution(),
             ),
         ),

@@ -347,3 +347,88 @@ def largest_relative_point_difference(computed: Array, expected: Array) -> float
         return None
     worst = float(_largest_relative_distance(_points(computed), _points(expected), TINY))
     return worst if math.isfinite(worst) else None
+
+
+# --- the printed Gauss images (18), (19), (20) and the printed (18) from slopes, compared with
+# the built ones without storing either: only their largest difference is reported (errata) ---
+
+#: ``_largest_printed_gauss`` kinds: (18), (19), (20) as printed.
+PRINTED_18, PRINTED_19, PRINTED_20 = 18, 19, 20
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _sech(t: float) -> float:
+    """``closed_forms.amplitude_sech`` with a = 1 for one t (libm's cosh and exp: within a unit
+    or two in the last place of numpy's)."""
+    c = math.cosh(t)
+    if c < math.inf:
+        return 1 / c
+    v = abs(t)
+    return math.exp(math.log(2.0) - v) / (1 + math.exp(-2 * v))
+
+
+@kernel("float64(int64, float64[:, :], float64, float64, float64, float64, float64, float64)")
+def _largest_printed_gauss(
+    kind: int, built: Any, first: float, shift: float, L: float, h: float, d: float, tiny: float
+) -> float:
+    """max_k |built_k − printed_k| / max(|printed_k|, tiny) for the printed (18), (19) or (20)
+    (``closed_forms.*_printed``) at i = first + k, t = (i + τ)L; NaN if one is NaN."""
+    largest = 0.0
+    for k in range(built.shape[0]):
+        t = (first + k + shift) * L
+        tanh = math.tanh(t)
+        sech = _sech(t)
+        if kind == PRINTED_18:
+            x, y = sech, -tanh
+        elif kind == PRINTED_19:
+            x, y = tanh, sech
+        else:
+            denominator = h + d * tanh
+            x, y = (h * tanh - d) / denominator, h * sech / denominator
+        size = length(x, y)
+        size = size if size > tiny else tiny
+        value = length(built[k, 0] - x, built[k, 1] - y) / size
+        largest = running_largest(value, largest)
+    return largest
+
+
+@kernel("float64(int64, float64[:, :])")
+def _largest_along_printed_slope(count: int, points: Any) -> float:
+    """The largest ``_along`` of the printed (18) from the slopes k of the edges p_k p_{k+1}
+    (``closed_forms.normal_from_slope_printed``: (√(1/(1 + k²)), √(k²/(1 + k²)))) against those
+    edges, for the first ``count`` edges; NaN if one is NaN."""
+    largest = 0.0
+    for k in range(count):
+        ex = points[k + 1, 0] - points[k, 0]
+        ey = points[k + 1, 1] - points[k, 1]
+        slope = ey / ex
+        vx = math.sqrt(1 / (1 + slope * slope))
+        vy = math.sqrt(slope * slope / (1 + slope * slope))
+        size = abs(points[k, 0]) + abs(points[k, 1]) + abs(points[k + 1, 0]) + abs(points[k + 1, 1])
+        residual = abs(vx * ey - vy * ex) / size
+        largest = running_largest(1.0 if vx * ex + vy * ey < 0 else residual, largest)
+    return largest
+
+
+def largest_printed_gauss_difference(
+    kind: int, built: Any, first: int, shift: float, L: float, h: float, d: float
+) -> float | None:
+    """The printed residual (``checks.printed_residual``) of the printed (18), (19) or (20)
+    against ``built`` (rows at i = first, first + 1, …), in one pass, neither stored."""
+    if len(built) == 0:
+        return None
+    worst = float(
+        _largest_printed_gauss(
+            kind, _points(built), float(first), float(shift), float(L), float(h), float(d), TINY
+        )
+    )
+    return worst if math.isfinite(worst) else None
+
+
+def largest_along_printed_slope(count: int, points: Any) -> float | None:
+    """The printed residual of (18) from the slopes (``curvature.slope_erratum``): the largest
+    ``along`` of the printed unit vectors of the first ``count`` edges of ``points``."""
+    if count <= 0:
+        return None
+    worst = float(_largest_along_printed_slope(count, _points(points)))
+    return worst if math.isfinite(worst) else None

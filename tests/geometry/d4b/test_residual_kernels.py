@@ -252,3 +252,34 @@ def test_a_largest_that_is_not_finite_takes_the_array_path() -> None:
         statement, ar, indices, checks.Largest(0.0, 0, lambda: residuals[:0]), 1e-15, False
     )
     assert empty.holds is None
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_printed_gauss_images_in_one_pass_equal_the_arrays(seed: int) -> None:
+    """The errata of (18), (19), (20) and (18) from slopes without arrays: the printed forms by
+    libm's tanh and cosh agree with numpy's to a few ulp, the slopes' form to the bit."""
+    from app.geometry.d4b import curvature
+
+    ar = Float64()
+    for data in polygons(seed):
+        n = len(data.p) - 1
+        forms = curvature.printed_forms(ar, data.h, data.d, data.shift, data.i_min, data.i_max)
+        images = data.gauss
+        for key, built in (
+            ("18", images.tractrix_gauss),
+            ("19", images.contact[1:]),
+            ("20", images.gauss),
+        ):
+            for points in (built, built * 1.01):
+                got = forms.largest(key, points[:n])
+                expected = checks.printed_residual(
+                    ar, checks.relative_point_difference(ar, points[:n], forms(key)[:n])
+                )
+                assert got is not None and expected is not None
+                assert got == pytest.approx(expected, rel=8 * np.finfo(np.float64).eps)
+        p = data.p
+        edges = p[1:] - p[:-1]
+        vectors = closed_forms.normal_from_slope_printed(ar, edges[:, 1] / edges[:, 0])
+        expected = checks.printed_residual(ar, residual_kernels.along(vectors[:n], p[: n + 1]))
+        assert residual_kernels.largest_along_printed_slope(n, p) == expected
+    assert residual_kernels.largest_along_printed_slope(0, np.ones((1, 2))) is None
