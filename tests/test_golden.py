@@ -54,9 +54,6 @@ TEXT_CHANGES: dict[tuple[str, str], str] = {
 #: few ulp, its printed residual at the defaults not at all; elsewhere by up to 35 ulp where
 #: the printed form nearly cancels with p^y (d = 0.5h), and at d = 1e-4 h, where the printed
 #: residual is itself at rounding level (1.6e-15), to 1.5e-15.
-#: The printed residuals of E60, E62, E63 ((18), (19), (20) as printed) are computed in one pass
-#: with libm's tanh and cosh instead of numpy's: 1 ulp apart where they differ (1.52 at 10^4
-#: vertices, d = 1e-4 h), unchanged at the defaults.
 #: Printed residuals are compared to 1e-6 relative (RESIDUAL_KEYS), so no entry below is needed.
 VALUE_CHANGES = re.compile(
     r"\.companions\.tractrix_gauss_image\."

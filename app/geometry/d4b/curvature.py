@@ -256,8 +256,8 @@ def companion_tolerances(
 
 class PrintedForms:
     """The printed (18), (19), (20) on i_min .. i_max (for the errata's printed residuals), by
-    ``"18"``, ``"19"``, ``"20"``, each computed when asked for; in float64 ``largest`` compares
-    one with built points in a compiled pass, neither stored (``residual_kernels``)."""
+    ``"18"``, ``"19"``, ``"20"``, each computed when asked for; in float64 ``largest`` reads
+    them off the corrected closed forms instead (the same numbers, ``residual_kernels``)."""
 
     FORMS: ClassVar[dict[str, Callable[..., Array]]] = {
         "18": kinematic_closed_forms.tractrix_gauss_image_printed,
@@ -274,11 +274,13 @@ class PrintedForms:
         ar = self.ar
         return self.FORMS[key](ar, self.h, self.d, ar.indices(self.i_min, self.i_max), self.shift)
 
-    def largest(self, key: str, built: Array) -> float | None:
-        """Float64: the printed residual of form ``key`` against ``built`` (rows from i_min)."""
-        L = kinematic_closed_forms.log_ratio(self.ar, self.h, self.d)
+    def largest(self, key: str, built: Array, images: GaussImages) -> float | None:
+        """Float64: the printed residual of form ``key`` against ``built`` (rows from i_min),
+        from the closed forms of ``images`` (n_i for (18), (20); ñ_i for (19)) in one pass."""
+        closed = images.closed_contact[1:] if key == "19" else images.closed_tractrix_gauss
+        count = len(built)
         return residual_kernels.largest_printed_gauss_difference(
-            int(key), built, self.i_min, self.shift, L, self.h, self.d
+            int(key), built, closed[:count], self.h, self.d
         )
 
 
@@ -359,7 +361,7 @@ def evaluate(
 
     def printed_erratum(entry: tuple[str, str, str], built: Array, key: str) -> Erratum:
         if ar.mode == "float64" and isinstance(printed, PrintedForms):  # one pass, no arrays
-            return Erratum(*entry, printed_residual=printed.largest(key, built[:n]))
+            return Erratum(*entry, printed_residual=printed.largest(key, built[:n], images))
         formula = printed(key)
         if ar.mode == "float64":  # the largest alone, in one pass
             worst = residual_kernels.largest_relative_point_difference(built[:n], formula[:n])

@@ -356,33 +356,24 @@ def largest_relative_point_difference(computed: Array, expected: Array) -> float
 PRINTED_18, PRINTED_19, PRINTED_20 = 18, 19, 20
 
 
-@numba.njit(cache=True, inline="always", error_model="numpy")
-def _sech(t: float) -> float:
-    """``closed_forms.amplitude_sech`` with a = 1 for one t (libm's cosh and exp: within a unit
-    or two in the last place of numpy's)."""
-    c = math.cosh(t)
-    if c < math.inf:
-        return 1 / c
-    v = abs(t)
-    return math.exp(math.log(2.0) - v) / (1 + math.exp(-2 * v))
-
-
-@kernel("float64(int64, float64[:, :], float64, float64, float64, float64, float64, float64)")
+@kernel("float64(int64, float64[:, :], float64[:, :], float64, float64, float64)")
 def _largest_printed_gauss(
-    kind: int, built: Any, first: float, shift: float, L: float, h: float, d: float, tiny: float
+    kind: int, built: Any, closed: Any, h: float, d: float, tiny: float
 ) -> float:
     """max_k |built_k − printed_k| / max(|printed_k|, tiny) for the printed (18), (19) or (20)
-    (``closed_forms.*_printed``) at i = first + k, t = (i + τ)L; NaN if one is NaN."""
+    (``closed_forms.*_printed``), read off the corrected closed form at the same t = (i + τ)L
+    (NaN if one is NaN): (18) printed is (sech t, −tanh t) and ``closed`` n_i = (sech t,
+    tanh t); (19) printed (tanh t, sech t) and ``closed`` ñ_i = (−tanh t, sech t); (20)
+    printed ((h tanh t − d), h sech t)/(h + d tanh t) from ``closed`` n_i. The same numbers as
+    the printed forms evaluated anew (the same operations on the same tanh t and sech t)."""
     largest = 0.0
     for k in range(built.shape[0]):
-        t = (first + k + shift) * L
-        tanh = math.tanh(t)
-        sech = _sech(t)
         if kind == PRINTED_18:
-            x, y = sech, -tanh
+            x, y = closed[k, 0], -closed[k, 1]
         elif kind == PRINTED_19:
-            x, y = tanh, sech
+            x, y = -closed[k, 0], closed[k, 1]
         else:
+            sech, tanh = closed[k, 0], closed[k, 1]
             denominator = h + d * tanh
             x, y = (h * tanh - d) / denominator, h * sech / denominator
         size = length(x, y)
@@ -411,16 +402,15 @@ def _largest_along_printed_slope(count: int, points: Any) -> float:
 
 
 def largest_printed_gauss_difference(
-    kind: int, built: Any, first: int, shift: float, L: float, h: float, d: float
+    kind: int, built: Any, closed: Any, h: float, d: float
 ) -> float | None:
     """The printed residual (``checks.printed_residual``) of the printed (18), (19) or (20)
-    against ``built`` (rows at i = first, first + 1, …), in one pass, neither stored."""
+    against ``built``, the printed form read off the corrected one ``closed`` (n_i for (18) and
+    (20), ñ_i for (19), on the same indices): one pass, no arrays."""
     if len(built) == 0:
         return None
     worst = float(
-        _largest_printed_gauss(
-            kind, _points(built), float(first), float(shift), float(L), float(h), float(d), TINY
-        )
+        _largest_printed_gauss(kind, _points(built), _points(closed), float(h), float(d), TINY)
     )
     return worst if math.isfinite(worst) else None
 
