@@ -271,8 +271,10 @@ def _equation_2(ctx: _Context, fits: dict[str, conditions.ConditionFit], p: Arra
 
 def _ratio_erratum(ctx: _Context, p: Array) -> Erratum | None:
     """The proof's ratio with its own l_i = |p_i − p_{i−1}|: not constant along the polygon."""
-    y = p[:, 1]
     ar = ctx.ar
+    if ar.mode == "float64":  # the same numbers in compiled passes, the ratios' array alone
+        return Erratum(*ERRATUM_RATIO, printed_residual=residual_kernels.ratio_spread(p))
+    y = p[:, 1]
     lengths = ar.hypot(p[1:, 0] - p[:-1, 0], y[1:] - y[:-1])  # lengths[k] = |p_{k+1} − p_k|
     # printed: Δ²p_i^y / (l'_i + l'_{i+1}) with l'_i = |p_i − p_{i−1}|, for i with p_{i−1} known
     ratio = (y[3:] - 2 * y[2:-1] + y[1:-2]) / (lengths[:-2] + lengths[1:-1])

@@ -25,7 +25,7 @@ import numpy as np
 
 from app.geometry import checks
 from app.geometry.checks import Largest
-from app.geometry.compiled import kernel, length, running_largest
+from app.geometry.compiled import hypot, kernel, length, running_largest
 from app.geometry.precision import Arithmetic, Array
 
 TINY = float(np.finfo(np.float64).tiny)
@@ -421,4 +421,44 @@ def largest_along_printed_slope(count: int, points: Any) -> float | None:
     if count <= 0:
         return None
     worst = float(_largest_along_printed_slope(count, _points(points)))
+    return worst if math.isfinite(worst) else None
+
+
+@kernel("float64[:](float64[:, :])")
+def _printed_ratios(p: Any) -> Any:
+    """The proof's ratio Δ²p_i^y / (l'_i + l'_{i+1}), l'_i = |p_i − p_{i−1}| (erratum E2), as
+    ``checks._ratio_erratum`` computes it: entry k from p_k .. p_{k+3}, lengths by libm's hypot
+    (inline, ``compiled.hypot``)."""
+    count = max(p.shape[0] - 3, 0)
+    out = np.empty(count)
+    if count == 0:
+        return out
+    after = hypot(p[1, 0] - p[0, 0], p[1, 1] - p[0, 1])
+    for k in range(count):
+        before = after
+        after = hypot(p[k + 2, 0] - p[k + 1, 0], p[k + 2, 1] - p[k + 1, 1])
+        second = p[k + 3, 1] - 2 * p[k + 2, 1] + p[k + 1, 1]
+        out[k] = second / (before + after)
+    return out
+
+
+@kernel("float64(float64[:], float64, float64)")
+def _largest_spread(values: Any, mean: float, tiny: float) -> float:
+    """max_k |v_k − mean| / max(|mean|, tiny) (``checks.relative_difference`` against the
+    constant mean, the largest alone; NaN if one is NaN)."""
+    scale = abs(mean)
+    scale = scale if scale > tiny else tiny
+    largest = 0.0
+    for k in range(values.shape[0]):
+        largest = running_largest(abs(values[k] - mean) / scale, largest)
+    return largest
+
+
+def ratio_spread(p: Any) -> float | None:
+    """Float64: the printed residual of erratum E2 (the spread of the proof's ratio about its
+    mean, ``checks._ratio_erratum``): None for fewer than two ratios, or one not finite."""
+    ratio = _printed_ratios(_points(p))
+    if len(ratio) < 2:
+        return None
+    worst = float(_largest_spread(ratio, float(np.sum(ratio) / len(ratio)), TINY))
     return worst if math.isfinite(worst) else None

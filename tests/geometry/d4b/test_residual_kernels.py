@@ -282,3 +282,18 @@ def test_printed_gauss_images_in_one_pass_equal_the_arrays(seed: int) -> None:
         expected = checks.printed_residual(ar, residual_kernels.along(vectors[:n], p[: n + 1]))
         assert residual_kernels.largest_along_printed_slope(n, p) == expected
     assert residual_kernels.largest_along_printed_slope(0, np.ones((1, 2))) is None
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_ratio_spread_equals_numpy(seed: int) -> None:
+    """Erratum E2's printed residual in compiled passes: the numpy evaluation's bits."""
+    ar = Float64()
+    for data in polygons(seed):
+        for p in (data.p, perturbed(data, seed)[0]):
+            y = p[:, 1]
+            lengths = np.hypot(p[1:, 0] - p[:-1, 0], y[1:] - y[:-1])
+            ratio = (y[3:] - 2 * y[2:-1] + y[1:-2]) / (lengths[:-2] + lengths[1:-1])
+            mean = np.full_like(ratio, np.sum(ratio) / len(ratio))
+            expected = checks.printed_residual(ar, relative_difference(ar, ratio, mean))
+            assert residual_kernels.ratio_spread(p) == expected
+    assert residual_kernels.ratio_spread(np.ones((4, 2))) is None
