@@ -9,6 +9,7 @@ formula is wrong, the check tests the corrected one and carries an ``Erratum`` w
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from decimal import Decimal
 from typing import Any
@@ -83,11 +84,29 @@ class Check:
     note: str | None = None
 
 
+@dataclass(frozen=True)
+class Largest:
+    """The largest of a check's ``count`` float64 residuals, found by a compiled pass that did
+    not store them (a response without ``detail`` shows the largest alone).
+
+    ``value`` is what ``largest_magnitude`` would give for the array (NaN if one is NaN);
+    ``residuals`` computes the array itself, which ``check_residuals`` asks for only when the
+    largest is not finite (its note counts the residuals that are not).
+    """
+
+    value: float
+    count: int
+    residuals: Callable[[], Array]
+
+    def __len__(self) -> int:
+        return self.count
+
+
 def check_residuals(
     statement: Statement,
     ar: Arithmetic,
     indices: np.ndarray[Any, np.dtype[np.int64]],
-    residuals: Array,
+    residuals: Array | Largest,
     tolerance: Any,
     detail: bool,
     erratum: Erratum | None = None,
@@ -100,6 +119,19 @@ def check_residuals(
     when a rigorous lower bound exceeds the tolerance, and ``None`` (undecided, with a note) in
     between (``_certified``).
     """
+    if isinstance(residuals, Largest):
+        if residuals.count and math.isfinite(residuals.value) and not detail:
+            return Check(
+                id=statement.id,
+                reference=statement.reference,
+                claim=statement.claim,
+                residual=residuals.value,
+                tolerance=tolerance,
+                holds=residuals.value <= tolerance,
+                erratum=erratum,
+                note=note,
+            )
+        residuals = residuals.residuals()
     if len(residuals) == 0:
         return not_applicable(
             statement, tolerance, note or "not enough vertices in the range to evaluate it"

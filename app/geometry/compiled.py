@@ -135,6 +135,16 @@ def length3(x: float, y: float, z: float) -> float:
     return math.hypot(math.hypot(x, y), z)
 
 
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def running_largest(value: float, largest: float) -> float:
+    """One step of the largest |value| of a sequence, NaN once one is NaN (as ``np.max`` of the
+    magnitudes): start from 0.0, feed each value."""
+    if largest != largest:
+        return largest
+    magnitude = abs(value)
+    return magnitude if not magnitude <= largest else largest
+
+
 @kernel("float64[:](float64[:], float64[:])")
 def _hypot_arrays(x: Any, y: Any) -> Any:
     """``hypot`` entry by entry of two aligned arrays (any strides)."""

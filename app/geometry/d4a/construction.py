@@ -175,36 +175,36 @@ def _sticks(
     u[k0, 1] = s0
     _place(axis, tractrix, h, k0, 0.0, c0, s0)
     side[k0] = CUSP if s0 > keep else (PURSUIT if c0 < 0 else MIRRORED)
+    # the previous stick (x, cos, sin, side) stays in registers: reading it back from the
+    # arrays would wait on the stores just made (the compiler cannot tell the arrays apart)
+    xb, cb, sb, sideb = 0.0, c0, s0, side[k0]
     for k in range(k0 + 1, n):  # forward: stick k from stick k − 1
-        xb, cb, sb = axis[k - 1, 0], u[k - 1, 0], u[k - 1, 1]
-        if side[k - 1] >= CUSP:  # pull, the leader moves ahead
+        if sideb >= CUSP:  # pull, the leader moves ahead
             root = math.sqrt(cb * cb + widening * sb * sb)
-            u[k, 0] = -root
-            u[k, 1] = keep * sb
-            _place(axis, tractrix, h, k, (xb + carry * cb) + h * root, u[k, 0], u[k, 1])
-            side[k] = PURSUIT
+            xb, cb, sb, sideb = (xb + carry * cb) + h * root, -root, keep * sb, PURSUIT
         else:  # carrier leaning forward
             sin_n = sb / keep
             cos_n = math.sqrt((1 - sin_n) * (1 + sin_n))
-            u[k, 0] = cos_n
-            u[k, 1] = sin_n
-            _place(axis, tractrix, h, k, xb + h * cb - carry * cos_n, cos_n, sin_n)
-            side[k] = CUSP if sin_n > keep else MIRRORED
+            xb, cb, sb = xb + h * cb - carry * cos_n, cos_n, sin_n
+            sideb = CUSP if sin_n > keep else MIRRORED
+        u[k, 0] = cb
+        u[k, 1] = sb
+        _place(axis, tractrix, h, k, xb, cb, sb)
+        side[k] = sideb
+    xb, cb, sb, sideb = 0.0, c0, s0, side[k0]
     for k in range(k0 - 1, -1, -1):  # backward: stick k from stick k + 1
-        xb, cb, sb = axis[k + 1, 0], u[k + 1, 0], u[k + 1, 1]
-        if side[k + 1] <= CUSP:  # pull, the leader moves behind
+        if sideb <= CUSP:  # pull, the leader moves behind
             root = math.sqrt(cb * cb + widening * sb * sb)
-            u[k, 0] = root
-            u[k, 1] = keep * sb
-            _place(axis, tractrix, h, k, (xb + carry * cb) - h * root, u[k, 0], u[k, 1])
-            side[k] = MIRRORED
+            xb, cb, sb, sideb = (xb + carry * cb) - h * root, root, keep * sb, MIRRORED
         else:  # carrier leaning back
             sin_n = sb / keep
             cos_n = -math.sqrt((1 - sin_n) * (1 + sin_n))
-            u[k, 0] = cos_n
-            u[k, 1] = sin_n
-            _place(axis, tractrix, h, k, xb + h * cb - carry * cos_n, cos_n, sin_n)
-            side[k] = CUSP if sin_n > keep else PURSUIT
+            xb, cb, sb = xb + h * cb - carry * cos_n, cos_n, sin_n
+            sideb = CUSP if sin_n > keep else PURSUIT
+        u[k, 0] = cb
+        u[k, 1] = sb
+        _place(axis, tractrix, h, k, xb, cb, sb)
+        side[k] = sideb
     return axis, tractrix, u, side
 
 

@@ -36,6 +36,7 @@ from app.geometry.catalog.section4 import (
 from app.geometry.checks import (
     Check,
     Erratum,
+    Largest,
     Statement,
     check_residuals,
     not_applicable,
@@ -179,14 +180,29 @@ class _Context:
         return self._tolerances[2]
 
     @cached_property
-    def compiled_recursion(self) -> tuple[Array, Array]:
-        """Float64 residuals of (13) and of its two-step form, both from one compiled pass."""
+    def compiled_recursion(self) -> tuple[Array | Largest, Array | Largest]:
+        """Float64 residuals of (13) and of its two-step form, both from one compiled pass (their
+        largest values alone without ``detail``)."""
+        if not self.detail:
+            return residual_kernels.recursion_largest(self.d, self.data.p[:, 1])
         return residual_kernels.recursion_residuals(self.d, self.data.p[:, 1])
+
+    @cached_property
+    def columns(self) -> conditions.Columns:
+        """Float64: the columns of (D1), (D3) and eq. (2) on p_{i_min} .. p_{i_max}, once."""
+        return conditions.Columns(self.data.p[: self.n])
 
     @cached_property
     def fits(self) -> dict[str, conditions.ConditionFit]:
         """Least-squares fits of (D1), (D3) and (2) on p_{i_min} .. p_{i_max}."""
         p = self.data.p[: self.n]
+        if self.ar.mode == "float64":  # the three from one set of columns
+            columns = self.columns
+            return {
+                "d1": columns.fit(conditions.D1),
+                "d3": columns.fit(conditions.D3),
+                "eq2": columns.fit(conditions.EQUATION_2),
+            }
         return {
             "d1": conditions.d1(self.ar, p),
             "d3": conditions.d3(self.ar, p),
@@ -197,7 +213,7 @@ class _Context:
         self,
         statement: Statement,
         first: int,
-        residuals: Array,
+        residuals: Array | Largest,
         erratum: Erratum | None = None,
         factor: int = 1,
     ) -> Check:
@@ -245,14 +261,20 @@ def _equation_2(ctx: _Context, fits: dict[str, conditions.ConditionFit], p: Arra
     c, c1, c2 = (fits[k].constant for k in ("eq2", "d1", "d3"))
     residuals = fits["eq2"].residuals
     if c1 is not None and c2 is not None and c2 != 0 and len(residuals):
-        residuals = ctx.ar.maximum(residuals, conditions.equation_2_misfit(ctx.ar, p, c1 / c2))
+        if ctx.ar.mode == "float64":  # p is ctx.data.p[: n], whose columns the fits used
+            misfit = ctx.columns.misfit(conditions.EQUATION_2, c1 / c2)
+        else:
+            misfit = conditions.equation_2_misfit(ctx.ar, p, c1 / c2)
+        residuals = ctx.ar.maximum(residuals, misfit)
     return _fitted(ctx, THEOREM_4_III, conditions.ConditionFit(c, residuals))
 
 
 def _ratio_erratum(ctx: _Context, p: Array) -> Erratum | None:
     """The proof's ratio with its own l_i = |p_i − p_{i−1}|: not constant along the polygon."""
-    y = p[:, 1]
     ar = ctx.ar
+    if ar.mode == "float64":  # the same numbers in compiled passes, the ratios' array alone
+        return Erratum(*ERRATUM_RATIO, printed_residual=residual_kernels.ratio_spread(p))
+    y = p[:, 1]
     lengths = ar.hypot(p[1:, 0] - p[:-1, 0], y[1:] - y[:-1])  # lengths[k] = |p_{k+1} − p_k|
     # printed: Δ²p_i^y / (l'_i + l'_{i+1}) with l'_i = |p_i − p_{i−1}|, for i with p_{i−1} known
     ratio = (y[3:] - 2 * y[2:-1] + y[1:-2]) / (lengths[:-2] + lengths[1:-1])
@@ -264,6 +286,9 @@ def _ratio_erratum(ctx: _Context, p: Array) -> Erratum | None:
 
 def _rotation_angle(ctx: _Context, p: Array, axis: Array) -> Check:
     ar, n = ctx.ar, ctx.n
+    if ar.mode == "float64" and not ctx.detail:  # the largest residuals in one compiled pass
+        largest, worst = residual_kernels.rotation_angle_largest(ctx.d, p, axis, n)
+        return ctx.check(ROTATION_ANGLE, 1, largest, Erratum(*ERRATUM_ANGLE, worst))
     if ar.mode == "float64":  # the same residuals in one compiled pass
         corrected, printed_angles = residual_kernels.rotation_angles(ctx.d, p, axis, n)
         erratum = Erratum(*ERRATUM_ANGLE, printed_residual=printed_residual(ar, printed_angles))
@@ -296,10 +321,8 @@ def _two_step(ctx: _Context, p: Array) -> Check:
     y = p[:, 1]
     ar = ctx.ar
     if ar.mode == "float64" and float(np.max(abs(y))) < 1e60:  # the same, compiled
-        printed_residuals = residual_kernels.two_step_printed_residuals(ctx.d, y)
-        erratum = Erratum(
-            *ERRATUM_TWO_STEP, printed_residual=printed_residual(ar, printed_residuals)
-        )
+        worst = residual_kernels.largest_two_step_printed_residual(ctx.d, y)
+        erratum = Erratum(*ERRATUM_TWO_STEP, printed_residual=worst)
     elif ar.mode == "mp" or float(np.max(abs(y))) < 1e60:  # the printed form has 7th powers
         printed = kinematic_closed_forms.two_step_printed(ctx.d, y[:-3], y[1:-2])
         erratum = Erratum(
@@ -350,6 +373,10 @@ def _closed_form(
 def _nikolaides(ctx: _Context, p: Array, tractrix: Array, axis: Array) -> Check:
     n = ctx.n
     if ctx.ar.mode == "float64":  # the same residuals in one compiled pass
+        if not ctx.detail:  # the largest alone
+            return ctx.check(
+                NIKOLAIDES, 0, residual_kernels.right_angle_largest(tractrix, axis, p, n)
+            )
         return ctx.check(
             NIKOLAIDES, 0, residual_kernels.right_angle_residuals(tractrix, axis, p, n)
         )

@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from functools import cached_property
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 
@@ -35,6 +35,7 @@ from app.geometry.catalog.section5 import (
 from app.geometry.checks import (
     Check,
     Erratum,
+    Largest,
     Statement,
     check_residuals,
     not_applicable,
@@ -51,6 +52,7 @@ from app.geometry.surfaces.ring_curvature import (
     minimal_residuals,
     ring_checks,
     ring_curvatures,
+    ring_largest,
 )
 
 S = Statement
@@ -252,17 +254,41 @@ def companion_tolerances(
     }
 
 
-def printed_forms(
-    ar: Arithmetic, h: Scalar, d: Scalar, shift: Scalar, i_min: int, i_max: int
-) -> Callable[[str], Array]:
+class PrintedForms:
     """The printed (18), (19), (20) on i_min .. i_max (for the errata's printed residuals), by
-    ``"18"``, ``"19"``, ``"20"``, each computed when asked for."""
-    forms = {
+    ``"18"``, ``"19"``, ``"20"``, each computed when asked for; in float64 ``largest`` reads
+    them off the corrected closed forms instead (the same numbers, ``residual_kernels``)."""
+
+    FORMS: ClassVar[dict[str, Callable[..., Array]]] = {
         "18": kinematic_closed_forms.tractrix_gauss_image_printed,
         "19": kinematic_closed_forms.contact_points_printed,
         "20": kinematic_closed_forms.circumscribed_gauss_image_printed,
     }
-    return lambda key: forms[key](ar, h, d, ar.indices(i_min, i_max), shift)
+
+    def __init__(
+        self, ar: Arithmetic, h: Scalar, d: Scalar, shift: Scalar, i_min: int, i_max: int
+    ) -> None:
+        self.ar, self.h, self.d, self.shift, self.i_min, self.i_max = ar, h, d, shift, i_min, i_max
+
+    def __call__(self, key: str) -> Array:
+        ar = self.ar
+        return self.FORMS[key](ar, self.h, self.d, ar.indices(self.i_min, self.i_max), self.shift)
+
+    def largest(self, key: str, built: Array, images: GaussImages) -> float | None:
+        """Float64: the printed residual of form ``key`` against ``built`` (rows from i_min),
+        from the closed forms of ``images`` (n_i for (18), (20); ñ_i for (19)) in one pass."""
+        closed = images.closed_contact[1:] if key == "19" else images.closed_tractrix_gauss
+        count = len(built)
+        return residual_kernels.largest_printed_gauss_difference(
+            int(key), built, closed[:count], self.h, self.d
+        )
+
+
+def printed_forms(
+    ar: Arithmetic, h: Scalar, d: Scalar, shift: Scalar, i_min: int, i_max: int
+) -> PrintedForms:
+    """The printed (18), (19), (20) on i_min .. i_max (``PrintedForms``)."""
+    return PrintedForms(ar, h, d, shift, i_min, i_max)
 
 
 def evaluate(
@@ -333,7 +359,10 @@ def evaluate(
                 residuals = _scaled(ar, residuals, scale[:n])
         return check(statement, residuals, tolerance, erratum)
 
-    def printed_erratum(entry: tuple[str, str, str], built: Array, formula: Array) -> Erratum:
+    def printed_erratum(entry: tuple[str, str, str], built: Array, key: str) -> Erratum:
+        if ar.mode == "float64" and isinstance(printed, PrintedForms):  # one pass, no arrays
+            return Erratum(*entry, printed_residual=printed.largest(key, built[:n], images))
+        formula = printed(key)
         if ar.mode == "float64":  # the largest alone, in one pass
             worst = residual_kernels.largest_relative_point_difference(built[:n], formula[:n])
             return Erratum(*entry, printed_residual=worst)
@@ -348,11 +377,14 @@ def evaluate(
             memo[name] = make()
         return memo[name]
 
-    def rings(pseudosphere: bool) -> tuple[Array, Array, int] | None:
-        """Float64: the ring's theorem and (17) residuals in one pass (``ring_checks``)."""
+    def rings(pseudosphere: bool) -> tuple[Any, Any, int] | None:
+        """Float64: the ring's theorem and (17) residuals in one pass (``ring_checks``); their
+        largest values alone (``ring_largest``) when no residual is shown per index."""
+        exact = not detail and len(tractrix) == len(p) == n + 1  # n faces each
+        fused = ring_largest if exact else ring_checks
         if pseudosphere:
-            return shared("pseudo", lambda: ring_checks(ar, tractrix, nt(), -1 / (h * h)))
-        return shared("catenoid", lambda: ring_checks(ar, p, m(), None))
+            return shared("pseudo", lambda: fused(ar, tractrix, nt(), -1 / (h * h)))
+        return shared("catenoid", lambda: fused(ar, p, m(), None))
 
     def curvatures(pseudosphere: bool) -> Any:
         """The ring's curvatures, numpy (mp, or a face without area to name)."""
@@ -363,13 +395,13 @@ def evaluate(
     def theorem_7() -> Check:
         fused = rings(True)
         if fused is not None:
-            residuals = fused[0]
+            residuals = fused[0]  # n faces: tractrix and n on i_min .. i_max + 1
         else:
             pseudo = curvatures(True)
             residuals = ar.maximum(
                 constant_curvature_residuals(pseudo, -1 / (h * h)), pseudo.parallel
             )
-        return check(THEOREM_7, residuals[:n], n_tolerance)
+        return check(THEOREM_7, _first(residuals, n), n_tolerance)
 
     def theorem_8() -> Check:
         fused = rings(False)
@@ -378,7 +410,7 @@ def evaluate(
         else:
             catenoid = curvatures(False)
             residuals = ar.maximum(minimal_residuals(catenoid), catenoid.parallel)
-        return check(THEOREM_8, residuals[:n], construction_tolerance)
+        return check(THEOREM_8, _first(residuals, n), construction_tolerance)
 
     def equation_17() -> Check:
         pseudo, catenoid = rings(True), rings(False)
@@ -420,6 +452,9 @@ def evaluate(
         return shared("pole resolution", make)
 
     def slope_erratum() -> Erratum:
+        if ar.mode == "float64":  # the same numbers in one pass, the largest alone
+            worst = residual_kernels.largest_along_printed_slope(min(n, len(p) - 1), p)
+            return Erratum(*ERRATUM_18_SLOPE, printed_residual=worst)
         edges = p[1:] - p[:-1]
         slope = edges[:, 1] / edges[:, 0]  # k_{i+1} of the edge p_i p_{i+1}, eq. (12)
         slope_printed = kinematic_closed_forms.normal_from_slope_printed(ar, slope)
@@ -454,7 +489,7 @@ def evaluate(
                 EQUATION_18,
                 nt(),
                 images.closed_tractrix_gauss,
-                printed_erratum(ERRATUM_18, nt(), printed("18")),
+                printed_erratum(ERRATUM_18, nt(), "18"),
                 n_tolerance,
             ),
         ),
@@ -470,7 +505,7 @@ def evaluate(
                 EQUATION_19,
                 c()[1:],
                 images.closed_contact[1:],
-                printed_erratum(ERRATUM_19, c()[1:], printed("19")),
+                printed_erratum(ERRATUM_19, c()[1:], "19"),
                 scale=resolution(),
             ),
         ),
@@ -482,7 +517,7 @@ def evaluate(
                 EQUATION_20,
                 m(),
                 images.closed_gauss,
-                printed_erratum(ERRATUM_20, m(), printed("20")),
+                printed_erratum(ERRATUM_20, m(), "20"),
                 scale=pole_resolution(),
             ),
         ),
@@ -490,6 +525,11 @@ def evaluate(
         (THEOREM_8, theorem_8),
     )
     return [evaluate() for statement, evaluate in evaluators if wanted(statement.id)]
+
+
+def _first(residuals: Any, n: int) -> Any:
+    """The first n residuals (a ``checks.Largest`` holds exactly n, see ``rings``)."""
+    return residuals if isinstance(residuals, Largest) else residuals[:n]
 
 
 def _edge_resolution(ar: Arithmetic, points: Array) -> Array:

@@ -20,10 +20,12 @@ from __future__ import annotations
 import math
 from typing import Any
 
+import numba
 import numpy as np
 
 from app.geometry import checks
-from app.geometry.compiled import kernel, length
+from app.geometry.checks import Largest
+from app.geometry.compiled import hypot, kernel, length, running_largest
 from app.geometry.precision import Arithmetic, Array
 
 TINY = float(np.finfo(np.float64).tiny)
@@ -77,22 +79,27 @@ def _largest_relative_distance(computed: Any, expected: Any, tiny: float) -> flo
     return largest
 
 
-@kernel("UniTuple(float64[:], 2)(float64, float64[:], float64)")
-def _recursions(d: float, y: Any, tiny: float) -> tuple[Any, Any]:
-    """Relative differences of p_{i+1}^y from (13) and of p_{i+2}^y from its two-step form.
+@kernel("Tuple((float64[:], float64[:], float64, float64))(float64, float64[:], float64, boolean)")
+def _recursions(d: float, y: Any, tiny: float, store: bool) -> tuple[Any, Any, float, float]:
+    """Relative differences of p_{i+1}^y from (13) and of p_{i+2}^y from its two-step form,
+    stored if ``store`` (else two empty arrays), and the largest of each (NaN if one is NaN).
 
     (13): (b(b/a) + 2d(d/a) + d(d/b)) / (1 − (d/a)(d/b)); two steps, with e = d/a, f = d/b:
     (b(b/a)(b/a) + (df)(a/b + 2 + 3(b/a) + 4(b/a)(b/a)) + (de)(ef)(2(a/b) + 3)) / ((1 − ef)²),
     a = p_{i−1}^y, b = p_i^y; each residual is |y − predicted| / max(|predicted|, tiny).
     """
     n = y.shape[0]
-    one = np.empty(max(n - 2, 0))
-    two = np.empty(max(n - 3, 0))
+    one = np.empty(max(n - 2, 0) if store else 0)
+    two = np.empty(max(n - 3, 0) if store else 0)
+    largest_one, largest_two = 0.0, 0.0
     for k in range(n - 2):
         a, b = y[k], y[k + 1]
         predicted = (b * (b / a) + 2 * d * (d / a) + d * (d / b)) / (1 - (d / a) * (d / b))
         scale = abs(predicted)
-        one[k] = abs(y[k + 2] - predicted) / (scale if scale > tiny else tiny)
+        residual = abs(y[k + 2] - predicted) / (scale if scale > tiny else tiny)
+        largest_one = running_largest(residual, largest_one)
+        if store:
+            one[k] = residual
         if k < n - 3:
             e = d / a
             f = d / b
@@ -102,39 +109,62 @@ def _recursions(d: float, y: Any, tiny: float) -> tuple[Any, Any]:
             numerator = numerator + (d * e) * (e * f) * (2 * (a / b) + 3)
             predicted = numerator / ((1 - e * f) * (1 - e * f))
             scale = abs(predicted)
-            two[k] = abs(y[k + 3] - predicted) / (scale if scale > tiny else tiny)
-    return one, two
+            residual = abs(y[k + 3] - predicted) / (scale if scale > tiny else tiny)
+            largest_two = running_largest(residual, largest_two)
+            if store:
+                two[k] = residual
+    return one, two, largest_one, largest_two
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _two_step_printed_at(d2: float, d4: float, y: Any, k: int, tiny: float) -> float:
+    """The relative difference of p_{k+3}^y from the two-step form as printed
+    (``closed_forms.two_step_printed``), d2 = d**2 and d4 = d**4 given; the powers as products
+    (b⁵ = (b²)² b, a³ = a² a), within a few units in the last place of libm's pow, which cost
+    four calls an entry (a printed formula's residual: far from rounding level)."""
+    a, b = y[k], y[k + 1]
+    aa, bb = a * a, b * b
+    b3 = bb * b
+    numerator = (
+        bb * bb * b
+        + d2 * (aa * a + 2 * aa * b + 3 * a * bb + 4 * b3)
+        + d4 * (2 * b3 + 2 * a + 3 * b)
+    )
+    denominator = d2 - a * b
+    predicted = numerator / (denominator * denominator)
+    scale = abs(predicted)
+    return abs(y[k + 3] - predicted) / (scale if scale > tiny else tiny)
 
 
 @kernel("float64[:](float64, float64, float64[:], float64)")
 def _two_step_printed(d2: float, d4: float, y: Any, tiny: float) -> Any:
-    """Relative differences of p_{i+2}^y from the two-step form as printed
-    (``closed_forms.two_step_printed``; powers by libm's pow as numpy's, squares as products),
-    d2 = d**2 and d4 = d**4 given."""
+    """``_two_step_printed_at`` for every k."""
     count = max(y.shape[0] - 3, 0)
     out = np.empty(count)
     for k in range(count):
-        a, b = y[k], y[k + 1]
-        numerator = (
-            math.pow(b, 5.0)
-            + d2 * (math.pow(a, 3.0) + 2 * (a * a) * b + 3 * a * (b * b) + 4 * math.pow(b, 3.0))
-            + d4 * (2 * math.pow(b, 3.0) + 2 * a + 3 * b)
-        )
-        denominator = d2 - a * b
-        predicted = numerator / (denominator * denominator)
-        scale = abs(predicted)
-        out[k] = abs(y[k + 3] - predicted) / (scale if scale > tiny else tiny)
+        out[k] = _two_step_printed_at(d2, d4, y, k, tiny)
     return out
 
 
-@kernel("float64[:](float64[:, :], float64[:, :], float64[:, :], int64)")
-def _right_angles(tractrix: Any, axis: Any, p: Any, n: int) -> Any:
-    """max over the angles x_i d_i p_i and x_i d_i p_{i+1} of |cos| measured as Nikolaides'.
+@kernel("float64(float64, float64, float64[:], float64)")
+def _largest_two_step_printed(d2: float, d4: float, y: Any, tiny: float) -> float:
+    """The largest ``_two_step_printed_at`` without the array (NaN if one is NaN, as np.max)."""
+    largest = 0.0
+    for k in range(max(y.shape[0] - 3, 0)):
+        largest = running_largest(_two_step_printed_at(d2, d4, y, k, tiny), largest)
+    return largest
+
+
+@kernel("Tuple((float64[:], float64))(float64[:, :], float64[:, :], float64[:, :], int64, boolean)")
+def _right_angles(tractrix: Any, axis: Any, p: Any, n: int, store: bool) -> tuple[Any, float]:
+    """max over the angles x_i d_i p_i and x_i d_i p_{i+1} of |cos| measured as Nikolaides',
+    stored if ``store`` (else an empty array), and the largest (NaN if one is NaN).
 
     For a vertex v = d_i and ends a = x_i, b = p_i (then p_{i+1}):
     |(a − v)·(b − v)| / ((|a^x| + |a^y| + |v^x| + |v^y|)(|b^x| + |b^y| + |v^x| + |v^y|)).
     """
-    out = np.empty(n)
+    out = np.empty(n if store else 0)
+    largest = 0.0
     for k in range(n):
         vx, vy = tractrix[k, 0], tractrix[k, 1]
         ux, uy = axis[k, 0] - vx, axis[k, 1] - vy
@@ -146,13 +176,28 @@ def _right_angles(tractrix: Any, axis: Any, p: Any, n: int) -> Any:
         size_b = abs(p[k + 1, 0]) + abs(p[k + 1, 1]) + abs(vx) + abs(vy)
         at_next = abs(ux * wx + uy * wy) / (size_a * size_b)
         # np.maximum: NaN wins
-        out[k] = at_p if (at_p >= at_next or at_p != at_p) else at_next
-    return out
+        residual = at_p if (at_p >= at_next or at_p != at_p) else at_next
+        largest = running_largest(residual, largest)
+        if store:
+            out[k] = residual
+    return out, largest
 
 
 def recursion_residuals(d: float, y: Any) -> tuple[Any, Any]:
     """(residuals of (13) for p_{i+1}^y, of the two-step form for p_{i+2}^y) on heights y."""
-    return _recursions(float(d), np.asarray(y, dtype=np.float64), TINY)
+    one, two, _, _ = _recursions(float(d), np.asarray(y, dtype=np.float64), TINY, True)
+    return one, two
+
+
+def recursion_largest(d: float, y: Any) -> tuple[Largest, Largest]:
+    """``recursion_residuals`` as their largest values (``checks.Largest``), not stored."""
+    heights = np.asarray(y, dtype=np.float64)
+    _, _, one, two = _recursions(float(d), heights, TINY, False)
+    count = len(heights)
+    return (
+        Largest(float(one), max(count - 2, 0), lambda: recursion_residuals(d, heights)[0]),
+        Largest(float(two), max(count - 3, 0), lambda: recursion_residuals(d, heights)[1]),
+    )
 
 
 def two_step_printed_residuals(d: float, y: Any) -> Any:
@@ -161,32 +206,60 @@ def two_step_printed_residuals(d: float, y: Any) -> Any:
     return _two_step_printed(d**2, d**4, np.asarray(y, dtype=np.float64), TINY)
 
 
+def largest_two_step_printed_residual(d: float, y: Any) -> float | None:
+    """The largest of ``two_step_printed_residuals`` as ``checks.printed_residual`` reports it
+    (None for none, or one that is not finite), without the array."""
+    if len(y) < 4:
+        return None
+    d = float(d)
+    worst = float(_largest_two_step_printed(d**2, d**4, np.asarray(y, dtype=np.float64), TINY))
+    return worst if math.isfinite(worst) else None
+
+
 def right_angle_residuals(tractrix: Any, axis: Any, p: Any, n: int) -> Any:
     """Nikolaides' right angles at d_i (to p_i and to p_{i+1}) for i = 0 .. n − 1, the larger."""
 
     def f64(points: Any) -> Any:
         return np.asarray(points, dtype=np.float64)
 
-    return _right_angles(f64(tractrix), f64(axis), f64(p), n)
+    return _right_angles(f64(tractrix), f64(axis), f64(p), n, True)[0]
 
 
-@kernel("UniTuple(float64[:], 2)(float64, float64[:, :], float64[:, :], int64)")
-def _rotation_angles(d: float, p: Any, axis: Any, n: int) -> tuple[Any, Any]:
+def right_angle_largest(tractrix: Any, axis: Any, p: Any, n: int) -> Largest:
+    """``right_angle_residuals`` as their largest value (``checks.Largest``), not stored."""
+    _, largest = _right_angles(_points(tractrix), _points(axis), _points(p), n, False)
+    return Largest(float(largest), max(n, 0), lambda: right_angle_residuals(tractrix, axis, p, n))
+
+
+@kernel(
+    "Tuple((float64[:], float64[:], float64, float64))"
+    "(float64, float64[:, :], float64[:, :], int64, boolean)"
+)
+def _rotation_angles(
+    d: float, p: Any, axis: Any, n: int, store: bool
+) -> tuple[Any, Any, float, float]:
     """Theorem 4's rotation angle at p_i, i = 1 .. n − 1: |angle − 2 atan2(d, p_i^y)| for the
     angle between x_{i−1} − p_i and x_i − p_i (corrected), and for x_i − p_i, x_{i+1} − p_i
-    (printed); each angle atan2(a × b, a · b) as ``checks._signed_angle``."""
+    (printed); each angle atan2(a × b, a · b) as ``checks._signed_angle``. Both arrays stored
+    if ``store`` (else empty), and the largest of each (NaN if one is NaN)."""
     count = max(n - 1, 0)
-    corrected = np.empty(count)
-    printed = np.empty(count)
+    corrected = np.empty(count if store else 0)
+    printed = np.empty(count if store else 0)
+    largest, largest_printed = 0.0, 0.0
     for k in range(1, n):
         px, py = p[k, 0], p[k, 1]
         formula = 2 * math.atan2(d, py)
         ax, ay = axis[k - 1, 0] - px, axis[k - 1, 1] - py
         bx, by = axis[k, 0] - px, axis[k, 1] - py
-        corrected[k - 1] = abs(math.atan2(ax * by - ay * bx, ax * bx + ay * by) - formula)
+        residual = abs(math.atan2(ax * by - ay * bx, ax * bx + ay * by) - formula)
         cx, cy = axis[k + 1, 0] - px, axis[k + 1, 1] - py
-        printed[k - 1] = abs(math.atan2(bx * cy - by * cx, bx * cx + by * cy) - formula)
-    return corrected, printed
+        residual_printed = abs(math.atan2(bx * cy - by * cx, bx * cx + by * cy) - formula)
+        largest = running_largest(residual, largest)
+        largest_printed = running_largest(residual_printed, largest_printed)
+        if store:
+            corrected[k - 1] = residual
+            printed[k - 1] = residual_printed
+    return corrected, printed, largest, largest_printed
 
 
 @kernel("float64[:](float64[:, :], float64[:, :])")
@@ -218,7 +291,17 @@ def _edge_resolution(points: Any) -> Any:
 
 def rotation_angles(d: float, p: Any, axis: Any, n: int) -> tuple[Any, Any]:
     """(corrected, printed) residuals of Theorem 4's rotation angle at i = 1 .. n − 1."""
-    return _rotation_angles(float(d), _points(p), _points(axis), n)
+    corrected, printed, _, _ = _rotation_angles(float(d), _points(p), _points(axis), n, True)
+    return corrected, printed
+
+
+def rotation_angle_largest(d: float, p: Any, axis: Any, n: int) -> tuple[Largest, float | None]:
+    """``rotation_angles`` as the corrected residuals' largest (``checks.Largest``) and the
+    printed ones' as ``checks.printed_residual`` reports it, neither stored."""
+    _, _, largest, printed = _rotation_angles(float(d), _points(p), _points(axis), n, False)
+    count = max(n - 1, 0)
+    corrected = Largest(float(largest), count, lambda: rotation_angles(d, p, axis, n)[0])
+    return corrected, (float(printed) if count and math.isfinite(printed) else None)
 
 
 def along(vectors: Any, points: Any) -> Any:
@@ -263,4 +346,119 @@ def largest_relative_point_difference(computed: Array, expected: Array) -> float
     if len(computed) == 0:
         return None
     worst = float(_largest_relative_distance(_points(computed), _points(expected), TINY))
+    return worst if math.isfinite(worst) else None
+
+
+# --- the printed Gauss images (18), (19), (20) and the printed (18) from slopes, compared with
+# the built ones without storing either: only their largest difference is reported (errata) ---
+
+#: ``_largest_printed_gauss`` kinds: (18), (19), (20) as printed.
+PRINTED_18, PRINTED_19, PRINTED_20 = 18, 19, 20
+
+
+@kernel("float64(int64, float64[:, :], float64[:, :], float64, float64, float64)")
+def _largest_printed_gauss(
+    kind: int, built: Any, closed: Any, h: float, d: float, tiny: float
+) -> float:
+    """max_k |built_k − printed_k| / max(|printed_k|, tiny) for the printed (18), (19) or (20)
+    (``closed_forms.*_printed``), read off the corrected closed form at the same t = (i + τ)L
+    (NaN if one is NaN): (18) printed is (sech t, −tanh t) and ``closed`` n_i = (sech t,
+    tanh t); (19) printed (tanh t, sech t) and ``closed`` ñ_i = (−tanh t, sech t); (20)
+    printed ((h tanh t − d), h sech t)/(h + d tanh t) from ``closed`` n_i. The same numbers as
+    the printed forms evaluated anew (the same operations on the same tanh t and sech t)."""
+    largest = 0.0
+    for k in range(built.shape[0]):
+        if kind == PRINTED_18:
+            x, y = closed[k, 0], -closed[k, 1]
+        elif kind == PRINTED_19:
+            x, y = -closed[k, 0], closed[k, 1]
+        else:
+            sech, tanh = closed[k, 0], closed[k, 1]
+            denominator = h + d * tanh
+            x, y = (h * tanh - d) / denominator, h * sech / denominator
+        size = length(x, y)
+        size = size if size > tiny else tiny
+        value = length(built[k, 0] - x, built[k, 1] - y) / size
+        largest = running_largest(value, largest)
+    return largest
+
+
+@kernel("float64(int64, float64[:, :])")
+def _largest_along_printed_slope(count: int, points: Any) -> float:
+    """The largest ``_along`` of the printed (18) from the slopes k of the edges p_k p_{k+1}
+    (``closed_forms.normal_from_slope_printed``: (√(1/(1 + k²)), √(k²/(1 + k²)))) against those
+    edges, for the first ``count`` edges; NaN if one is NaN."""
+    largest = 0.0
+    for k in range(count):
+        ex = points[k + 1, 0] - points[k, 0]
+        ey = points[k + 1, 1] - points[k, 1]
+        slope = ey / ex
+        vx = math.sqrt(1 / (1 + slope * slope))
+        vy = math.sqrt(slope * slope / (1 + slope * slope))
+        size = abs(points[k, 0]) + abs(points[k, 1]) + abs(points[k + 1, 0]) + abs(points[k + 1, 1])
+        residual = abs(vx * ey - vy * ex) / size
+        largest = running_largest(1.0 if vx * ex + vy * ey < 0 else residual, largest)
+    return largest
+
+
+def largest_printed_gauss_difference(
+    kind: int, built: Any, closed: Any, h: float, d: float
+) -> float | None:
+    """The printed residual (``checks.printed_residual``) of the printed (18), (19) or (20)
+    against ``built``, the printed form read off the corrected one ``closed`` (n_i for (18) and
+    (20), ñ_i for (19), on the same indices): one pass, no arrays."""
+    if len(built) == 0:
+        return None
+    worst = float(
+        _largest_printed_gauss(kind, _points(built), _points(closed), float(h), float(d), TINY)
+    )
+    return worst if math.isfinite(worst) else None
+
+
+def largest_along_printed_slope(count: int, points: Any) -> float | None:
+    """The printed residual of (18) from the slopes (``curvature.slope_erratum``): the largest
+    ``along`` of the printed unit vectors of the first ``count`` edges of ``points``."""
+    if count <= 0:
+        return None
+    worst = float(_largest_along_printed_slope(count, _points(points)))
+    return worst if math.isfinite(worst) else None
+
+
+@kernel("float64[:](float64[:, :])")
+def _printed_ratios(p: Any) -> Any:
+    """The proof's ratio Δ²p_i^y / (l'_i + l'_{i+1}), l'_i = |p_i − p_{i−1}| (erratum E2), as
+    ``checks._ratio_erratum`` computes it: entry k from p_k .. p_{k+3}, lengths by libm's hypot
+    (inline, ``compiled.hypot``)."""
+    count = max(p.shape[0] - 3, 0)
+    out = np.empty(count)
+    if count == 0:
+        return out
+    after = hypot(p[1, 0] - p[0, 0], p[1, 1] - p[0, 1])
+    for k in range(count):
+        before = after
+        after = hypot(p[k + 2, 0] - p[k + 1, 0], p[k + 2, 1] - p[k + 1, 1])
+        second = p[k + 3, 1] - 2 * p[k + 2, 1] + p[k + 1, 1]
+        out[k] = second / (before + after)
+    return out
+
+
+@kernel("float64(float64[:], float64, float64)")
+def _largest_spread(values: Any, mean: float, tiny: float) -> float:
+    """max_k |v_k − mean| / max(|mean|, tiny) (``checks.relative_difference`` against the
+    constant mean, the largest alone; NaN if one is NaN)."""
+    scale = abs(mean)
+    scale = scale if scale > tiny else tiny
+    largest = 0.0
+    for k in range(values.shape[0]):
+        largest = running_largest(abs(values[k] - mean) / scale, largest)
+    return largest
+
+
+def ratio_spread(p: Any) -> float | None:
+    """Float64: the printed residual of erratum E2 (the spread of the proof's ratio about its
+    mean, ``checks._ratio_erratum``): None for fewer than two ratios, or one not finite."""
+    ratio = _printed_ratios(_points(p))
+    if len(ratio) < 2:
+        return None
+    worst = float(_largest_spread(ratio, float(np.sum(ratio) / len(ratio)), TINY))
     return worst if math.isfinite(worst) else None

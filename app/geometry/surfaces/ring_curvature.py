@@ -8,6 +8,7 @@ meridians (``surfaces.ring_faces``). The ``/surfaces`` endpoint evaluates every 
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
@@ -15,7 +16,7 @@ import numpy as np
 from app.geometry.catalog.section5 import (
     RING_EQUATION_17 as EQUATION_17,
 )
-from app.geometry.checks import Check, check_residuals, not_applicable
+from app.geometry.checks import Check, Largest, check_residuals, not_applicable
 from app.geometry.curvature import FaceCurvatures, face_curvatures
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array
@@ -162,18 +163,64 @@ def ring_checks(
     return ring_kernel.ring_checks(meridian, gauss, ar.cos(theta), ar.sin(theta), curvature)
 
 
+def ring_largest(
+    ar: Arithmetic, meridian: Array, gauss: Array, curvature: float | None
+) -> tuple[Largest, Largest, int] | None:
+    """Float64: ``ring_checks`` as the largest residuals (``checks.Largest``), the rows not
+    stored (the checks without ``detail``); None as ``ring_checks``."""
+    if ar.mode != "float64":
+        return None
+    theta = ar.pi / RING_M
+    cos, sin = ar.cos(theta), ar.sin(theta)
+    found = ring_kernel.ring_largest(meridian, gauss, cos, sin, curvature)
+    if found is None:
+        return None
+    largest, largest_17, skipped = found
+
+    def rows() -> tuple[Array, Array, int]:
+        fused = ring_kernel.ring_checks(meridian, gauss, cos, sin, curvature)
+        assert fused is not None  # the same faces have area
+        return fused
+
+    faces = max(len(meridian) - 1, 0)
+    return (
+        Largest(largest, faces, lambda: rows()[0]),
+        Largest(largest_17, faces, lambda: rows()[1]),
+        skipped,
+    )
+
+
+def _maximum(arrays: list[Any]) -> Array:
+    """Entry by entry the largest of equal-length arrays (NaN wins, as ``np.maximum``)."""
+    worst = arrays[0]
+    for both in arrays[1:]:
+        worst = np.maximum(worst, both)
+    return worst
+
+
 def equation_17_result(
     ar: Arithmetic,
     indices: np.ndarray[Any, np.dtype[np.int64]],
-    per_pair: list[Array],
+    per_pair: list[Array] | list[Largest],
     skipped: int,
     tolerance: float,
     detail: bool,
 ) -> Check:
-    """The check of (17) from each pair's residuals per face (0 where 0/0, ``skipped`` such)."""
-    worst = per_pair[0]
-    for both in per_pair[1:]:
-        worst = ar.maximum(worst, both)  # on balls a ball holding each maximum
+    """The check of (17) from each pair's residuals per face (0 where 0/0, ``skipped`` such),
+    or from each pair's largest (``checks.Largest``)."""
+    worst: Array | Largest
+    if all(isinstance(pair, Largest) for pair in per_pair):
+        largest = [pair for pair in per_pair if isinstance(pair, Largest)]
+        values = [pair.value for pair in largest]
+        worst = Largest(
+            math.nan if any(math.isnan(v) for v in values) else max(values),
+            largest[0].count,
+            lambda: _maximum([pair.residuals() for pair in largest]),
+        )
+    else:
+        worst = per_pair[0]
+        for both in per_pair[1:]:
+            worst = ar.maximum(worst, both)  # on balls a ball holding each maximum
     if skipped == len(worst) * len(per_pair):
         return not_applicable(EQUATION_17, tolerance, "(17) is 0/0 on every face of the range")
     note = (

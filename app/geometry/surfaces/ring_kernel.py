@@ -17,7 +17,7 @@ from typing import Any
 import numba
 import numpy as np
 
-from app.geometry.compiled import hypot, kernel, length3
+from app.geometry.compiled import hypot, kernel, length3, running_largest
 from app.geometry.curvature import FaceCurvatures
 from app.geometry.surfaces.equation_17_kernel import one_face
 
@@ -106,12 +106,19 @@ def _ring(meridian: Any, gauss: Any, cos: float, sin: float, tiny: float) -> Any
 
 
 @kernel(
-    "Tuple((float64[:, :], int64, boolean))"
-    "(float64[:, :], float64[:, :], float64, float64, float64, boolean, float64)"
+    "Tuple((float64[:, :], int64, boolean, float64, float64))"
+    "(float64[:, :], float64[:, :], float64, float64, float64, boolean, float64, boolean)"
 )
 def _ring_checks(
-    meridian: Any, gauss: Any, cos: float, sin: float, curvature: float, minimal: bool, tiny: float
-) -> tuple[Any, int, bool]:
+    meridian: Any,
+    gauss: Any,
+    cos: float,
+    sin: float,
+    curvature: float,
+    minimal: bool,
+    tiny: float,
+    store: bool,
+) -> tuple[Any, int, bool, float, float]:
     """The Section 5 residuals of one ring in one pass, without its nine curvature rows.
 
     Row 0: the theorem's residual per face, max(constant curvature or H = 0, parallel), as
@@ -119,23 +126,25 @@ def _ring_checks(
     ``np.maximum``; row 1: (17) per face, max of its K and H residuals
     (``equation_17_kernel.one_face``), 0 where it is 0/0. Then the number of such faces
     and whether every face has a positive area (if not, the caller takes the numpy path, which
-    names the face).
+    names the face). The rows are stored if ``store`` (else empty); last, the largest of each
+    row (NaN if one is NaN).
     """
     faces = meridian.shape[0] - 1
-    out = np.empty((2, faces))
+    out = np.empty((2, faces if store else 0))
     skipped = 0
+    largest, largest_17 = 0.0, 0.0
     for k in range(faces):
         area, gauss_area, mixed_area, _, _, parallel, mag_f, mag_n, mag_fn = _face(
             meridian, gauss, k, cos, sin, tiny
         )
         if not area > 0:
-            return out, skipped, False
+            return out, skipped, False, largest, largest_17
         if minimal:
             own = abs(mixed_area) / mag_fn
         else:
             own = abs(gauss_area - curvature * area) / (mag_n + abs(curvature) * mag_f)
         # np.maximum: NaN wins
-        out[0, k] = own if (own >= parallel or own != own) else parallel
+        theorem = own if (own >= parallel or own != own) else parallel
         k_res, h_res, dp = one_face(
             meridian[k, 1],
             meridian[k + 1, 1],
@@ -149,12 +158,17 @@ def _ring_checks(
             mag_fn,
             tiny,
         )
+        equation_17 = 0.0
         if dp != 0:
-            out[1, k] = k_res if (k_res >= h_res or k_res != k_res) else h_res
+            equation_17 = k_res if (k_res >= h_res or k_res != k_res) else h_res
         else:
-            out[1, k] = 0.0
             skipped += 1
-    return out, skipped, True
+        largest = running_largest(theorem, largest)
+        largest_17 = running_largest(equation_17, largest_17)
+        if store:
+            out[0, k] = theorem
+            out[1, k] = equation_17
+    return out, skipped, True, largest, largest_17
 
 
 def ring_curvatures(meridian: Any, gauss: Any, cos: float, sin: float) -> FaceCurvatures | None:
@@ -185,7 +199,7 @@ def ring_checks(
     computes them from ``ring_curvatures``; the same bits (tests/geometry/surfaces/
     test_ring_kernel.py). None when a face has no positive area (the numpy path names it).
     """
-    rows, skipped, valid = _ring_checks(
+    rows, skipped, valid, _, _ = _ring_checks(
         np.asarray(meridian, dtype=np.float64),
         np.asarray(gauss, dtype=np.float64),
         float(cos),
@@ -193,7 +207,26 @@ def ring_checks(
         0.0 if curvature is None else float(curvature),
         curvature is None,
         TINY,
+        True,
     )
     if not valid:
         return None
     return rows[0], rows[1], skipped
+
+
+def ring_largest(
+    meridian: Any, gauss: Any, cos: float, sin: float, curvature: float | None
+) -> tuple[float, float, int] | None:
+    """``ring_checks`` without the rows: the largest theorem residual, the largest (17) residual
+    (NaN if one is NaN) and the faces where (17) is 0/0; None as ``ring_checks``."""
+    _, skipped, valid, largest, largest_17 = _ring_checks(
+        np.asarray(meridian, dtype=np.float64),
+        np.asarray(gauss, dtype=np.float64),
+        float(cos),
+        float(sin),
+        0.0 if curvature is None else float(curvature),
+        curvature is None,
+        TINY,
+        False,
+    )
+    return (float(largest), float(largest_17), int(skipped)) if valid else None

@@ -203,3 +203,97 @@ def test_scaled_and_largest_relative_differences_equal_the_array_path(seed: int)
     )
     nan = np.array([[1.0, 2.0], [np.nan, 1.0]])
     assert residual_kernels.largest_relative_point_difference(nan, np.ones((2, 2))) is None
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_largest_residuals_are_the_arrays_largest(seed: int) -> None:
+    """Without ``detail`` the kernels return the largest residual alone: the arrays' maximum."""
+    for data in polygons(seed):
+        n = len(data.p) - 1
+        d = float(data.p[1, 0] - data.p[0, 0]) / 2
+        for p, tractrix, axis in ((data.p, data.tractrix, data.axis), perturbed(data, seed)):
+            one, two = residual_kernels.recursion_residuals(d, p[:, 1])
+            largest_one, largest_two = residual_kernels.recursion_largest(d, p[:, 1])
+            assert (largest_one.value, largest_one.count) == (np.max(one), len(one))
+            assert (largest_two.value, largest_two.count) == (np.max(two), len(two))
+            right = residual_kernels.right_angle_residuals(tractrix, axis, p, n)
+            assert residual_kernels.right_angle_largest(tractrix, axis, p, n).value == np.max(right)
+            corrected, printed = residual_kernels.rotation_angles(d, p, axis, n)
+            largest, worst = residual_kernels.rotation_angle_largest(d, p, axis, n)
+            assert (largest.value, len(largest), worst) == (
+                np.max(corrected),
+                len(corrected),
+                np.max(printed),
+            )
+            np.testing.assert_array_equal(largest.residuals(), corrected)
+            y = p[:, 1]
+            assert residual_kernels.largest_two_step_printed_residual(
+                d, y
+            ) == checks.printed_residual(
+                Float64(), residual_kernels.two_step_printed_residuals(d, y)
+            )
+    assert residual_kernels.largest_two_step_printed_residual(0.1, np.ones(3)) is None
+
+
+def test_a_largest_that_is_not_finite_takes_the_array_path() -> None:
+    """A NaN among unstored residuals: the check asks for the array to count them, as before."""
+    ar = Float64()
+    residuals = np.array([1e-17, np.nan, 2e-17])
+    largest = checks.Largest(float("nan"), 3, lambda: residuals)
+    statement = d4b.STATEMENTS[0]
+    indices = np.arange(3, dtype=np.int64)
+    got = checks.check_residuals(statement, ar, indices, largest, 1e-15, False)
+    assert got == checks.check_residuals(statement, ar, indices, residuals, 1e-15, False)
+    assert got.note is not None and "1 of 3 residuals" in got.note
+    finite = checks.Largest(2e-17, 3, lambda: residuals)
+    kept = checks.check_residuals(statement, ar, indices, finite, 1e-15, False)
+    assert (kept.residual, kept.holds, kept.per_index) == (2e-17, True, None)
+    empty = checks.check_residuals(
+        statement, ar, indices, checks.Largest(0.0, 0, lambda: residuals[:0]), 1e-15, False
+    )
+    assert empty.holds is None
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_printed_gauss_images_in_one_pass_equal_the_arrays(seed: int) -> None:
+    """The errata of (18), (19), (20) and (18) from slopes without arrays: the printed forms
+    read off the corrected closed forms, and the slopes' form, to the bit."""
+    from app.geometry.d4b import curvature
+
+    ar = Float64()
+    for data in polygons(seed):
+        n = len(data.p) - 1
+        forms = curvature.printed_forms(ar, data.h, data.d, data.shift, data.i_min, data.i_max)
+        images = data.gauss
+        for key, built in (
+            ("18", images.tractrix_gauss),
+            ("19", images.contact[1:]),
+            ("20", images.gauss),
+        ):
+            for points in (built, built * 1.01):
+                got = forms.largest(key, points[:n], images)
+                expected = residual_kernels.largest_relative_point_difference(
+                    points[:n], forms(key)[:n]
+                )
+                assert got is not None and got == expected
+        p = data.p
+        edges = p[1:] - p[:-1]
+        vectors = closed_forms.normal_from_slope_printed(ar, edges[:, 1] / edges[:, 0])
+        expected = checks.printed_residual(ar, residual_kernels.along(vectors[:n], p[: n + 1]))
+        assert residual_kernels.largest_along_printed_slope(n, p) == expected
+    assert residual_kernels.largest_along_printed_slope(0, np.ones((1, 2))) is None
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_ratio_spread_equals_numpy(seed: int) -> None:
+    """Erratum E2's printed residual in compiled passes: the numpy evaluation's bits."""
+    ar = Float64()
+    for data in polygons(seed):
+        for p in (data.p, perturbed(data, seed)[0]):
+            y = p[:, 1]
+            lengths = np.hypot(p[1:, 0] - p[:-1, 0], y[1:] - y[:-1])
+            ratio = (y[3:] - 2 * y[2:-1] + y[1:-2]) / (lengths[:-2] + lengths[1:-1])
+            mean = np.full_like(ratio, np.sum(ratio) / len(ratio))
+            expected = checks.printed_residual(ar, relative_difference(ar, ratio, mean))
+            assert residual_kernels.ratio_spread(p) == expected
+    assert residual_kernels.ratio_spread(np.ones((4, 2))) is None

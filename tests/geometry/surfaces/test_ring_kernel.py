@@ -138,6 +138,14 @@ def test_fused_ring_checks_equal_the_ring_and_its_residuals(
         )
         np.testing.assert_array_equal(fused[1], np.where(defined, np.maximum(k_res, h_res), 0.0))
         assert fused[2] == int(np.count_nonzero(~defined))
+        largest = ring_curvature.ring_largest(ar, meridian, gauss, curvature)
+        assert largest is not None
+        assert (largest[0].value, largest[1].value, largest[2]) == (
+            np.max(fused[0]),
+            np.max(fused[1]),
+            fused[2],
+        )
+        np.testing.assert_array_equal(largest[1].residuals(), fused[1])
 
 
 def test_fused_ring_checks_leave_a_face_without_area_to_the_numpy_path() -> None:
