@@ -277,7 +277,9 @@ ROUTED = [
 @pytest.fixture(scope="module")
 def both() -> Iterator[tuple[TestClient, TestClient, ComputePool]]:
     """A client whose worker computes everything in one child, and one without a pool."""
-    client, pool = pooled(Settings(compute_processes=1, pool_min_seconds=0))
+    # the fast lane computes tiny float64 GETs (theorem-5 here) on the event loop, never in a
+    # child: off in the pooled app, so that every routed request reaches the pool
+    client, pool = pooled(Settings(compute_processes=1, pool_min_seconds=0, fast_lane_seconds=0))
     yield client, TestClient(create_app(Settings(compute_processes=0))), pool
     pool.close()
 
@@ -337,7 +339,11 @@ def test_an_overrunning_child_of_every_routed_endpoint_is_the_time_limit_problem
     monkeypatch: pytest.MonkeyPatch, module: str, name: str, path: str, params: Any, parameter: str
 ) -> None:
     settings = Settings(
-        compute_processes=1, time_limit=2.0, hard_stop_grace=0.2, pool_min_seconds=0
+        compute_processes=1,
+        time_limit=2.0,
+        hard_stop_grace=0.2,
+        pool_min_seconds=0,
+        fast_lane_seconds=0,  # theorem-5 would take the lane, on the event loop (see ``both``)
     )
     app = create_app(settings)
     client = TestClient(app)

@@ -81,7 +81,7 @@ def test_a_numerical_warning_names_the_precision_of_a_post_body(
     named: str,
     advice: str,
 ) -> None:
-    monkeypatch.setattr(surface_service, "compute", _overflowing)
+    monkeypatch.setattr(surface_service, "build", _overflowing)
     posted = problem(client.post("/surfaces/catenoid", json={**SURFACE, **given}))
     assert posted["errors"] == [
         {
