@@ -131,15 +131,30 @@ def face_curvatures(ar: Arithmetic, f: Array, n: Array) -> FaceCurvatures:
     mag_f = f1 * f2 / 2
     mag_n = n1 * n2 / 2
     mag_fn = (f1 * n2 + n1 * f2) / 4
+    turned = norm(ar, cross(area_f, area_n))
+    return from_areas(ar, a_f, a_n, a_fn, turned, (mag_f, mag_n, mag_fn))
+
+
+def from_areas(
+    ar: Arithmetic,
+    area: Array,
+    gauss_area: Array,
+    mixed: Array,
+    turned: Array,
+    magnitudes: tuple[Array, Array, Array],
+) -> FaceCurvatures:
+    """K and H of faces from their areas A(f), A(n), A(f,n) (all (faces,)); ``turned`` is
+    |A(f)⃗ × A(n)⃗|, whose ratio to the magnitudes' product is the parallel residual."""
+    mag_f, mag_n, mag_fn = magnitudes
     tiny = ar.scalar(np.finfo(np.float64).tiny)
     both = mag_f * mag_n
-    parallel = norm(ar, cross(area_f, area_n)) / np.where(both > tiny, both, tiny)
+    parallel = turned / np.where(both > tiny, both, tiny)
     return FaceCurvatures(
-        area=a_f,
-        gauss_area=a_n,
-        mixed_area=a_fn,
-        K=a_n / a_f,
-        H=-a_fn / a_f,
+        area=area,
+        gauss_area=gauss_area,
+        mixed_area=mixed,
+        K=gauss_area / area,
+        H=-mixed / area,
         parallel=parallel,
         area_magnitude=mag_f,
         gauss_area_magnitude=mag_n,

@@ -17,7 +17,7 @@ from app.geometry.catalog.section5 import (
     RING_EQUATION_17 as EQUATION_17,
 )
 from app.geometry.checks import Check, Largest, check_residuals, not_applicable
-from app.geometry.curvature import FaceCurvatures, face_curvatures
+from app.geometry.curvature import FaceCurvatures, face_curvatures, from_areas
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array
 from app.geometry.surfaces import ring_kernel
@@ -86,21 +86,9 @@ def _ring_curvatures_in_the_meridian_plane(
     n1, n2 = au + av + bu + bv * cs, au + av * cs + bu + bv
     mag_f, mag_n = f1 * f2 / 2, n1 * n2 / 2
     mag_fn = (f1 * n2 + n1 * f2) / 4
-    tiny = ar.scalar(np.finfo(np.float64).tiny)
-    both = mag_f * mag_n
     turn = abs(dy * du - dx * dv) * sin * ar.sqrt(r)  # |w_f × w_n|
-    parallel = abs(s_f * s_n) * turn / 4 / np.where(both > tiny, both, tiny)
-    return FaceCurvatures(
-        area=area,
-        gauss_area=gauss_area,
-        mixed_area=mixed,
-        K=gauss_area / area,
-        H=-mixed / area,
-        parallel=parallel,
-        area_magnitude=mag_f,
-        gauss_area_magnitude=mag_n,
-        mixed_area_magnitude=mag_fn,
-    )
+    turned = abs(s_f * s_n) * turn / 4
+    return from_areas(ar, area, gauss_area, mixed, turned, (mag_f, mag_n, mag_fn))
 
 
 def edge_parallel_residuals(meridian: Array, gauss: Array) -> Array:

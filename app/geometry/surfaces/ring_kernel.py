@@ -199,16 +199,7 @@ def ring_checks(
     computes them from ``ring_curvatures``; the same bits (tests/geometry/surfaces/
     test_ring_kernel.py). None when a face has no positive area (the numpy path names it).
     """
-    rows, skipped, valid, _, _ = _ring_checks(
-        np.asarray(meridian, dtype=np.float64),
-        np.asarray(gauss, dtype=np.float64),
-        float(cos),
-        float(sin),
-        0.0 if curvature is None else float(curvature),
-        curvature is None,
-        TINY,
-        True,
-    )
+    rows, skipped, valid, _, _ = _one_ring(meridian, gauss, cos, sin, curvature, True)
     if not valid:
         return None
     return rows[0], rows[1], skipped
@@ -219,7 +210,15 @@ def ring_largest(
 ) -> tuple[float, float, int] | None:
     """``ring_checks`` without the rows: the largest theorem residual, the largest (17) residual
     (NaN if one is NaN) and the faces where (17) is 0/0; None as ``ring_checks``."""
-    _, skipped, valid, largest, largest_17 = _ring_checks(
+    _, skipped, valid, largest, largest_17 = _one_ring(meridian, gauss, cos, sin, curvature, False)
+    return (float(largest), float(largest_17), int(skipped)) if valid else None
+
+
+def _one_ring(
+    meridian: Any, gauss: Any, cos: float, sin: float, curvature: float | None, rows: bool
+) -> Any:
+    """``_ring_checks`` on one ring's float64 arrays (``rows``: keep the residual rows)."""
+    return _ring_checks(
         np.asarray(meridian, dtype=np.float64),
         np.asarray(gauss, dtype=np.float64),
         float(cos),
@@ -227,6 +226,5 @@ def ring_largest(
         0.0 if curvature is None else float(curvature),
         curvature is None,
         TINY,
-        False,
+        rows,
     )
-    return (float(largest), float(largest_17), int(skipped)) if valid else None
