@@ -23,8 +23,11 @@ paper, each written here from its description and nothing else (the closed forms
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
+from app.geometry import companion_kernels
 from app.geometry.compiled import all_positive_lengths
 from app.geometry.errors import DomainError
 from app.geometry.polygon import edge_vectors
@@ -36,6 +39,10 @@ def _require_edges(ar: Arithmetic, edges: Array) -> None:
         positive = all_positive_lengths(np.asarray(edges, dtype=np.float64))
     else:
         positive = not len(edges) or bool(np.all(ar.hypot(edges[:, 0], edges[:, 1]) > 0))
+    _require_positive(positive)
+
+
+def _require_positive(positive: bool) -> None:
     if not positive:
         raise DomainError("meridian", "consecutive vertices are distinct", "a zero-length edge")
 
@@ -73,6 +80,12 @@ def orientation(polygon: Array) -> int:
 
 def contact_points(ar: Arithmetic, polygon: Array) -> Array:
     """ñ_k: the unit normal of edge k on the left of the overall direction (19); ``(n−1, 2)``."""
+    if ar.mode == "float64":  # the same operations in one compiled pass
+        points, positive = companion_kernels.contact_points(
+            np.asarray(polygon, dtype=np.float64), float(orientation(polygon))
+        )
+        _require_positive(positive)
+        return points
     edges = edge_vectors(polygon)
     _require_edges(ar, edges)
     length = ar.hypot(edges[:, 0], edges[:, 1])
@@ -86,6 +99,8 @@ def circumscribed(ar: Arithmetic, polygon: Array) -> Array:
     The tangents at ñ_{k−1} and ñ_k meet on their bisector at distance 1/cos(δ_k/2), where δ_k
     is the turning angle from edge k−1 to edge k (0 for parallel edges: then m_k = ñ_k).
     """
+    if ar.mode == "float64":
+        return _circumscribed_float64(np.asarray(polygon, dtype=np.float64))
     edges = edge_vectors(polygon)
     _require_edges(ar, edges)
     a, b = edges[:-1], edges[1:]
@@ -96,6 +111,15 @@ def circumscribed(ar: Arithmetic, polygon: Array) -> Array:
     bisector = normal_angle + turn / 2
     distance = 1 / ar.cos(turn / 2)
     return stack_points(distance * ar.cos(bisector), distance * ar.sin(bisector))
+
+
+def _circumscribed_float64(polygon: np.ndarray[Any, np.dtype[np.float64]]) -> Array:
+    """``circumscribed`` in float64: the arithmetic compiled (``companion_kernels``), the
+    arctangents, cosines and sines by numpy on contiguous arrays as the formulas above."""
+    y, x, positive = companion_kernels.circumscribed_arguments(polygon, float(orientation(polygon)))
+    _require_positive(positive)
+    halves = companion_kernels.circumscribed_angles(np.arctan2(y, x))  # δ/2 and the bisector
+    return companion_kernels.circumscribed_points(np.cos(halves), np.sin(halves[1]))
 
 
 def unit_circle_points(ar: Arithmetic, s: Array, one_minus_s_squared: Array) -> Array:

@@ -14,6 +14,7 @@ from app.geometry.compiled import KERNELS
 
 #: The modules that declare kernels.
 MODULES = (
+    "app.geometry.companion_kernels",
     "app.geometry.conditions",
     "app.geometry.d1.construction",
     "app.geometry.d3.construction",

@@ -1,0 +1,67 @@
+"""The compiled Gauss image companions (app/geometry/companion_kernels.py) give the bits of the
+numpy formulas of ``gauss_image`` on many polygons: every scale, both orientations, nearly
+straight and sharply turning meridians, and the construction's own (D4b) polygons."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from app.geometry import gauss_image
+from app.geometry.d4b.discretization import polygons
+from app.geometry.errors import DomainError
+from app.geometry.precision import Float64
+
+
+class NumpyFloat64(Float64):
+    """Float64 under another name: ``gauss_image`` then takes its numpy formulas."""
+
+    mode = "numpy"  # type: ignore[assignment]
+
+
+FLOAT64, NUMPY = Float64(), NumpyFloat64()
+
+
+def _polygons() -> list[np.ndarray]:
+    rng = np.random.default_rng(20261202)
+    found = []
+    for size in (2, 3, 5, 17, 100, 1001):
+        for scale in (1e-150, 1e-8, 1.0, 1e5, 1e150):
+            steps = rng.normal(size=(size - 1, 2)) * scale
+            start = rng.normal(size=(1, 2)) * scale
+            found.append(np.concatenate([start, start + np.cumsum(steps, axis=0)]))
+    # nearly straight: tiny turning angles, where the pole is almost the contact point
+    t = np.linspace(-3.0, 3.0, 400)
+    found.append(np.stack([t, np.cosh(t)], axis=1))
+    found.append(np.stack([t[::-1], np.cosh(t[::-1])], axis=1))  # runs towards −x
+    found.append(np.stack([t, 1 + 1e-12 * t**2], axis=1))
+    for d in (0.1, 0.3, 0.01):
+        data = polygons(FLOAT64, 1.0, d, None, -60, 59)
+        found.append(np.asarray(data.p))
+        found.append(np.asarray(data.tractrix))
+    return found
+
+
+@pytest.mark.parametrize("polygon", _polygons(), ids=lambda p: f"{len(p)}x{abs(p).max():.0e}")
+def test_the_kernels_give_the_numpy_bits(polygon: np.ndarray) -> None:
+    for build in (gauss_image.contact_points, gauss_image.circumscribed):
+        compiled, reference = build(FLOAT64, polygon), build(NUMPY, polygon)
+        assert compiled.shape == reference.shape
+        assert compiled.dtype == np.float64
+        assert compiled.tobytes() == reference.tobytes(), build.__name__
+
+
+def test_a_non_contiguous_polygon_gives_the_same_bits() -> None:
+    polygon = _polygons()[-2]
+    strided = np.asfortranarray(polygon)
+    for build in (gauss_image.contact_points, gauss_image.circumscribed):
+        assert build(FLOAT64, strided).tobytes() == build(NUMPY, polygon).tobytes()
+
+
+@pytest.mark.parametrize("build", [gauss_image.contact_points, gauss_image.circumscribed])
+def test_a_zero_length_edge_is_the_same_domain_error(build: object) -> None:
+    polygon = np.array([[0.0, 1.0], [1.0, 2.0], [1.0, 2.0], [2.0, 4.0]])
+    for ar in (FLOAT64, NUMPY):
+        with pytest.raises(DomainError) as caught:
+            build(ar, polygon)  # type: ignore[operator]
+        assert caught.value.parameter == "meridian"
