@@ -53,8 +53,9 @@ from app.admission import Admission, current
 from app.limits import curve_cost
 from app.negotiation import choose, endpoint_of, with_accept
 from app.registry import DISCRETIZATIONS, STATEMENTS, Discretization, StatementEntry
-from app.response_cache import Entry, ResponseCache, entry_of, get_reply
-from app.responses import canonical_key
+from app.response_cache import COMPACT_BELOW, Entry, ResponseCache, entry_of, get_reply
+from app.responses import canonical_key, curve_document, encode_json
+from app.routers.caching import JSONBytesResponse
 from app.routers.common import compute, curve_response
 from app.routers.theorems import theorem_response
 from app.security import with_defaults
@@ -125,6 +126,26 @@ def _vary(value: bytes, negotiable: bool) -> bytes:
     CORS's for a request without Origin (the cache's replies have one or two values)."""
     present = value.decode("latin-1")
     return ((with_accept(present) if negotiable else present) + ", Origin").encode("latin-1")
+
+
+#: The kept form of a JSON answer with an empty body: its headers and media type are those of
+#: every JSON curve answer (``json_entry``).
+_JSON_ENTRY = entry_of(JSONBytesResponse(b""))
+
+
+def json_entry(body: bytes) -> Entry:
+    """What ``entry_of(curve_response(curve, "json"))`` keeps, given the encoded document,
+    without building the response (the same status, headers, media type and body bytes)."""
+    assert _JSON_ENTRY is not None
+    return entry_of_body(body, _JSON_ENTRY)
+
+
+def entry_of_body(body: bytes, template: Entry) -> Entry:
+    """``template``'s status, headers and media type with ``body``, kept as ``entry_of`` keeps
+    a body (a short one copied out of the encoder's buffer)."""
+    if len(body) < COMPACT_BELOW:
+        body = bytes(memoryview(body))
+    return Entry(template.status, template.headers, body, template.media_type)
 
 
 class FastLane:
@@ -280,12 +301,13 @@ class FastLane:
             kept = self.cache.get(key)
             if kept is None:
                 curve = compute(entry, query, settings, arguments)
-                if statement is None:
-                    response = curve_response(curve, query.format)
+                if statement is None and query.format == "json":
+                    kept = json_entry(encode_json(curve_document(curve)))
+                elif statement is None:
+                    kept = entry_of(curve_response(curve, query.format))
                 else:
                     owner = fixed["discretization"]
-                    response = theorem_response(statement, owner, curve, query.checks)
-                kept = entry_of(response)
+                    kept = entry_of(theorem_response(statement, owner, curve, query.checks))
                 if kept is None:
                     return None
                 self.cache.put(key, kept)
