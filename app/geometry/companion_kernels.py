@@ -93,3 +93,58 @@ def circumscribed_points(cosines: Any, sines: Any) -> Any:
         out[k, 0] = distance * cosines[1, k]
         out[k, 1] = distance * sines[k]
     return out
+
+
+@kernel(
+    "Tuple((float64[:, :], float64[:, :], float64[:, :], float64[:, :], float64[:, :],"
+    " float64[:, :], float64[:, :], boolean))"
+    "(float64, float64, float64[:], float64[:], float64[:], int64, int64, int64)"
+)
+def d4b_companions(
+    h: float,
+    d: float,
+    cos_u: Any,
+    sin_u: Any,
+    centre_y: Any,
+    first: int,
+    i_min: int,
+    i_max: int,
+) -> Any:
+    """The companions of a (D4b) construction in one pass over its recursion (``cos_u``,
+    ``sin_u``, ``centre_y`` at the indices first, first + 1, …): on i = i_min .. i_max + 1 the
+    axis points x_i = (2di, 0), the tractrix d_i = x_i + h u_i, the Darboux transform
+    e_i = 2d_i − x_i and the inscribed Gauss image n_i = J u_i = (u_i^y, −u_i^x); from the
+    centres p_j = ((2j − 1)d, p_j^y), j = i_min − 1 .. i_max + 2, the contact points of their
+    edges (``contact_points``, from i_min − 1) and the arguments of the circumscribed image's
+    arctangents (``circumscribed_arguments``); and whether every edge of p is positive.
+
+    The operations and their order are those of ``construction._point_array``,
+    ``darboux.reflect_in_points``, ``curvature.build`` and the kernels above, so each array has
+    the bits the separate constructions give.
+    """
+    rows = i_max - i_min + 2
+    axis = np.empty((rows, 2))
+    tractrix = np.empty((rows, 2))
+    darboux = np.empty((rows, 2))
+    inscribed = np.empty((rows, 2))
+    two_d = 2 * d
+    for k in range(rows):
+        i = float(i_min + k)
+        c, s = cos_u[i_min + k - first], sin_u[i_min + k - first]
+        axis[k, 0] = two_d * i
+        axis[k, 1] = 0.0
+        tractrix[k, 0] = two_d * i + h * c
+        tractrix[k, 1] = 0.0 + h * s
+        darboux[k, 0] = 2 * tractrix[k, 0] - axis[k, 0]
+        darboux[k, 1] = 2 * tractrix[k, 1] - axis[k, 1]
+        inscribed[k, 0] = s
+        inscribed[k, 1] = -c
+    centres = np.empty((rows + 2, 2))
+    for k in range(rows + 2):
+        j = float(i_min - 1 + k)
+        centres[k, 0] = (2 * j - 1) * d
+        centres[k, 1] = centre_y[i_min - 1 + k - first]
+    sign = 1.0 if centres[rows + 1, 0] >= centres[0, 0] else -1.0
+    contact, positive = contact_points(centres, sign)
+    y, x, _ = circumscribed_arguments(centres, sign)
+    return axis, tractrix, darboux, inscribed, contact, y, x, positive

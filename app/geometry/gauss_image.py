@@ -118,6 +118,12 @@ def _circumscribed_float64(polygon: np.ndarray[Any, np.dtype[np.float64]]) -> Ar
     arctangents, cosines and sines by numpy on contiguous arrays as the formulas above."""
     y, x, positive = companion_kernels.circumscribed_arguments(polygon, float(orientation(polygon)))
     _require_positive(positive)
+    return circumscribed_from_arguments(y, x)
+
+
+def circumscribed_from_arguments(y: Array, x: Array) -> Array:
+    """Float64: the poles m_k from the arguments of their arctangents
+    (``companion_kernels.circumscribed_arguments``)."""
     halves = companion_kernels.circumscribed_angles(np.arctan2(y, x))  # δ/2 and the bisector
     return companion_kernels.circumscribed_points(np.cos(halves), np.sin(halves[1]))
 

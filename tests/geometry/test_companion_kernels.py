@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from app.geometry import gauss_image
-from app.geometry.d4b.discretization import polygons
+from app.geometry.d4b.discretization import COMPANIONS, polygons
 from app.geometry.errors import DomainError
 from app.geometry.precision import Float64
 
@@ -65,3 +65,33 @@ def test_a_zero_length_edge_is_the_same_domain_error(build: object) -> None:
         with pytest.raises(DomainError) as caught:
             build(ar, polygon)  # type: ignore[operator]
         assert caught.value.parameter == "meridian"
+
+
+@pytest.mark.parametrize(
+    "arguments",
+    [
+        (1.0, 0.1, None, -50, 49),
+        (1.0, 0.3, 1.0, -5, 7),
+        (2.0, 0.01, 2.5, 3, 40),
+        (1.0, 0.2, None, -30, -4),
+        (1.0, 0.1, None, 0, 0),
+        (1e-3, 1e-4, 0.1, -200, 3),
+    ],
+)
+def test_the_d4b_companions_in_one_pass_give_the_separate_bits(arguments: tuple) -> None:
+    fused, separate = polygons(FLOAT64, *arguments), polygons(FLOAT64, *arguments)
+    fused.compile_companions()
+    assert {"axis", "tractrix", "darboux"} <= set(vars(fused))
+    assert {"tractrix_gauss", "contact", "gauss"} <= set(vars(fused.gauss))
+    for name, build in COMPANIONS.items():
+        one, other = build(fused), build(separate)
+        assert one.shape == other.shape, name
+        assert one.tobytes() == other.tobytes(), name
+
+
+def test_companions_built_already_are_kept() -> None:
+    data = polygons(FLOAT64, 1.0, 0.1, None, -10, 10)
+    tractrix, contact = data.tractrix, data.gauss.contact
+    data.compile_companions()
+    assert data.tractrix is tractrix
+    assert data.gauss.contact is contact

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from functools import cached_property
-from typing import Any, Literal
+from typing import Any, Literal, NamedTuple
 
 import numpy as np
 
@@ -34,6 +34,18 @@ from app.geometry.precision import CLOCK_STEPS, Arithmetic, Array, Scalar, stack
 PointName = Literal["axis_points", "tractrix", "centres", "directions"]
 
 
+class Recursion(NamedTuple):
+    """The float64 recursion of one construction (``_sticks``): h, d, cos β_j, sin β_j and p_j^y
+    for j = first .. first + len − 1."""
+
+    h: float
+    d: float
+    cos_u: Array
+    sin_u: Array
+    centre_y: Array
+    first: int
+
+
 class KinematicTractrix:
     """The construction (D4b) on the indices i_min .. i_max; every array is ``(n, 2)``.
 
@@ -42,9 +54,18 @@ class KinematicTractrix:
     alone never holds the other three (a 10^6-vertex ``format=npy`` answer, issue 12).
     """
 
-    def __init__(self, i_min: int, i_max: int, points: Callable[[PointName], Array]) -> None:
+    def __init__(
+        self,
+        i_min: int,
+        i_max: int,
+        points: Callable[[PointName], Array],
+        recursion: Recursion | None = None,
+    ) -> None:
         self.i_min, self.i_max = i_min, i_max
         self._points = points
+        self.recursion = recursion
+        """Float64: the recursion's own arrays, which the compiled companions read
+        (``app.geometry.companion_kernels.d4b_companions``); None in mp."""
 
     @property
     def indices(self) -> np.ndarray[Any, np.dtype[np.int64]]:
@@ -220,7 +241,10 @@ def construct(
         ar.check_time()  # once, after the kernel: ≈ 20 ns per stick
         arguments = (float(h), float(d), cos_f, sin_f, centre_f, i_min - lo, i_min, i_max)
         return KinematicTractrix(
-            i_min, i_max, lambda name: _point_array(_POINT_NAMES.index(name), *arguments)
+            i_min,
+            i_max,
+            lambda name: _point_array(_POINT_NAMES.index(name), *arguments),
+            Recursion(float(h), float(d), cos_f, sin_f, centre_f, lo),
         )
     cos_u = [ar.scalar(0)] * (hi - lo + 1)
     sin_u = list(cos_u)

@@ -15,7 +15,7 @@ from typing import Any, Literal
 
 import numpy as np
 
-from app.geometry import darboux
+from app.geometry import companion_kernels, darboux, gauss_image
 from app.geometry.catalog.section3 import (
     D4B_DARBOUX as DARBOUX,
     D4B_DARBOUX_DISTANCE as DARBOUX_DISTANCE,
@@ -208,6 +208,33 @@ class D4bPolygons:
             built.directions,
         )
 
+    def compile_companions(self) -> None:
+        """Float64 construction: the six companions (tractrix, axis points, Darboux transform,
+        the three Gauss images) in one compiled pass over the recursion
+        (``companion_kernels.d4b_companions``), kept as if each had been built on its own (the
+        same bits); those built already stay. Nothing is kept when an edge of p has no length:
+        the separate constructions then raise their domain error."""
+        if not self.constructed:
+            return
+        recursion = self._hull[1].recursion
+        if recursion is None:
+            return
+        h, d, cos_u, sin_u, centre_y, first = recursion
+        axis, tractrix, darboux_, inscribed, contact, y, x, positive = (
+            companion_kernels.d4b_companions(
+                h, d, cos_u, sin_u, centre_y, first, self.i_min, self.i_max
+            )
+        )
+        if not positive:
+            return
+        for name, points in (("axis", axis), ("tractrix", tractrix), ("darboux", darboux_)):
+            self.__dict__.setdefault(name, points)
+        images = self.gauss.__dict__
+        images.setdefault("tractrix_gauss", inscribed)
+        images.setdefault("contact", contact)
+        if "gauss" not in images:
+            images["gauss"] = gauss_image.circumscribed_from_arguments(y, x)
+
     @cached_property
     def exponent(self) -> float:
         """Largest |(i + τ)L| of the closed forms over i_min .. i_max + 1.
@@ -268,9 +295,10 @@ def compute(
         "i_max": i_max,
         "method": method,
     }
-    companions = {
-        name: build(data) for name, build in COMPANIONS.items() if selection.wants_companion(name)
-    }
+    wanted = [name for name in COMPANIONS if selection.wants_companion(name)]
+    if ar.mode == "float64" and len(wanted) == len(COMPANIONS):
+        data.compile_companions()  # all six in one compiled pass
+    companions = {name: COMPANIONS[name](data) for name in wanted}
     gauss_tolerances = {}
     if any(name in companions for name in d4b_curvature.COMPANIONS):
         gauss_tolerances = d4b_curvature.companion_tolerances(ar, data.gauss, construction)
