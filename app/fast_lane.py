@@ -32,7 +32,11 @@ the full chain, which answers it as before (an error is computed again there: er
 rare, and so their answers stay those of the exception handlers). The response's headers are
 those the chain adds to a computed 200 (``Vary`` from negotiation and CORS, the security
 headers; gzip is negotiated by ``reply`` exactly as the chain's ``Compress`` would leave it):
-tests/api/test_fast_lane.py compares status, headers and body with the full chain's.
+tests/api/test_fast_lane.py compares status, headers and body with the full chain's. A reply
+without gzip refills the headers of the last reply of its kind (``_Template``: only the ETag and
+the Content-Length differ), a JSON curve answer is kept straight from its encoded bytes
+(``json_entry``) and a query with nothing to unquote is split without ``parse_qsl``
+(``split_query``): each the same bytes, fewer steps on a path that runs mostly cold.
 
 A request computed here holds the event loop while it runs, so only requests estimated at a
 few milliseconds take the lane; the watchdog (which stops computations long past their
@@ -53,7 +57,14 @@ from app.admission import Admission, current
 from app.limits import curve_cost
 from app.negotiation import choose, endpoint_of, with_accept
 from app.registry import DISCRETIZATIONS, STATEMENTS, Discretization, StatementEntry
-from app.response_cache import COMPACT_BELOW, Entry, ResponseCache, entry_of, get_reply
+from app.response_cache import (
+    COMPACT_BELOW,
+    Entry,
+    ResponseCache,
+    entry_of,
+    etag_for,
+    get_reply,
+)
 from app.responses import canonical_key, curve_document, encode_json
 from app.routers.caching import JSONBytesResponse
 from app.routers.common import compute, curve_response
@@ -148,6 +159,49 @@ def entry_of_body(body: bytes, template: Entry) -> Entry:
     return Entry(template.status, template.headers, body, template.media_type)
 
 
+#: Most reply templates a lane keeps (one per kind of answer: status, kept headers and whether
+#: the path negotiates formats; a few in practice).
+_TEMPLATES = 64
+
+
+class _Template:
+    """The raw headers of a reply without gzip, all fixed by the entry's status and headers
+    (and the path) but the ETag (from the canonical key) and the Content-Length (the body's)."""
+
+    __slots__ = ("etag", "headers", "length")
+
+    def __init__(self, headers: list[tuple[bytes, bytes]], etag: int, length: int) -> None:
+        self.headers, self.etag, self.length = headers, etag, length
+
+    @classmethod
+    def of(cls, headers: list[tuple[bytes, bytes]]) -> _Template | None:
+        """The template of a reply's headers, None unless it has one ETag and one length."""
+        names = [name for name, _ in headers]
+        if names.count(b"etag") != 1 or names.count(b"content-length") != 1:
+            return None
+        return cls(list(headers), names.index(b"etag"), names.index(b"content-length"))
+
+    def fill(self, key: str, body: bytes) -> list[tuple[bytes, bytes]]:
+        """The headers of the reply to ``key`` with ``body`` (as ``get_reply`` builds them)."""
+        headers = self.headers.copy()
+        headers[self.etag] = (b"etag", etag_for(key).encode("latin-1"))
+        headers[self.length] = (b"content-length", str(len(body)).encode("latin-1"))
+        return headers
+
+
+def split_query(query: str) -> list[tuple[str, str]]:
+    """``parse_qsl(query, keep_blank_values=True)`` for a query without ``%`` or ``+`` (nothing
+    to unquote): the ``&``-separated pairs, empty ones skipped, split at the first ``=``."""
+    if "%" in query or "+" in query:
+        return parse_qsl(query, keep_blank_values=True)
+    pairs = []
+    for part in query.split("&"):
+        if part:
+            name, _, value = part.partition("=")
+            pairs.append((name, value))
+    return pairs
+
+
 class FastLane:
     """ASGI middleware: small computed curve GETs (see the module doc)."""
 
@@ -172,6 +226,8 @@ class FastLane:
         self.routes.update(_theorem_routes())
         self.served = 0
         """Requests answered here (computed or from the cache)."""
+        self.templates: dict[tuple[int, tuple[tuple[str, str], ...], bool], _Template] = {}
+        """Reply headers without gzip by kind of answer (``_Template``)."""
 
     async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
         answer = None
@@ -210,7 +266,7 @@ class FastLane:
         # same raw request elsewhere)
         found = self.cache.lookup(raw) if accept is None else None
         if found is None:
-            pairs = parse_qsl(query_string.decode("latin-1"), keep_blank_values=True)
+            pairs = split_query(query_string.decode("latin-1"))
             values: dict[str, Any] = dict(pairs)
             if len(values) != len(pairs):
                 return None  # a repeated parameter: the chain's 422
@@ -232,12 +288,22 @@ class FastLane:
             if found is None:
                 return None
         key, entry = found
+        negotiable = route.statement is None
+        if accept_encoding is None:  # no gzip: the headers of the last such reply, refilled
+            template = self.templates.get((entry.status, entry.headers, negotiable))
+            if template is not None:
+                return entry.status, template.fill(key, entry.body), entry.body
         answer = get_reply(self.cache, key, entry, self.settings, accept_encoding)
         headers = answer.raw_headers()
         for index, (name, value) in enumerate(headers):
             if name == b"vary":
-                headers[index] = (name, _vary(value, route.statement is None))
-        return answer.status, with_defaults(headers), answer.body
+                headers[index] = (name, _vary(value, negotiable))
+        headers = with_defaults(headers)
+        if accept_encoding is None and len(self.templates) < _TEMPLATES:
+            made = _Template.of(headers)
+            if made is not None:
+                self.templates[(entry.status, entry.headers, negotiable)] = made
+        return answer.status, headers, answer.body
 
     def _digits_allowed(self, values: dict[str, Any]) -> bool:
         """Whether ``digits`` (if given) passes the app-wide limit without a doubt."""

@@ -9,13 +9,14 @@ the requests it is meant for (``FastLane.served``).
 from __future__ import annotations
 
 from typing import Any
+from urllib.parse import parse_qsl
 
 import pytest
 from fastapi import FastAPI
 from fastapi._compat.shared import field_annotation_is_sequence
 from fastapi.testclient import TestClient
 
-from app.fast_lane import FastLane, is_sequence
+from app.fast_lane import FastLane, is_sequence, split_query
 from app.main import create_app
 from app.registry import DISCRETIZATIONS
 from app.settings import Settings
@@ -233,3 +234,50 @@ def test_a_theorem_whose_check_is_left_out_is_a_422_naming_checks(
         assert error["parameter"] == "checks"
         assert error["value"] == checks
         assert "theorem-5" in error["constraint"]
+
+
+def test_replies_without_accept_encoding_refill_their_template_as_the_chain_answers() -> None:
+    """Without Accept-Encoding the lane refills the headers of the last reply of the same kind
+    (``_Template``): every kind, computed and repeated, still answers as the chain."""
+    lane = TestClient(create_app(Settings()))
+    chain = TestClient(create_app(Settings(fast_lane_seconds=0)))
+    for client in (lane, chain):
+        client.headers.pop("accept-encoding", None)
+    queries = [f"{SMALL}&d={d}" for d in (0.1, 0.11, 0.12)]
+    urls = [
+        *(f"{D4B}?{q}" for q in queries),
+        *(f"{D4B}?{q}&checks=none" for q in queries),
+        *(f"{D4B}?{q}&format={f}" for q in queries[:2] for f in ("csv", "npy", "svg")),
+        *(f"/theorems/theorem-5?{q}" for q in queries[:2]),
+        "/discretizations/d1?i_min=-4&i_max=4",
+        "/discretizations/d1?i_min=-4&i_max=5",
+    ]
+    for url in [*urls, *urls]:  # computed, then kept
+        expected = raw(chain, "GET", url, {})
+        got = raw(lane, "GET", url, {})
+        assert all(name != b"content-encoding" for name, _ in got[1])
+        assert got == expected, url
+    fast = lane_of(lane.app)  # type: ignore[arg-type]
+    assert fast is not None
+    assert fast.served == 2 * len(urls)
+    assert fast.templates
+
+
+@pytest.mark.parametrize(
+    "query",
+    [
+        "",
+        "a=1",
+        "a=1&b=2",
+        "a=&b",
+        "&&a=1&&",
+        "=1&a==2",
+        "a=1;b=2",
+        "a=%20b&c=d",
+        "a=b+c",
+        "checks=theorem-5,theorem-6&d=0.25",
+        "x=\u00e9",
+    ],
+)
+def test_split_query_reads_a_query_as_parse_qsl(query: str) -> None:
+    assert split_query(query) == parse_qsl(query, keep_blank_values=True)
