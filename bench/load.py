@@ -318,7 +318,9 @@ async def burst(
     h99 = percentile(probed, 0.99) * 1e3
     print(
         f"{name:<16} 200: {len(ok):>2} (max {max(ok, default=0):5.1f} s)  503: {len(refused):>2} "
-        f"(p50 {statistics.median(refused) * 1e3 if refused else 0:6.1f} ms, "
+        f"(p50 {percentile(refused, 0.5) * 1e3 if refused else 0:6.1f} ms, "
+        f"p99 {percentile(refused, 0.99) * 1e3 if refused else 0:6.1f} ms, "
+        f"max {max(refused, default=0) * 1e3:6.1f} ms, "
         f"> 100 ms: {slow_refusals})  other: {sorted(set(other))}  late: {late}  "
         f"/health p99 {h99:5.1f} ms (from the load's client {percentile(health, 0.99) * 1e3:5.1f})"
         f"  peak RSS {', '.join(f'{v:.0f}' for v in peaks.values())} MiB"

@@ -91,6 +91,17 @@ def test_ready_says_whether_the_worker_admits_work(client: TestClient) -> None:
     assert busy.status_code == 503 and busy.json()["type"].endswith("/overloaded")
 
 
+def test_ready_reports_the_bytes_the_response_cache_holds(client: TestClient) -> None:
+    """bench/load.py reads it to tell the cache filling up from a leak."""
+    cache = client.app.state.response_cache  # type: ignore[attr-defined]
+    empty = int(client.get("/ready").headers["x-response-cache-bytes"])
+    assert empty == cache.bytes + cache.alias_bytes
+    assert client.get(CURVE, params={"i_max": 12, "d": 0.25}).status_code == 200
+    held = int(client.get("/ready").headers["x-response-cache-bytes"])
+    assert held > empty
+    assert held == cache.bytes + cache.alias_bytes <= cache.max_bytes
+
+
 def test_a_full_queue_is_an_immediate_503_and_cheap_requests_still_pass(
     client: TestClient,
 ) -> None:
