@@ -272,6 +272,10 @@ ROUTED = [
     ("/theorems/theorem-5", {"d": 0.2}),
     ("/theorems/theorem-5", {"precision": "mp", "digits": 25, "i_max": 30}),
     ("/theorems/theorem-14", {"levels": 4}),
+    ("/figures/figure-7.svg", {"i_min": -6, "i_max": 6}),
+    ("/figures/figure-8.svg", {"j": "2,3"}),
+    ("/smooth/tractrix", {"count": 21}),
+    ("/smooth/catenary", {"count": 5, "precision": "mp", "digits": 20, "format": "csv"}),
 ]
 
 
@@ -334,6 +338,8 @@ def test_a_domain_error_of_a_surface_in_a_child_is_the_same_422(
         ("app.routers.surfaces", "_file", "/surfaces/catenoid", {"m": 8}, "i_max"),
         ("app.routers.relations", "relations_answer", "/relations", {}, "i_max"),
         ("app.routers.theorems", "respond", "/theorems/theorem-5", {"d": 0.2}, "i_max"),
+        ("app.routers.figures", "render", "/figures/figure-7.svg", {}, "i_max"),
+        ("app.routers.smooth", "curve_response", "/smooth/tractrix", {}, "count"),
     ],
 )
 def test_an_overrunning_child_of_every_routed_endpoint_is_the_time_limit_problem(
