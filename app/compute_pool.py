@@ -34,6 +34,8 @@ child, however cheap: it holds the balls' precision lock for its whole run, and 
 watchdog (app/admission.py) stops a thread with an asynchronous exception, which may land
 between the lock's acquisition and the code that releases it (a lock left held, or released
 later by another thread). A child has no watchdog: it is stopped by being killed, lock and all.
+(With ``DCOSH_COMPUTE_PROCESSES=0`` they compute in the worker, whose watchdog waits until the
+thread has left that lock: ``admission.holds_precision_lock``.)
 
 Replacement children are forked from a worker that runs threads by then; a lock another
 thread held at that moment stays locked in the child. The core's one module lock (the balls'
