@@ -189,6 +189,8 @@ def test_the_watchdog_never_stops_a_thread_inside_the_balls_precision_lock() -> 
                 pass
         except HardStopError:
             seen["stopped"] = time.monotonic()
+        finally:
+            ticket.thread = None  # done (as ``computing`` does): the watchdog lets it be
 
     thread = threading.Thread(target=run)
     thread.start()
