@@ -32,7 +32,10 @@ A computation that overruns its deadline is stopped: the core checks the clock i
 mp functions (``Arithmetic.check_time``), and a watchdog thread raises ``HardStopError`` inside a
 computing thread that is still running ``DCOSH_HARD_STOP_GRACE`` seconds past its deadline
 (Python delivers it at the next bytecode, which covers the mp arithmetic on object arrays whose
-``+ - * /`` run as Python methods of mpmath numbers).
+``+ - * /`` run as Python methods of mpmath numbers). Never while that thread holds the rigorous
+balls' precision lock (``holds_precision_lock``: with ``DCOSH_COMPUTE_PROCESSES=0`` mp curves
+compute in the worker): the watchdog tries again every ``REPEAT`` seconds, and the balls' own
+clock checks end such a computation with an ordinary exception that releases the lock.
 """
 
 from __future__ import annotations
@@ -41,6 +44,7 @@ import contextvars
 import ctypes
 import heapq
 import math
+import re
 import signal
 import threading
 import time
@@ -284,7 +288,12 @@ class Watchdog:
                 while self._heap and self._heap[0][0] <= now:
                     _, _, ticket = heapq.heappop(self._heap)
                     thread = ticket.thread
-                    if thread is not None:
+                    if thread is not None and holds_precision_lock(thread):
+                        # never inside the balls' precision lock: try again in REPEAT seconds
+                        # (meanwhile the balls' own clock checks stop it cleanly)
+                        self._count += 1
+                        heapq.heappush(self._heap, (now + REPEAT, self._count, ticket))
+                    elif thread is not None:
                         # again every REPEAT seconds while it runs: an exception raised inside
                         # a garbage-collector callback or a __del__ is lost
                         ticket.stopped = True
@@ -298,6 +307,20 @@ class Watchdog:
 
 
 WATCHDOG = Watchdog()
+
+_OWNER = re.compile(r"owner=(\d+)")
+
+
+def holds_precision_lock(thread: int) -> bool:
+    """Whether ``thread`` holds the rigorous balls' precision lock (app/geometry/balls.py) now.
+
+    An asynchronous exception raised there could land between the lock's acquisition and the
+    code that releases it and leave it held (``DCOSH_COMPUTE_PROCESSES=0``: mp curves compute in
+    the worker). An ``RLock`` tells its owner only in its repr."""
+    from app.geometry import balls
+
+    found = _OWNER.search(repr(balls.LOCK))
+    return found is not None and int(found.group(1)) == thread
 
 
 def stopped_inside(exc: BaseException) -> bool:

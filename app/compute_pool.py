@@ -23,12 +23,19 @@ where the round trip would cost more than it saves.
   (``HardStopError``). A child that dies (out of memory, killed) is replaced and its request
   gets a 503 with Retry-After, as does a request that waits for a free child until it could
   no longer finish by its deadline.
+- A request that finds every child busy is refused at once (a 503 with Retry-After) when the
+  work queued ahead of it (the rest of the running jobs' estimates and the waiting ones', over
+  the children) would not let it finish by its deadline: it does not wait for that 503.
+  Estimates are CPU seconds on a free core: each job's wall time in its child teaches the
+  worker's slowdown (``Admission.observe``), which scales them on a loaded host.
 
 Every computation on rigorous balls (precision=mp of a curve, app/geometry/balls.py) goes to a
 child, however cheap: it holds the balls' precision lock for its whole run, and the worker's
 watchdog (app/admission.py) stops a thread with an asynchronous exception, which may land
 between the lock's acquisition and the code that releases it (a lock left held, or released
 later by another thread). A child has no watchdog: it is stopped by being killed, lock and all.
+(With ``DCOSH_COMPUTE_PROCESSES=0`` they compute in the worker, whose watchdog waits until the
+thread has left that lock: ``admission.holds_precision_lock``.)
 
 Replacement children are forked from a worker that runs threads by then; a lock another
 thread held at that moment stays locked in the child. The core's one module lock (the balls'
@@ -80,6 +87,18 @@ class Rendered:
     media_type: str | None
     headers: dict[str, str]
     body: bytes
+
+
+@dataclass(eq=False)
+class _Job:
+    """A request in a child or waiting for one: its estimated wall seconds, for the queue's
+    expected wait."""
+
+    seconds: float
+    """Estimated wall seconds (CPU seconds scaled by the worker's slowdown)."""
+    estimated: float = 0.0
+    """Estimated CPU seconds on a free core (what admission charged)."""
+    started: float | None = None
 
 
 class PoolCrashError(admission.OverloadedError):
@@ -206,6 +225,9 @@ class ComputePool:
         self._wanted: queue.SimpleQueue[_Child | None] = queue.SimpleQueue()
         """A killed child to reap and replace (None: stop)."""
         self._lock = threading.Lock()
+        self._jobs: list[_Job] = []
+        """Requests in a child or waiting for one."""
+        self._jobs_lock = threading.Lock()
         self.jobs = 0
         """Requests sent to a child."""
         self.kills = 0
@@ -280,6 +302,55 @@ class ComputePool:
         state = admission.current_admission()
         slowdown = 1.0 if state is None else state.slowdown
         need = 0.0 if ticket is None else ticket.seconds * slowdown
+        job = _Job(need, 0.0 if ticket is None else ticket.seconds)
+        with self._jobs_lock:
+            wait = self._expected_wait(now)
+            self._jobs.append(job)
+        try:
+            return self._run(job, function, args, (arrival, deadline, stop_at), wait, state)
+        finally:
+            with self._jobs_lock:
+                self._jobs.remove(job)
+
+    @staticmethod
+    def _observe(job: _Job, state: admission.Admission | None) -> None:
+        """Teach the worker's slowdown (``Admission.observe``) how long a child took over the
+        job's estimate: children compete for the host's cores like everything else, and a
+        loaded host must make admission and this queue's expected wait stricter, or the
+        requests queued here wait until their deadline for a 503."""
+        if state is not None and job.started is not None and job.estimated > 0:
+            state.observe(job.estimated, time.monotonic() - job.started)
+
+    def _expected_wait(self, now: float) -> float:
+        """Seconds a job queued now waits for a child, as estimated: the work still ahead of
+        it (the rest of the running jobs' estimates and the waiting jobs') over the
+        children; 0 while a child is idle."""
+        if self._idle.qsize() > 0:
+            return 0.0
+        ahead = sum(
+            job.seconds if job.started is None else max(0.0, job.seconds - (now - job.started))
+            for job in self._jobs
+        )
+        return ahead / max(1, self.size)
+
+    def _run(
+        self,
+        job: _Job,
+        function: Callable[..., Any],
+        args: tuple[Any, ...],
+        times: tuple[float, float, float],
+        wait: float,
+        state: admission.Admission | None,
+    ) -> Rendered:
+        arrival, deadline, stop_at = times
+        need = job.seconds
+        if need > 0 and time.monotonic() + wait + need > deadline:
+            # the queue ahead will not clear in time: refused now, not at the end of the wait
+            raise PoolBusyError(
+                "the compute processes have more work queued than it could wait for and still "
+                f"finish within {self.settings.time_limit:g} s of its arrival",
+                1 if state is None else state.retry_after(),
+            )
         while True:
             try:
                 child = self._idle.get(timeout=max(0.0, deadline - need - time.monotonic()))
@@ -295,11 +366,13 @@ class ComputePool:
             self.crashes += 1
             self._replace(child)
         self.jobs += 1
+        job.started = time.monotonic()
         try:
             child.conn.send((function, args, arrival, deadline))
             if not child.conn.poll(max(0.0, stop_at - time.monotonic())):
                 self.kills += 1
                 self._replace(child)
+                self._observe(job, state)
                 raise admission.HardStopError
             message = child.conn.recv()
             body = child.conn.recv_bytes() if message[0] == "ok" else b""
@@ -314,6 +387,7 @@ class ComputePool:
         self._idle.put(child)
         if message[0] == "error":
             raise _rebuilt(message[1])
+        self._observe(job, state)
         _, status, media_type, headers = message
         return Rendered(status, media_type, dict(headers), body)
 

@@ -4,12 +4,13 @@ from typing import Annotated, Any
 
 from fastapi import APIRouter, Depends, Query, Request, Response
 
+from app import compute_pool
 from app.errors import UnknownIdError
-from app.limits import enforce_drawing
+from app.limits import charge_figure, enforce_drawing
 from app.rendering.curves import SVG_MEDIA_TYPE
 from app.responses import canonical_key
 from app.routers.caching import cached
-from app.routers.common import SVG_HEADERS, reject_repeated_parameters, settings_of
+from app.routers.common import SVG_HEADERS, in_child, reject_repeated_parameters, settings_of
 from app.routers.discretizations import parameter_infos
 from app.schemas.catalog import FigureEntry
 from app.schemas.common import NOT_FOUND_RESPONSE, PROBLEM_RESPONSES
@@ -61,7 +62,12 @@ def _register(figure: Figure) -> None:
         enforce_drawing(settings, *parsed.vertex_range())
 
         def build() -> Response:
-            return Response(render(figure, parsed), media_type=SVG_MEDIA_TYPE, headers=SVG_HEADERS)
+            charge_figure(settings, *parsed.vertex_range())  # a cached answer is not charged
+            pool = compute_pool.offload()
+            if pool is not None:
+                values = dict(parsed)
+                return in_child(pool, figure_answer, figure.id, values, parsed.model_fields_set)
+            return figure_answer(figure.id, dict(parsed), parsed.model_fields_set)
 
         return cached(
             request, canonical_key(request.url.path, parsed.model_dump()), settings, build
@@ -78,6 +84,14 @@ def _register(figure: Figure) -> None:
         responses=FIGURE_RESPONSES,
         dependencies=[Depends(reject_repeated_parameters)],
     )
+
+
+def figure_answer(identifier: str, values: dict[str, Any], fields_set: set[str]) -> Response:
+    """The figure drawn for validated query values: in the worker, or what a compute process
+    runs (app/compute_pool.py) when its estimate is heavy."""
+    figure = FIGURES[identifier]
+    query = figure.query.model_construct(fields_set, **values)
+    return Response(render(figure, query), media_type=SVG_MEDIA_TYPE, headers=SVG_HEADERS)
 
 
 for _figure in FIGURES.values():

@@ -51,8 +51,11 @@ READY_BODY = orjson.dumps({"status": "ready"})
 )
 async def ready(request: Request) -> Response:
     admission = request.app.state.admission
+    cache = request.app.state.response_cache
+    # what this worker's response cache holds now (bench/load.py tells its filling from a leak)
+    held = {CACHE_BYTES_HEADER: str(cache.bytes + cache.alias_bytes)}
     if admission.ready():
-        return Response(READY_BODY, media_type="application/json", headers=NO_STORE)
+        return Response(READY_BODY, media_type="application/json", headers={**NO_STORE, **held})
     reason = "shutting down" if admission.draining else "busy: its admitted work is at its budget"
     body = orjson.dumps(
         {
@@ -67,8 +70,12 @@ async def ready(request: Request) -> Response:
         body,
         status_code=503,
         media_type="application/problem+json",
-        headers={**NO_STORE, "Retry-After": str(admission.retry_after())},
+        headers={**NO_STORE, **held, "Retry-After": str(admission.retry_after())},
     )
 
 
 NO_STORE = {"Cache-Control": "no-store"}
+
+#: Bytes the worker's response cache holds (bodies, keys and per-entry overhead as it charges
+#: them against DCOSH_RESPONSE_CACHE_BYTES).
+CACHE_BYTES_HEADER = "X-Response-Cache-Bytes"

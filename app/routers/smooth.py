@@ -5,6 +5,7 @@ from typing import Annotated, Any
 
 from fastapi import APIRouter, Depends, Query, Request, Response
 
+from app import compute_pool
 from app.errors import UnknownIdError
 from app.geometry.curve import Curve
 from app.geometry.precision import Float64
@@ -23,6 +24,7 @@ from app.routers.common import (
     CURVE_RESPONSES,
     curve_response,
     example_of,
+    in_child,
     reject_repeated_parameters,
     selection_of,
     settings_of,
@@ -68,11 +70,11 @@ def _register(name: str, compute: Callable[..., Curve], title: str, description:
 
         def build() -> Response:
             enforce_samples(settings, query)
-            ar = timed_arithmetic(settings, query.precision, query.digits)
-            curve = compute(ar, **query.core_arguments())
-            statements = (check.id for check in curve.checks)
-            selection = selection_of(query, statements, curve.companions)
-            return curve_response(curve.selected(selection), query.format)
+            pool = compute_pool.offload()
+            if pool is not None:
+                values = dict(query)
+                return in_child(pool, smooth_answer, name, values, query.model_fields_set, settings)
+            return smooth_answer(name, dict(query), query.model_fields_set, settings)
 
         return cached(request, canonical_key(request.url.path, query.model_dump()), settings, build)
 
@@ -87,6 +89,20 @@ def _register(name: str, compute: Callable[..., Curve], title: str, description:
         responses=with_example(CURVE_RESPONSES, example_document(compute)),
         dependencies=[Depends(reject_repeated_parameters)],
     )
+
+
+def smooth_answer(
+    name: str, values: dict[str, Any], fields_set: set[str], settings: Settings
+) -> Response:
+    """The smooth curve for validated query values (already charged): in the worker, or what a
+    compute process runs (app/compute_pool.py) when its estimate is heavy."""
+    compute = CURVES[name][0]
+    query = SmoothQuery.model_construct(fields_set, **values)
+    ar = timed_arithmetic(settings, query.precision, query.digits)
+    curve = compute(ar, **query.core_arguments())
+    statements = (check.id for check in curve.checks)
+    selection = selection_of(query, statements, curve.companions)
+    return curve_response(curve.selected(selection), query.format)
 
 
 for _name, (_compute, _title, _description) in CURVES.items():

@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import threading
 import time
 from collections.abc import Iterator
+from typing import Any
 
 import pytest
 from fastapi.testclient import TestClient
@@ -91,6 +93,17 @@ def test_ready_says_whether_the_worker_admits_work(client: TestClient) -> None:
     assert busy.status_code == 503 and busy.json()["type"].endswith("/overloaded")
 
 
+def test_ready_reports_the_bytes_the_response_cache_holds(client: TestClient) -> None:
+    """bench/load.py reads it to tell the cache filling up from a leak."""
+    cache = client.app.state.response_cache  # type: ignore[attr-defined]
+    empty = int(client.get("/ready").headers["x-response-cache-bytes"])
+    assert empty == cache.bytes + cache.alias_bytes
+    assert client.get(CURVE, params={"i_max": 12, "d": 0.25}).status_code == 200
+    held = int(client.get("/ready").headers["x-response-cache-bytes"])
+    assert held > empty
+    assert held == cache.bytes + cache.alias_bytes <= cache.max_bytes
+
+
 def test_a_full_queue_is_an_immediate_503_and_cheap_requests_still_pass(
     client: TestClient,
 ) -> None:
@@ -148,3 +161,43 @@ def test_a_computation_alone_teaches_the_slowdown(client: TestClient) -> None:
     assert client.get(CURVE, params={"i_max": 2000, "d": 0.01}).status_code == 200
     assert admission.generation == before + 1
     assert admission.slowdown >= 1.0
+
+
+def test_the_watchdog_never_stops_a_thread_inside_the_balls_precision_lock() -> None:
+    """With no compute processes, mp curves hold the balls' lock in the worker: the watchdog's
+    asynchronous stop waits until the lock is released (it could leave the lock held)."""
+    from app.admission import WATCHDOG, HardStopError, holds_precision_lock
+    from app.geometry import balls
+
+    now = time.monotonic()
+    ticket = Ticket(arrival=now, deadline=now)
+    seen: dict[str, Any] = {}
+    started = threading.Event()
+
+    def run() -> None:
+        try:
+            with balls.LOCK:
+                seen["held"] = holds_precision_lock(threading.get_ident())
+                ticket.thread = threading.get_ident()
+                WATCHDOG.watch(ticket, time.monotonic())  # overdue at once
+                started.set()
+                end = time.monotonic() + 0.6
+                while time.monotonic() < end:  # bytecodes where a stop could land
+                    pass
+            seen["released"] = time.monotonic()
+            while time.monotonic() < end + 5:
+                pass
+        except HardStopError:
+            seen["stopped"] = time.monotonic()
+        finally:
+            ticket.thread = None  # done (as ``computing`` does): the watchdog lets it be
+
+    thread = threading.Thread(target=run)
+    thread.start()
+    started.wait(5)
+    thread.join(10)
+    assert seen["held"] is True
+    assert not holds_precision_lock(threading.get_ident())
+    assert seen["stopped"] >= seen["released"]  # stopped, but only once out of the lock
+    assert balls.LOCK.acquire(blocking=False)  # and the lock is free
+    balls.LOCK.release()

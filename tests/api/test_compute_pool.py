@@ -14,7 +14,8 @@ from typing import Any
 import pytest
 from fastapi.testclient import TestClient
 
-from app.compute_pool import ComputePool
+from app import admission
+from app.compute_pool import ComputePool, PoolBusyError, _Job
 from app.geometry import balls
 from app.main import create_app
 from app.routers import common
@@ -271,6 +272,10 @@ ROUTED = [
     ("/theorems/theorem-5", {"d": 0.2}),
     ("/theorems/theorem-5", {"precision": "mp", "digits": 25, "i_max": 30}),
     ("/theorems/theorem-14", {"levels": 4}),
+    ("/figures/figure-7.svg", {"i_min": -6, "i_max": 6}),
+    ("/figures/figure-8.svg", {"j": "2,3"}),
+    ("/smooth/tractrix", {"count": 21}),
+    ("/smooth/catenary", {"count": 5, "precision": "mp", "digits": 20, "format": "csv"}),
 ]
 
 
@@ -333,6 +338,8 @@ def test_a_domain_error_of_a_surface_in_a_child_is_the_same_422(
         ("app.routers.surfaces", "_file", "/surfaces/catenoid", {"m": 8}, "i_max"),
         ("app.routers.relations", "relations_answer", "/relations", {}, "i_max"),
         ("app.routers.theorems", "respond", "/theorems/theorem-5", {"d": 0.2}, "i_max"),
+        ("app.routers.figures", "render", "/figures/figure-7.svg", {}, "i_max"),
+        ("app.routers.smooth", "curve_response", "/smooth/tractrix", {}, "count"),
     ],
 )
 def test_an_overrunning_child_of_every_routed_endpoint_is_the_time_limit_problem(
@@ -393,3 +400,33 @@ def test_a_request_waiting_for_a_busy_pool_is_refused_before_its_deadline(
         assert pool.kills == 1
     finally:
         pool.close()
+
+
+def test_a_request_behind_more_queued_work_than_its_deadline_allows_is_refused_at_once() -> None:
+    """The children's estimated backlog exceeds what the request can wait: a 503 at once (not
+    after waiting until its deadline), and nothing handed to a child."""
+    settings = Settings(compute_processes=1, time_limit=2.0)
+    pool = ComputePool(settings)  # not started: no child is idle
+    now = time.monotonic()
+    pool._jobs.append(_Job(seconds=5.0, started=now))  # a child busy for about 5 s more
+    token = admission.CURRENT.set(admission.Ticket(arrival=now, deadline=now + 2.0, seconds=0.1))
+    try:
+        with pytest.raises(PoolBusyError, match="more work queued") as refused:
+            pool.run(print)
+    finally:
+        admission.CURRENT.reset(token)
+    assert refused.value.retry_after == 1
+    assert pool.jobs == 0
+    assert len(pool._jobs) == 1  # the refused request left the queue
+    # with the backlog almost done, the estimate lets it wait for the child instead
+    pool._jobs[0].started = now - 4.95
+    assert pool._expected_wait(time.monotonic()) < 0.1
+
+
+def test_a_child_slower_than_its_estimate_makes_the_worker_stricter() -> None:
+    """A job that took 10x its estimate in a child raises the worker's slowdown (the host is
+    loaded): admission and the queue's expected wait scale every estimate by it."""
+    state = admission.Admission(Settings())
+    job = _Job(seconds=0.1, estimated=0.1, started=time.monotonic() - 1.0)
+    ComputePool._observe(job, state)
+    assert 1.0 < state.slowdown <= admission.MAX_SLOWDOWN

@@ -29,6 +29,8 @@ REQUESTS = [
     "/surfaces/catenoid?discretization=d4b&precision=mp&digits=5&i_min=-4&i_max=4&m=8",
     "/smooth/tractrix?count=200000",
     "/smooth/tractrix?precision=mp&digits=50&count=400",
+    "/figures/figure-3.svg?i_min=-960&i_max=960",
+    "/figures/figure-2.svg?count=20001",
     "/relations",
     "/relations?precision=mp&digits=20",
     "/convergence/theorem-14?levels=12",

@@ -104,3 +104,14 @@ def test_a_worker_freezes_what_the_import_made_and_collects_young_objects_less_o
     finally:
         gc.unfreeze()
         gc.set_threshold(*thresholds)
+
+
+def test_a_worker_builds_the_openapi_document_before_its_first_request() -> None:
+    """The format negotiation of a GET reads it; built lazily, the first such request held the
+    event loop 0.6-0.9 s and every refusal of a burst waited behind it."""
+    from app.main import app
+    from app.server import warm_app
+
+    warm_app()
+    assert app.openapi_schema is not None
+    assert "/discretizations/d4b" in app.openapi_schema["paths"]
