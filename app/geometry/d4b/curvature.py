@@ -188,6 +188,13 @@ def build(
     ``tractrix_hull``. Without (method=closed-form) the closed forms are used.
     """
     i = ar.indices(i_min, i_max + 1)
+    if ar.certified:  # balls: from one exponential per index (``_BallHyperbolic``)
+        table = _ball_hyperbolic(ar, h, d, shift, i_min - 1, i_max + 1)
+        closed_on_balls: dict[str, Callable[[GaussImages], Array]] = {
+            "closed_tractrix_gauss": lambda _: table.tractrix_gauss_image(i_min, i_max + 1),
+            "closed_gauss": lambda _: table.circumscribed_gauss_image(i_min, i_max + 1),
+            "closed_contact": lambda _: table.contact_points(i_min - 1, i_max + 1),
+        }
     closed: dict[str, Callable[[GaussImages], Array]] = {
         "closed_tractrix_gauss": lambda _: kinematic_closed_forms.tractrix_gauss_image(
             ar, h, d, i, shift
@@ -199,6 +206,8 @@ def build(
             ar, h, d, ar.indices(i_min - 1, i_max + 1), shift
         ),
     }
+    if ar.certified:
+        closed = closed_on_balls
     if tractrix_hull is None or first_direction is None or p_extended is None:
         before = kinematic_closed_forms.hyperbolic_cosine(
             ar, h, d, ar.indices(i_min - 1, i_min), shift
@@ -231,7 +240,12 @@ def build(
             **closed,
             "tractrix_gauss": lambda _: stack_points(directions[window, 1], -directions[window, 0]),
             "contact": lambda _: gauss_image.contact_points(ar, p_extended),
-            "gauss": lambda _: gauss_image.circumscribed(ar, p_extended),
+            "gauss": (
+                # balls: the tangents at ñ_{i−1}, ñ_i intersected algebraically (``_poles``)
+                (lambda images: _poles(images.contact))
+                if ar.certified
+                else (lambda _: gauss_image.circumscribed(ar, p_extended))
+            ),
         },
         p_extended[:2],
     )
@@ -272,6 +286,9 @@ class PrintedForms:
 
     def __call__(self, key: str) -> Array:
         ar = self.ar
+        if ar.certified:  # balls: from one exponential per index (``_BallHyperbolic``)
+            table = _ball_hyperbolic(ar, self.h, self.d, self.shift, self.i_min, self.i_max)
+            return table.printed(key, self.i_min, self.i_max)
         return self.FORMS[key](ar, self.h, self.d, ar.indices(self.i_min, self.i_max), self.shift)
 
     def largest(self, key: str, built: Array, images: GaussImages) -> float | None:
@@ -565,3 +582,86 @@ def _scaled(ar: Arithmetic, residuals: Array, scale: Array) -> Array:
 
 
 _ball_minimum: Any = np.frompyfunc(lambda a, b: a.min(b), 2, 1)
+
+
+def _poles(contact: Array) -> Array:
+    """m_i on balls: the intersection of the tangents at ñ_{i−1} and ñ_i (rows of ``contact``),
+    the solution x of x·ñ_{i−1} = 1, x·ñ_i = 1 for unit vectors a, b: (a + b)/(1 + a·b).
+
+    The same point as ``gauss_image.circumscribed`` (on the bisector at distance 1/cos(δ/2):
+    |a + b| = 2cos(δ/2), 1 + a·b = 2cos²(δ/2)), without its two atan2, two cos and a sin per
+    vertex; parallel edges give ñ_i, and 1 + a·b ≥ 1 for turning angles up to π/2.
+    """
+    a, b = contact[:-1], contact[1:]
+    total = a + b
+    denominator = 1 + (a[:, 0] * b[:, 0] + a[:, 1] * b[:, 1])
+    return stack_points(total[:, 0] / denominator, total[:, 1] / denominator)
+
+
+class _BallHyperbolic:
+    """tanh and sech of t = (i + τ)L and of u = t − L/2 for i = lo .. hi, on balls, from one
+    exponential per index: with E = e^t, tanh t = 1 − 2/(E² + 1), sech t = 2/(E + 1/E)
+    (``_tanh_sech``), and e^u = E·√((h − d)/(h + d)) (e^{−L/2}, L = ln((h + d)/(h − d))). The
+    closed forms (18)–(20) and their printed versions (``kinematic_closed_forms``: the same
+    rewritings of the power forms) are read off these; each of them took a cosh and a tanh of
+    its own."""
+
+    def __init__(self, ar: Arithmetic, h: Scalar, d: Scalar, shift: Scalar, lo: int, hi: int):
+        self.lo, self.hi, self.h, self.d = lo, hi, h, d
+        t = (ar.indices(lo, hi) + shift) * kinematic_closed_forms.log_ratio(ar, h, d)
+        e = ar.exp(t)
+        self.tanh_t, self.sech_t = self._tanh_sech(e)
+        self.tanh_u, self.sech_u = self._tanh_sech(e * ar.sqrt((h - d) / (h + d)))
+        self.amplitude = h / ar.sqrt((h - d) * (h + d))  # h/√(h² − d²): m_i^y = h / p_i^y
+
+    @staticmethod
+    def _tanh_sech(e: Array) -> tuple[Array, Array]:
+        """(tanh, sech) = (1 − 2/(E² + 1), 2/(E + 1/E)): written so that the balls' radii stay
+        near those of a tanh and a 1/cosh (the quotient (E² − 1)/(E² + 1) would carry E²'s
+        relative radius twice into a value near ±1)."""
+        return 1 - 2 / (e * e + 1), 2 / (e + 1 / e)
+
+    def _rows(self, a: int, b: int) -> slice:
+        return slice(a - self.lo, b - self.lo + 1)
+
+    def tractrix_gauss_image(self, a: int, b: int) -> Array:
+        """(18) corrected: (sech t, tanh t)."""
+        rows = self._rows(a, b)
+        return stack_points(self.sech_t[rows], self.tanh_t[rows])
+
+    def contact_points(self, a: int, b: int) -> Array:
+        """(19) corrected: (−tanh t, sech t)."""
+        rows = self._rows(a, b)
+        return stack_points(-self.tanh_t[rows], self.sech_t[rows])
+
+    def circumscribed_gauss_image(self, a: int, b: int) -> Array:
+        """(20) corrected: (−tanh u, h sech u / √(h² − d²))."""
+        rows = self._rows(a, b)
+        return stack_points(-self.tanh_u[rows], self.amplitude * self.sech_u[rows])
+
+    def printed(self, key: str, a: int, b: int) -> Array:
+        """The printed (18), (19) or (20) (``PrintedForms.FORMS``) on a .. b."""
+        rows = self._rows(a, b)
+        tanh, sech = self.tanh_t[rows], self.sech_t[rows]
+        if key == "18":
+            return stack_points(sech, -tanh)
+        if key == "19":
+            return stack_points(tanh, sech)
+        denominator = self.h + self.d * tanh
+        return stack_points((self.h * tanh - self.d) / denominator, self.h * sech / denominator)
+
+
+def _ball_hyperbolic(
+    ar: Arithmetic, h: Scalar, d: Scalar, shift: Scalar, lo: int, hi: int
+) -> _BallHyperbolic:
+    """The table of ``_BallHyperbolic`` covering lo .. hi for these h, d, τ, made once per
+    computation (kept on the arithmetic, keyed by the balls' decimal forms): the Gauss images'
+    closed forms and the printed forms read the same one."""
+    tables: dict[tuple[str, str, str], _BallHyperbolic] = ar.__dict__.setdefault(
+        "_d4b_hyperbolic", {}
+    )
+    key = (str(h), str(d), str(shift))
+    table = tables.get(key)
+    if table is None or table.lo > lo or table.hi < hi:
+        table = tables[key] = _BallHyperbolic(ar, h, d, shift, lo, hi)
+    return table
