@@ -67,6 +67,12 @@ def _bind(library: Any) -> dict[str, Any] | None:
         "mag_is_zero": (ctypes.c_int, [pointer]),
         "mag_is_finite": (ctypes.c_int, [pointer]),
         "arf_get_d": (ctypes.c_double, [pointer, ctypes.c_int]),
+        "arb_sub": (None, [pointer, pointer, pointer, word]),
+        "arb_add": (None, [pointer, pointer, pointer, word]),
+        "arb_mul": (None, [pointer, pointer, pointer, word]),
+        "arb_sqrt": (None, [pointer, pointer, word]),
+        "arb_nonnegative_part": (None, [pointer, pointer]),
+        "arb_gt": (ctypes.c_int, [pointer, pointer]),
         "_arb_vec_init": (pointer, [word]),
         "_arb_vec_clear": (None, [pointer, word]),
     }
@@ -206,6 +212,49 @@ if _FUNCTIONS is not None:
                 largest_relative = k
         return largest, largest_relative, reaches_zero, False
 
+    _sub = _FUNCTIONS["arb_sub"]
+    _add = _FUNCTIONS["arb_add"]
+    _mul = _FUNCTIONS["arb_mul"]
+    _sqrt = _FUNCTIONS["arb_sqrt"]
+    _nonnegative = _FUNCTIONS["arb_nonnegative_part"]
+    _gt = _FUNCTIONS["arb_gt"]
+
+    @numba.njit(cache=False)
+    def _hypot(out: int, x: int, y: int, prec: int, square: int) -> None:
+        """out = sqrt(nonnegative part of x·x + y·y), as ``Ball.hypot`` (``square``: scratch)."""
+        _mul(square, x, x, prec)
+        _mul(out, y, y, prec)
+        _add(square, square, out, prec)
+        _nonnegative(square, square)
+        _sqrt(out, square, prec)
+
+    @numba.njit(cache=False)
+    def _hypots(xs: Any, ys: Any, out: Any, prec: int, square: int) -> None:
+        """``_hypot`` entry by entry into the balls at ``out``."""
+        for k in range(out.shape[0]):
+            _hypot(out[k], xs[k], ys[k], prec, square)
+
+    @numba.njit(cache=False)
+    def _relative_point_difference(
+        computed: Any, expected: Any, tiny: int, out: Any, work: int, low: int, scratch: int
+    ) -> None:
+        """``checks.relative_point_difference`` row by row into the balls at ``out``: the
+        differences at ``work`` bits, the lengths and the quotient at ``low``."""
+        dx, dy, square = scratch, scratch + ARB_BYTES, scratch + 2 * ARB_BYTES
+        scale, length = scratch + 3 * ARB_BYTES, scratch + 4 * ARB_BYTES
+        for k in range(out.shape[0]):
+            cx, cy, ex, ey = (
+                computed[2 * k],
+                computed[2 * k + 1],
+                expected[2 * k],
+                expected[2 * k + 1],
+            )
+            _sub(dx, cx, ex, work)
+            _sub(dy, cy, ey, work)
+            _hypot(scale, ex, ey, low, square)
+            _hypot(length, dx, dy, low, square)
+            _div(out[k], length, scale if _gt(scale, tiny) else tiny, low)
+
     _vec_init = _FUNCTIONS["_arb_vec_init"]
     _vec_clear = _FUNCTIONS["_arb_vec_clear"]
 
@@ -245,3 +294,34 @@ def largest_radii(x: np.ndarray[Any, Any], y: np.ndarray[Any, Any]) -> tuple[int
             addresses(x), addresses(y), flint.ctx.prec, scratch
         )
     return int(largest), int(relative), bool(reaches_zero), bool(unbounded)
+
+
+def relative_point_difference(
+    computed: np.ndarray[Any, Any], expected: np.ndarray[Any, Any], tiny: Any, low: int
+) -> np.ndarray[Any, Any]:
+    """``checks.relative_point_difference`` of two ``(n, 2)`` arrays of balls in one compiled
+    pass: the same libflint operations at the same precisions (the differences at the working
+    precision, the rest at ``low`` bits), so the same balls. The results are written into fresh
+    balls made by negating a column (numpy's loop: one allocation each, no conversion), which
+    nothing else references yet."""
+    out = np.negative(expected[:, 0])
+    with _Scratch(5) as scratch:
+        _relative_point_difference(
+            addresses(computed),
+            addresses(expected),
+            id(tiny) + OFFSET,
+            addresses(out),
+            flint.ctx.prec,
+            low,
+            scratch,
+        )
+    return out
+
+
+def hypot(x: np.ndarray[Any, Any], y: np.ndarray[Any, Any]) -> np.ndarray[Any, Any]:
+    """``Ball.hypot`` of two equal-length 1-d arrays of balls in one compiled pass (the same
+    operations: the same balls), into fresh balls as ``relative_point_difference``."""
+    out = np.negative(x)
+    with _Scratch(1) as scratch:
+        _hypots(addresses(x), addresses(y), addresses(out), flint.ctx.prec, scratch)
+    return out

@@ -118,11 +118,15 @@ class Ball(Arithmetic):
         # a ball around 0 squared reaches below 0: keep the part >= 0 (it holds the exact value)
         nonnegative = np.frompyfunc(flint.arb.nonnegative_part, 1, 1)
         sqrt = np.frompyfunc(flint.arb.sqrt, 1, 1)
-        self.hypot = lambda x, y: (
-            sqrt(nonnegative(x * x + y * y))
-            if isinstance(x, np.ndarray) or isinstance(y, np.ndarray)
-            else _ball_hypot(self.scalar(x), self.scalar(y))
-        )
+
+        def hypot(x: Any, y: Any) -> Any:
+            if isinstance(x, np.ndarray) or isinstance(y, np.ndarray):
+                if _compiled_pair(x, y):
+                    return arb_loops.hypot(x, y)  # one pass, the same balls
+                return sqrt(nonnegative(x * x + y * y))
+            return _ball_hypot(self.scalar(x), self.scalar(y))
+
+        self.hypot = hypot
 
     @contextmanager
     def recursion(self) -> Iterator[None]:
@@ -374,6 +378,21 @@ def _ball_maximum(a: Any, b: Any) -> Any:
 
 _ABS_UPPER: Any = np.frompyfunc(flint.arb.abs_upper, 1, 1)
 _ABS_LOWER: Any = np.frompyfunc(flint.arb.abs_lower, 1, 1)
+
+
+def _compiled_pair(x: Any, y: Any) -> bool:
+    """Whether x and y are equal-length 1-d object arrays of balls (``arb_loops``)."""
+    return (
+        arb_loops.AVAILABLE
+        and isinstance(x, np.ndarray)
+        and isinstance(y, np.ndarray)
+        and x.dtype == object
+        and y.dtype == object
+        and x.ndim == y.ndim == 1
+        and len(x) == len(y) > 0
+        and arb_loops.all_balls(x)
+        and arb_loops.all_balls(y)
+    )
 
 
 def _largest_abs(values: Array, upward: bool) -> Any:

@@ -8,7 +8,7 @@ import flint
 import numpy as np
 import pytest
 
-from app.geometry import arb_loops, balls
+from app.geometry import arb_loops, balls, checks
 from app.geometry.ball_arithmetic import Ball
 
 pytestmark = pytest.mark.skipif(not arb_loops.AVAILABLE, reason="no bundled libflint")
@@ -73,3 +73,45 @@ def test_the_largest_radii_are_the_points() -> None:
         size = x[relative].abs_lower().max(y[relative].abs_lower())
         assert (radii[relative] / size).upper() == max(quotients)
         assert reaches_zero and not unbounded
+
+
+def test_relative_point_differences_are_the_same_balls() -> None:
+    rng = random.Random(5)
+    ar = Ball(50)
+
+    def points(count: int) -> np.ndarray:
+        out = np.empty((count, 2), dtype=object)
+        for k in range(count):
+            out[k, 0] = flint.arb(rng.uniform(-3, 3)) / 7 + flint.arb(0, 1e-50)
+            out[k, 1] = flint.arb(rng.uniform(-3, 3)) / 3
+        return out
+
+    with balls.working_precision(ar.bits):
+        computed, expected = points(300), points(300)
+        expected[3] = [flint.arb(0), flint.arb(0)]  # the floor tiny
+        computed[4] = expected[4]  # a difference of the same balls
+        both = np.concatenate([computed, expected])
+        for c, e in ((computed, expected), (both[::2], both[1::2])):  # strided too
+            fast = checks.relative_point_difference(ar, c, e)
+            saved = arb_loops.AVAILABLE
+            arb_loops.AVAILABLE = False
+            try:
+                slow = checks.relative_point_difference(ar, c, e)
+            finally:
+                arb_loops.AVAILABLE = saved
+            assert all(
+                a.mid() == b.mid() and a.rad() == b.rad() for a, b in zip(fast, slow, strict=True)
+            )
+            assert len({id(v) for v in fast}) == len(fast)  # fresh balls, one each
+
+
+def test_hypot_gives_the_same_balls() -> None:
+    ar = Ball(30)
+    with balls.working_precision(ar.bits):
+        x, y = _balls(500, 7), _balls(500, 8)
+        x[2], y[2] = flint.arb(0, 1e-20), flint.arb(0, 1e-21)  # the sum reaches below 0
+        fast = ar.hypot(x, y)
+        slow = [(a * a + b * b).nonnegative_part().sqrt() for a, b in zip(x, y, strict=True)]
+        assert all(
+            a.mid() == b.mid() and a.rad() == b.rad() for a, b in zip(fast, slow, strict=True)
+        )
