@@ -655,12 +655,10 @@ def _ball_hyperbolic(
     ar: Arithmetic, h: Scalar, d: Scalar, shift: Scalar, lo: int, hi: int
 ) -> _BallHyperbolic:
     """The table of ``_BallHyperbolic`` covering lo .. hi for these h, d, τ, made once per
-    computation (kept on the arithmetic, keyed by the balls' decimal forms): the Gauss images'
-    closed forms and the printed forms read the same one."""
-    tables: dict[tuple[str, str, str], _BallHyperbolic] = ar.__dict__.setdefault(
-        "_d4b_hyperbolic", {}
-    )
-    key = (str(h), str(d), str(shift))
+    computation (kept on the arithmetic, keyed by the balls' exact midpoints and radii): the
+    Gauss images' closed forms and the printed forms read the same one."""
+    tables: dict[tuple[Any, ...], _BallHyperbolic] = ar.__dict__.setdefault("_d4b_hyperbolic", {})
+    key = tuple(part for x in (h, d, shift) for part in (x.mid().man_exp(), x.rad().man_exp()))
     table = tables.get(key)
     if table is None or table.lo > lo or table.hi < hi:
         table = tables[key] = _BallHyperbolic(ar, h, d, shift, lo, hi)
