@@ -452,8 +452,10 @@ def evaluate(
     # ñ and m come from the edges of p, which the stored vertices resolve only to eps times
     # |p_i| + |p_{i+1}| (coordinates summed): residuals of quantities built from edge directions
     # are scaled by the resolution |e_i| / (|p_i| + |p_{i+1}|) <= 1 (docs/checks.md)
+    p_edges = _Edges(p)  # mp: p's edges and their sizes, made once when first used
+
     def resolution() -> Array:  # edges i_min .. i_max (p_i p_{i+1})
-        return shared("resolution", lambda: _edge_resolution(ar, p))
+        return shared("resolution", lambda: _edge_resolution(ar, p, p_edges))
 
     def pole_resolution() -> Array:
         def make() -> Array:
@@ -472,13 +474,11 @@ def evaluate(
         if ar.mode == "float64":  # the same numbers in one pass, the largest alone
             worst = residual_kernels.largest_along_printed_slope(min(n, len(p) - 1), p)
             return Erratum(*ERRATUM_18_SLOPE, printed_residual=worst)
-        edges = p[1:] - p[:-1]
+        edges = p_edges.edges
         slope = edges[:, 1] / edges[:, 0]  # k_{i+1} of the edge p_i p_{i+1}, eq. (12)
         slope_printed = kinematic_closed_forms.normal_from_slope_printed(ar, slope)
-        return Erratum(
-            *ERRATUM_18_SLOPE,
-            printed_residual=printed_residual(ar, _along(ar, slope_printed[:n], p[: n + 1])),
-        )
+        along = _along(ar, slope_printed[:n], p[: n + 1], p_edges)
+        return Erratum(*ERRATUM_18_SLOPE, printed_residual=printed_residual(ar, along))
 
     def rotation() -> Check:
         rotated = stack_points(-nt()[:, 1], nt()[:, 0])
@@ -513,7 +513,10 @@ def evaluate(
         (
             EQUATION_18_SLOPE,
             lambda: check(
-                EQUATION_18_SLOPE, _along(ar, nt()[:n], p[: n + 1]), n_tolerance, slope_erratum()
+                EQUATION_18_SLOPE,
+                _along(ar, nt()[:n], p[: n + 1], p_edges),
+                n_tolerance,
+                slope_erratum(),
             ),
         ),
         (
@@ -549,25 +552,48 @@ def _first(residuals: Any, n: int) -> Any:
     return residuals if isinstance(residuals, Largest) else residuals[:n]
 
 
-def _edge_resolution(ar: Arithmetic, points: Array) -> Array:
-    """|p_{i+1} − p_i| / (|p_i| + |p_{i+1}|) per edge (coordinates summed): at most 1."""
+class _Edges:
+    """mp: the edges p_{i+1} − p_i of a polygon and their sizes |p_i| + |p_{i+1}| (coordinates
+    summed), each computed once for the checks that use them (``_along``, ``_edge_resolution``)."""
+
+    def __init__(self, points: Array) -> None:
+        self.points = points
+
+    @cached_property
+    def edges(self) -> Array:
+        return self.points[1:] - self.points[:-1]
+
+    @cached_property
+    def size(self) -> Array:
+        return magnitude(self.points[:-1], self.points[1:])
+
+
+def _edge_resolution(ar: Arithmetic, points: Array, shared: _Edges | None = None) -> Array:
+    """|p_{i+1} − p_i| / (|p_i| + |p_{i+1}|) per edge (coordinates summed): at most 1.
+
+    ``shared``: the edges and sizes of ``points`` already made (mp)."""
     if ar.mode == "float64":  # one compiled pass (the length within 2 ulp of hypot)
         return residual_kernels.edge_resolution(points)
-    edges = points[1:] - points[:-1]
-    return ar.hypot(edges[:, 0], edges[:, 1]) / magnitude(points[:-1], points[1:])
+    made = shared if shared is not None else _Edges(points)
+    edges = made.edges
+    return ar.hypot(edges[:, 0], edges[:, 1]) / made.size
 
 
-def _along(ar: Arithmetic, vectors: Array, points: Array) -> Array:
+def _along(ar: Arithmetic, vectors: Array, points: Array, shared: _Edges | None = None) -> Array:
     """How far unit vectors v_i are from pointing along the edges p_i p_{i+1}.
 
     |v_i × e_i| / (|p_i| + |p_{i+1}|), or 1 where v_i points against the edge: 0 when v_i is
     the unit vector of the edge's direction (the line of slope k_{i+1} through the centre).
+    ``shared``: the edges and sizes of a polygon whose first len(points) vertices are
+    ``points`` (mp).
     """
     if ar.mode == "float64":  # the same operations in one compiled pass
         return residual_kernels.along(vectors, points)
-    edges = points[1:] - points[:-1]
+    count = len(points) - 1
+    made = shared if shared is not None else _Edges(points)
+    edges = made.edges[:count]
     crossed = abs(vectors[:, 0] * edges[:, 1] - vectors[:, 1] * edges[:, 0])
-    residual = crossed / magnitude(points[:-1], points[1:])
+    residual = crossed / made.size[:count]
     backwards = vectors[:, 0] * edges[:, 0] + vectors[:, 1] * edges[:, 1] < 0
     return np.where(backwards, ar.scalar(1), residual)
 
