@@ -1,34 +1,35 @@
-"""Compiled reductions over numpy object arrays of python-flint ``arb`` balls.
+"""Compiled passes over numpy object arrays of python-flint ``arb`` balls.
 
 A reduction on balls in Python (the largest upper bound of 1000 residuals, the largest radius
 of 7000 certificate points) costs one or more Python calls per entry, each allocating a ball for
 an intermediate (``abs_upper``, ``rad``, ``abs_lower``, a quotient, ``upper``) only to compare it
 and drop it. Here the same libflint functions run in a numba loop straight on the balls' own
 ``arb_struct`` (python-flint stores it inside each ``arb`` object, at the end of its fixed-size
-layout), with two scratch balls allocated and freed by flint around the loop, and the loop
-returns the *index* of the winning entry. The caller computes the value from that one entry
-with python-flint, so the numbers reported are those of the Python reduction it replaces: the
-keys compared here are the same libflint functions at the same precision.
+layout), with scratch balls allocated and freed by flint around the loop, and a reduction
+returns the *index* of the winning entry: the caller computes the value from that one entry
+with python-flint, so the numbers reported are those of the Python reduction it replaces (the
+keys compared here are the same libflint functions at the same precision). Two elementwise
+passes (``hypot``, ``relative_point_difference``) make the same libflint calls as the numpy
+code they replace, at the same precisions, into fresh balls that nothing else references yet
+(made by numpy's negation loop): the same balls, without a Python call per operation.
 
-libflint is the one bundled with python-flint's wheel (``python_flint.libs/libflint-<hash>.so``,
-the hash changing between builds: found by pattern), loaded with ctypes; the layout is checked
-once against known balls before anything is read through it. Where either is not as expected
-(another python-flint build, a platform without the bundled library), ``AVAILABLE`` is false and
-the callers keep their Python reductions. The loops only read the balls: nothing python-flint
-owns is written, and the entries stay referenced by the caller's array during the call.
+libflint is the one python-flint's wheel bundles and its ``arb`` module links, reached through
+that module's handle with ctypes (the bundled file's name carries a build hash); the layout is
+checked once against known balls before anything is read through it. Where either is not as
+expected (another python-flint build), ``AVAILABLE`` is false and the callers keep their numpy
+code. The input balls are only read, and stay referenced by the caller's arrays during a call.
 
 Compiled on first use (a ctypes function's address differs between processes, so numba cannot
-cache these loops on disk): about a second once per process, before the first mp reduction.
+cache these loops on disk): about a second once per process, before the first mp computation.
 """
 
 from __future__ import annotations
 
 import ctypes
-import glob
-import os
 from typing import Any
 
 import flint
+import flint.types.arb as flint_arb_module
 import numba
 import numpy as np
 
@@ -39,15 +40,16 @@ RADIUS_OFFSET = 32
 
 
 def _library() -> Any:
-    """python-flint's bundled libflint, or None."""
-    site = os.path.dirname(os.path.dirname(os.path.abspath(flint.__file__)))
-    candidates = sorted(glob.glob(os.path.join(site, "python_flint.libs", "libflint*.so*")))
-    for path in candidates:
-        try:
-            return ctypes.CDLL(path)
-        except OSError:
-            continue
-    return None
+    """libflint as python-flint's ``arb`` extension module links it, or None.
+
+    The module's own handle: the dynamic linker looks a symbol up in the module and then in the
+    libraries it was loaded with, so libflint's functions are found whatever the bundled file
+    is called (``python_flint.libs/libflint-<hash>.so`` in the wheel), with nothing searched.
+    """
+    try:
+        return ctypes.CDLL(flint_arb_module.__file__)
+    except (OSError, TypeError):
+        return None
 
 
 def _bind(library: Any) -> dict[str, Any] | None:
