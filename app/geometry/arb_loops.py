@@ -19,8 +19,8 @@ checked once against known balls before anything is read through it. Where eithe
 expected (another python-flint build), ``AVAILABLE`` is false and the callers keep their numpy
 code. The input balls are only read, and stay referenced by the caller's arrays during a call.
 
-Compiled on first use (a ctypes function's address differs between processes, so numba cannot
-cache these loops on disk): about a second once per process, before the first mp computation.
+Compiled at import (a ctypes function's address differs between processes, so numba cannot
+cache these loops on disk): about a second once per process, so that no request pays for it.
 """
 
 from __future__ import annotations
@@ -327,3 +327,19 @@ def hypot(x: np.ndarray[Any, Any], y: np.ndarray[Any, Any]) -> np.ndarray[Any, A
     with _Scratch(1) as scratch:
         _hypots(addresses(x), addresses(y), addresses(out), flint.ctx.prec, scratch)
     return out
+
+
+def _warm() -> None:
+    """Compile every loop now, at import (about a second), so that no request pays for it."""
+    x = np.empty(2, dtype=object)
+    x[:] = [flint.arb(1) / 3, flint.arb(-2)]
+    points = np.empty((2, 2), dtype=object)
+    points[:, 0], points[:, 1] = x, x[::-1]
+    argmax_abs(x, True)
+    largest_radii(x, x[::-1])
+    hypot(x, x[::-1])
+    relative_point_difference(points, points[::-1], flint.arb(1), 64)
+
+
+if AVAILABLE:
+    _warm()
