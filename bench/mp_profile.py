@@ -7,13 +7,15 @@ pays for the shared quantities it is the first to need (the fits (D1), (D3), (2)
 curvatures with Section 5, which is evaluated as one block). For each: its CPU time and the
 elementwise operations on ``arb`` object arrays per vertex, counted by a numpy subclass that sees
 every ufunc call (``+ − × ÷``, ``abs``, comparisons, reductions, and ``Ball``'s functions; a
-hypot counts as its ×, +, part ≥ 0 and √), plus the float conversions of residuals.
+hypot counts as its ×, +, part ≥ 0 and √), plus the float conversions of residuals; apart, the
+libflint calls made in ``arb_loops``' compiled loops (``compiled``: no Python call each).
 
 The floor: the operations counted times the cost of the cheapest one (a negation or a
 comparison at the checks' working precision, measured here: a Python call on an ``arb``, since
 python-flint 0.9 has no elementwise vector type), plus the square roots and transcendental
-functions at their own cost. No rewrite of the arithmetic below these definitions of the checks
-gets under it; only fewer operations do.
+functions at their own cost, plus the time the compiled loops took (their libflint calls, no
+Python call each). No rewrite of the arithmetic below these definitions of the checks gets
+under it; only fewer operations do.
 """
 
 from __future__ import annotations
@@ -32,7 +34,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from app.geometry import balls
+from app.geometry import arb_loops, balls
 from app.geometry.ball_arithmetic import Ball
 from app.geometry.curve import EVERYTHING
 from app.geometry.d4b import (
@@ -85,8 +87,33 @@ def _counted(value: Any) -> Any:
     return value
 
 
+#: CPU seconds spent inside the compiled loops (the counted run).
+COMPILED_SECONDS: list[float] = []
+
+#: libflint calls per entry of each compiled loop of ``arb_loops`` (counted as "compiled").
+COMPILED = {
+    "relative_point_difference": 15,  # two differences, two hypot (5 each), a test, a quotient
+    "hypot": 5,
+    "argmax_abs": 2,  # the bound and a comparison
+    "largest_radii": 10,
+}
+
+
 def _instrument() -> None:
-    """Every object array ``Ball`` makes, and every polygon of the construction, counted."""
+    """Every object array ``Ball`` makes, and every polygon of the construction, counted; the
+    entries of ``arb_loops``' compiled loops counted apart (``compiled``, libflint calls)."""
+    for name, calls in COMPILED.items():
+        loop = getattr(arb_loops, name)
+
+        def counted_loop(*arguments: Any, _loop: Any = loop, _calls: int = calls) -> Any:
+            COUNTS["compiled"] += _calls * len(np.asarray(arguments[0]))
+            start = time.process_time()
+            try:
+                return _loop(*arguments)
+            finally:
+                COMPILED_SECONDS.append(time.process_time() - start)
+
+        setattr(arb_loops, name, counted_loop)
     for name in ("array", "indices", "zeros", "empty"):
         method = getattr(Ball, name)
         setattr(Ball, name, lambda self, *a, _m=method: _counted(_m(self, *a)))
@@ -120,6 +147,10 @@ def _timed(function: Callable[[], object]) -> tuple[float, dict[str, int]]:
     return time.process_time() - start, dict(COUNTS)
 
 
+_SQRT: Any = np.frompyfunc(flint.arb.sqrt, 1, 1)
+_COSH: Any = np.frompyfunc(flint.arb.cosh, 1, 1)
+
+
 def _unit_costs(bits: int) -> list[dict[str, float]]:
     """Seconds per entry of arb operations on 1000 entries at ``bits``, each set of them
     measured right after a run of the script (``"script"``, seconds): 15 pairs, so that a
@@ -127,12 +158,15 @@ def _unit_costs(bits: int) -> list[dict[str, float]]:
     with balls.working_precision(bits):
         x = [flint.arb(k) / 7 + flint.arb(1) / 3 for k in range(1000)]
         y = [flint.arb(k) / 3 + flint.arb(2) for k in range(1000)]
+        xs, ys = np.empty(1000, dtype=object), np.empty(1000, dtype=object)
+        xs[:], ys[:] = x, y
         operations: dict[str, Callable[[], object]] = {
-            "product": lambda: [a * b for a, b in zip(x, y, strict=True)],
-            "negation": lambda: [-a for a in x],
-            "comparison": lambda: [a < b for a, b in zip(x, y, strict=True)],
-            "sqrt": lambda: [a.sqrt() for a in x],
-            "transcendental": lambda: [(a / 1000).cosh() for a in x],
+            # on object arrays through numpy's loops, as the checks run them
+            "product": lambda: xs * ys,
+            "negation": lambda: np.negative(xs),
+            "comparison": lambda: np.less(xs, ys),
+            "sqrt": lambda: _SQRT(xs),
+            "transcendental": lambda: _COSH(xs / 1000),
         }
         pairs = []
         for _ in range(15):
@@ -175,7 +209,9 @@ def _parts(ar: Ball) -> list[tuple[str, float, dict[str, int]]]:
             )
 
         rows.append(("Section 5 (9 statements, Gauss images)", *_timed(section_5)))
+        mark = len(COMPILED_SECONDS)
         curve = d4b.compute(ar, H, D, None, LO, HI, selection=EVERYTHING)
+        del COMPILED_SECONDS[mark:]  # the checks again, only for the curve: not counted twice
         rows.append(("certificate radii", *_timed(lambda: balls._radii(curve, DIGITS))))
     return rows
 
@@ -199,21 +235,26 @@ def main() -> None:
         f"construction at {ar.recursion_bits}); the script {script * 1e3:.1f} ms; load average "
         f"{os.getloadavg()[0]:.2f}"
     )
-    print(f"  {'part':<42} {'ms':>7} {'ops/vertex':>11} {'√':>5} {'transc.':>8} {'→ float':>8}")
-    total_ops = total_sqrt = total_transcendental = 0.0
+    print(
+        f"  {'part':<42} {'ms':>7} {'ops/vertex':>11} {'√':>5} {'transc.':>8} {'→ float':>8} "
+        f"{'compiled':>9}"
+    )
+    total_ops = total_sqrt = total_transcendental = total_compiled = 0.0
     total_time = 0.0
     for label, seconds, counts in rows:
         sqrt = counts.get("sqrt", 0) / n
         transcendental = sum(counts.get(name, 0) for name in TRANSCENDENTAL) / n
         conversions = (counts.get("to_floats", 0) + counts.get("lower_floats", 0)) / n
-        ops = sum(counts.values()) / n - conversions
+        compiled = counts.get("compiled", 0) / n
+        ops = sum(counts.values()) / n - conversions - compiled
         print(
             f"  {label:<42} {seconds * 1e3:7.1f} {ops:11.0f} {sqrt:5.0f} {transcendental:8.0f} "
-            f"{conversions:8.0f}"
+            f"{conversions:8.0f} {compiled:9.0f}"
         )
         total_time += seconds
         if label != "construction (recursion bits)":
             total_ops += ops
+            total_compiled += counts.get("compiled", 0) / n
             total_sqrt += sqrt
             total_transcendental += transcendental
     pairs = _unit_costs(ar.bits)
@@ -225,7 +266,9 @@ def main() -> None:
             + total_transcendental * costs["transcendental"]
         )
 
-    ratio = statistics.median(floor(costs) / costs["script"] for costs in pairs)
+    # the compiled loops at the time they took (no Python call per entry to take away)
+    compiled = sum(COMPILED_SECONDS) / script
+    ratio = statistics.median(floor(costs) / costs["script"] for costs in pairs) + compiled
     typical = {k: statistics.median(c[k] for c in pairs) for k in pairs[0]}
     print(
         f"  {'total':<42} {total_time * 1e3:7.1f} {total_ops:11.0f}   ({total_time / script:.1f}× "
@@ -235,7 +278,9 @@ def main() -> None:
         f"  floor of the checks and the certificate: {total_ops:.0f} operations a vertex, each at "
         f"least {typical['cheapest'] * 1e9:.0f} ns (a negation or a comparison; a product "
         f"{typical['product'] * 1e9:.0f} ns), √ at {typical['sqrt'] * 1e9:.0f} ns, "
-        f"transcendental functions at {typical['transcendental'] * 1e9:.0f} ns (medians): "
+        f"transcendental functions at {typical['transcendental'] * 1e9:.0f} ns (medians), and "
+        f"{total_compiled:.0f} libflint calls a vertex in compiled loops at the time they took "
+        f"({sum(COMPILED_SECONDS) * 1e3:.1f} ms, {compiled:.1f}× the script): "
         f"{ratio:.1f}× the script (median of 15 pairs, each floor over the script run next to "
         "it; target 5×)"
     )

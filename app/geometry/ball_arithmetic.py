@@ -17,6 +17,7 @@ import flint
 import numpy as np
 from mpmath.libmp import from_man_exp, to_str
 
+from app.geometry import arb_loops
 from app.geometry.errors import DomainError
 from app.geometry.exact import ExactReal
 from app.geometry.precision import (
@@ -117,11 +118,15 @@ class Ball(Arithmetic):
         # a ball around 0 squared reaches below 0: keep the part >= 0 (it holds the exact value)
         nonnegative = np.frompyfunc(flint.arb.nonnegative_part, 1, 1)
         sqrt = np.frompyfunc(flint.arb.sqrt, 1, 1)
-        self.hypot = lambda x, y: (
-            sqrt(nonnegative(x * x + y * y))
-            if isinstance(x, np.ndarray) or isinstance(y, np.ndarray)
-            else _ball_hypot(self.scalar(x), self.scalar(y))
-        )
+
+        def hypot(x: Any, y: Any) -> Any:
+            if isinstance(x, np.ndarray) or isinstance(y, np.ndarray):
+                if _compiled_pair(x, y):
+                    return arb_loops.hypot(x, y)  # one pass, the same balls
+                return sqrt(nonnegative(x * x + y * y))
+            return _ball_hypot(self.scalar(x), self.scalar(y))
+
+        self.hypot = hypot
 
     @contextmanager
     def recursion(self) -> Iterator[None]:
@@ -273,12 +278,18 @@ class Ball(Arithmetic):
         the largest |value| (a float array, of bounds converted already: its largest |value|)."""
         if values.dtype != object:
             return flint.arb(float(np.max(np.abs(values))) if len(values) else 0.0)
+        found = _largest_abs(values, True)
+        if found is not None:
+            return found
         return max(_ABS_UPPER(values.reshape(-1)), default=flint.arb(0))
 
     def largest_lower(self, values: Array) -> Any:
         """An exact number <= the largest |value| (0 for a float array: no lower bounds)."""
         if values.dtype != object:
             return flint.arb(0)
+        found = _largest_abs(values, False)
+        if found is not None:
+            return found
         return max(_ABS_LOWER(values.reshape(-1)), default=flint.arb(0))
 
     def upper(self, values: Array) -> float:
@@ -352,9 +363,51 @@ def _ball_hypot(x: Any, y: Any) -> Any:
     return (x * x + y * y).nonnegative_part().sqrt()
 
 
-_ball_maximum = np.frompyfunc(lambda a, b: flint.arb(a).max(b), 2, 1)
+_BALL_MAXIMUM: Any = np.frompyfunc(flint.arb.max, 2, 1)
+_ANY_MAXIMUM: Any = np.frompyfunc(lambda a, b: flint.arb(a).max(b), 2, 1)
+
+
+def _ball_maximum(a: Any, b: Any) -> Any:
+    """arb's max entry by entry: straight where the first operand's entries are balls (the
+    usual case: no copy of each), through a conversion of them otherwise."""
+    try:
+        return _BALL_MAXIMUM(a, b)
+    except TypeError:  # an entry of ``a`` is not an arb
+        return _ANY_MAXIMUM(a, b)
+
+
 _ABS_UPPER: Any = np.frompyfunc(flint.arb.abs_upper, 1, 1)
 _ABS_LOWER: Any = np.frompyfunc(flint.arb.abs_lower, 1, 1)
+
+
+def _compiled_pair(x: Any, y: Any) -> bool:
+    """Whether x and y are equal-length 1-d object arrays of balls (``arb_loops``)."""
+    return (
+        arb_loops.AVAILABLE
+        and isinstance(x, np.ndarray)
+        and isinstance(y, np.ndarray)
+        and x.dtype == object
+        and y.dtype == object
+        and x.ndim == y.ndim == 1
+        and len(x) == len(y) > 0
+        and arb_loops.all_balls(x)
+        and arb_loops.all_balls(y)
+    )
+
+
+def _largest_abs(values: Array, upward: bool) -> Any:
+    """The largest ``abs_upper`` (``upward``) or ``abs_lower`` of an object array of balls,
+    the entry found in a compiled loop (``arb_loops.argmax_abs``, the same bounds compared),
+    its bound computed here; None where the loop does not apply (then Python's ``max``)."""
+    if not arb_loops.AVAILABLE or not arb_loops.all_balls(values):
+        return None
+    flat = values.reshape(-1)
+    found = arb_loops.argmax_abs(flat, upward)
+    if found == -1:
+        return flint.arb(0)
+    if found < 0:
+        return None
+    return flat[found].abs_upper() if upward else flat[found].abs_lower()
 
 
 def upper_float(value: Any) -> float:

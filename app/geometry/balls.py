@@ -42,6 +42,7 @@ from typing import Any
 import flint
 import numpy as np
 
+from app.geometry import arb_loops
 from app.geometry.ball_arithmetic import Ball
 from app.geometry.curve import Curve
 from app.geometry.d4b import certified as d4b_certified
@@ -192,8 +193,10 @@ def _radii(curve: Curve, digits: int) -> tuple[str, str, bool]:
     """(largest radius, largest relative radius, whether every point is resolved), the radii
     as decimals rounded up; compared as exact arb numbers (radii underflow floats).
 
-    Entry by entry through numpy's loops over the object arrays (half the time of a Python
-    loop over the points: 7000 points at 50 digits took 20–25 ms).
+    The points with the largest radius and relative radius are found in a compiled loop over
+    the balls (``arb_loops.largest_radii``: 7000 points at 50 digits in about 1 ms, where numpy's
+    loops over the object arrays took 20–25 ms), their values computed from those points alone;
+    without it, entry by entry through numpy's loops.
     """
     limit = flint.arb(10) ** (-digits - 1)
     largest, relative = flint.arb(0), flint.arb(0)
@@ -201,6 +204,22 @@ def _radii(curve: Curve, digits: int) -> tuple[str, str, bool]:
         vertices = polyline.vertices
         if not len(vertices):
             continue
+        if arb_loops.AVAILABLE and arb_loops.all_balls(vertices):
+            # the winning points found in a compiled loop, their values computed as below
+            at_largest, at_relative, reaches_zero, unbounded = arb_loops.largest_radii(
+                vertices[:, 0], vertices[:, 1]
+            )
+            if not unbounded:
+                if at_largest >= 0:
+                    x, y = vertices[at_largest]
+                    largest = largest.max(x.rad().max(y.rad()))
+                if reaches_zero:
+                    relative = flint.arb("inf")
+                if at_relative >= 0:
+                    x, y = vertices[at_relative]
+                    size = x.abs_lower().max(y.abs_lower())
+                    relative = relative.max((x.rad().max(y.rad()) / size).upper())
+                continue
         radii = _RADIUS(vertices)
         radius = _LARGER(radii[:, 0], radii[:, 1])  # exact numbers: max is exact
         inexact = np.flatnonzero([not r.is_zero() for r in radius])

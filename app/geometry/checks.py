@@ -14,9 +14,16 @@ from dataclasses import dataclass
 from decimal import Decimal
 from typing import Any
 
+import flint
 import numpy as np
 
-from app.geometry.ball_arithmetic import decimal_ball, decimal_bound, decimal_tolerance
+from app.geometry import arb_loops
+from app.geometry.ball_arithmetic import (
+    RESIDUAL_BITS,
+    decimal_ball,
+    decimal_bound,
+    decimal_tolerance,
+)
 from app.geometry.precision import Arithmetic, Array
 
 ERRATA_DOCUMENT = "docs/errata.md"
@@ -272,14 +279,31 @@ def relative_point_difference(ar: Arithmetic, computed: Array, expected: Array) 
     """``|computed_i - expected_i| / max(|expected_i|, tiny)`` for ``(n, 2)`` point arrays.
 
     The differences at the working precision; on balls the lengths and the quotient, which
-    only round a result reported as a float, at ``Arithmetic.residual_precision``.
+    only round a result reported as a float, at ``Arithmetic.residual_precision`` (in one
+    compiled pass, ``arb_loops.relative_point_difference``: the same balls).
     """
+    if _compiled_balls(ar, computed, expected):  # one pass
+        low = min(flint.ctx.prec, RESIDUAL_BITS)
+        with ar.residual_precision():  # the floor's ball as below
+            tiny = ar.scalar(np.finfo(np.float64).tiny)
+        return arb_loops.relative_point_difference(computed, expected, tiny, low)
     dx, dy = computed[:, 0] - expected[:, 0], computed[:, 1] - expected[:, 1]
     with ar.residual_precision():
         scale = ar.hypot(expected[:, 0], expected[:, 1])
         tiny = ar.scalar(np.finfo(np.float64).tiny)
         scale = np.where(scale > tiny, scale, tiny)
         return ar.hypot(dx, dy) / scale
+
+
+def _compiled_balls(ar: Arithmetic, computed: Array, expected: Array) -> bool:
+    """Whether two ``(n, 2)`` arrays are balls for ``arb_loops``' compiled pass."""
+    return (
+        ar.certified
+        and arb_loops.AVAILABLE
+        and len(computed) == len(expected) > 0
+        and arb_loops.all_balls(computed)
+        and arb_loops.all_balls(expected)
+    )
 
 
 def printed_residual(ar: Arithmetic, residuals: Array) -> float | Decimal | None:

@@ -188,6 +188,13 @@ def build(
     ``tractrix_hull``. Without (method=closed-form) the closed forms are used.
     """
     i = ar.indices(i_min, i_max + 1)
+    if ar.certified:  # balls: from one exponential per index (``_BallHyperbolic``)
+        table = _ball_hyperbolic(ar, h, d, shift, i_min - 1, i_max + 1)
+        closed_on_balls: dict[str, Callable[[GaussImages], Array]] = {
+            "closed_tractrix_gauss": lambda _: table.tractrix_gauss_image(i_min, i_max + 1),
+            "closed_gauss": lambda _: table.circumscribed_gauss_image(i_min, i_max + 1),
+            "closed_contact": lambda _: table.contact_points(i_min - 1, i_max + 1),
+        }
     closed: dict[str, Callable[[GaussImages], Array]] = {
         "closed_tractrix_gauss": lambda _: kinematic_closed_forms.tractrix_gauss_image(
             ar, h, d, i, shift
@@ -199,6 +206,8 @@ def build(
             ar, h, d, ar.indices(i_min - 1, i_max + 1), shift
         ),
     }
+    if ar.certified:
+        closed = closed_on_balls
     if tractrix_hull is None or first_direction is None or p_extended is None:
         before = kinematic_closed_forms.hyperbolic_cosine(
             ar, h, d, ar.indices(i_min - 1, i_min), shift
@@ -231,7 +240,12 @@ def build(
             **closed,
             "tractrix_gauss": lambda _: stack_points(directions[window, 1], -directions[window, 0]),
             "contact": lambda _: gauss_image.contact_points(ar, p_extended),
-            "gauss": lambda _: gauss_image.circumscribed(ar, p_extended),
+            "gauss": (
+                # balls: the tangents at ñ_{i−1}, ñ_i intersected algebraically (``_poles``)
+                (lambda images: _poles(images.contact))
+                if ar.certified
+                else (lambda _: gauss_image.circumscribed(ar, p_extended))
+            ),
         },
         p_extended[:2],
     )
@@ -272,6 +286,9 @@ class PrintedForms:
 
     def __call__(self, key: str) -> Array:
         ar = self.ar
+        if ar.certified:  # balls: from one exponential per index (``_BallHyperbolic``)
+            table = _ball_hyperbolic(ar, self.h, self.d, self.shift, self.i_min, self.i_max)
+            return table.printed(key, self.i_min, self.i_max)
         return self.FORMS[key](ar, self.h, self.d, ar.indices(self.i_min, self.i_max), self.shift)
 
     def largest(self, key: str, built: Array, images: GaussImages) -> float | None:
@@ -435,8 +452,10 @@ def evaluate(
     # ñ and m come from the edges of p, which the stored vertices resolve only to eps times
     # |p_i| + |p_{i+1}| (coordinates summed): residuals of quantities built from edge directions
     # are scaled by the resolution |e_i| / (|p_i| + |p_{i+1}|) <= 1 (docs/checks.md)
+    p_edges = _Edges(p)  # mp: p's edges and their sizes, made once when first used
+
     def resolution() -> Array:  # edges i_min .. i_max (p_i p_{i+1})
-        return shared("resolution", lambda: _edge_resolution(ar, p))
+        return shared("resolution", lambda: _edge_resolution(ar, p, p_edges))
 
     def pole_resolution() -> Array:
         def make() -> Array:
@@ -455,13 +474,11 @@ def evaluate(
         if ar.mode == "float64":  # the same numbers in one pass, the largest alone
             worst = residual_kernels.largest_along_printed_slope(min(n, len(p) - 1), p)
             return Erratum(*ERRATUM_18_SLOPE, printed_residual=worst)
-        edges = p[1:] - p[:-1]
+        edges = p_edges.edges
         slope = edges[:, 1] / edges[:, 0]  # k_{i+1} of the edge p_i p_{i+1}, eq. (12)
         slope_printed = kinematic_closed_forms.normal_from_slope_printed(ar, slope)
-        return Erratum(
-            *ERRATUM_18_SLOPE,
-            printed_residual=printed_residual(ar, _along(ar, slope_printed[:n], p[: n + 1])),
-        )
+        along = _along(ar, slope_printed[:n], p[: n + 1], p_edges)
+        return Erratum(*ERRATUM_18_SLOPE, printed_residual=printed_residual(ar, along))
 
     def rotation() -> Check:
         rotated = stack_points(-nt()[:, 1], nt()[:, 0])
@@ -496,7 +513,10 @@ def evaluate(
         (
             EQUATION_18_SLOPE,
             lambda: check(
-                EQUATION_18_SLOPE, _along(ar, nt()[:n], p[: n + 1]), n_tolerance, slope_erratum()
+                EQUATION_18_SLOPE,
+                _along(ar, nt()[:n], p[: n + 1], p_edges),
+                n_tolerance,
+                slope_erratum(),
             ),
         ),
         (
@@ -532,25 +552,48 @@ def _first(residuals: Any, n: int) -> Any:
     return residuals if isinstance(residuals, Largest) else residuals[:n]
 
 
-def _edge_resolution(ar: Arithmetic, points: Array) -> Array:
-    """|p_{i+1} − p_i| / (|p_i| + |p_{i+1}|) per edge (coordinates summed): at most 1."""
+class _Edges:
+    """mp: the edges p_{i+1} − p_i of a polygon and their sizes |p_i| + |p_{i+1}| (coordinates
+    summed), each computed once for the checks that use them (``_along``, ``_edge_resolution``)."""
+
+    def __init__(self, points: Array) -> None:
+        self.points = points
+
+    @cached_property
+    def edges(self) -> Array:
+        return self.points[1:] - self.points[:-1]
+
+    @cached_property
+    def size(self) -> Array:
+        return magnitude(self.points[:-1], self.points[1:])
+
+
+def _edge_resolution(ar: Arithmetic, points: Array, shared: _Edges | None = None) -> Array:
+    """|p_{i+1} − p_i| / (|p_i| + |p_{i+1}|) per edge (coordinates summed): at most 1.
+
+    ``shared``: the edges and sizes of ``points`` already made (mp)."""
     if ar.mode == "float64":  # one compiled pass (the length within 2 ulp of hypot)
         return residual_kernels.edge_resolution(points)
-    edges = points[1:] - points[:-1]
-    return ar.hypot(edges[:, 0], edges[:, 1]) / magnitude(points[:-1], points[1:])
+    made = shared if shared is not None else _Edges(points)
+    edges = made.edges
+    return ar.hypot(edges[:, 0], edges[:, 1]) / made.size
 
 
-def _along(ar: Arithmetic, vectors: Array, points: Array) -> Array:
+def _along(ar: Arithmetic, vectors: Array, points: Array, shared: _Edges | None = None) -> Array:
     """How far unit vectors v_i are from pointing along the edges p_i p_{i+1}.
 
     |v_i × e_i| / (|p_i| + |p_{i+1}|), or 1 where v_i points against the edge: 0 when v_i is
     the unit vector of the edge's direction (the line of slope k_{i+1} through the centre).
+    ``shared``: the edges and sizes of a polygon whose first len(points) vertices are
+    ``points`` (mp).
     """
     if ar.mode == "float64":  # the same operations in one compiled pass
         return residual_kernels.along(vectors, points)
-    edges = points[1:] - points[:-1]
+    count = len(points) - 1
+    made = shared if shared is not None else _Edges(points)
+    edges = made.edges[:count]
     crossed = abs(vectors[:, 0] * edges[:, 1] - vectors[:, 1] * edges[:, 0])
-    residual = crossed / magnitude(points[:-1], points[1:])
+    residual = crossed / made.size[:count]
     backwards = vectors[:, 0] * edges[:, 0] + vectors[:, 1] * edges[:, 1] < 0
     return np.where(backwards, ar.scalar(1), residual)
 
@@ -565,3 +608,84 @@ def _scaled(ar: Arithmetic, residuals: Array, scale: Array) -> Array:
 
 
 _ball_minimum: Any = np.frompyfunc(lambda a, b: a.min(b), 2, 1)
+
+
+def _poles(contact: Array) -> Array:
+    """m_i on balls: the intersection of the tangents at ñ_{i−1} and ñ_i (rows of ``contact``),
+    the solution x of x·ñ_{i−1} = 1, x·ñ_i = 1 for unit vectors a, b: (a + b)/(1 + a·b).
+
+    The same point as ``gauss_image.circumscribed`` (on the bisector at distance 1/cos(δ/2):
+    |a + b| = 2cos(δ/2), 1 + a·b = 2cos²(δ/2)), without its two atan2, two cos and a sin per
+    vertex; parallel edges give ñ_i, and 1 + a·b ≥ 1 for turning angles up to π/2.
+    """
+    a, b = contact[:-1], contact[1:]
+    total = a + b
+    denominator = 1 + (a[:, 0] * b[:, 0] + a[:, 1] * b[:, 1])
+    return stack_points(total[:, 0] / denominator, total[:, 1] / denominator)
+
+
+class _BallHyperbolic:
+    """tanh and sech of t = (i + τ)L and of u = t − L/2 for i = lo .. hi, on balls, from one
+    exponential per index: with E = e^t, tanh t = 1 − 2/(E² + 1), sech t = 2/(E + 1/E)
+    (``_tanh_sech``), and e^u = E·√((h − d)/(h + d)) (e^{−L/2}, L = ln((h + d)/(h − d))). The
+    closed forms (18)–(20) and their printed versions (``kinematic_closed_forms``: the same
+    rewritings of the power forms) are read off these; each of them took a cosh and a tanh of
+    its own."""
+
+    def __init__(self, ar: Arithmetic, h: Scalar, d: Scalar, shift: Scalar, lo: int, hi: int):
+        self.lo, self.hi, self.h, self.d = lo, hi, h, d
+        t = (ar.indices(lo, hi) + shift) * kinematic_closed_forms.log_ratio(ar, h, d)
+        e = ar.exp(t)
+        self.tanh_t, self.sech_t = self._tanh_sech(e)
+        self.tanh_u, self.sech_u = self._tanh_sech(e * ar.sqrt((h - d) / (h + d)))
+        self.amplitude = h / ar.sqrt((h - d) * (h + d))  # h/√(h² − d²): m_i^y = h / p_i^y
+
+    @staticmethod
+    def _tanh_sech(e: Array) -> tuple[Array, Array]:
+        """(tanh, sech) = (1 − 2/(E² + 1), 2/(E + 1/E)): written so that the balls' radii stay
+        near those of a tanh and a 1/cosh (the quotient (E² − 1)/(E² + 1) would carry E²'s
+        relative radius twice into a value near ±1)."""
+        return 1 - 2 / (e * e + 1), 2 / (e + 1 / e)
+
+    def _rows(self, a: int, b: int) -> slice:
+        return slice(a - self.lo, b - self.lo + 1)
+
+    def tractrix_gauss_image(self, a: int, b: int) -> Array:
+        """(18) corrected: (sech t, tanh t)."""
+        rows = self._rows(a, b)
+        return stack_points(self.sech_t[rows], self.tanh_t[rows])
+
+    def contact_points(self, a: int, b: int) -> Array:
+        """(19) corrected: (−tanh t, sech t)."""
+        rows = self._rows(a, b)
+        return stack_points(-self.tanh_t[rows], self.sech_t[rows])
+
+    def circumscribed_gauss_image(self, a: int, b: int) -> Array:
+        """(20) corrected: (−tanh u, h sech u / √(h² − d²))."""
+        rows = self._rows(a, b)
+        return stack_points(-self.tanh_u[rows], self.amplitude * self.sech_u[rows])
+
+    def printed(self, key: str, a: int, b: int) -> Array:
+        """The printed (18), (19) or (20) (``PrintedForms.FORMS``) on a .. b."""
+        rows = self._rows(a, b)
+        tanh, sech = self.tanh_t[rows], self.sech_t[rows]
+        if key == "18":
+            return stack_points(sech, -tanh)
+        if key == "19":
+            return stack_points(tanh, sech)
+        denominator = self.h + self.d * tanh
+        return stack_points((self.h * tanh - self.d) / denominator, self.h * sech / denominator)
+
+
+def _ball_hyperbolic(
+    ar: Arithmetic, h: Scalar, d: Scalar, shift: Scalar, lo: int, hi: int
+) -> _BallHyperbolic:
+    """The table of ``_BallHyperbolic`` covering lo .. hi for these h, d, τ, made once per
+    computation (kept on the arithmetic, keyed by the balls' exact midpoints and radii): the
+    Gauss images' closed forms and the printed forms read the same one."""
+    tables: dict[tuple[Any, ...], _BallHyperbolic] = ar.__dict__.setdefault("_d4b_hyperbolic", {})
+    key = tuple(part for x in (h, d, shift) for part in (x.mid().man_exp(), x.rad().man_exp()))
+    table = tables.get(key)
+    if table is None or table.lo > lo or table.hi < hi:
+        table = tables[key] = _BallHyperbolic(ar, h, d, shift, lo, hi)
+    return table

@@ -1,0 +1,345 @@
+"""Compiled passes over numpy object arrays of python-flint ``arb`` balls.
+
+A reduction on balls in Python (the largest upper bound of 1000 residuals, the largest radius
+of 7000 certificate points) costs one or more Python calls per entry, each allocating a ball for
+an intermediate (``abs_upper``, ``rad``, ``abs_lower``, a quotient, ``upper``) only to compare it
+and drop it. Here the same libflint functions run in a numba loop straight on the balls' own
+``arb_struct`` (python-flint stores it inside each ``arb`` object, at the end of its fixed-size
+layout), with scratch balls allocated and freed by flint around the loop, and a reduction
+returns the *index* of the winning entry: the caller computes the value from that one entry
+with python-flint, so the numbers reported are those of the Python reduction it replaces (the
+keys compared here are the same libflint functions at the same precision). Two elementwise
+passes (``hypot``, ``relative_point_difference``) make the same libflint calls as the numpy
+code they replace, at the same precisions, into fresh balls that nothing else references yet
+(made by numpy's negation loop): the same balls, without a Python call per operation.
+
+libflint is the one python-flint's wheel bundles and its ``arb`` module links, reached through
+that module's handle with ctypes (the bundled file's name carries a build hash); the layout is
+checked once against known balls before anything is read through it. Where either is not as
+expected (another python-flint build), ``AVAILABLE`` is false and the callers keep their numpy
+code. The input balls are only read, and stay referenced by the caller's arrays during a call.
+
+Compiled at import (a ctypes function's address differs between processes, so numba cannot
+cache these loops on disk): about a second once per process, so that no request pays for it.
+"""
+
+from __future__ import annotations
+
+import ctypes
+from typing import Any
+
+import flint
+import flint.types.arb as flint_arb_module
+import numba
+import numpy as np
+
+#: Bytes of one ``arb_struct`` (midpoint ``arf_struct`` 32, radius ``mag_struct`` 16).
+ARB_BYTES = 48
+#: Offset of the radius (``arb_radref``) within an ``arb_struct``.
+RADIUS_OFFSET = 32
+
+
+def _library() -> Any:
+    """libflint as python-flint's ``arb`` extension module links it, or None.
+
+    The module's own handle: the dynamic linker looks a symbol up in the module and then in the
+    libraries it was loaded with, so libflint's functions are found whatever the bundled file
+    is called (``python_flint.libs/libflint-<hash>.so`` in the wheel), with nothing searched.
+    """
+    try:
+        return ctypes.CDLL(flint_arb_module.__file__)
+    except (OSError, TypeError):
+        return None
+
+
+def _bind(library: Any) -> dict[str, Any] | None:
+    """The libflint functions the loops call, typed; None if one is missing."""
+    pointer, word = ctypes.c_void_p, ctypes.c_long
+    signatures: dict[str, tuple[Any, list[Any]]] = {
+        "arb_get_abs_ubound_arf": (None, [pointer, pointer, word]),
+        "arb_get_abs_lbound_arf": (None, [pointer, pointer, word]),
+        "arb_get_ubound_arf": (None, [pointer, pointer, word]),
+        "arb_div": (None, [pointer, pointer, pointer, word]),
+        "arf_cmp": (ctypes.c_int, [pointer, pointer]),
+        "arf_set": (None, [pointer, pointer]),
+        "arf_set_mag": (None, [pointer, pointer]),
+        "arf_is_finite": (ctypes.c_int, [pointer]),
+        "arf_is_zero": (ctypes.c_int, [pointer]),
+        "mag_cmp": (ctypes.c_int, [pointer, pointer]),
+        "mag_is_zero": (ctypes.c_int, [pointer]),
+        "mag_is_finite": (ctypes.c_int, [pointer]),
+        "arf_get_d": (ctypes.c_double, [pointer, ctypes.c_int]),
+        "arb_sub": (None, [pointer, pointer, pointer, word]),
+        "arb_add": (None, [pointer, pointer, pointer, word]),
+        "arb_mul": (None, [pointer, pointer, pointer, word]),
+        "arb_sqrt": (None, [pointer, pointer, word]),
+        "arb_nonnegative_part": (None, [pointer, pointer]),
+        "arb_gt": (ctypes.c_int, [pointer, pointer]),
+        "_arb_vec_init": (pointer, [word]),
+        "_arb_vec_clear": (None, [pointer, word]),
+    }
+    bound = {}
+    for name, (result, arguments) in signatures.items():
+        function = getattr(library, name, None)
+        if function is None:
+            return None
+        function.restype, function.argtypes = result, arguments
+        bound[name] = function
+    return bound
+
+
+def _offset(functions: dict[str, Any]) -> int | None:
+    """Where an ``arb`` object holds its ``arb_struct``: at the end of its fixed-size layout,
+    confirmed on known balls (midpoint and radius read back through libflint)."""
+    offset = flint.arb.__basicsize__ - ARB_BYTES
+    if offset < ctypes.sizeof(ctypes.c_void_p) * 2:
+        return None
+    for value, radius in ((0.75, 0.125), (-3.5, 0.5), (1e-300, 0.0)):
+        ball = flint.arb(value, radius)
+        address = id(ball) + offset
+        if functions["arf_get_d"](address, 4) != value:  # ARF_RND_NEAR: exact here
+            return None
+        if bool(functions["mag_is_zero"](address + RADIUS_OFFSET)) != (radius == 0):
+            return None
+    return offset
+
+
+_FUNCTIONS: dict[str, Any] | None = None
+OFFSET = 0
+_library_handle = _library()
+if _library_handle is not None:
+    _FUNCTIONS = _bind(_library_handle)
+if _FUNCTIONS is not None:
+    found = _offset(_FUNCTIONS)
+    if found is None:
+        _FUNCTIONS = None
+    else:
+        OFFSET = found
+
+#: Whether the compiled reductions can be used (else the callers' Python reductions run).
+AVAILABLE = _FUNCTIONS is not None
+
+
+def addresses(values: np.ndarray[Any, Any]) -> np.ndarray[Any, np.dtype[np.int64]]:
+    """The ``arb_struct`` address of every entry of an object array of ``arb`` (all of them
+    ``arb``: the caller checks). The array must stay alive while the addresses are used."""
+    flat = values.reshape(-1)
+    return np.fromiter(map(id, flat), dtype=np.int64, count=flat.size) + OFFSET
+
+
+def all_balls(values: np.ndarray[Any, Any]) -> bool:
+    """Whether every entry is an ``arb`` (the compiled reductions read nothing else)."""
+    return set(map(type, values.reshape(-1))) <= {flint.arb}
+
+
+if _FUNCTIONS is not None:
+    _abs_ubound = _FUNCTIONS["arb_get_abs_ubound_arf"]
+    _abs_lbound = _FUNCTIONS["arb_get_abs_lbound_arf"]
+    _ubound = _FUNCTIONS["arb_get_ubound_arf"]
+    _div = _FUNCTIONS["arb_div"]
+    _arf_cmp = _FUNCTIONS["arf_cmp"]
+    _arf_set = _FUNCTIONS["arf_set"]
+    _arf_set_mag = _FUNCTIONS["arf_set_mag"]
+    _arf_is_finite = _FUNCTIONS["arf_is_finite"]
+    _arf_is_zero = _FUNCTIONS["arf_is_zero"]
+    _mag_cmp = _FUNCTIONS["mag_cmp"]
+    _mag_is_zero = _FUNCTIONS["mag_is_zero"]
+    _mag_is_finite = _FUNCTIONS["mag_is_finite"]
+
+    @numba.njit(cache=False)
+    def _argmax_abs(points: Any, upward: bool, prec: int, scratch: int) -> int:
+        """Index of the largest |v| upper (``upward``) or lower bound; −1 for no entries, −2
+        if a bound is not finite (the caller's Python reduction decides those)."""
+        key, best = scratch, scratch + ARB_BYTES
+        found = -1
+        for k in range(points.shape[0]):
+            if upward:
+                _abs_ubound(key, points[k], prec)
+            else:
+                _abs_lbound(key, points[k], prec)
+            if not _arf_is_finite(key):
+                return -2
+            if found < 0 or _arf_cmp(key, best) > 0:
+                _arf_set(best, key)
+                found = k
+        return found
+
+    @numba.njit(cache=False)
+    def _largest_radii(xs: Any, ys: Any, prec: int, scratch: int) -> Any:
+        """For points (x, y): the index of the largest radius max(rad x, rad y) (−1: every
+        point exact), the index of the largest upper bound of that radius over the point's
+        size max(|x|, |y|) (its lower bound, ``abs_lower``) among the inexact points of
+        positive size (−1: none), whether an inexact point has size 0, and whether a radius
+        or a bound is not finite (then the caller's Python reduction decides)."""
+        radius, size, other = scratch, scratch + ARB_BYTES, scratch + 2 * ARB_BYTES
+        quotient, key, best = (
+            scratch + 3 * ARB_BYTES,
+            scratch + 4 * ARB_BYTES,
+            scratch + 5 * ARB_BYTES,
+        )
+        largest = -1
+        largest_relative = -1
+        reaches_zero = False
+        for k in range(xs.shape[0]):
+            rx, ry = xs[k] + RADIUS_OFFSET, ys[k] + RADIUS_OFFSET
+            if not _mag_is_finite(rx) or not _mag_is_finite(ry):
+                return -2, -2, False, True
+            r = rx if _mag_cmp(rx, ry) >= 0 else ry
+            if _mag_is_zero(r):
+                continue
+            if largest < 0:
+                largest = k
+            else:
+                previous = xs[largest] + RADIUS_OFFSET
+                if _mag_cmp(ys[largest] + RADIUS_OFFSET, previous) > 0:
+                    previous = ys[largest] + RADIUS_OFFSET
+                if _mag_cmp(r, previous) > 0:
+                    largest = k
+            _abs_lbound(size, xs[k], prec)
+            _abs_lbound(other, ys[k], prec)
+            if _arf_cmp(other, size) > 0:
+                _arf_set(size, other)
+            if not _arf_is_finite(size):
+                return -2, -2, False, True
+            if _arf_is_zero(size):
+                reaches_zero = True
+                continue
+            _arf_set_mag(radius, r)  # radius and size: exact balls (zero radius)
+            _div(quotient, radius, size, prec)
+            _ubound(key, quotient, prec)
+            if not _arf_is_finite(key):
+                return -2, -2, False, True
+            if largest_relative < 0 or _arf_cmp(key, best) > 0:
+                _arf_set(best, key)
+                largest_relative = k
+        return largest, largest_relative, reaches_zero, False
+
+    _sub = _FUNCTIONS["arb_sub"]
+    _add = _FUNCTIONS["arb_add"]
+    _mul = _FUNCTIONS["arb_mul"]
+    _sqrt = _FUNCTIONS["arb_sqrt"]
+    _nonnegative = _FUNCTIONS["arb_nonnegative_part"]
+    _gt = _FUNCTIONS["arb_gt"]
+
+    @numba.njit(cache=False)
+    def _hypot(out: int, x: int, y: int, prec: int, square: int) -> None:
+        """out = sqrt(nonnegative part of x·x + y·y), as ``Ball.hypot`` (``square``: scratch)."""
+        _mul(square, x, x, prec)
+        _mul(out, y, y, prec)
+        _add(square, square, out, prec)
+        _nonnegative(square, square)
+        _sqrt(out, square, prec)
+
+    @numba.njit(cache=False)
+    def _hypots(xs: Any, ys: Any, out: Any, prec: int, square: int) -> None:
+        """``_hypot`` entry by entry into the balls at ``out``."""
+        for k in range(out.shape[0]):
+            _hypot(out[k], xs[k], ys[k], prec, square)
+
+    @numba.njit(cache=False)
+    def _relative_point_difference(
+        computed: Any, expected: Any, tiny: int, out: Any, work: int, low: int, scratch: int
+    ) -> None:
+        """``checks.relative_point_difference`` row by row into the balls at ``out``: the
+        differences at ``work`` bits, the lengths and the quotient at ``low``."""
+        dx, dy, square = scratch, scratch + ARB_BYTES, scratch + 2 * ARB_BYTES
+        scale, length = scratch + 3 * ARB_BYTES, scratch + 4 * ARB_BYTES
+        for k in range(out.shape[0]):
+            cx, cy, ex, ey = (
+                computed[2 * k],
+                computed[2 * k + 1],
+                expected[2 * k],
+                expected[2 * k + 1],
+            )
+            _sub(dx, cx, ex, work)
+            _sub(dy, cy, ey, work)
+            _hypot(scale, ex, ey, low, square)
+            _hypot(length, dx, dy, low, square)
+            _div(out[k], length, scale if _gt(scale, tiny) else tiny, low)
+
+    _vec_init = _FUNCTIONS["_arb_vec_init"]
+    _vec_clear = _FUNCTIONS["_arb_vec_clear"]
+
+
+class _Scratch:
+    """``count`` zeroed ``arb_struct`` allocated by flint, freed on leaving (also on errors)."""
+
+    def __init__(self, count: int) -> None:
+        self.count = count
+        self.address = 0
+
+    def __enter__(self) -> int:
+        self.address = int(_vec_init(self.count))
+        return self.address
+
+    def __exit__(self, *exception: object) -> None:
+        _vec_clear(self.address, self.count)
+        self.address = 0
+
+
+def argmax_abs(values: np.ndarray[Any, Any], upward: bool) -> int:
+    """Index of the entry whose |v| upper (``upward``) or lower bound is the largest (flint's
+    ``abs_upper``/``abs_lower`` at the working precision, compared exactly; the first of equal
+    ones); −1 for an empty array, −2 when some bound is not finite."""
+    if not values.size:
+        return -1
+    with _Scratch(2) as scratch:
+        return int(_argmax_abs(addresses(values), upward, flint.ctx.prec, scratch))
+
+
+def largest_radii(x: np.ndarray[Any, Any], y: np.ndarray[Any, Any]) -> tuple[int, int, bool, bool]:
+    """For the points (x, y) (``_largest_radii``): (index of the largest radius, index of the
+    largest relative radius, whether an inexact point's ball reaches 0 in both coordinates,
+    whether something is not finite)."""
+    with _Scratch(6) as scratch:
+        largest, relative, reaches_zero, unbounded = _largest_radii(
+            addresses(x), addresses(y), flint.ctx.prec, scratch
+        )
+    return int(largest), int(relative), bool(reaches_zero), bool(unbounded)
+
+
+def relative_point_difference(
+    computed: np.ndarray[Any, Any], expected: np.ndarray[Any, Any], tiny: Any, low: int
+) -> np.ndarray[Any, Any]:
+    """``checks.relative_point_difference`` of two ``(n, 2)`` arrays of balls in one compiled
+    pass: the same libflint operations at the same precisions (the differences at the working
+    precision, the rest at ``low`` bits), so the same balls. The results are written into fresh
+    balls made by negating a column (numpy's loop: one allocation each, no conversion), which
+    nothing else references yet."""
+    out = np.negative(expected[:, 0])
+    with _Scratch(5) as scratch:
+        _relative_point_difference(
+            addresses(computed),
+            addresses(expected),
+            id(tiny) + OFFSET,
+            addresses(out),
+            flint.ctx.prec,
+            low,
+            scratch,
+        )
+    return out
+
+
+def hypot(x: np.ndarray[Any, Any], y: np.ndarray[Any, Any]) -> np.ndarray[Any, Any]:
+    """``Ball.hypot`` of two equal-length 1-d arrays of balls in one compiled pass (the same
+    operations: the same balls), into fresh balls as ``relative_point_difference``."""
+    out = np.negative(x)
+    with _Scratch(1) as scratch:
+        _hypots(addresses(x), addresses(y), addresses(out), flint.ctx.prec, scratch)
+    return out
+
+
+def _warm() -> None:
+    """Compile every loop now, at import (about a second), so that no request pays for it."""
+    x = np.empty(2, dtype=object)
+    x[:] = [flint.arb(1) / 3, flint.arb(-2)]
+    points = np.empty((2, 2), dtype=object)
+    points[:, 0], points[:, 1] = x, x[::-1]
+    argmax_abs(x, True)
+    largest_radii(x, x[::-1])
+    hypot(x, x[::-1])
+    relative_point_difference(points, points[::-1], flint.arb(1), 64)
+
+
+if AVAILABLE:
+    _warm()

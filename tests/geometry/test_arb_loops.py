@@ -1,0 +1,117 @@
+"""The compiled reductions over balls give what python-flint's own reductions give."""
+
+from __future__ import annotations
+
+import random
+
+import flint
+import numpy as np
+import pytest
+
+from app.geometry import arb_loops, balls, checks
+from app.geometry.ball_arithmetic import Ball
+
+pytestmark = pytest.mark.skipif(not arb_loops.AVAILABLE, reason="no bundled libflint")
+
+
+def _balls(count: int, seed: int) -> np.ndarray:
+    rng = random.Random(seed)
+    out = np.empty(count, dtype=object)
+    out[:] = [
+        flint.arb(rng.uniform(-5, 5)) / 3
+        + flint.arb(0, rng.random() * 10.0 ** rng.randint(-60, -1))
+        for _ in range(count)
+    ]
+    return out
+
+
+@pytest.mark.parametrize("bits", [64, 200, 1700])
+def test_the_largest_bounds_are_pythons(bits: int) -> None:
+    with balls.working_precision(bits):
+        values = _balls(3000, bits)
+        values[17] = flint.arb(0)  # an exact zero among them
+        k = arb_loops.argmax_abs(values, True)
+        assert values[k].abs_upper() == max(v.abs_upper() for v in values)
+        k = arb_loops.argmax_abs(values, False)
+        assert values[k].abs_lower() == max(v.abs_lower() for v in values)
+        ar = Ball(bits // 4)
+        assert ar.largest_upper(values) == max(v.abs_upper() for v in values)
+        assert ar.largest_lower(values) == max(v.abs_lower() for v in values)
+
+
+def test_empty_and_unbounded_arrays_fall_back() -> None:
+    assert arb_loops.argmax_abs(np.empty(0, dtype=object), True) == -1
+    values = _balls(10, 1)
+    values[3] = flint.arb("nan")
+    assert arb_loops.argmax_abs(values, True) == -2
+    values[3] = flint.arb("inf")
+    assert arb_loops.argmax_abs(values, True) == -2
+    ar = Ball(20)
+    assert not ar.largest_upper(values).is_finite()  # Python's max decides
+
+
+def test_other_entries_are_not_read() -> None:
+    values = _balls(5, 2)
+    assert arb_loops.all_balls(values)
+    values[1] = 3
+    assert not arb_loops.all_balls(values)  # the compiled loops leave such arrays alone
+
+
+def test_the_largest_radii_are_the_points() -> None:
+    with balls.working_precision(200):
+        x, y = _balls(2000, 3), _balls(2000, 4)
+        x[5], y[5] = flint.arb(0, 1e-30), flint.arb(0, 1e-31)  # reaches 0
+        x[6], y[6] = flint.arb(2), flint.arb(3)  # exact
+        largest, relative, reaches_zero, unbounded = arb_loops.largest_radii(x, y)
+        radii = [a.rad().max(b.rad()) for a, b in zip(x, y, strict=True)]
+        assert radii[largest] == max(radii)
+        quotients = [
+            (r / a.abs_lower().max(b.abs_lower())).upper()
+            for r, a, b in zip(radii, x, y, strict=True)
+            if not r.is_zero() and a.abs_lower().max(b.abs_lower()) > 0
+        ]
+        size = x[relative].abs_lower().max(y[relative].abs_lower())
+        assert (radii[relative] / size).upper() == max(quotients)
+        assert reaches_zero and not unbounded
+
+
+def test_relative_point_differences_are_the_same_balls() -> None:
+    rng = random.Random(5)
+    ar = Ball(50)
+
+    def points(count: int) -> np.ndarray:
+        out = np.empty((count, 2), dtype=object)
+        for k in range(count):
+            out[k, 0] = flint.arb(rng.uniform(-3, 3)) / 7 + flint.arb(0, 1e-50)
+            out[k, 1] = flint.arb(rng.uniform(-3, 3)) / 3
+        return out
+
+    with balls.working_precision(ar.bits):
+        computed, expected = points(300), points(300)
+        expected[3] = [flint.arb(0), flint.arb(0)]  # the floor tiny
+        computed[4] = expected[4]  # a difference of the same balls
+        both = np.concatenate([computed, expected])
+        for c, e in ((computed, expected), (both[::2], both[1::2])):  # strided too
+            fast = checks.relative_point_difference(ar, c, e)
+            saved = arb_loops.AVAILABLE
+            arb_loops.AVAILABLE = False
+            try:
+                slow = checks.relative_point_difference(ar, c, e)
+            finally:
+                arb_loops.AVAILABLE = saved
+            assert all(
+                a.mid() == b.mid() and a.rad() == b.rad() for a, b in zip(fast, slow, strict=True)
+            )
+            assert len({id(v) for v in fast}) == len(fast)  # fresh balls, one each
+
+
+def test_hypot_gives_the_same_balls() -> None:
+    ar = Ball(30)
+    with balls.working_precision(ar.bits):
+        x, y = _balls(500, 7), _balls(500, 8)
+        x[2], y[2] = flint.arb(0, 1e-20), flint.arb(0, 1e-21)  # the sum reaches below 0
+        fast = ar.hypot(x, y)
+        slow = [(a * a + b * b).nonnegative_part().sqrt() for a, b in zip(x, y, strict=True)]
+        assert all(
+            a.mid() == b.mid() and a.rad() == b.rad() for a, b in zip(fast, slow, strict=True)
+        )
