@@ -24,6 +24,7 @@ from app.geometry.ball_arithmetic import (
     decimal_tolerance,
 )
 from app.geometry.precision import Arithmetic, Array
+from app.geometry.tolerances import MPMATH_FLOAT_DIGITS
 
 ERRATA_DOCUMENT = "docs/errata.md"
 #: Where the service serves each entry of ERRATA_DOCUMENT (GET /errata/{id}).
@@ -144,6 +145,15 @@ def check_residuals(
         return not_applicable(
             statement, tolerance, note or "not enough vertices in the range to evaluate it"
         )
+    if ar.mode == "mp" and not ar.certified and ar.digits > MPMATH_FLOAT_DIGITS:
+        # mpmath's residuals are reported as floats: 10^-digits is 0 there, and a residual
+        # of 0 <= a tolerance of 0 would be a verdict without content
+        beyond = (
+            f"undecided: computed with mpmath, whose residuals and tolerance are floats; beyond "
+            f"{MPMATH_FLOAT_DIGITS} digits they leave the float range (use at most "
+            f"{MPMATH_FLOAT_DIGITS} digits here; the discretizations are certified at any digits)"
+        )
+        return not_applicable(statement, float(tolerance), f"{note}; {beyond}" if note else beyond)
     if ar.certified and not detail and residuals.dtype == object:
         # balls: the largest upper bound alone (floats of every residual are for per_index)
         upper = ar.largest_upper(residuals)  # type: ignore[attr-defined]

@@ -28,6 +28,11 @@ RESOLUTION_MARGIN = 100
 """A second difference Δ²p^y of relative size r is resolved when r exceeds the working precision
 by this factor squared (D4b: Δ²p^y/p^y ≈ (2d/h)², so d/h >= 100·√eps in float64)."""
 
+MPMATH_FLOAT_DIGITS = 300
+"""Most digits at which a check computed with mpmath (surfaces and smooth references in mp:
+``MultiPrecision``, not balls) can decide: its residuals and tolerance are floats, and beyond
+this their sizes (about 10^−(digits+10)) leave the float range; such a check is undecided."""
+
 NOT_CONSTRUCTED = "method=closed-form: the construction was not run to compare"
 """The note of a construction-against-closed-form check when the closed form is all there is."""
 

@@ -193,3 +193,15 @@ def test_theorem_14_study_at_400_digits(client: TestClient) -> None:
     response = client.get("/convergence/theorem-14", params=params)
     assert response.status_code == 200
     assert response.json()["checks"][0]["holds"] is True
+
+
+@pytest.mark.parametrize("path", ["/surfaces/catenoid", "/smooth/tractrix"])
+def test_mpmath_checks_beyond_the_float_range_are_undecided(client: TestClient, path: str) -> None:
+    # surfaces and smooth references compute mp with mpmath and report float residuals: at 400
+    # digits residual and tolerance were 0.0 and every check "held"
+    deep = client.get(path, params={"precision": "mp", "digits": 400}).json()["checks"]
+    assert deep and all(check["holds"] is None for check in deep)
+    assert all("beyond 300 digits" in check["note"] for check in deep)
+    shallow = client.get(path, params={"precision": "mp", "digits": 300}).json()["checks"]
+    assert [check["id"] for check in shallow] == [check["id"] for check in deep]
+    assert all(check["holds"] is True and check["tolerance"] > 0 for check in shallow)
