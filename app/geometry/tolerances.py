@@ -76,7 +76,7 @@ def exact(value: Any) -> Fraction:
     if isinstance(value, ExactReal):
         return Fraction(value.text)
     if isinstance(value, float):
-        return Fraction(repr(value))
+        return Fraction(repr(float(value)))  # numpy floats print their type in repr
     return Fraction(value)
 
 

@@ -205,3 +205,14 @@ def test_mpmath_checks_beyond_the_float_range_are_undecided(client: TestClient, 
     shallow = client.get(path, params={"precision": "mp", "digits": 300}).json()["checks"]
     assert [check["id"] for check in shallow] == [check["id"] for check in deep]
     assert all(check["holds"] is True and check["tolerance"] > 0 for check in shallow)
+
+
+def test_exact_reads_parameters_as_mp_does() -> None:
+    from fractions import Fraction
+
+    from app.geometry.exact import ExactReal
+
+    assert tolerances.exact(ExactReal("1." + "0" * 299 + "1")) > 1  # the decimal as written
+    assert tolerances.exact(0.1) == Fraction(1, 10)  # a float's shortest decimal
+    assert tolerances.exact(np.float64(1.5)) == Fraction(3, 2)
+    assert tolerances.exact(np.int64(3)) == 3
