@@ -38,16 +38,40 @@ MP_STEP_BYTES = 24_000
 MP_DIGITS_SCALE = 400
 MP_STEP_SHARE = {"d1": 0.25, "d2a-quad": 0.45, "d2a-hex": 0.45, "d3": 0.35, "smooth": 0.15}
 #: mp curves of /discretizations and /relations, computed on rigorous balls (python-flint arb,
-#: app/geometry/balls.py): seconds and bytes per step grow like (1 + w / BALL_DIGITS_SCALE) in
-#: the *working* digits w = digits + guard digits + the digits a construction's radii grow by
-#: (``balls.extra_digits``: for (D4b) about 2|i|·ln((h+d)/(h−d))/ln 10, so they count here).
-#: Measured (bench/mp.py, /tmp-free runs of 1000 vertices, every check, encoded; load ≈ 7.5 on
-#: the 2-core machine): (D4b) 0.43 ms a step at 50 digits (153 working), 1.5 ms at 500, 2.7 ms
-#: at 1000; peak memory 13 KB a step at 50 digits, 50 KB at 1000. Shares as MP_STEP_SHARE.
+#: app/geometry/balls.py): seconds per step grow like (1 + w / BALL_DIGITS_SCALE_SECONDS[kind])
+#: and bytes like (1 + w / BALL_DIGITS_SCALE) in the *working* digits w = digits + guard digits
+#: + the digits a construction's radii grow by (``balls.extra_digits``: for (D4b) about
+#: 2|i|·ln((h+d)/(h−d))/ln 10, so they count here). Seconds measured with bench/ball_costs.py
+#: (every discretization at 50, 500 and 1000 digits, 201 and 801 vertices, every check, JSON,
+#: CPU time, load 9–10 on the 2-core machine; docs/performance.md): (D4b) 0.39 ms a step at 50
+#: digits, 0.89 ms at 500, 1.6 ms at 1000 (801 vertices), its time growing with the digits as
+#: w/150 (Section 5's transcendental functions); the others are dominated by the Python cost of
+#: each operation and grow as w/300. The shares are set so that a measured request used at most
+#: about 0.75–0.85 of its estimate under that load (run to run ±25 %; a quiet host is faster):
+#: refusals still come early, never late. The coefficients before overestimated the others 2–5×
+#: at 500–1000 digits (measured/estimated 0.21–0.37 there) and D4b 1.6–4.2×. Peak memory 13 KB
+#: a step at 50 digits, 50 KB at 1000 (D4b).
 BALL_STEP_SECONDS = 4e-4
 BALL_STEP_BYTES = 8_000
 BALL_DIGITS_SCALE = 150
+BALL_DIGITS_SCALE_SECONDS = {"d4b": 150}
+#: (D4b) carries its extra digits in the construction only (``Ball.recursions_only``): its time
+#: grows with a quarter of them (measured: 3991 vertices at 50 digits, extra digits ≈ 350,
+#: 0.34 ms a step against 0.39 ms at 801 vertices, extra ≈ 70; the full weight overestimated
+#: that request 4.2×).
+BALL_EXTRA_DIGITS_WEIGHT = {"d4b": 0.25}
+BALL_DIGITS_SCALE_SECONDS_OTHERS = 300
 BALL_STEP_SHARE = {
+    "d4b": 0.85,
+    "d1": 0.35,
+    "d3": 0.3,
+    "d4a": 0.7,
+    "d2a-quad": 0.5,
+    "d2a-hex": 0.5,
+    "d2b": 1.0,
+}
+#: Bytes per step: the shares of time measured before (memory was not re-measured).
+BALL_BYTES_SHARE = {
     "d1": 0.3,
     "d3": 0.35,
     "d4a": 0.8,
@@ -114,9 +138,14 @@ def curve_cost(
     curve is computed on balls) are the digits its radii grow by (``balls.extra_digits``)."""
     if precision == "mp" and extra_digits is not None:
         working = digits + GUARD_DIGITS + extra_digits
-        factor = (1 + working / BALL_DIGITS_SCALE) * BALL_STEP_SHARE.get(kind or "", 1.0)
+        # unknown kind (None): priced above the dearest, D4b, with every extra digit
+        scale = BALL_DIGITS_SCALE_SECONDS.get(kind or "d4b", BALL_DIGITS_SCALE_SECONDS_OTHERS)
+        weight = BALL_EXTRA_DIGITS_WEIGHT.get(kind or "", 1.0)
+        weighted = digits + GUARD_DIGITS + extra_digits * weight
+        seconds = (1 + weighted / scale) * BALL_STEP_SHARE.get(kind or "", 1.0)
+        nbytes = (1 + working / BALL_DIGITS_SCALE) * BALL_BYTES_SHARE.get(kind or "", 1.0)
         work = max(vertices, steps)
-        return BALL_STEP_SECONDS * factor * work, BALL_STEP_BYTES * factor * work
+        return BALL_STEP_SECONDS * seconds * work, BALL_STEP_BYTES * nbytes * work
     if precision == "mp":
         factor = mp_factor(digits) * MP_STEP_SHARE.get(kind or "", 1.0)
         work = max(vertices, steps)

@@ -122,7 +122,12 @@ def check_document(check: Check, certified: bool = False) -> dict[str, Any]:
         "holds": check.holds,
         "per_index": None
         if check.per_index is None
-        else {"indices": check.per_index.indices, "residuals": check.per_index.residuals},
+        else {
+            "indices": check.per_index.indices,
+            "residuals": [None if v is None else decimal_text(v) for v in check.per_index.residuals]
+            if isinstance(check.per_index.residuals, list)
+            else check.per_index.residuals,
+        },
         "erratum": None
         if erratum is None
         else {

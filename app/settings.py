@@ -25,16 +25,17 @@ class Settings(BaseSettings):
     max_digits: int = Field(
         1000,
         ge=1,
-        description="Most significant digits in precision=mp (on balls, 1000 D4b vertices "
-        "with every check take about 2.7 s at 1000 digits; surfaces, studies and smooth "
-        "references still compute mp with mpmath, several times dearer).",
+        description="Most significant digits in precision=mp (on balls, 801 D4b vertices "
+        "with every check, the most the work budget admits at 1000 digits, take about 1.7 s "
+        "of CPU; surfaces, studies and smooth references still compute mp with mpmath, "
+        "several times dearer, and their checks are undecided beyond 300 digits).",
     )
     max_mp_work: int = Field(
         1_000_000,
         ge=1,
         description="Most (digits + 200) × steps in precision=mp (the cost of mp grows with "
-        "both; for D4b on balls with every check about 4–7 s at the limit on a loaded 2-core "
-        "machine, its working digits growing with the range; see docs/performance.md).",
+        "both; for D4b on balls with every check 1.3–1.7 s of CPU at the limit, 3–4.5 s of wall "
+        "time on a loaded 2-core machine; see docs/performance.md).",
     )
     max_svg_vertices: int = Field(
         20_001,

@@ -27,6 +27,7 @@ from app.geometry.polygon import (
     signed_areas,
 )
 from app.geometry.precision import Arithmetic, Array, Scalar
+from app.geometry.tolerances import unit
 
 
 @dataclass(frozen=True)
@@ -180,7 +181,10 @@ def equation_7(ar: Arithmetic, p: Array, i_min: int) -> TwoConstantFit:
     suu, svv, suv = np.sum(uw * uw), np.sum(vw * vw), np.sum(uw * vw)
     slu, slv = np.sum(lw * uw), np.sum(lw * vw)
     det = suu * svv - suv * suv if len(lhs) else zero
-    if len(lhs) >= 2 and abs(det) > ar.eps * ar.eps * abs(suu * svv):
+    # determined when det is not 0 to within the rounding of its products (in mp the unit as a
+    # number of ``ar``: a float eps² is 0 from about 162 digits on)
+    eps = unit(ar)
+    if len(lhs) >= 2 and abs(det) > eps * eps * abs(suu * svv):
         c1 = (slu * svv - slv * suv) / det * (ml / mu)
         c2 = (suu * slv - suv * slu) / det * (ml / mv)
         constants: tuple[Scalar, Scalar] | None = (c1, c2)

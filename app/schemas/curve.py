@@ -72,6 +72,17 @@ class PerIndexModel(BaseModel):
     residuals: list[float] = Field(description="Residual at each index.")
 
 
+class PerIndexModelMP(PerIndexModel):
+    """Per-index residuals of a precision=mp answer computed on rigorous balls."""
+
+    residuals: list[str | None] = Field(  # type: ignore[assignment]
+        description="A rigorous upper bound of the residual at each index, a decimal string "
+        "rounded up (10 significant digits; a string: from 324 digits on they leave the float "
+        "range); none exceeds the check's `residual`. null where a residual could not be "
+        "computed (not finite)."
+    )
+
+
 class CheckModel(BaseModel):
     id: str = Field(description="Statement id, see GET /theorems.")
     reference: str = Field(description="Where the paper states it.")
@@ -91,8 +102,8 @@ class CheckModel(BaseModel):
 
 class CheckModelMP(CheckModel):
     """A check of a precision=mp answer computed on rigorous balls (the curve's `certified` is
-    set): `residual` and `tolerance` are decimal strings, since from 324 digits on they leave
-    the float range (10^−digits is 0 as a float)."""
+    set): `residual`, `tolerance` and the `per_index` residuals are decimal strings, since from
+    324 digits on they leave the float range (10^−digits is 0 as a float)."""
 
     residual: str | None = Field(  # type: ignore[assignment]
         description="A rigorous upper bound of the largest residual, a decimal string rounded up "
@@ -101,6 +112,9 @@ class CheckModelMP(CheckModel):
     tolerance: str = Field(  # type: ignore[assignment]
         description="Largest residual that counts as holding, a decimal string (10 significant "
         "digits). `holds` is true when `residual` <= `tolerance` as these decimals."
+    )
+    per_index: PerIndexModelMP | None = Field(
+        description="Residual bound per index (detail=true), decimal strings."
     )
     erratum: ErratumModelMP | None = Field(description="Set when the printed formula is wrong.")
 
@@ -155,7 +169,8 @@ class CurveResponse(BaseModel):
 class CurveResponseMP(CurveResponse):
     """One discretization in mp (`precision.mode` = `mp`): as `CurveResponse`, with coordinates
     and constants as decimal strings of `precision.digits` significant digits, and each check's
-    `residual`, `tolerance` and `printed_residual` as decimal strings (rigorous bounds)."""
+    `residual`, `tolerance`, `printed_residual` and per-index residuals as decimal strings
+    (rigorous bounds)."""
 
     vertices: list[tuple[str, str]] = Field(description="p_i = (x, y), decimal strings.")  # type: ignore[assignment]
     companions: dict[str, PolylineModelMP] = Field(  # type: ignore[assignment]

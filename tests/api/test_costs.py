@@ -24,6 +24,11 @@ REQUESTS = [
     "/discretizations/d4b?precision=mp&digits=30&i_max=100",
     "/discretizations/d2a-quad?precision=mp&digits=300&i_max=60",
     "/discretizations/d2b?precision=mp&digits=10&i_min=0&i_max=80",
+    # balls at many digits (the estimate recalibrated in stop 16: bench/ball_costs.py)
+    "/discretizations/d4b?precision=mp&digits=1000&i_min=-60&i_max=60",
+    "/discretizations/d3?precision=mp&digits=1000&i_min=-60&i_max=60",
+    "/discretizations/d2a-hex?precision=mp&digits=500&i_min=-60&i_max=60",
+    "/discretizations/d4a?precision=mp&digits=500&i_min=-60&i_max=60",
     "/surfaces/catenoid?discretization=d4b&d=0.01&i_min=-200&i_max=200&m=100&format=glb",
     "/surfaces/pseudosphere?discretization=d4b&i_min=0&i_max=100&m=60",
     "/surfaces/catenoid?discretization=d4b&precision=mp&digits=5&i_min=-4&i_max=4&m=8",

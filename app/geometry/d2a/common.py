@@ -5,6 +5,8 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import replace
+from decimal import Decimal
+from fractions import Fraction
 from typing import Any
 
 import numpy as np
@@ -24,7 +26,12 @@ from app.geometry.errors import NotRepresentableError
 from app.geometry.on_demand import OnDemand
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
-from app.geometry.tolerances import LOCAL_STEPS
+from app.geometry.tolerances import (
+    LOCAL_STEPS,
+    below_root_working_unit,
+    root_working_unit_text,
+    unit,
+)
 
 #: In float64 every f_i and 1/f_i stays below this bound, so that the printed formulas (which
 #: hold f⁴) and the areas (products of coordinates) stay finite.
@@ -35,21 +42,48 @@ FLOAT64_F_LIMIT = 1e50
 FLOAT64_MIN_GAP = 1e-4
 
 
-def require_mp_gap(ar: Arithmetic, parameter: str, what: str, value: float, gap: float) -> None:
-    """In mp, refuse relative gaps below √(working eps): their Gauss image edges vanish."""
-    smallest = math.sqrt(ar.working_eps)
-    if gap < smallest:
+def require_mp_gap(ar: Arithmetic, parameter: str, what: str, value: float, gap: Fraction) -> None:
+    """In mp, refuse relative gaps below √(working unit): their Gauss image edges vanish.
+
+    ``gap`` is exact (of the parameters as written, ``tolerances.exact``) and so is the
+    comparison: a float √(10^−(digits+guard)) is 0 from 314 digits on.
+    """
+    if below_root_working_unit(ar, gap):
         raise NotRepresentableError(
             parameter,
-            f"{what} >= {smallest:.2g} in mp with {ar.digits} digits",
+            f"{what} >= {root_working_unit_text(ar)} in mp with {ar.digits} digits",
             value,
             "nearly equal f_i give Gauss image edges below the working precision; use more digits",
         )
 
 
-def local_tolerance(ar: Arithmetic, gap: Scalar) -> float:
-    """Tolerance of a local check: ``Arithmetic.tolerance(16)`` times the conditioning 1/gap."""
-    return ar.tolerance(LOCAL_STEPS) * max(1.0, 1 / ar.to_float(gap))
+def local_tolerance(ar: Arithmetic, gap: Scalar) -> Any:
+    """Tolerance of a local check: ``Arithmetic.tolerance(16)`` times the conditioning 1/gap
+    (on balls a ball: 1/gap leaves the float range where the gap is below 1e-308, which the
+    digits allow from 606 on)."""
+    if not ar.certified:
+        return ar.tolerance(LOCAL_STEPS) * max(1.0, 1 / ar.to_float(gap))
+    return ar.tolerance(LOCAL_STEPS) * ar.maximum(ar.scalar(1), 1 / gap)
+
+
+def at_r_star(ar: Arithmetic, r: Scalar, r_star: Scalar) -> bool:
+    """Whether the start height r is r* to within 4 units of the requested precision, relative
+    (Theorems 1 and 2 hold only there). In mp the unit is a number of ``ar`` (``unit``): a float
+    10^−digits is 0 from 324 digits on, where only an exactly equal r would have counted."""
+    return bool(abs(r - r_star) <= 4 * unit(ar) * abs(r_star))
+
+
+def off_r_star_note(ar: Arithmetic, r: Scalar, r_star: Scalar) -> str:
+    """The note of a check that holds only for r = r*, on a polygon starting elsewhere; in mp
+    with r − r* too (r and r* agree as floats when they differ beyond the 17th digit)."""
+    note = (
+        f"holds only for r = r* = {ar.to_float(r_star):.17g}; this polygon starts at "
+        f"r = {ar.to_float(r):.17g}"
+    )
+    if ar.mode == "float64":
+        return note
+    difference = ar.to_strings(np.array([r - r_star], dtype=object))[0]  # type: ignore[attr-defined]
+    return f"{note} (r − r* = {format(Decimal(difference), '.3g')})"
 
 
 class Context(OnDemand):

@@ -34,6 +34,7 @@ import numpy as np
 from app.geometry.d2a.stereographic import CircleImages, chords, project
 from app.geometry.errors import DomainError
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
+from app.geometry.tolerances import exact
 
 
 @dataclass(frozen=True)
@@ -59,7 +60,9 @@ def _finite_positive(name: str, value: float, constraint: str) -> None:
 def validate_quad(f0: float, f1: float, r: float | None = None) -> None:
     """Raise ``DomainError`` unless 0 < f0 < f1 (and r, if given, is finite)."""
     _finite_positive("f0", f0, "0 < f0 < f1")
-    if not math.isfinite(f1) or f1 <= f0:
+    # orders compared exactly (as written): in mp 1 < 1 + 1e-300, equal as floats (float64 then
+    # refuses the gap, ``FLOAT64_MIN_GAP``)
+    if not math.isfinite(f1) or exact(f1) <= exact(f0):
         raise DomainError(
             "f1",
             "0 < f0 < f1",
@@ -73,11 +76,11 @@ def validate_quad(f0: float, f1: float, r: float | None = None) -> None:
 def validate_hex(a: float, b: float, lam: float, r: float | None = None) -> None:
     """Raise ``DomainError`` unless 0 < a < b and 0 < λ < 1 (and r, if given, is finite)."""
     _finite_positive("a", a, "0 < a < b")
-    if not math.isfinite(b) or b <= a:
+    if not math.isfinite(b) or exact(b) <= exact(a):
         raise DomainError(
             "b", "0 < a < b", b, f"a = {a!r}; b = a makes every Gauss image edge vanish"
         )
-    if not math.isfinite(lam) or not 0 < lam < 1:
+    if not math.isfinite(lam) or not 0 < exact(lam) < 1:
         raise DomainError(
             "lambda",
             "0 < lambda < 1",

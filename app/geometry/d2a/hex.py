@@ -32,10 +32,12 @@ from app.geometry.d2a.common import (
     SHARED_D3,
     SHARED_EQUATION_2,
     Context,
+    at_r_star,
     companions,
     fitted_condition,
     local_tolerance,
     not_enough,
+    off_r_star_note,
     require_f_range,
     require_mp_gap,
     scaled_point_difference,
@@ -45,6 +47,7 @@ from app.geometry.errors import NotRepresentableError
 from app.geometry.on_demand import Constants, Evaluators
 from app.geometry.polygon import area_magnitude, second_difference, signed_areas
 from app.geometry.precision import Arithmetic, Array, ExactReal, Scalar, stack_points
+from app.geometry.tolerances import exact
 
 S = Statement
 
@@ -210,9 +213,14 @@ def compute(
     if ar.mode == "float64":
         _require_float64_representable(a, b, lam, i_min, i_max)
     else:
-        require_mp_gap(ar, "b", "(b − a)/b", b, (b - a) / b)
+        exact_a, exact_b, exact_lam = exact(a), exact(b), exact(lam)
+        require_mp_gap(ar, "b", "(b − a)/b", b, (exact_b - exact_a) / exact_b)
         require_mp_gap(
-            ar, "lambda", "λ(b − a)/f_1 and (1 − λ)(b − a)/b", lam, float(smallest_gap(a, b, lam))
+            ar,
+            "lambda",
+            "λ(b − a)/f_1 and (1 − λ)(b − a)/b",
+            lam,
+            smallest_gap(exact_a, exact_b, exact_lam),
         )
     data = polygons(ar, a, b, lam, r, i_min, i_max)
     constants, checks = evaluate(ar, data, detail, selection)
@@ -256,11 +264,8 @@ def _theorem_2(ctx: _Context) -> Check:
     with_11 = equation_7_residuals(ar, data.p, data.i_min, *ctx.c11)
     erratum = ctx.erratum(ERRATUM_EQUATION_2, ctx.fit_2.residuals)  # what Section 4.1 says
     note = None
-    if not abs(data.r - ctx.r_star) <= 4 * ar.eps * abs(ctx.r_star):
-        note = (
-            f"holds only for r = r* = {ar.to_float(ctx.r_star):.17g}; this polygon starts at "
-            f"r = {ar.to_float(data.r):.17g}"
-        )
+    if not at_r_star(ar, data.r, ctx.r_star):
+        note = off_r_star_note(ar, data.r, ctx.r_star)
     return ctx.check(THEOREM_2, 0, np.maximum(fit.residuals, with_11), erratum, note=note)
 
 

@@ -36,10 +36,12 @@ from app.geometry.d2a.common import (
     SHARED_D1,
     SHARED_D3,
     Context,
+    at_r_star,
     companions,
     fitted_condition,
     local_tolerance,
     not_enough,
+    off_r_star_note,
     require_f_range,
     require_mp_gap,
     scaled_difference,
@@ -51,6 +53,7 @@ from app.geometry.errors import NotRepresentableError
 from app.geometry.on_demand import Constants, Evaluators
 from app.geometry.polygon import area_magnitude, second_difference, signed_areas
 from app.geometry.precision import Arithmetic, Array, ExactReal, Scalar
+from app.geometry.tolerances import exact
 
 S = Statement
 
@@ -175,10 +178,7 @@ class _Context(Context):
     def special_note(self) -> str | None:
         """Why a check that holds only for r = r* fails here (``None`` when r = r*)."""
         ar, r = self.ar, self.data.r
-        if abs(r - self.r_star) <= 4 * ar.eps * abs(self.r_star):
-            return None
-        r_star, start = ar.to_float(self.r_star), ar.to_float(r)
-        return f"holds only for r = r* = {r_star:.17g}; this polygon starts at r = {start:.17g}"
+        return None if at_r_star(ar, r, self.r_star) else off_r_star_note(ar, r, self.r_star)
 
 
 def evaluate(
@@ -208,7 +208,7 @@ def compute(
     if ar.mode == "float64":
         _require_float64_representable(f0, f1, i_min, i_max)
     else:
-        require_mp_gap(ar, "f1", "(f1 − f0)/f1", f1, (f1 - f0) / f1)
+        require_mp_gap(ar, "f1", "(f1 − f0)/f1", f1, (exact(f1) - exact(f0)) / exact(f1))
     data = polygons(ar, f0, f1, r, i_min, i_max)
     constants, checks = evaluate(ar, data, detail, selection)
     parameters: dict[str, Any] = {

@@ -37,7 +37,12 @@ from app.geometry.d3.construction import Branch, construct, validate
 from app.geometry.errors import NotRepresentableError
 from app.geometry.on_demand import Evaluators, OnDemand
 from app.geometry.precision import Arithmetic, Array, Scalar
-from app.geometry.tolerances import FLOAT64_COORDINATE_LIMIT, LOCAL_STEPS, NOT_CONSTRUCTED
+from app.geometry.tolerances import (
+    FLOAT64_COORDINATE_LIMIT,
+    LOCAL_STEPS,
+    NOT_CONSTRUCTED,
+    unit,
+)
 
 Method = Literal["construction", "closed-form"]
 
@@ -197,8 +202,13 @@ def _closed_form(ctx: _Context) -> Check:
     steps = max(abs(data.i_min), abs(data.i_min + len(data.p) - 1)) + 1
     a = closed_forms.amplitude(ar, ar.scalar(ctx.c), ar.scalar(ctx.delta))
     ratio = min(np.min(data.p[:, 1]), ar.scalar(data.start)) / a
-    v_min = ar.to_float(ar.acosh(ratio)) if ratio > 1 else 0.0
+    v = ar.acosh(ratio) if ratio > 1 else ar.scalar(0)
+    v_min = ar.to_float(v)
     amplification = math.ceil(1 / max(v_min, math.sqrt(ar.eps), 1e-300))
+    if ar.mode != "float64" and v_min < 1e-300:
+        # 1/v beyond the float range (digits > 600): 1/max(v, √unit) in ``ar`` (a float √eps
+        # is 0 from 324 digits on, and the floor 1e-300 would cut the amplification short)
+        amplification = ar.truncate(1 / ar.maximum(v, ar.sqrt(unit(ar)))) + 1
     amplification = max(1, amplification)
     tolerance = ar.tolerance(max(steps, LOCAL_STEPS) * amplification)
     note = (

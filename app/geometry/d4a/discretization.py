@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
+from fractions import Fraction
 from functools import cached_property
 from typing import Any, Literal
 
@@ -46,7 +47,13 @@ from app.geometry.errors import NotRepresentableError
 from app.geometry.on_demand import Evaluators, OnDemand
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array, Scalar
-from app.geometry.tolerances import FLOAT64_COORDINATE_LIMIT, LOCAL_STEPS, NOT_CONSTRUCTED
+from app.geometry.tolerances import (
+    FLOAT64_COORDINATE_LIMIT,
+    LOCAL_STEPS,
+    NOT_CONSTRUCTED,
+    exact,
+    power_of_ten_text,
+)
 
 Method = Literal["construction", "closed-form"]
 
@@ -273,11 +280,12 @@ def compute(
     require_range(i_min, i_max)
     if ar.mode == "float64":
         _require_float64_representable(h, s, beta0, i_min, i_max)
-    elif s / h < 10.0 ** -(ar.digits // 2):
+    elif exact(s) / exact(h) < Fraction(1, 10 ** (ar.digits // 2)):
         # p is resolved to about h/s units of rounding: keep at least half of the digits
+        # (exact: a float 10^−(digits//2) is 0 from 648 digits on)
         raise NotRepresentableError(
             "s",
-            f"s/h >= {10.0 ** -(ar.digits // 2):.2g} with digits={ar.digits}",
+            f"s/h >= {power_of_ten_text(-(ar.digits // 2))} with digits={ar.digits}",
             s,
             "p is resolved to about h/s units of rounding; use more digits",
         )

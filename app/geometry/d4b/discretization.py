@@ -47,6 +47,9 @@ from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 from app.geometry.tolerances import (
     FLOAT64_COORDINATE_LIMIT,
     RESOLUTION_MARGIN,
+    below_root_working_unit,
+    exact,
+    root_working_unit_text,
 )
 
 Method = Literal["construction", "closed-form"]
@@ -328,12 +331,18 @@ COMPANIONS: dict[str, Callable[[D4bPolygons], Array]] = {
 
 def _require_resolvable(ar: Arithmetic, h: float, d: float) -> None:
     """Refuse steps so small that Δ²p^y vanishes in the working precision."""
-    smallest = RESOLUTION_MARGIN * math.sqrt(ar.working_eps)
-    if d / h < smallest:
+    if ar.mode == "float64":
+        smallest = RESOLUTION_MARGIN * math.sqrt(ar.working_eps)
+        unresolved, shown = d / h < smallest, f"{smallest:.2g}"
+    else:  # exact: a float √(10^−(digits+guard)) is 0 from 314 digits on
+        ratio = exact(d) / exact(h)
+        unresolved = below_root_working_unit(ar, ratio, RESOLUTION_MARGIN)
+        shown = root_working_unit_text(ar, RESOLUTION_MARGIN)
+    if unresolved:
         more = "use precision=mp" if ar.mode == "float64" else "use more digits"
         raise NotRepresentableError(
             "d",
-            f"d/h >= {smallest:.2g} in {ar.mode} with {ar.digits} digits",
+            f"d/h >= {shown} in {ar.mode} with {ar.digits} digits",
             d,
             f"d/h = {d / h:.3g}: the second differences of p^y are below the working "
             f"precision; {more}",

@@ -17,6 +17,7 @@ from typing import Any
 import numpy as np
 
 from app.geometry.precision import Arithmetic, Array, Scalar
+from app.geometry.tolerances import log2_working_unit, working_unit
 
 #: |x|/h beyond which h cosh(x/h) is not evaluated (float64's cosh overflows past ~710)
 FAR = 700.0
@@ -41,9 +42,11 @@ def bracketed_root(
     s = (lo + hi) / 2
     width = float(np.max(ar.to_floats(abs(hi - lo)))) if len(s) else 0.0
     size = float(np.max(ar.to_floats(abs(s)))) + scale if len(s) else scale
-    tolerance = 4 * ar.working_eps
+    # a number of ``ar`` (in mp a float 10^−(digits+guard) is 0 from 314 digits on)
+    tolerance = 4 * working_unit(ar)
     if 0 < width < math.inf and 0 < size < math.inf:
-        cap = 8 + max(0, math.ceil(math.log2(width) - math.log2(tolerance) - math.log2(size)))
+        log2_tolerance = 2 + log2_working_unit(ar)
+        cap = 8 + max(0, math.ceil(math.log2(width) - log2_tolerance - math.log2(size)))
     else:  # an empty bracket needs no iteration; a non-finite one gets bisection's worst case
         cap = 8 if width == 0 else 8 + 2100
     unit = ar.scalar(scale)
