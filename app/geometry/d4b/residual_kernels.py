@@ -6,9 +6,10 @@ here compute the same residual arrays entry by entry, with the same operations i
 (``closed_forms.recursion_13``, ``closed_forms.two_step``, ``checks.relative_difference``,
 ``nikolaides.right_angle_residuals``), so they agree with the numpy evaluation bit for bit
 (tests/geometry/d4b/test_residual_kernels.py); the rotation angle takes numpy's vectorized
-``arctan2`` on contiguous blocks instead of libm's atan2, equal to it or an ulp apart. They
-hold the proof's formulas, as ``closed_forms`` does, and take the polygons as given (arrays in,
-residual arrays out): the construction is never consulted here. The mp path keeps the numpy/mpmath evaluation.
+``arctan2`` on contiguous blocks of long polygons instead of libm's atan2, equal to it or an
+ulp apart. They hold the proof's formulas, as ``closed_forms`` does, and take the polygons as
+given (arrays in, residual arrays out): the construction is never consulted here. The mp path
+keeps the numpy/mpmath evaluation.
 
 The distances between two polygons (``point_distance``, ``relative_point_difference``) take
 √(x² + y²) where neither square can overflow or lose its bits to underflow, instead of libm's
@@ -235,6 +236,10 @@ def right_angle_largest(tractrix: Any, axis: Any, p: Any, n: int) -> Largest:
 #: Vertices per block of the rotation angle's passes (its scratch rows stay in the cache).
 ROTATION_BLOCK = 8192
 
+#: Below this many angles one compiled pass with libm's atan2 is cheaper than the blocks' five
+#: calls (numpy's arctan2 saves ≈ 25 ns an angle, the calls cost ≈ 12 µs).
+ROTATION_LIBM_BELOW = 512
+
 
 @kernel("void(float64[:, :], float64[:, :], int64, int64, float64[:, :])")
 def _rotation_arguments(p: Any, axis: Any, start: int, stop: int, rows: Any) -> None:
@@ -284,8 +289,40 @@ def _rotation_residuals(
     return largest, largest_printed
 
 
-def _rotation_angles(
+@kernel(
+    "Tuple((float64[:], float64[:], float64, float64))"
+    "(float64, float64[:, :], float64[:, :], int64, boolean)"
+)
+def _rotation_angles_libm(
     d: float, p: Any, axis: Any, n: int, store: bool
+) -> tuple[Any, Any, float, float]:
+    """Theorem 4's rotation angle at p_i, i = 1 .. n − 1: |angle − 2 atan2(d, p_i^y)| for the
+    angle between x_{i−1} − p_i and x_i − p_i (corrected), and for x_i − p_i, x_{i+1} − p_i
+    (printed); each angle atan2(a × b, a · b) as ``checks._signed_angle``, libm's atan2 in one
+    pass (``_rotation_angles`` takes it for short polygons). Both arrays stored if ``store``
+    (else empty), and the largest of each (NaN if one is NaN)."""
+    count = max(n - 1, 0)
+    corrected = np.empty(count if store else 0)
+    printed = np.empty(count if store else 0)
+    largest, largest_printed = 0.0, 0.0
+    for k in range(1, n):
+        px, py = p[k, 0], p[k, 1]
+        formula = 2 * math.atan2(d, py)
+        ax, ay = axis[k - 1, 0] - px, axis[k - 1, 1] - py
+        bx, by = axis[k, 0] - px, axis[k, 1] - py
+        residual = abs(math.atan2(ax * by - ay * bx, ax * bx + ay * by) - formula)
+        cx, cy = axis[k + 1, 0] - px, axis[k + 1, 1] - py
+        residual_printed = abs(math.atan2(bx * cy - by * cx, bx * cx + by * cy) - formula)
+        largest = running_largest(residual, largest)
+        largest_printed = running_largest(residual_printed, largest_printed)
+        if store:
+            corrected[k - 1] = residual
+            printed[k - 1] = residual_printed
+    return corrected, printed, largest, largest_printed
+
+
+def _rotation_angles(
+    d: float, p: Any, axis: Any, n: int, store: bool, block: int | None = None
 ) -> tuple[Any, Any, float, float]:
     """Theorem 4's rotation angle at p_i, i = 1 .. n − 1: |angle − 2 atan2(d, p_i^y)| for the
     angle between x_{i−1} − p_i and x_i − p_i (corrected), and for x_i − p_i, x_{i+1} − p_i
@@ -296,18 +333,24 @@ def _rotation_angles(
     ``arctan2`` (vectorized: ≈ 2.5 ns an entry against 30–55 for libm's atan2 in a compiled
     loop) takes the three angles, a second pass the residuals. numpy's vectorized atan2 may
     differ from libm's in the last bit, so the residuals may differ by an ulp of the angles
-    (below π) from libm's; they are rounding-level either way.
+    (below π) from libm's; they are rounding-level either way. Fewer than
+    ``ROTATION_LIBM_BELOW`` angles take libm's in one pass (``_rotation_angles_libm``) unless
+    a ``block`` size is given.
     """
     count = max(n - 1, 0)
+    if block is None:
+        if count < ROTATION_LIBM_BELOW:
+            return _rotation_angles_libm(d, p, axis, n, store)  # type: ignore[no-any-return]
+        block = ROTATION_BLOCK
     corrected = np.empty(count if store else 0)
     printed = np.empty(count if store else 0)
     largest, largest_printed = 0.0, 0.0
-    block = min(ROTATION_BLOCK, count)
-    rows = np.empty((5, block))
-    angles = np.empty((3, block))
-    steps = np.full(block, d)
-    for start in range(1, n, ROTATION_BLOCK):
-        stop = min(start + ROTATION_BLOCK, n)
+    size = min(block, count)
+    rows = np.empty((5, size))
+    angles = np.empty((3, size))
+    steps = np.full(size, d)
+    for start in range(1, n, block):
+        stop = min(start + block, n)
         m = stop - start
         _rotation_arguments(p, axis, start, stop, rows)
         np.arctan2(steps[:m], rows[0, :m], out=angles[0, :m])

@@ -164,6 +164,35 @@ def test_rotation_angles_equal_numpy(seed: int) -> None:
 
 
 @pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_blocked_rotation_angles_equal_the_one_pass(seed: int) -> None:
+    """The blocks (numpy's vectorized arctan2) give the one libm pass's residuals to an ulp of
+    the angles, and the same largest ones, whatever the block size (long polygons take them)."""
+    for data in polygons(seed):
+        n = len(data.p) - 1
+        d = float(data.p[1, 0] - data.p[0, 0]) / 2
+        for p, _, axis in ((data.p, data.tractrix, data.axis), perturbed(data, seed)):
+            one_pass = residual_kernels._rotation_angles(d, p, axis, n, True)
+            unit = 2 * np.spacing(np.pi)
+            for block in (1, 7, n - 1, 4096):
+                corrected, printed, largest, worst = residual_kernels._rotation_angles(
+                    d, p, axis, n, True, block
+                )
+                np.testing.assert_allclose(corrected, one_pass[0], rtol=0, atol=unit)
+                np.testing.assert_allclose(printed, one_pass[1], rtol=0, atol=unit)
+                assert (largest, worst) == (np.max(corrected), np.max(printed))
+                _, _, alone, worst_alone = residual_kernels._rotation_angles(
+                    d, p, axis, n, False, block
+                )
+                assert (alone, worst_alone) == (largest, worst)
+    long = d4b.polygons(Float64(), 1.0, 1e-3, None, -3000, 3000)  # past ROTATION_LIBM_BELOW
+    n = long.vertices - 1
+    corrected, printed = residual_kernels.rotation_angles(1e-3, long.p, long.axis, n)
+    libm = residual_kernels._rotation_angles_libm(1e-3, long.p, long.axis, n, True)
+    np.testing.assert_allclose(corrected, libm[0], rtol=0, atol=2 * np.spacing(np.pi))
+    np.testing.assert_allclose(printed, libm[1], rtol=0, atol=2 * np.spacing(np.pi))
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
 def test_printed_two_step_residuals_equal_numpy(seed: int) -> None:
     ar = Float64()
     for data in polygons(seed):
