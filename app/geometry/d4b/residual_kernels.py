@@ -340,7 +340,7 @@ def _rotation_angles(
     count = max(n - 1, 0)
     if block is None:
         if count < ROTATION_LIBM_BELOW:
-            return _rotation_angles_libm(d, p, axis, n, store)  # type: ignore[no-any-return]
+            return _rotation_angles_libm(d, p, axis, n, store)
         block = ROTATION_BLOCK
     corrected = np.empty(count if store else 0)
     printed = np.empty(count if store else 0)
