@@ -233,6 +233,39 @@ def right_angle_largest(tractrix: Any, axis: Any, p: Any, n: int) -> Largest:
     return Largest(float(largest), max(n, 0), lambda: right_angle_residuals(tractrix, axis, p, n))
 
 
+@kernel("UniTuple(float64, 2)(float64[:, :], int64, float64)")
+def _hypothesis(p: Any, n: int, d2: float) -> tuple[float, float]:
+    """The hypothesis of Theorem 4 on p_0 .. p_{n−1}, as ``checks._hypothesis`` computes it
+    entry by entry: the largest violation max(d² − p_{k−1}^y p_k^y, 0)/d² (NaN if one is NaN,
+    as ``np.maximum`` and the largest magnitude give it) and the smallest p_{k−1}^y p_k^y / d²
+    (NaN if one is NaN, as ``np.min``), k = 1 .. n − 1."""
+    largest, smallest = 0.0, math.inf
+    for k in range(1, n):
+        product = p[k - 1, 1] * p[k, 1]
+        excess = d2 - product
+        violation = excess if (excess >= 0.0 or excess != excess) else 0.0
+        largest = running_largest(violation / d2, largest)
+        ratio = product / d2
+        if smallest == smallest and (ratio != ratio or ratio < smallest):
+            smallest = ratio
+    return largest, smallest
+
+
+def hypothesis_largest(p: Any, n: int, d: float) -> tuple[Largest, float]:
+    """Float64: Theorem 4's hypothesis on p_0 .. p_{n−1} (n >= 2) in one pass: its largest
+    violation (``checks.Largest``; the array, as ``checks._hypothesis`` builds it, on demand)
+    and the smallest p_{k−1}^y p_k^y / d²."""
+    d2 = float(d) * float(d)
+    points = _points(p)
+    largest, smallest = _hypothesis(points, n, d2)
+
+    def violations() -> Any:
+        products = points[: n - 1, 1] * points[1:n, 1]
+        return np.maximum(d2 - products, 0.0) / d2
+
+    return Largest(float(largest), n - 1, violations), float(smallest)
+
+
 #: Vertices per block of the rotation angle's passes (its scratch rows stay in the cache).
 ROTATION_BLOCK = 8192
 

@@ -164,6 +164,26 @@ def test_rotation_angles_equal_numpy(seed: int) -> None:
 
 
 @pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_hypothesis_pass_equals_numpy(seed: int) -> None:
+    """Theorem 4's hypothesis in one pass: the largest violation and the smallest ratio of the
+    numpy evaluation, bit for bit (heights pushed below d so that violations are not all 0)."""
+    for data in polygons(seed):
+        d = float(data.p[1, 0] - data.p[0, 0]) / 2
+        for p in (data.p, perturbed(data, seed)[0], data.p * [1.0, 0.0] + [0.0, 0.9 * d]):
+            n = len(p) - 1
+            y = p[:n, 1]
+            products = y[:-1] * y[1:]
+            violation = np.maximum(d * d - products, 0.0) / (d * d)
+            largest, smallest = residual_kernels.hypothesis_largest(p, n, d)
+            assert (largest.value, len(largest)) == (np.max(np.abs(violation)), n - 1)
+            assert smallest == np.min(products / (d * d))
+            np.testing.assert_array_equal(largest.residuals(), violation)
+    nan = np.array([[0.0, 1.0], [1.0, np.nan], [2.0, 1.0]])
+    largest, smallest = residual_kernels.hypothesis_largest(nan, 3, 0.5)
+    assert np.isnan(largest.value) and np.isnan(smallest)
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
 def test_blocked_rotation_angles_equal_the_one_pass(seed: int) -> None:
     """The blocks (numpy's vectorized arctan2) give the one libm pass's residuals to an ulp of
     the angles, and the same largest ones, whatever the block size (long polygons take them)."""
