@@ -182,3 +182,25 @@ def test_compiled_fits_and_darboux_residuals_equal_the_numpy_path(seed: int) -> 
     for ar in (fast, generic):
         with pytest.raises(DomainError, match="distinct"):
             gauss_image.contact_points(ar, repeated)
+
+
+def test_largest_magnitude_is_numpys_largest_absolute_value() -> None:
+    """One compiled pass (``compiled.largest_of_magnitudes``) for float64 vectors: the value
+    of ``np.abs(v).max()`` exactly, NaN when one entry is NaN, also for strided vectors."""
+    from app.geometry.checks import largest_magnitude
+
+    rng = np.random.default_rng(5)
+    cases = [
+        rng.normal(size=101),
+        rng.normal(size=(40, 2))[:, 1],
+        np.array([-0.0]),
+        np.array([0.0, -3.0, 2.0]),
+        np.array([np.inf, -1.0]),
+        np.array([-np.inf]),
+        np.array([1e-320, -1e-310]),
+    ]
+    for values in cases:
+        assert largest_magnitude(values) == float(np.abs(values).max())
+    assert np.isnan(largest_magnitude(np.array([1.0, np.nan, 2.0])))
+    assert np.isnan(largest_magnitude(np.array([np.nan, np.inf])))
+    assert largest_magnitude(np.arange(3)) == 2.0  # not float64: numpy's reductions
