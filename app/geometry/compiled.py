@@ -156,6 +156,16 @@ def largest_of_magnitudes(values: Any) -> float:
     return largest
 
 
+@kernel("boolean(float64[:])")
+def all_finite_vector(values: Any) -> bool:
+    """Whether every entry of a float64 vector is finite (``np.all(np.isfinite(v))`` in one
+    compiled pass, stopping at the first that is not)."""
+    for k in range(values.shape[0]):  # noqa: SIM110 (a loop numba compiles)
+        if not math.isfinite(values[k]):
+            return False
+    return True
+
+
 @kernel("float64[:](float64[:], float64[:])")
 def _hypot_arrays(x: Any, y: Any) -> Any:
     """``hypot`` entry by entry of two aligned arrays (any strides)."""

@@ -204,3 +204,21 @@ def test_largest_magnitude_is_numpys_largest_absolute_value() -> None:
     assert np.isnan(largest_magnitude(np.array([1.0, np.nan, 2.0])))
     assert np.isnan(largest_magnitude(np.array([np.nan, np.inf])))
     assert largest_magnitude(np.arange(3)) == 2.0  # not float64: numpy's reductions
+
+
+def test_all_finite_of_float64_vectors_is_numpys() -> None:
+    ar = Float64()
+    cases = [
+        np.linspace(-1, 1, 50),
+        np.array([1.0, np.inf]),
+        np.array([np.nan]),
+        np.array([-np.inf, 0.0]),
+        np.empty(0),
+        np.array([[1.0, 2.0], [3.0, np.nan]])[:, 0],
+        np.array([[1.0, 2.0], [3.0, np.nan]]),
+        np.array([1e308, -1e308]),
+    ]
+    for values in cases:
+        assert ar.all_finite(values) == bool(np.all(np.isfinite(values)))
+    assert not ar.all_finite(np.array([[1.0, np.inf]]))
+    assert ar.all_finite(2.5) and not ar.all_finite(float("nan"))
