@@ -327,7 +327,7 @@ def evaluate(
 
     def check(
         statement: Statement,
-        residuals: Array,
+        residuals: Array | Largest,
         tolerance: float,
         erratum: Erratum | None = None,
     ) -> Check:
@@ -464,6 +464,13 @@ def evaluate(
         )
 
     def rotation() -> Check:
+        count = min(n, len(c()) - 1, len(nt()), len(resolution()))
+        if ar.mode == "float64" and not detail and count == n > 0:  # one pass, no arrays
+            return check(
+                EQUATION_19_ROTATION,
+                residual_kernels.contact_rotation_largest(c(), nt(), resolution(), n),
+                n_tolerance,
+            )
         rotated = stack_points(-nt()[:, 1], nt()[:, 0])
         return check(
             EQUATION_19_ROTATION,

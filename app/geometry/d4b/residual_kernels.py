@@ -266,6 +266,31 @@ def hypothesis_largest(p: Any, n: int, d: float) -> tuple[Largest, float]:
     return Largest(float(largest), n - 1, violations), float(smallest)
 
 
+@kernel("Tuple((float64[:], float64))(float64[:, :], float64[:, :], float64[:], int64, boolean)")
+def _contact_rotation(contact: Any, normals: Any, scale: Any, count: int, store: bool) -> Any:
+    """(19) as the rotation of n by a quarter turn, k = 0 .. count − 1: |ñ_{k+1} − (−n_k^y,
+    n_k^x)| times scale_k, as ``curvature.evaluate``'s ``rotation`` computes it
+    (``point_distance`` of the stacked rotated points, then the product); the array if
+    ``store`` (else empty) and the largest (NaN if one is NaN)."""
+    out = np.empty(count if store else 0)
+    largest = 0.0
+    for k in range(count):
+        distance = length(contact[k + 1, 0] - (-normals[k, 1]), contact[k + 1, 1] - normals[k, 0])
+        value = distance * scale[k]
+        largest = running_largest(value, largest)
+        if store:
+            out[k] = value
+    return out, largest
+
+
+def contact_rotation_largest(contact: Any, normals: Any, scale: Any, count: int) -> Largest:
+    """Float64: the largest of ``_contact_rotation``'s residuals (``checks.Largest``, the
+    array on demand); ``contact`` needs count + 1 rows, ``normals`` and ``scale`` count."""
+    arrays = _points(contact), _points(normals), np.asarray(scale, dtype=np.float64)
+    _, largest = _contact_rotation(*arrays, count, False)
+    return Largest(float(largest), count, lambda: _contact_rotation(*arrays, count, True)[0])
+
+
 #: Vertices per block of the rotation angle's passes (its scratch rows stay in the cache).
 ROTATION_BLOCK = 8192
 

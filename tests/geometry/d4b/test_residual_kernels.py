@@ -184,6 +184,24 @@ def test_hypothesis_pass_equals_numpy(seed: int) -> None:
 
 
 @pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_contact_rotation_pass_equals_numpy(seed: int) -> None:
+    """(19) as n turned a quarter: the one pass gives the numpy path's residuals bit for bit."""
+    ar = Float64()
+    rng = np.random.default_rng(seed)
+    for data in polygons(seed):
+        n = data.vertices - 1
+        images = data.gauss
+        for contact in (images.contact, images.contact * (1 + rng.normal(size=(n + 2, 2)) * 1e-6)):
+            scale = rng.uniform(0, 1, n)
+            normals = images.tractrix_gauss
+            rotated = np.stack([-normals[:, 1], normals[:, 0]], axis=1)
+            expected = residual_kernels.point_distance(ar, contact[1 : n + 1], rotated[:n]) * scale
+            largest = residual_kernels.contact_rotation_largest(contact, normals, scale, n)
+            assert (largest.value, len(largest)) == (np.max(expected), n)
+            np.testing.assert_array_equal(largest.residuals(), expected)
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
 def test_blocked_rotation_angles_equal_the_one_pass(seed: int) -> None:
     """The blocks (numpy's vectorized arctan2) give the one libm pass's residuals to an ulp of
     the angles, and the same largest ones, whatever the block size (long polygons take them)."""
