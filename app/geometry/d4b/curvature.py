@@ -479,6 +479,13 @@ def evaluate(
         )
 
     def inversion() -> Check:
+        count = min(n, len(m()), len(c()) - 1, len(pole_resolution()))
+        if ar.mode == "float64" and not detail and count == n > 0:  # one pass, no arrays
+            return check(
+                EQUATION_20_INVERSION,
+                residual_kernels.pole_inversion_largest(m(), c(), pole_resolution(), n),
+                local_tolerance,
+            )
         inverted = kinematic_closed_forms.pole_by_inversion(c()[:-1], c()[1:])  # i_min .. +1
         return check(
             EQUATION_20_INVERSION,

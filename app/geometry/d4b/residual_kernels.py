@@ -291,6 +291,41 @@ def contact_rotation_largest(contact: Any, normals: Any, scale: Any, count: int)
     return Largest(float(largest), count, lambda: _contact_rotation(*arrays, count, True)[0])
 
 
+@kernel(
+    "Tuple((float64[:], float64))(float64[:, :], float64[:, :], float64[:], int64, float64, "
+    "boolean)"
+)
+def _pole_inversion(
+    gauss: Any, contact: Any, scale: Any, count: int, tiny: float, store: bool
+) -> Any:
+    """(20)'s first form, k = 0 .. count − 1: m_k against the pole of the chord ñ_k ñ_{k+1}
+    inverted in the circle (``closed_forms.pole_by_inversion``), relative to its length
+    (``relative_point_difference``) and times scale_k, the same operations as
+    ``curvature.evaluate``'s ``inversion``; the array if ``store`` and the largest (NaN wins)."""
+    out = np.empty(count if store else 0)
+    largest = 0.0
+    for k in range(count):
+        tx = contact[k, 0] + contact[k + 1, 0]
+        ty = contact[k, 1] + contact[k + 1, 1]
+        squared = tx * tx + ty * ty
+        ex, ey = 2 * tx / squared, 2 * ty / squared
+        size = length(ex, ey)
+        size = size if size > tiny else tiny
+        value = length(gauss[k, 0] - ex, gauss[k, 1] - ey) / size * scale[k]
+        largest = running_largest(value, largest)
+        if store:
+            out[k] = value
+    return out, largest
+
+
+def pole_inversion_largest(gauss: Any, contact: Any, scale: Any, count: int) -> Largest:
+    """Float64: the largest of ``_pole_inversion``'s residuals (``checks.Largest``, the array
+    on demand); ``contact`` needs count + 1 rows, ``gauss`` and ``scale`` count."""
+    arrays = _points(gauss), _points(contact), np.asarray(scale, dtype=np.float64)
+    _, largest = _pole_inversion(*arrays, count, TINY, False)
+    return Largest(float(largest), count, lambda: _pole_inversion(*arrays, count, TINY, True)[0])
+
+
 #: Vertices per block of the rotation angle's passes (its scratch rows stay in the cache).
 ROTATION_BLOCK = 8192
 

@@ -202,6 +202,26 @@ def test_contact_rotation_pass_equals_numpy(seed: int) -> None:
 
 
 @pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_pole_inversion_pass_equals_numpy(seed: int) -> None:
+    """(20) as the inverted midpoint: the one pass gives the numpy path's residuals bit for
+    bit."""
+    ar = Float64()
+    rng = np.random.default_rng(seed)
+    for data in polygons(seed):
+        n = data.vertices - 1
+        images = data.gauss
+        for gauss in (images.gauss, images.gauss * (1 + rng.normal(size=(n + 1, 2)) * 1e-6)):
+            scale = rng.uniform(0, 1, n)
+            contact = images.contact
+            inverted = closed_forms.pole_by_inversion(contact[:-1], contact[1:])
+            expected = residual_kernels.relative_point_difference(ar, gauss[:n], inverted[:n])
+            expected = expected * scale
+            largest = residual_kernels.pole_inversion_largest(gauss, contact, scale, n)
+            assert (largest.value, len(largest)) == (np.max(expected), n)
+            np.testing.assert_array_equal(largest.residuals(), expected)
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
 def test_blocked_rotation_angles_equal_the_one_pass(seed: int) -> None:
     """The blocks (numpy's vectorized arctan2) give the one libm pass's residuals to an ulp of
     the angles, and the same largest ones, whatever the block size (long polygons take them)."""
