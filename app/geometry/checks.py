@@ -25,6 +25,7 @@ from app.geometry.ball_arithmetic import (
     decimal_bound,
     decimal_tolerance,
 )
+from app.geometry.compiled import largest_of_magnitudes
 from app.geometry.precision import Arithmetic, Array
 from app.geometry.tolerances import MPMATH_FLOAT_DIGITS
 
@@ -404,5 +405,8 @@ def printed_residual(ar: Arithmetic, residuals: Array) -> float | Decimal | None
 
 def largest_magnitude(values: np.ndarray[Any, np.dtype[np.float64]]) -> float:
     """max |v| of a non-empty float64 array, as ``np.abs(values).max()`` (NaN if one is NaN)
-    but without the array of absolute values: the larger of max v and −min v."""
+    but without the array of absolute values: one compiled pass over a float64 vector
+    (``compiled.largest_of_magnitudes``), else the larger of max v and −min v."""
+    if values.ndim == 1 and values.dtype == np.float64 and len(values):
+        return float(largest_of_magnitudes(values))
     return abs(max(float(values.max()), -float(values.min())))

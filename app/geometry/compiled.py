@@ -145,6 +145,27 @@ def running_largest(value: float, largest: float) -> float:
     return magnitude if not magnitude <= largest else largest
 
 
+@kernel("float64(float64[:])")
+def largest_of_magnitudes(values: Any) -> float:
+    """max |v| of a float64 vector, NaN if one is NaN (``np.abs(values).max()``, exactly: no
+    rounding is involved), in one compiled pass: at 20–1000 entries a third of the two numpy
+    reductions ``checks.largest_magnitude`` took (each check of every answer takes one)."""
+    largest = 0.0
+    for k in range(values.shape[0]):
+        largest = running_largest(values[k], largest)
+    return largest
+
+
+@kernel("boolean(float64[:])")
+def all_finite_vector(values: Any) -> bool:
+    """Whether every entry of a float64 vector is finite (``np.all(np.isfinite(v))`` in one
+    compiled pass, stopping at the first that is not)."""
+    for k in range(values.shape[0]):  # noqa: SIM110 (a loop numba compiles)
+        if not math.isfinite(values[k]):
+            return False
+    return True
+
+
 @kernel("float64[:](float64[:], float64[:])")
 def _hypot_arrays(x: Any, y: Any) -> Any:
     """``hypot`` entry by entry of two aligned arrays (any strides)."""

@@ -27,7 +27,7 @@ from typing import Any, Literal
 import mpmath
 import numpy as np
 
-from app.geometry.compiled import hypot_arrays
+from app.geometry.compiled import all_finite_vector, hypot_arrays
 from app.geometry.errors import DomainError, TimeLimitError
 from app.geometry.exact import ExactReal as ExactReal
 from app.geometry.mp_elementwise import array_aware_npconvert, elementwise
@@ -324,6 +324,8 @@ class Float64(Arithmetic):
         return float(np.pi)
 
     def all_finite(self, values: Array) -> bool:
+        if isinstance(values, np.ndarray) and values.ndim == 1 and values.dtype == np.float64:
+            return bool(all_finite_vector(values))  # one compiled pass
         return bool(np.all(np.isfinite(values)))
 
 

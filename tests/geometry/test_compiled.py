@@ -182,3 +182,43 @@ def test_compiled_fits_and_darboux_residuals_equal_the_numpy_path(seed: int) -> 
     for ar in (fast, generic):
         with pytest.raises(DomainError, match="distinct"):
             gauss_image.contact_points(ar, repeated)
+
+
+def test_largest_magnitude_is_numpys_largest_absolute_value() -> None:
+    """One compiled pass (``compiled.largest_of_magnitudes``) for float64 vectors: the value
+    of ``np.abs(v).max()`` exactly, NaN when one entry is NaN, also for strided vectors."""
+    from app.geometry.checks import largest_magnitude
+
+    rng = np.random.default_rng(5)
+    cases = [
+        rng.normal(size=101),
+        rng.normal(size=(40, 2))[:, 1],
+        np.array([-0.0]),
+        np.array([0.0, -3.0, 2.0]),
+        np.array([np.inf, -1.0]),
+        np.array([-np.inf]),
+        np.array([1e-320, -1e-310]),
+    ]
+    for values in cases:
+        assert largest_magnitude(values) == float(np.abs(values).max())
+    assert np.isnan(largest_magnitude(np.array([1.0, np.nan, 2.0])))
+    assert np.isnan(largest_magnitude(np.array([np.nan, np.inf])))
+    assert largest_magnitude(np.arange(3)) == 2.0  # not float64: numpy's reductions
+
+
+def test_all_finite_of_float64_vectors_is_numpys() -> None:
+    ar = Float64()
+    cases = [
+        np.linspace(-1, 1, 50),
+        np.array([1.0, np.inf]),
+        np.array([np.nan]),
+        np.array([-np.inf, 0.0]),
+        np.empty(0),
+        np.array([[1.0, 2.0], [3.0, np.nan]])[:, 0],
+        np.array([[1.0, 2.0], [3.0, np.nan]]),
+        np.array([1e308, -1e308]),
+    ]
+    for values in cases:
+        assert ar.all_finite(values) == bool(np.all(np.isfinite(values)))
+    assert not ar.all_finite(np.array([[1.0, np.inf]]))
+    assert ar.all_finite(2.5) and not ar.all_finite(float("nan"))

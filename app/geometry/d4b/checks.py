@@ -228,6 +228,10 @@ class _Context:
 
 
 def _hypothesis(ctx: _Context, p: Array) -> Check:
+    if ctx.ar.mode == "float64" and not ctx.detail and ctx.n >= 2:  # one compiled pass
+        largest, smallest = residual_kernels.hypothesis_largest(p, ctx.n, ctx.d)
+        check = ctx.check(HYPOTHESIS, 1, largest)
+        return replace(check, note=f"smallest p_(i-1)^y p_i^y / d² = {smallest:.6g}")
     y = p[: ctx.n, 1]
     d2 = ctx.d * ctx.d
     products = y[:-1] * y[1:]

@@ -344,7 +344,7 @@ def evaluate(
 
     def check(
         statement: Statement,
-        residuals: Array,
+        residuals: Array | Largest,
         tolerance: float,
         erratum: Erratum | None = None,
     ) -> Check:
@@ -481,6 +481,13 @@ def evaluate(
         return Erratum(*ERRATUM_18_SLOPE, printed_residual=printed_residual(ar, along))
 
     def rotation() -> Check:
+        count = min(n, len(c()) - 1, len(nt()), len(resolution()))
+        if ar.mode == "float64" and not detail and count == n > 0:  # one pass, no arrays
+            return check(
+                EQUATION_19_ROTATION,
+                residual_kernels.contact_rotation_largest(c(), nt(), resolution(), n),
+                n_tolerance,
+            )
         rotated = stack_points(-nt()[:, 1], nt()[:, 0])
         return check(
             EQUATION_19_ROTATION,
@@ -489,6 +496,13 @@ def evaluate(
         )
 
     def inversion() -> Check:
+        count = min(n, len(m()), len(c()) - 1, len(pole_resolution()))
+        if ar.mode == "float64" and not detail and count == n > 0:  # one pass, no arrays
+            return check(
+                EQUATION_20_INVERSION,
+                residual_kernels.pole_inversion_largest(m(), c(), pole_resolution(), n),
+                local_tolerance,
+            )
         inverted = kinematic_closed_forms.pole_by_inversion(c()[:-1], c()[1:])  # i_min .. +1
         return check(
             EQUATION_20_INVERSION,

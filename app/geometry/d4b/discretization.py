@@ -247,8 +247,13 @@ class D4bPolygons:
         when the polygons *are* the closed forms. |(i + τ)L| is largest at an end of the range.
         """
         ar = self.ar
-        ends = ar.array([self.i_min, self.i_max + 1])
         log_ratio = kinematic_closed_forms.log_ratio(ar, self.h, self.d)
+        if ar.mode == "float64":  # the same two products and their larger, without arrays
+            shift, L = float(self.shift), float(log_ratio)
+            first = abs((self.i_min + shift) * L)
+            last = abs((self.i_max + 1 + shift) * L)
+            return first if (first >= last or first != first) else last  # NaN wins (np.max)
+        ends = ar.array([self.i_min, self.i_max + 1])
         return ar.to_float(np.max(abs((ends + self.shift) * log_ratio)))
 
     @property

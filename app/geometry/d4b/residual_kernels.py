@@ -5,9 +5,11 @@ polygons with numpy (a dozen passes each, and many small calls on short polygons
 here compute the same residual arrays entry by entry, with the same operations in the same order
 (``closed_forms.recursion_13``, ``closed_forms.two_step``, ``checks.relative_difference``,
 ``nikolaides.right_angle_residuals``), so they agree with the numpy evaluation bit for bit
-(tests/geometry/d4b/test_residual_kernels.py). They hold the proof's formulas, as
-``closed_forms`` does, and take the polygons as given (arrays in, residual arrays out): the
-construction is never consulted here. The mp path keeps the numpy/mpmath evaluation.
+(tests/geometry/d4b/test_residual_kernels.py); the rotation angle takes numpy's vectorized
+``arctan2`` on contiguous blocks of long polygons instead of libm's atan2, equal to it or an
+ulp apart. They hold the proof's formulas, as ``closed_forms`` does, and take the polygons as
+given (arrays in, residual arrays out): the construction is never consulted here. The mp path
+keeps the numpy/mpmath evaluation.
 
 The distances between two polygons (``point_distance``, ``relative_point_difference``) take
 √(x² + y²) where neither square can overflow or lose its bits to underflow, instead of libm's
@@ -231,17 +233,167 @@ def right_angle_largest(tractrix: Any, axis: Any, p: Any, n: int) -> Largest:
     return Largest(float(largest), max(n, 0), lambda: right_angle_residuals(tractrix, axis, p, n))
 
 
+@kernel("UniTuple(float64, 2)(float64[:, :], int64, float64)")
+def _hypothesis(p: Any, n: int, d2: float) -> tuple[float, float]:
+    """The hypothesis of Theorem 4 on p_0 .. p_{n−1}, as ``checks._hypothesis`` computes it
+    entry by entry: the largest violation max(d² − p_{k−1}^y p_k^y, 0)/d² (NaN if one is NaN,
+    as ``np.maximum`` and the largest magnitude give it) and the smallest p_{k−1}^y p_k^y / d²
+    (NaN if one is NaN, as ``np.min``), k = 1 .. n − 1."""
+    largest, smallest = 0.0, math.inf
+    for k in range(1, n):
+        product = p[k - 1, 1] * p[k, 1]
+        excess = d2 - product
+        violation = excess if (excess >= 0.0 or excess != excess) else 0.0
+        largest = running_largest(violation / d2, largest)
+        ratio = product / d2
+        if smallest == smallest and (ratio != ratio or ratio < smallest):
+            smallest = ratio
+    return largest, smallest
+
+
+def hypothesis_largest(p: Any, n: int, d: float) -> tuple[Largest, float]:
+    """Float64: Theorem 4's hypothesis on p_0 .. p_{n−1} (n >= 2) in one pass: its largest
+    violation (``checks.Largest``; the array, as ``checks._hypothesis`` builds it, on demand)
+    and the smallest p_{k−1}^y p_k^y / d²."""
+    d2 = float(d) * float(d)
+    points = _points(p)
+    largest, smallest = _hypothesis(points, n, d2)
+
+    def violations() -> Any:
+        products = points[: n - 1, 1] * points[1:n, 1]
+        return np.maximum(d2 - products, 0.0) / d2
+
+    return Largest(float(largest), n - 1, violations), float(smallest)
+
+
+@kernel("Tuple((float64[:], float64))(float64[:, :], float64[:, :], float64[:], int64, boolean)")
+def _contact_rotation(contact: Any, normals: Any, scale: Any, count: int, store: bool) -> Any:
+    """(19) as the rotation of n by a quarter turn, k = 0 .. count − 1: |ñ_{k+1} − (−n_k^y,
+    n_k^x)| times scale_k, as ``curvature.evaluate``'s ``rotation`` computes it
+    (``point_distance`` of the stacked rotated points, then the product); the array if
+    ``store`` (else empty) and the largest (NaN if one is NaN)."""
+    out = np.empty(count if store else 0)
+    largest = 0.0
+    for k in range(count):
+        distance = length(contact[k + 1, 0] - (-normals[k, 1]), contact[k + 1, 1] - normals[k, 0])
+        value = distance * scale[k]
+        largest = running_largest(value, largest)
+        if store:
+            out[k] = value
+    return out, largest
+
+
+def contact_rotation_largest(contact: Any, normals: Any, scale: Any, count: int) -> Largest:
+    """Float64: the largest of ``_contact_rotation``'s residuals (``checks.Largest``, the
+    array on demand); ``contact`` needs count + 1 rows, ``normals`` and ``scale`` count."""
+    arrays = _points(contact), _points(normals), np.asarray(scale, dtype=np.float64)
+    _, largest = _contact_rotation(*arrays, count, False)
+    return Largest(float(largest), count, lambda: _contact_rotation(*arrays, count, True)[0])
+
+
+@kernel(
+    "Tuple((float64[:], float64))(float64[:, :], float64[:, :], float64[:], int64, float64, "
+    "boolean)"
+)
+def _pole_inversion(
+    gauss: Any, contact: Any, scale: Any, count: int, tiny: float, store: bool
+) -> Any:
+    """(20)'s first form, k = 0 .. count − 1: m_k against the pole of the chord ñ_k ñ_{k+1}
+    inverted in the circle (``closed_forms.pole_by_inversion``), relative to its length
+    (``relative_point_difference``) and times scale_k, the same operations as
+    ``curvature.evaluate``'s ``inversion``; the array if ``store`` and the largest (NaN wins)."""
+    out = np.empty(count if store else 0)
+    largest = 0.0
+    for k in range(count):
+        tx = contact[k, 0] + contact[k + 1, 0]
+        ty = contact[k, 1] + contact[k + 1, 1]
+        squared = tx * tx + ty * ty
+        ex, ey = 2 * tx / squared, 2 * ty / squared
+        size = length(ex, ey)
+        size = size if size > tiny else tiny
+        value = length(gauss[k, 0] - ex, gauss[k, 1] - ey) / size * scale[k]
+        largest = running_largest(value, largest)
+        if store:
+            out[k] = value
+    return out, largest
+
+
+def pole_inversion_largest(gauss: Any, contact: Any, scale: Any, count: int) -> Largest:
+    """Float64: the largest of ``_pole_inversion``'s residuals (``checks.Largest``, the array
+    on demand); ``contact`` needs count + 1 rows, ``gauss`` and ``scale`` count."""
+    arrays = _points(gauss), _points(contact), np.asarray(scale, dtype=np.float64)
+    _, largest = _pole_inversion(*arrays, count, TINY, False)
+    return Largest(float(largest), count, lambda: _pole_inversion(*arrays, count, TINY, True)[0])
+
+
+#: Vertices per block of the rotation angle's passes (its scratch rows stay in the cache).
+ROTATION_BLOCK = 8192
+
+#: Below this many angles one compiled pass with libm's atan2 is cheaper than the blocks' five
+#: calls (numpy's arctan2 saves ≈ 25 ns an angle, the calls cost ≈ 12 µs).
+ROTATION_LIBM_BELOW = 512
+
+
+@kernel("void(float64[:, :], float64[:, :], int64, int64, float64[:, :])")
+def _rotation_arguments(p: Any, axis: Any, start: int, stop: int, rows: Any) -> None:
+    """The atan2 arguments of Theorem 4's rotation angle at p_k, k = start .. stop − 1, into
+    column k − start of ``rows``: p_k^y, then a × b and a · b for a = x_{k−1} − p_k, b = x_k − p_k
+    (corrected), then b × c and b · c for c = x_{k+1} − p_k (printed), as
+    ``checks._signed_angle`` writes them."""
+    for k in range(start, stop):
+        j = k - start
+        px, py = p[k, 0], p[k, 1]
+        ax, ay = axis[k - 1, 0] - px, axis[k - 1, 1] - py
+        bx, by = axis[k, 0] - px, axis[k, 1] - py
+        cx, cy = axis[k + 1, 0] - px, axis[k + 1, 1] - py
+        rows[0, j] = py
+        rows[1, j] = ax * by - ay * bx
+        rows[2, j] = ax * bx + ay * by
+        rows[3, j] = bx * cy - by * cx
+        rows[4, j] = bx * cx + by * cy
+
+
+@kernel(
+    "UniTuple(float64, 2)(float64[:, :], int64, float64, float64, float64[:], float64[:], int64,"
+    " boolean)"
+)
+def _rotation_residuals(
+    angles: Any,
+    count: int,
+    largest: float,
+    largest_printed: float,
+    corrected: Any,
+    printed: Any,
+    offset: int,
+    store: bool,
+) -> tuple[float, float]:
+    """|angle − 2 atan2(d, p^y)| for the corrected and the printed angles of one block (rows of
+    ``angles``: atan2(d, p^y), the corrected angle, the printed one), stored from ``offset`` if
+    ``store``; the running largest of each (NaN once one is NaN)."""
+    for j in range(count):
+        formula = 2 * angles[0, j]
+        residual = abs(angles[1, j] - formula)
+        residual_printed = abs(angles[2, j] - formula)
+        largest = running_largest(residual, largest)
+        largest_printed = running_largest(residual_printed, largest_printed)
+        if store:
+            corrected[offset + j] = residual
+            printed[offset + j] = residual_printed
+    return largest, largest_printed
+
+
 @kernel(
     "Tuple((float64[:], float64[:], float64, float64))"
     "(float64, float64[:, :], float64[:, :], int64, boolean)"
 )
-def _rotation_angles(
+def _rotation_angles_libm(
     d: float, p: Any, axis: Any, n: int, store: bool
 ) -> tuple[Any, Any, float, float]:
     """Theorem 4's rotation angle at p_i, i = 1 .. n − 1: |angle − 2 atan2(d, p_i^y)| for the
     angle between x_{i−1} − p_i and x_i − p_i (corrected), and for x_i − p_i, x_{i+1} − p_i
-    (printed); each angle atan2(a × b, a · b) as ``checks._signed_angle``. Both arrays stored
-    if ``store`` (else empty), and the largest of each (NaN if one is NaN)."""
+    (printed); each angle atan2(a × b, a · b) as ``checks._signed_angle``, libm's atan2 in one
+    pass (``_rotation_angles`` takes it for short polygons). Both arrays stored if ``store``
+    (else empty), and the largest of each (NaN if one is NaN)."""
     count = max(n - 1, 0)
     corrected = np.empty(count if store else 0)
     printed = np.empty(count if store else 0)
@@ -259,6 +411,47 @@ def _rotation_angles(
         if store:
             corrected[k - 1] = residual
             printed[k - 1] = residual_printed
+    return corrected, printed, largest, largest_printed
+
+
+def _rotation_angles(
+    d: float, p: Any, axis: Any, n: int, store: bool, block: int | None = None
+) -> tuple[Any, Any, float, float]:
+    """Theorem 4's rotation angle at p_i, i = 1 .. n − 1: |angle − 2 atan2(d, p_i^y)| for the
+    angle between x_{i−1} − p_i and x_i − p_i (corrected), and for x_i − p_i, x_{i+1} − p_i
+    (printed); each angle atan2(a × b, a · b) as ``checks._signed_angle``. Both arrays stored
+    if ``store`` (else empty), and the largest of each (NaN if one is NaN).
+
+    In blocks: a compiled pass writes the atan2 arguments into contiguous rows, numpy's
+    ``arctan2`` (vectorized: ≈ 2.5 ns an entry against 30–55 for libm's atan2 in a compiled
+    loop) takes the three angles, a second pass the residuals. numpy's vectorized atan2 may
+    differ from libm's in the last bit, so the residuals may differ by an ulp of the angles
+    (below π) from libm's; they are rounding-level either way. Fewer than
+    ``ROTATION_LIBM_BELOW`` angles take libm's in one pass (``_rotation_angles_libm``) unless
+    a ``block`` size is given.
+    """
+    count = max(n - 1, 0)
+    if block is None:
+        if count < ROTATION_LIBM_BELOW:
+            return _rotation_angles_libm(d, p, axis, n, store)
+        block = ROTATION_BLOCK
+    corrected = np.empty(count if store else 0)
+    printed = np.empty(count if store else 0)
+    largest, largest_printed = 0.0, 0.0
+    size = min(block, count)
+    rows = np.empty((5, size))
+    angles = np.empty((3, size))
+    steps = np.full(size, d)
+    for start in range(1, n, block):
+        stop = min(start + block, n)
+        m = stop - start
+        _rotation_arguments(p, axis, start, stop, rows)
+        np.arctan2(steps[:m], rows[0, :m], out=angles[0, :m])
+        np.arctan2(rows[1, :m], rows[2, :m], out=angles[1, :m])
+        np.arctan2(rows[3, :m], rows[4, :m], out=angles[2, :m])
+        largest, largest_printed = _rotation_residuals(
+            angles, m, largest, largest_printed, corrected, printed, start - 1, store
+        )
     return corrected, printed, largest, largest_printed
 
 

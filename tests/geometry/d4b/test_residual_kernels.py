@@ -164,6 +164,93 @@ def test_rotation_angles_equal_numpy(seed: int) -> None:
 
 
 @pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_hypothesis_pass_equals_numpy(seed: int) -> None:
+    """Theorem 4's hypothesis in one pass: the largest violation and the smallest ratio of the
+    numpy evaluation, bit for bit (heights pushed below d so that violations are not all 0)."""
+    for data in polygons(seed):
+        d = float(data.p[1, 0] - data.p[0, 0]) / 2
+        for p in (data.p, perturbed(data, seed)[0], data.p * [1.0, 0.0] + [0.0, 0.9 * d]):
+            n = len(p) - 1
+            y = p[:n, 1]
+            products = y[:-1] * y[1:]
+            violation = np.maximum(d * d - products, 0.0) / (d * d)
+            largest, smallest = residual_kernels.hypothesis_largest(p, n, d)
+            assert (largest.value, len(largest)) == (np.max(np.abs(violation)), n - 1)
+            assert smallest == np.min(products / (d * d))
+            np.testing.assert_array_equal(largest.residuals(), violation)
+    nan = np.array([[0.0, 1.0], [1.0, np.nan], [2.0, 1.0]])
+    largest, smallest = residual_kernels.hypothesis_largest(nan, 3, 0.5)
+    assert np.isnan(largest.value) and np.isnan(smallest)
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_contact_rotation_pass_equals_numpy(seed: int) -> None:
+    """(19) as n turned a quarter: the one pass gives the numpy path's residuals bit for bit."""
+    ar = Float64()
+    rng = np.random.default_rng(seed)
+    for data in polygons(seed):
+        n = data.vertices - 1
+        images = data.gauss
+        for contact in (images.contact, images.contact * (1 + rng.normal(size=(n + 2, 2)) * 1e-6)):
+            scale = rng.uniform(0, 1, n)
+            normals = images.tractrix_gauss
+            rotated = np.stack([-normals[:, 1], normals[:, 0]], axis=1)
+            expected = residual_kernels.point_distance(ar, contact[1 : n + 1], rotated[:n]) * scale
+            largest = residual_kernels.contact_rotation_largest(contact, normals, scale, n)
+            assert (largest.value, len(largest)) == (np.max(expected), n)
+            np.testing.assert_array_equal(largest.residuals(), expected)
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_pole_inversion_pass_equals_numpy(seed: int) -> None:
+    """(20) as the inverted midpoint: the one pass gives the numpy path's residuals bit for
+    bit."""
+    ar = Float64()
+    rng = np.random.default_rng(seed)
+    for data in polygons(seed):
+        n = data.vertices - 1
+        images = data.gauss
+        for gauss in (images.gauss, images.gauss * (1 + rng.normal(size=(n + 1, 2)) * 1e-6)):
+            scale = rng.uniform(0, 1, n)
+            contact = images.contact
+            inverted = closed_forms.pole_by_inversion(contact[:-1], contact[1:])
+            expected = residual_kernels.relative_point_difference(ar, gauss[:n], inverted[:n])
+            expected = expected * scale
+            largest = residual_kernels.pole_inversion_largest(gauss, contact, scale, n)
+            assert (largest.value, len(largest)) == (np.max(expected), n)
+            np.testing.assert_array_equal(largest.residuals(), expected)
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_blocked_rotation_angles_equal_the_one_pass(seed: int) -> None:
+    """The blocks (numpy's vectorized arctan2) give the one libm pass's residuals to an ulp of
+    the angles, and the same largest ones, whatever the block size (long polygons take them)."""
+    for data in polygons(seed):
+        n = len(data.p) - 1
+        d = float(data.p[1, 0] - data.p[0, 0]) / 2
+        for p, _, axis in ((data.p, data.tractrix, data.axis), perturbed(data, seed)):
+            one_pass = residual_kernels._rotation_angles(d, p, axis, n, True)
+            unit = 2 * np.spacing(np.pi)
+            for block in (1, 7, n - 1, 4096):
+                corrected, printed, largest, worst = residual_kernels._rotation_angles(
+                    d, p, axis, n, True, block
+                )
+                np.testing.assert_allclose(corrected, one_pass[0], rtol=0, atol=unit)
+                np.testing.assert_allclose(printed, one_pass[1], rtol=0, atol=unit)
+                assert (largest, worst) == (np.max(corrected), np.max(printed))
+                _, _, alone, worst_alone = residual_kernels._rotation_angles(
+                    d, p, axis, n, False, block
+                )
+                assert (alone, worst_alone) == (largest, worst)
+    long = d4b.polygons(Float64(), 1.0, 1e-3, None, -3000, 3000)  # past ROTATION_LIBM_BELOW
+    n = long.vertices - 1
+    corrected, printed = residual_kernels.rotation_angles(1e-3, long.p, long.axis, n)
+    libm = residual_kernels._rotation_angles_libm(1e-3, long.p, long.axis, n, True)
+    np.testing.assert_allclose(corrected, libm[0], rtol=0, atol=2 * np.spacing(np.pi))
+    np.testing.assert_allclose(printed, libm[1], rtol=0, atol=2 * np.spacing(np.pi))
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
 def test_printed_two_step_residuals_equal_numpy(seed: int) -> None:
     ar = Float64()
     for data in polygons(seed):
