@@ -193,9 +193,9 @@ def check_residuals(
         note = f"{note}; {missing}" if note else missing
         values = np.where(finite, values, np.finfo(np.float64).max)
         if ar.certified and detail:
-            return replace_per_index(
-                statement, indices, residual, tolerance, holds, erratum, note, residuals, finite
-            )
+            # on balls per index the decimal upper bound of each finite residual, None for the
+            # others (float64 shows the largest float there)
+            values = decimal_uppers(residuals, finite)
     return Check(
         id=statement.id,
         reference=statement.reference,
@@ -204,33 +204,6 @@ def check_residuals(
         tolerance=tolerance,
         holds=holds,
         per_index=PerIndex(np.asarray(indices, dtype=np.int64), values) if detail else None,
-        erratum=erratum,
-        note=note,
-    )
-
-
-def replace_per_index(
-    statement: Statement,
-    indices: np.ndarray[Any, np.dtype[np.int64]],
-    residual: Any,
-    tolerance: Any,
-    holds: bool | None,
-    erratum: Erratum | None,
-    note: str | None,
-    residuals: Array,
-    finite: np.ndarray[Any, np.dtype[np.bool_]],
-) -> Check:
-    """A check on balls with some residual not finite: per index the decimal upper bound of
-    each finite one, ``None`` for the others (float64 shows the largest float there)."""
-    shown = decimal_uppers(residuals, finite)
-    return Check(
-        id=statement.id,
-        reference=statement.reference,
-        claim=statement.claim,
-        residual=residual,
-        tolerance=tolerance,
-        holds=holds,
-        per_index=PerIndex(np.asarray(indices, dtype=np.int64), shown),
         erratum=erratum,
         note=note,
     )

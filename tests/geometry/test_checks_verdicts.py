@@ -2,8 +2,13 @@
 
 from __future__ import annotations
 
+from decimal import Decimal
+
+import flint
 import numpy as np
 
+from app.geometry import balls
+from app.geometry.ball_arithmetic import Ball
 from app.geometry.checks import Statement, check_residuals
 from app.geometry.curvature import planarity
 from app.geometry.precision import Float64, MultiPrecision
@@ -53,3 +58,17 @@ def test_planarity_of_huge_faces_is_measured_not_overflowed() -> None:
         dtype=object,
     )
     assert abs(float(planarity(mp, face)[0]) - planarity(ar, _face(1.0, 0.5))[0]) < 1e-15
+
+
+def test_on_balls_an_uncomputable_residual_shows_none_per_index() -> None:
+    """Per index on balls: the decimal upper bound of each finite residual, None elsewhere."""
+    ar = Ball(30)
+    with balls.working_precision(ar.bits):
+        values = np.array([flint.arb(0), flint.arb("inf"), flint.arb("1e-40")], dtype=object)
+        check = check_residuals(STATEMENT, ar, INDICES, values, 1e-25, True)
+    assert check.holds is None and check.residual is None
+    assert "1 of 3 residuals could not be computed" in (check.note or "")
+    assert check.per_index is not None
+    zero, missing, small = check.per_index.residuals
+    assert zero == 0 and missing is None
+    assert small is not None and Decimal("1e-40") <= small <= Decimal("1.000000001e-40")
