@@ -120,6 +120,19 @@ if _FUNCTIONS is not None:
 AVAILABLE = _FUNCTIONS is not None
 
 
+def bind(name: str, result: Any, arguments: list[Any]) -> Any:
+    """One more libflint function from the same handle, typed for numba's nopython loops in
+    another module (bind it to a module global there); None when the compiled passes are not
+    available or the function is missing (the caller then keeps its Python code)."""
+    if _library_handle is None or _FUNCTIONS is None:
+        return None
+    function = getattr(_library_handle, name, None)
+    if function is None:
+        return None
+    function.restype, function.argtypes = result, arguments
+    return function
+
+
 def addresses(values: np.ndarray[Any, Any]) -> np.ndarray[Any, np.dtype[np.int64]]:
     """The ``arb_struct`` address of every entry of an object array of ``arb`` (all of them
     ``arb``: the caller checks). The array must stay alive while the addresses are used."""
@@ -261,8 +274,9 @@ if _FUNCTIONS is not None:
     _vec_clear = _FUNCTIONS["_arb_vec_clear"]
 
 
-class _Scratch:
-    """``count`` zeroed ``arb_struct`` allocated by flint, freed on leaving (also on errors)."""
+class Scratch:
+    """``count`` zeroed ``arb_struct`` allocated by flint, freed on leaving (also on errors);
+    for the loops of other modules too."""
 
     def __init__(self, count: int) -> None:
         self.count = count
@@ -283,7 +297,7 @@ def argmax_abs(values: np.ndarray[Any, Any], upward: bool) -> int:
     ones); −1 for an empty array, −2 when some bound is not finite."""
     if not values.size:
         return -1
-    with _Scratch(2) as scratch:
+    with Scratch(2) as scratch:
         return int(_argmax_abs(addresses(values), upward, flint.ctx.prec, scratch))
 
 
@@ -291,7 +305,7 @@ def largest_radii(x: np.ndarray[Any, Any], y: np.ndarray[Any, Any]) -> tuple[int
     """For the points (x, y) (``_largest_radii``): (index of the largest radius, index of the
     largest relative radius, whether an inexact point's ball reaches 0 in both coordinates,
     whether something is not finite)."""
-    with _Scratch(6) as scratch:
+    with Scratch(6) as scratch:
         largest, relative, reaches_zero, unbounded = _largest_radii(
             addresses(x), addresses(y), flint.ctx.prec, scratch
         )
@@ -307,7 +321,7 @@ def relative_point_difference(
     balls made by negating a column (numpy's loop: one allocation each, no conversion), which
     nothing else references yet."""
     out = np.negative(expected[:, 0])
-    with _Scratch(5) as scratch:
+    with Scratch(5) as scratch:
         _relative_point_difference(
             addresses(computed),
             addresses(expected),
@@ -324,7 +338,7 @@ def hypot(x: np.ndarray[Any, Any], y: np.ndarray[Any, Any]) -> np.ndarray[Any, A
     """``Ball.hypot`` of two equal-length 1-d arrays of balls in one compiled pass (the same
     operations: the same balls), into fresh balls as ``relative_point_difference``."""
     out = np.negative(x)
-    with _Scratch(1) as scratch:
+    with Scratch(1) as scratch:
         _hypots(addresses(x), addresses(y), addresses(out), flint.ctx.prec, scratch)
     return out
 

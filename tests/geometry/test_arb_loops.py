@@ -115,3 +115,18 @@ def test_hypot_gives_the_same_balls() -> None:
         assert all(
             a.mid() == b.mid() and a.rad() == b.rad() for a, b in zip(fast, slow, strict=True)
         )
+
+
+@pytest.mark.skipif(not arb_loops.AVAILABLE, reason="python-flint's layout is not the known one")
+def test_bind_types_another_libflint_function_for_other_modules() -> None:
+    """``bind`` hands out one more libflint function from the same handle: here arb_neg on
+    scratch balls gives −x, and a missing name gives None instead of an error."""
+    import ctypes
+
+    negate = arb_loops.bind("arb_neg", None, [ctypes.c_void_p, ctypes.c_void_p])
+    assert negate is not None
+    assert arb_loops.bind("arb_no_such_function", None, []) is None
+    ball = flint.arb("0.75")
+    result = -flint.arb(0)  # a fresh ball nothing else references
+    negate(id(result) + arb_loops.OFFSET, id(ball) + arb_loops.OFFSET)
+    assert result == -ball
