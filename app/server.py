@@ -126,6 +126,7 @@ def serve(sock: socket.socket, options: Sequence[str]) -> None:
     config.load()  # imports the app: everything it holds for good exists from here on
     warm_app()
     tune_gc()
+    keep_request_threads()
     start_pool()
     uvicorn_server(config).run(sockets=[sock])
 
@@ -149,6 +150,29 @@ def start_pool() -> None:
     if admission.settings.compute_processes > 0:
         admission.pool = ComputePool(admission.settings)
         admission.pool.start()
+
+
+#: Seconds an idle request thread waits for work before it ends (anyio's default: 10).
+REQUEST_THREAD_IDLE_SECONDS = 3600
+
+
+def keep_request_threads() -> None:
+    """Keep the worker's request threads between bursts instead of starting them anew.
+
+    FastAPI runs each synchronous endpoint, a refusal's pricing included, in one of anyio's
+    threads (at most ``DCOSH_COMPUTE_THREADS`` + ``SPARE_THREADS``), and anyio ends the threads
+    idle for 10 s. So a burst after a quiet spell started up to seven threads per worker, and
+    ``Thread.start`` holds the event loop until the new thread has run: on a busy host, a wait
+    for the scheduler per thread, before the burst's first refusals. A 2 ms stack sampler of
+    both workers' loops, D1 and D4b construction bursts 11 s apart at load 8-9: 4-24 samples
+    (median 7.5) in ``Thread.start`` per burst with anyio's default, 0-3 with this after the
+    first burst (which starts them); the refusals' latency at that load moved less than its
+    noise. The threads are bounded, so keeping them costs their stacks only.
+    anyio's knob is a class attribute of its asyncio backend; tests/api/test_admission.py
+    fails if it moves."""
+    from anyio._backends._asyncio import WorkerThread
+
+    WorkerThread.MAX_IDLE_TIME = REQUEST_THREAD_IDLE_SECONDS
 
 
 #: The cyclic garbage collector's thresholds in a worker (Python's default: 700, 10, 10).

@@ -201,3 +201,21 @@ def test_the_watchdog_never_stops_a_thread_inside_the_balls_precision_lock() -> 
     assert seen["stopped"] >= seen["released"]  # stopped, but only once out of the lock
     assert balls.LOCK.acquire(blocking=False)  # and the lock is free
     balls.LOCK.release()
+
+
+def test_the_workers_keep_their_request_threads_between_bursts(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """A server worker keeps idle request threads for an hour (app.server.keep_request_threads)
+    through anyio's knob, which anyio's thread pool still reads when it prunes idle threads."""
+    import inspect
+
+    from anyio._backends import _asyncio as backend
+
+    from app import server
+
+    monkeypatch.setattr(backend.WorkerThread, "MAX_IDLE_TIME", backend.WorkerThread.MAX_IDLE_TIME)
+    server.keep_request_threads()
+    assert backend.WorkerThread.MAX_IDLE_TIME == server.REQUEST_THREAD_IDLE_SECONDS == 3600
+    pruning = inspect.getsource(backend.AsyncIOBackend.run_sync_in_worker_thread)
+    assert "WorkerThread.MAX_IDLE_TIME" in pruning
