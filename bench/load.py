@@ -8,8 +8,9 @@ on a free port, then:
    (each with a fresh parameter, so that all compute; sent from a plain-socket client in a
    process of its own, ``BURST``; LOAD_BURSTS=name,... runs only those): every answer must be
    a 200 within the time limit or a 503 with Retry-After within 100 ms, none later than the
-   limit + 1 s; /health is polled meanwhile (p99 <= 50 ms), and each worker's peak resident memory and the most
-   connections it held (the spread of the burst over the workers) are sampled;
+   limit + 1 s; /health is polled meanwhile (p99 <= 50 ms), and each worker's peak resident
+   memory and the most connections it held (the spread of the burst over the workers) are
+   sampled;
 2. hostile clients: a 2 GiB chunked upload, a 10 MB header and a 1-byte/s body, each cut off
    early with a 4xx, and the workers' memory before and after;
 3. mixed load: the mix below over 64 connections for LOAD_MIXED_SECONDS (300): a line per fifth
