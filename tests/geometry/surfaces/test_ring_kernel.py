@@ -152,11 +152,39 @@ def test_fused_ring_checks_equal_the_ring_and_its_residuals(
         np.testing.assert_array_equal(largest[1].residuals(), fused[1])
 
 
+def test_fused_ring_checks_stay_finite_where_areas_are_far_from_1() -> None:
+    """D4b with d = h/2 on -200 .. 300: the catenoid's faces reach areas of 1e266 and the
+    pseudosphere's 1e-135; the residuals (17) and the theorems' stay within rounding of the
+    numpy evaluation's (a product with 1/|a(f)| in place of a quotient overflowed here)."""
+    ar = Float64()
+    data = d4b.polygons(ar, 1.0, 0.5, None, -200, 300)
+    pairs = [(data.tractrix, data.gauss.tractrix_gauss, -1.0), (data.p, data.gauss.gauss, None)]
+    for meridian, gauss, curvature in pairs:
+        fused = ring_curvature.ring_checks(ar, meridian, gauss, curvature)
+        assert fused is not None
+        ring = ring_curvature.ring_curvatures(ar, meridian, gauss)
+        own = (
+            ring_curvature.minimal_residuals(ring)
+            if curvature is None
+            else ring_curvature.constant_curvature_residuals(ring, curvature)
+        )
+        _close(fused[0], np.maximum(own, ring.parallel))
+        k_res, h_res, defined = revolution_formulas.equation_17_residuals(
+            ar, meridian[:, 1], gauss[:, 1], ring
+        )
+        _close(fused[1], np.where(defined, np.maximum(k_res, h_res), 0.0))
+        assert fused[2] == int(np.count_nonzero(~defined))
+
+
 def _close(fused: np.ndarray, expected: np.ndarray) -> None:
-    """Residuals (each relative to its own scale) within 32 units of rounding of max(1, |r|)."""
-    bound = 32 * np.finfo(np.float64).eps * np.maximum(1.0, np.maximum(abs(fused), abs(expected)))
+    """Residuals (each relative to its own scale) within 32 units of rounding of max(1, |r|),
+    finite where the numpy evaluation's are."""
     assert fused.shape == expected.shape
-    assert bool(np.all(abs(fused - expected) <= bound)), np.max(abs(fused - expected))
+    finite = np.isfinite(expected)
+    np.testing.assert_array_equal(np.isfinite(fused), finite)
+    bound = 32 * np.finfo(np.float64).eps * np.maximum(1.0, abs(expected[finite]))
+    difference = abs(fused[finite] - expected[finite])
+    assert bool(np.all(difference <= bound)), np.max(difference)
 
 
 def test_fused_ring_checks_leave_a_face_without_area_to_the_numpy_path() -> None:
