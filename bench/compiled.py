@@ -34,6 +34,7 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
+from app.geometry.curve import EVERYTHING, Selection
 from app.geometry.d1 import construction as d1
 from app.geometry.d3 import construction as d3
 from app.geometry.d4a import construction as d4a
@@ -41,7 +42,6 @@ from app.geometry.d4b import (
     construction as d4b,
     discretization as d4b_full,
 )
-from app.geometry.curve import EVERYTHING, Selection
 from app.geometry.precision import Float64
 from bench.common import compare, record_target
 

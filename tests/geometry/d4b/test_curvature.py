@@ -213,6 +213,8 @@ def test_closed_n_read_off_the_closed_contact_points_has_the_bits_of_its_own_for
     the edge of the shortcut)."""
     ar = Float64()
     data = d4b.polygons(ar, h, d, beta0, i_min, i_max, method)  # type: ignore[arg-type]
-    expected = kcf.tractrix_gauss_image(ar, data.h, data.d, ar.indices(i_min, i_max + 1), data.shift)
+    expected = kcf.tractrix_gauss_image(
+        ar, data.h, data.d, ar.indices(i_min, i_max + 1), data.shift
+    )
     got = data.gauss.closed_tractrix_gauss
     assert got.view(np.int64).tolist() == expected.view(np.int64).tolist()
