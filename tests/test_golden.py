@@ -55,6 +55,14 @@ TEXT_CHANGES: dict[tuple[str, str], str] = {
 #: the printed form nearly cancels with p^y (d = 0.5h), and at d = 1e-4 h, where the printed
 #: residual is itself at rounding level (1.6e-15), to 1.5e-15.
 #: Printed residuals are compared to 1e-6 relative (RESIDUAL_KEYS), so no entry below is needed.
+#: Issue 13 (session 17): the float64 ring checks (Theorems 7, 8 and (17) of D4b) multiply by
+#: 1/|a(f)| and 1/c where they divided by them (8 divisions a face instead of 17): their
+#: residuals move by rounding of their scales, at most 5.6e-19 absolute in the default answers
+#: (equation-17 of /discretizations/d4b: 9.569e-19 -> 9.982e-19; the residuals there are
+#: themselves at rounding level, so that is up to 56 % of one of them, 0.003 eps of its
+#: scale); no vertex, companion, tolerance or verdict moved (24 answers compared with main,
+#: n up to 6001, d = 0.5 and 1e-3, detail). Residuals below 1e-9 compare equal
+#: (RESIDUAL_KEYS), so no entry below is needed.
 VALUE_CHANGES = re.compile(
     r"\.companions\.tractrix_gauss_image\."
     r"|^/surfaces/pseudosphere(-gauss-image)?\.face_values\.(H|K|planarity)\["

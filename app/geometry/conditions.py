@@ -325,12 +325,16 @@ def _side(values: Any, k: int, paired: bool) -> float:
     return values[k] + values[k + 1] if paired else values[k]
 
 
-@kernel("UniTuple(float64, 4)(float64[::1], float64[::1], float64[::1], boolean, float64)")
+@kernel(
+    "UniTuple(float64, 4)(float64[::1], float64[::1], float64[::1], boolean, float64, "
+    "float64[::1], float64[::1])"
+)
 def _fit_scales(
-    lhs: Any, lhs_size: Any, r: Any, paired: bool, tiny: float
+    lhs: Any, lhs_size: Any, r: Any, paired: bool, tiny: float, u: Any, v: Any
 ) -> tuple[float, float, float, float]:
     """``fit``'s four column scales (lhs, rhs, then u and v), as it computes them, in two
-    passes without storing u and v."""
+    passes; the second leaves u_k and v_k before their own scaling in ``u`` and ``v``
+    (``_fit_terms`` divides them by their scales: the same quotients as dividing anew)."""
     n = lhs.shape[0]
     big_l, nan_l, big_r, nan_r = 0.0, False, 0.0, False
     for k in range(n):
@@ -340,35 +344,23 @@ def _fit_scales(
     big_u, nan_u, big_v, nan_v = 0.0, False, 0.0, False
     for k in range(n):
         weight = lhs_size[k] if lhs_size[k] > tiny else tiny
-        big_u, nan_u = _largest(lhs[k] / lhs_scale / weight, nan_u, big_u)
-        big_v, nan_v = _largest(_side(r, k, paired) / rhs_scale / weight, nan_v, big_v)
+        u_k = lhs[k] / lhs_scale / weight
+        v_k = _side(r, k, paired) / rhs_scale / weight
+        u[k] = u_k
+        v[k] = v_k
+        big_u, nan_u = _largest(u_k, nan_u, big_u)
+        big_v, nan_v = _largest(v_k, nan_v, big_v)
     return lhs_scale, rhs_scale, _column_scale(big_u, nan_u), _column_scale(big_v, nan_v)
 
 
-@kernel(
-    "void(float64[::1], float64[::1], float64[::1], boolean, float64, float64, float64, float64, "
-    "float64, float64[::1], float64[::1])"
-)
-def _fit_terms(
-    lhs: Any,
-    lhs_size: Any,
-    r: Any,
-    paired: bool,
-    tiny: float,
-    lhs_scale: float,
-    rhs_scale: float,
-    u_scale: float,
-    v_scale: float,
-    squares: Any,
-    products: Any,
-) -> None:
-    """The terms of ``fit``'s two sums in one pass: v_k² into ``squares``, u_k v_k into
-    ``products``."""
-    for k in range(lhs.shape[0]):
-        weight = lhs_size[k] if lhs_size[k] > tiny else tiny
-        v = _side(r, k, paired) / rhs_scale / weight / v_scale
-        squares[k] = v * v
-        products[k] = lhs[k] / lhs_scale / weight / u_scale * v
+@kernel("void(float64, float64, float64[::1], float64[::1])")
+def _fit_terms(u_scale: float, v_scale: float, u: Any, v: Any) -> None:
+    """The terms of ``fit``'s two sums in one pass, in place: v_k² into ``v``, u_k v_k into
+    ``u`` (both as ``_fit_scales`` left them, divided by their scales here)."""
+    for k in range(u.shape[0]):
+        v_k = v[k] / v_scale
+        v[k] = v_k * v_k
+        u[k] = u[k] / u_scale * v_k
 
 
 @kernel(
@@ -398,9 +390,11 @@ def _fit_float64(
     side is r (or the sums of neighbouring entries of r, ``paired``); one array holds the terms
     of v², then the residuals."""
     lhs, lhs_size, r, r_size = _f64(lhs, lhs_size, r, r_size)
-    lhs_scale, rhs_scale, u_scale, v_scale = scales = _fit_scales(lhs, lhs_size, r, paired, TINY)
     out, products = np.empty(len(lhs)), np.empty(len(lhs))
-    _fit_terms(lhs, lhs_size, r, paired, TINY, *scales, out, products)
+    lhs_scale, rhs_scale, u_scale, v_scale = _fit_scales(
+        lhs, lhs_size, r, paired, TINY, products, out
+    )
+    _fit_terms(u_scale, v_scale, products, out)
     vv = np.sum(out) if len(out) else np.float64(0)
     constant = None
     if vv > 0:

@@ -119,12 +119,18 @@ def _arguments(kind: int, rng: np.random.Generator, n: int) -> tuple[Any, Any]:
     if kind == 3:  # nearly equal
         x = np.exp(rng.uniform(-40, 40, n))
         return x, x * (1 + rng.uniform(-1e-6, 1e-6, n))
+    if kind == 5:  # scaled up: the smaller below 2^-459, subnormals, and the a + b cases
+        x = np.exp2(rng.uniform(-1074, -400, n))
+        return x, x * np.exp2(rng.uniform(-70, 0, n))
+    if kind == 6:  # scaled down: the larger above 2^511, up to the largest floats
+        x = np.exp2(rng.uniform(505, 1023, n))
+        return -x, x * np.exp2(rng.uniform(-70, 0, n))
     special = [0.0, -0.0, np.inf, -np.inf, np.nan, 5e-324, 2.0**-459, 2.0**511, 1.7e308, 3.0]
     pairs = [(a, b) for a in special for b in special]
     return np.array([a for a, _ in pairs]), np.array([b for _, b in pairs])
 
 
-@pytest.mark.parametrize("kind", range(5))
+@pytest.mark.parametrize("kind", range(7))
 def test_inline_hypot_is_libms_bit_for_bit(kind: int) -> None:
     """``compiled.hypot`` replays glibc's algorithm: the same bits as ``np.hypot`` (libm)."""
     x, y = _arguments(kind, np.random.default_rng(kind), 200_000)

@@ -208,6 +208,11 @@ def build(
     }
     if ar.certified:
         closed = closed_on_balls
+    elif ar.mode == "float64" and _cosh_finite(ar, h, d, shift, i_min - 1, i_max + 1):
+        # n_i = (sech t, tanh t) and ñ_i = (−tanh t, sech t) at the same t = (i + τ)L: n read
+        # off ñ on i_min .. i_max + 1 (the same numbers: the same t, and cosh finite on both, so
+        # ``amplitude_sech`` takes its direct form on both), one tanh and cosh pass fewer
+        closed["closed_tractrix_gauss"] = lambda images: _turned(images.closed_contact[1:])
     if tractrix_hull is None or first_direction is None or p_extended is None:
         before = kinematic_closed_forms.hyperbolic_cosine(
             ar, h, d, ar.indices(i_min - 1, i_min), shift
@@ -249,6 +254,18 @@ def build(
         },
         p_extended[:2],
     )
+
+
+def _cosh_finite(ar: Arithmetic, h: Scalar, d: Scalar, shift: Scalar, lo: int, hi: int) -> bool:
+    """Float64: whether cosh((i + τ)L) is far from overflowing for every i in lo .. hi (|t| is
+    largest at an end; 700 < ln(max float) ≈ 709.8)."""
+    L = float(kinematic_closed_forms.log_ratio(ar, h, d))
+    return all(abs((i + float(shift)) * L) <= 700 for i in (lo, hi))
+
+
+def _turned(contact: Array) -> Array:
+    """(sech t, tanh t) from rows (−tanh t, sech t): each row turned back by a quarter."""
+    return stack_points(contact[:, 1], -contact[:, 0])
 
 
 def companion_tolerances(

@@ -19,9 +19,11 @@ import numpy as np
 
 from app.geometry.compiled import hypot, kernel, length3, running_largest
 from app.geometry.curvature import FaceCurvatures
-from app.geometry.surfaces.equation_17_kernel import one_face
 
 TINY = float(np.finfo(np.float64).tiny)
+
+#: Areas from which 1/area is finite with room (``_face_residuals``).
+RECIPROCAL_FROM = 2.0**-1000
 
 _FIELDS = 9
 
@@ -105,6 +107,106 @@ def _ring(meridian: Any, gauss: Any, cos: float, sin: float, tiny: float) -> Any
     return out
 
 
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _face_residuals(
+    meridian: Any,
+    gauss: Any,
+    k: int,
+    cos: float,
+    sin: float,
+    curvature: float,
+    minimal: bool,
+    tiny: float,
+) -> tuple[float, float, float, float, float]:
+    """Face k's residuals for the checks: (area, the theorem's, (17)'s K and H residuals, Δ).
+
+    The same definition as ``_face`` followed by ``equation_17_kernel.one_face`` (the corners
+    turned about the x-axis, the vector and mixed areas of [3], then (17) multiplied out), with
+    the divisions by one number replaced by a product with its reciprocal: the unit normal's
+    three quotients by |a(f)| one reciprocal (the products stay within the range where the
+    quotients are: |a(f)_j| / |a(f)| <= 1), and the four quotients by c of (17)'s scaling
+    one. 8 divisions a face instead of 17 (the
+    ring's time at 10^6 vertices is mostly divisions); the residuals move by a few units of
+    rounding of their scales, which only residuals at rounding level see (tests/geometry/
+    surfaces/test_ring_kernel.py bounds the difference, tests/test_golden.py).
+    """
+    sx, sy, ex, ey = meridian[k, 0], meridian[k, 1], meridian[k + 1, 0], meridian[k + 1, 1]
+    # corners (x, y·1, y·0) and (x, y·cos, y·sin) as ``_face``; y·1 is y
+    f0 = (sx, sy, sy * 0.0)
+    f1 = (sx, sy * cos, sy * sin)
+    f2 = (ex, ey * cos, ey * sin)
+    f3 = (ex, ey, ey * 0.0)
+    nsx, nsy, nex, ney = gauss[k, 0], gauss[k, 1], gauss[k + 1, 0], gauss[k + 1, 1]
+    g0 = (nsx, nsy, nsy * 0.0)
+    g1 = (nsx, nsy * cos, nsy * sin)
+    g2 = (nex, ney * cos, ney * sin)
+    g3 = (nex, ney, ney * 0.0)
+    fa = (f2[0] - f0[0], f2[1] - f0[1], f2[2] - f0[2])
+    fb = (f3[0] - f1[0], f3[1] - f1[1], f3[2] - f1[2])
+    ga = (g2[0] - g0[0], g2[1] - g0[1], g2[2] - g0[2])
+    gb = (g3[0] - g1[0], g3[1] - g1[1], g3[2] - g1[2])
+    af = (
+        (fa[1] * fb[2] - fa[2] * fb[1]) / 2,
+        (fa[2] * fb[0] - fa[0] * fb[2]) / 2,
+        (fa[0] * fb[1] - fa[1] * fb[0]) / 2,
+    )
+    an = (
+        (ga[1] * gb[2] - ga[2] * gb[1]) / 2,
+        (ga[2] * gb[0] - ga[0] * gb[2]) / 2,
+        (ga[0] * gb[1] - ga[1] * gb[0]) / 2,
+    )
+    mixed = (
+        ((fa[1] * gb[2] - fa[2] * gb[1]) + (ga[1] * fb[2] - ga[2] * fb[1])) / 4,
+        ((fa[2] * gb[0] - fa[0] * gb[2]) + (ga[2] * fb[0] - ga[0] * fb[2])) / 4,
+        ((fa[0] * gb[1] - fa[1] * gb[0]) + (ga[0] * fb[1] - ga[1] * fb[0])) / 4,
+    )
+    area = hypot(hypot(af[0], af[1]), af[2])  # libm's, bit for bit (inline)
+    if area > RECIPROCAL_FROM:  # the unit normal by one reciprocal (|a(f)| / area <= 1)
+        inverse = 1.0 / area
+        unit = (af[0] * inverse, af[1] * inverse, af[2] * inverse)
+    else:  # 1/area would overflow
+        unit = (af[0] / area, af[1] / area, af[2] / area)
+    gauss_area = an[0] * unit[0] + an[1] * unit[1] + an[2] * unit[2]
+    mixed_area = mixed[0] * unit[0] + mixed[1] * unit[1] + mixed[2] * unit[2]
+    f_1 = (abs(f0[0]) + abs(f0[1]) + abs(f0[2])) + (abs(f2[0]) + abs(f2[1]) + abs(f2[2]))
+    f_2 = (abs(f1[0]) + abs(f1[1]) + abs(f1[2])) + (abs(f3[0]) + abs(f3[1]) + abs(f3[2]))
+    n_1 = (abs(g0[0]) + abs(g0[1]) + abs(g0[2])) + (abs(g2[0]) + abs(g2[1]) + abs(g2[2]))
+    n_2 = (abs(g1[0]) + abs(g1[1]) + abs(g1[2])) + (abs(g3[0]) + abs(g3[1]) + abs(g3[2]))
+    mag_f = f_1 * f_2 / 2
+    mag_n = n_1 * n_2 / 2
+    mag_fn = (f_1 * n_2 + n_1 * f_2) / 4
+    both = mag_f * mag_n
+    crossed = (
+        af[1] * an[2] - af[2] * an[1],
+        af[2] * an[0] - af[0] * an[2],
+        af[0] * an[1] - af[1] * an[0],
+    )
+    parallel = length3(crossed[0], crossed[1], crossed[2]) / (both if both > tiny else tiny)
+    if minimal:
+        own = abs(mixed_area) / mag_fn
+    else:
+        own = abs(gauss_area - curvature * area) / (mag_n + abs(curvature) * mag_f)
+    theorem = own if (own >= parallel or own != own) else parallel  # np.maximum: NaN wins
+    # (17), as ``equation_17_kernel.one_face`` with one reciprocal of c
+    c = max(abs(sy), abs(ey))
+    if not c > tiny:
+        c = 1.0
+    rc = 1.0 / c
+    q0 = sy * rc
+    q1 = ey * rc
+    dp = q1 * q1 - q0 * q0
+    sp = q1 * q1 + q0 * q0
+    area_h = area * rc
+    mag_h = mag_f * rc
+    k_scale = mag_n * sp + mag_h * rc * (ney * ney + nsy * nsy)
+    h_scale = mag_fn * sp + mag_h * (abs(q0 * nsy) + abs(q1 * ney))
+    k_res = abs(gauss_area * dp - area_h * rc * (ney * ney - nsy * nsy))
+    h_res = abs(mixed_area * dp + area_h * (q0 * nsy - q1 * ney))
+    k_res = k_res / (k_scale if k_scale > tiny else tiny)
+    h_res = h_res / (h_scale if h_scale > tiny else tiny)
+    return area, theorem, k_res, h_res, dp
+
+
 @kernel(
     "Tuple((float64[:, :], int64, boolean, float64, float64))"
     "(float64[:, :], float64[:, :], float64, float64, float64, boolean, float64, boolean)"
@@ -123,41 +225,21 @@ def _ring_checks(
 
     Row 0: the theorem's residual per face, max(constant curvature or H = 0, parallel), as
     ``constant_curvature_residuals(·, curvature)`` or ``minimal_residuals`` with
-    ``np.maximum``; row 1: (17) per face, max of its K and H residuals
-    (``equation_17_kernel.one_face``), 0 where it is 0/0. Then the number of such faces
-    and whether every face has a positive area (if not, the caller takes the numpy path, which
-    names the face). The rows are stored if ``store`` (else empty); last, the largest of each
-    row (NaN if one is NaN).
+    ``np.maximum``; row 1: (17) per face, max of its K and H residuals, 0 where it is 0/0
+    (``_face_residuals``). Then the number of such faces and whether every face has a positive
+    area (if not, the caller takes the numpy path, which names the face). The rows are stored
+    if ``store`` (else empty); last, the largest of each row (NaN if one is NaN).
     """
     faces = meridian.shape[0] - 1
     out = np.empty((2, faces if store else 0))
     skipped = 0
     largest, largest_17 = 0.0, 0.0
     for k in range(faces):
-        area, gauss_area, mixed_area, _, _, parallel, mag_f, mag_n, mag_fn = _face(
-            meridian, gauss, k, cos, sin, tiny
+        area, theorem, k_res, h_res, dp = _face_residuals(
+            meridian, gauss, k, cos, sin, curvature, minimal, tiny
         )
         if not area > 0:
             return out, skipped, False, largest, largest_17
-        if minimal:
-            own = abs(mixed_area) / mag_fn
-        else:
-            own = abs(gauss_area - curvature * area) / (mag_n + abs(curvature) * mag_f)
-        # np.maximum: NaN wins
-        theorem = own if (own >= parallel or own != own) else parallel
-        k_res, h_res, dp = one_face(
-            meridian[k, 1],
-            meridian[k + 1, 1],
-            gauss[k, 1],
-            gauss[k + 1, 1],
-            area,
-            gauss_area,
-            mixed_area,
-            mag_f,
-            mag_n,
-            mag_fn,
-            tiny,
-        )
         equation_17 = 0.0
         if dp != 0:
             equation_17 = k_res if (k_res >= h_res or k_res != k_res) else h_res

@@ -198,3 +198,23 @@ def test_slope_check_fails_when_n_is_turned(float64: Float64) -> None:
     bad = data.replaced(gauss=data.gauss.replaced(tractrix_gauss=n))
     results = {c.id: c.holds for c in d4b.evaluate(float64, 1.0, 0.3, bad)[1]}
     assert results["equation-18-slope"] is False
+
+
+@pytest.mark.parametrize(
+    ("h", "d", "beta0", "i_min", "i_max"),
+    [(1.0, 0.1, None, -10, 10), (1.0, 1e-4, 1.0, -3000, 5000), (2.0, 0.5, 2.5, -1300, 1300)],
+)
+@pytest.mark.parametrize("method", ["construction", "closed-form"])
+def test_closed_n_read_off_the_closed_contact_points_has_the_bits_of_its_own_form(
+    h: float, d: float, beta0: float | None, i_min: int, i_max: int, method: str
+) -> None:
+    """Float64: (18)'s closed form n_i = (sech t, tanh t) is read off ñ_i = (−tanh t, sech t)
+    at the same t; the same numbers as evaluating (18) itself (the last case reaches |t| near 700,
+    the edge of the shortcut)."""
+    ar = Float64()
+    data = d4b.polygons(ar, h, d, beta0, i_min, i_max, method)  # type: ignore[arg-type]
+    expected = kcf.tractrix_gauss_image(
+        ar, data.h, data.d, ar.indices(i_min, i_max + 1), data.shift
+    )
+    got = data.gauss.closed_tractrix_gauss
+    assert got.view(np.int64).tolist() == expected.view(np.int64).tolist()

@@ -1,6 +1,8 @@
 """The compiled ring of faces gives the bits of the numpy definition (faces, then [3]).
 
-The parallelism residual alone is within 2 ulp: |crossed| by ``compiled.length3``.
+The parallelism residual alone is within 2 ulp: |crossed| by ``compiled.length3``. The fused
+checks of a ring (``ring_checks``) multiply by reciprocals: their residuals are within a few
+units of rounding of the numpy evaluation's.
 """
 
 from __future__ import annotations
@@ -114,9 +116,11 @@ def numpy_face_residuals(p0, p1, n0, n1, areas):
 def test_fused_ring_checks_equal_the_ring_and_its_residuals(
     seed: int, curvature: float | None
 ) -> None:
-    """Theorem 7's / 8's and (17)'s residuals in one pass: the bits of the steps they fuse
+    """Theorem 7's / 8's and (17)'s residuals in one pass: the steps they fuse
     (``ring_curvatures``, ``constant_curvature_residuals`` or ``minimal_residuals`` with
-    ``np.maximum``, ``face_residuals``), faces where (17) is 0/0 counted as skipped."""
+    ``np.maximum``, ``face_residuals``) to a few units of rounding of the residuals' scales (the
+    pass multiplies by reciprocals where those divide), faces where (17) is 0/0 counted as
+    skipped."""
     ar = Float64()
     cases = meridians(seed)
     flat = np.array([[0.0, 1.0], [1.0, 1.0], [2.0, 1.5], [3.0, 1.5], [4.0, 2.0]])
@@ -132,11 +136,11 @@ def test_fused_ring_checks_equal_the_ring_and_its_residuals(
             if curvature is None
             else ring_curvature.constant_curvature_residuals(ring, curvature)
         )
-        np.testing.assert_array_equal(fused[0], np.maximum(own, ring.parallel))
+        _close(fused[0], np.maximum(own, ring.parallel))
         k_res, h_res, defined = revolution_formulas.equation_17_residuals(
             ar, meridian[:, 1], gauss[:, 1], ring
         )
-        np.testing.assert_array_equal(fused[1], np.where(defined, np.maximum(k_res, h_res), 0.0))
+        _close(fused[1], np.where(defined, np.maximum(k_res, h_res), 0.0))
         assert fused[2] == int(np.count_nonzero(~defined))
         largest = ring_curvature.ring_largest(ar, meridian, gauss, curvature)
         assert largest is not None
@@ -146,6 +150,41 @@ def test_fused_ring_checks_equal_the_ring_and_its_residuals(
             fused[2],
         )
         np.testing.assert_array_equal(largest[1].residuals(), fused[1])
+
+
+def test_fused_ring_checks_stay_finite_where_areas_are_far_from_1() -> None:
+    """D4b with d = h/2 on -200 .. 300: the catenoid's faces reach areas of 1e266 and the
+    pseudosphere's 1e-135; the residuals (17) and the theorems' stay within rounding of the
+    numpy evaluation's (a product with 1/|a(f)| in place of a quotient overflowed here)."""
+    ar = Float64()
+    data = d4b.polygons(ar, 1.0, 0.5, None, -200, 300)
+    pairs = [(data.tractrix, data.gauss.tractrix_gauss, -1.0), (data.p, data.gauss.gauss, None)]
+    for meridian, gauss, curvature in pairs:
+        fused = ring_curvature.ring_checks(ar, meridian, gauss, curvature)
+        assert fused is not None
+        ring = ring_curvature.ring_curvatures(ar, meridian, gauss)
+        own = (
+            ring_curvature.minimal_residuals(ring)
+            if curvature is None
+            else ring_curvature.constant_curvature_residuals(ring, curvature)
+        )
+        _close(fused[0], np.maximum(own, ring.parallel))
+        k_res, h_res, defined = revolution_formulas.equation_17_residuals(
+            ar, meridian[:, 1], gauss[:, 1], ring
+        )
+        _close(fused[1], np.where(defined, np.maximum(k_res, h_res), 0.0))
+        assert fused[2] == int(np.count_nonzero(~defined))
+
+
+def _close(fused: np.ndarray, expected: np.ndarray) -> None:
+    """Residuals (each relative to its own scale) within 32 units of rounding of max(1, |r|),
+    finite where the numpy evaluation's are."""
+    assert fused.shape == expected.shape
+    finite = np.isfinite(expected)
+    np.testing.assert_array_equal(np.isfinite(fused), finite)
+    bound = 32 * np.finfo(np.float64).eps * np.maximum(1.0, abs(expected[finite]))
+    difference = abs(fused[finite] - expected[finite])
+    assert bool(np.all(difference <= bound)), np.max(difference)
 
 
 def test_fused_ring_checks_leave_a_face_without_area_to_the_numpy_path() -> None:
