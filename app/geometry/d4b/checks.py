@@ -46,6 +46,7 @@ from app.geometry.checks import (
 )
 from app.geometry.curve import EVERYTHING, Selection
 from app.geometry.d4b import (
+    arb_checks,
     closed_forms as kinematic_closed_forms,
     curvature as d4b_curvature,
     residual_kernels,
@@ -317,6 +318,8 @@ def _recursion(ctx: _Context, p: Array) -> Check:
     y = p[:, 1]
     if ctx.ar.mode == "float64" and p is ctx.data.p:  # the same residuals, compiled
         return ctx.check(RECURSION_13, 1, ctx.compiled_recursion[0])
+    if ctx.ar.certified and arb_checks.balls(y):  # the same balls, compiled
+        return ctx.check(RECURSION_13, 1, arb_checks.recursion_13(ctx.d, y, _tiny(ctx.ar)))
     predicted = kinematic_closed_forms.recursion_13(ctx.d, y[:-2], y[1:-1])
     return ctx.check(RECURSION_13, 1, relative_difference(ctx.ar, y[2:], predicted))
 
@@ -324,6 +327,10 @@ def _recursion(ctx: _Context, p: Array) -> Check:
 def _two_step(ctx: _Context, p: Array) -> Check:
     y = p[:, 1]
     ar = ctx.ar
+    if ar.certified and arb_checks.balls(y):  # the same balls as below, compiled
+        corrected, printed = arb_checks.two_step(ctx.d, y, _tiny(ar), with_printed=True)
+        erratum = Erratum(*ERRATUM_TWO_STEP, printed_residual=printed_residual(ar, printed))
+        return ctx.check(TWO_STEP, 1, corrected, erratum, factor=3)
     if ar.mode == "float64" and float(np.max(abs(y))) < 1e60:  # the same, compiled
         worst = residual_kernels.largest_two_step_printed_residual(ctx.d, y)
         erratum = Erratum(*ERRATUM_TWO_STEP, printed_residual=worst)
@@ -342,6 +349,11 @@ def _two_step(ctx: _Context, p: Array) -> Check:
         corrected = kinematic_closed_forms.two_step(ctx.d, y[:-3], y[1:-2])
         residuals = relative_difference(ar, y[3:], corrected)
     return ctx.check(TWO_STEP, 1, residuals, erratum, factor=3)
+
+
+def _tiny(ar: Arithmetic) -> Scalar:
+    """The floor of ``checks.relative_difference``'s scale, as it makes it."""
+    return ar.scalar(np.finfo(np.float64).tiny)
 
 
 def _closed_form(
@@ -384,6 +396,8 @@ def _nikolaides(ctx: _Context, p: Array, tractrix: Array, axis: Array) -> Check:
         return ctx.check(
             NIKOLAIDES, 0, residual_kernels.right_angle_residuals(tractrix, axis, p, n)
         )
+    if ctx.ar.certified and arb_checks.balls(tractrix[:n], axis[:n], p[: n + 1]):  # compiled
+        return ctx.check(NIKOLAIDES, 0, arb_checks.nikolaides(tractrix, axis, p, n))
     at_p = nikolaides.right_angle_residuals(tractrix[:n], axis[:n], p[:n])
     at_next = nikolaides.right_angle_residuals(tractrix[:n], axis[:n], p[1 : n + 1])
     return ctx.check(NIKOLAIDES, 0, ctx.ar.maximum(at_p, at_next))

@@ -1,0 +1,323 @@
+"""(D4b): the residuals of the Section 3–4 checks on balls in compiled loops.
+
+On balls (precision=mp) each check of ``checks`` is a chain of numpy operations on object
+arrays of python-flint ``arb``: every operation a Python call and a fresh ball per entry, ≈ 0.2–1
+µs each, 100 and more a vertex for the fits of Theorem 4. Here the same chains run in numba
+loops that call libflint's functions on the balls' ``arb_struct`` (``arb_loops``): the
+intermediates live in scratch balls reused along the loop, and only the residuals a check
+reports (and the fits' constants) are written into fresh Python balls. Every function below
+makes the same libflint calls, with the same operands in the same order and at the same
+precision (``flint.ctx.prec``), as the Python code it stands for, so the balls are the same,
+bit for bit (tests/geometry/d4b/test_arb_checks.py compares them); the checks, their decimal
+bounds per index and their verdicts do not move.
+
+``AVAILABLE`` false (another python-flint build, a function missing) leaves the callers on their
+numpy code; the callers also check that every entry is a ball before an address is read.
+Compiled at import, as ``arb_loops`` (≈ 1–2 s of CPU once per process).
+"""
+
+from __future__ import annotations
+
+import ctypes
+from typing import Any
+
+import flint
+import numba
+import numpy as np
+
+from app.geometry import arb_loops
+
+_POINTER, _WORD = ctypes.c_void_p, ctypes.c_long
+_BINARY = (None, [_POINTER, _POINTER, _POINTER, _WORD])
+_UNARY = (None, [_POINTER, _POINTER, _WORD])
+_COPY = (None, [_POINTER, _POINTER])
+_TEST = (ctypes.c_int, [_POINTER, _POINTER])
+
+_add = arb_loops.bind("arb_add", *_BINARY)
+_sub = arb_loops.bind("arb_sub", *_BINARY)
+_mul = arb_loops.bind("arb_mul", *_BINARY)
+_div = arb_loops.bind("arb_div", *_BINARY)
+_pow = arb_loops.bind("arb_pow", *_BINARY)
+_max = arb_loops.bind("arb_max", *_BINARY)
+_atan2 = arb_loops.bind("arb_atan2", *_BINARY)
+_sqrt = arb_loops.bind("arb_sqrt", *_UNARY)
+_abs = arb_loops.bind("arb_abs", *_COPY)
+_set = arb_loops.bind("arb_set", *_COPY)
+_nonnegative = arb_loops.bind("arb_nonnegative_part", *_COPY)
+_gt = arb_loops.bind("arb_gt", *_TEST)
+
+#: Whether the compiled residuals can be used (else the callers' numpy code runs).
+AVAILABLE = arb_loops.AVAILABLE and all(
+    f is not None
+    for f in (_add, _sub, _mul, _div, _pow, _max, _atan2, _sqrt, _abs, _set, _nonnegative, _gt)
+)
+
+_B = arb_loops.ARB_BYTES
+
+
+def fresh(count: int, like: np.ndarray[Any, Any]) -> np.ndarray[Any, Any]:
+    """``count`` fresh balls (numpy's negation loop: one allocation each), which nothing else
+    references yet, for a loop to write into; ``like`` holds at least ``count`` balls."""
+    return np.negative(like.reshape(-1)[:count])
+
+
+def balls(*arrays: Any) -> bool:
+    """Whether the compiled loops apply: available, and every entry of every array a ball."""
+    return AVAILABLE and all(
+        isinstance(a, np.ndarray) and a.dtype == object and arb_loops.all_balls(a) for a in arrays
+    )
+
+
+def _address(ball: Any) -> int:
+    return id(ball) + arb_loops.OFFSET
+
+
+if AVAILABLE:
+
+    @numba.njit(cache=False)
+    def _relative(out: int, computed: int, expected: int, tiny: int, scale: int, prec: int) -> None:
+        """``checks.relative_difference`` of one entry: |c − e| / (|e| if |e| > tiny else
+        tiny)."""
+        _abs(scale, expected)
+        _sub(out, computed, expected, prec)
+        _abs(out, out)
+        _div(out, out, scale if _gt(scale, tiny) else tiny, prec)
+
+    @numba.njit(cache=False)
+    def _recursion_13(
+        y: Any, d: int, two_d: int, one: int, tiny: int, out: Any, prec: int, s: int
+    ) -> None:
+        """``relative_difference(y[2:], closed_forms.recursion_13(d, y[:-2], y[1:-1]))``."""
+        ba, t, da, db, num, den = s, s + _B, s + 2 * _B, s + 3 * _B, s + 4 * _B, s + 5 * _B
+        scale = s + 6 * _B
+        for k in range(out.shape[0]):
+            a, b = y[k], y[k + 1]
+            # (b * (b / a) + 2 * d * (d / a) + d * (d / b)) / (1 - (d / a) * (d / b))
+            _div(ba, b, a, prec)
+            _mul(num, b, ba, prec)
+            _div(da, d, a, prec)
+            _mul(t, two_d, da, prec)
+            _add(num, num, t, prec)
+            _div(db, d, b, prec)
+            _mul(t, d, db, prec)
+            _add(num, num, t, prec)
+            _mul(t, da, db, prec)
+            _sub(den, one, t, prec)
+            _div(num, num, den, prec)
+            _relative(out[k], y[k + 2], num, tiny, scale, prec)
+
+    @numba.njit(cache=False)
+    def _two_step(
+        y: Any,
+        d: int,
+        d2: int,
+        d4: int,
+        small: Any,
+        tiny: int,
+        corrected: Any,
+        printed: Any,
+        prec: int,
+        s: int,
+    ) -> None:
+        """``relative_difference(y[3:], closed_forms.two_step(d, a, b))`` into ``corrected`` and
+        the same of ``two_step_printed`` into ``printed`` (a = y[:-3], b = y[1:-2]); ``small``
+        holds the exact balls 1 … 5."""
+        one, two, three, four, five = small[0], small[1], small[2], small[3], small[4]
+        e, f, r, q = s, s + _B, s + 2 * _B, s + 3 * _B
+        t, u, num, acc = s + 4 * _B, s + 5 * _B, s + 6 * _B, s + 7 * _B
+        scale = s + 8 * _B
+        do_printed = printed.shape[0] > 0
+        for k in range(corrected.shape[0]):
+            a, b, target = y[k], y[k + 1], y[k + 3]
+            # e = d / a; f = d / b
+            _div(e, d, a, prec)
+            _div(f, d, b, prec)
+            # b * (b / a) * (b / a)
+            _div(r, b, a, prec)
+            _mul(num, b, r, prec)
+            _mul(num, num, r, prec)
+            # (d * f) * (a / b + 2 + 3 * (b / a) + 4 * (b / a) * (b / a))
+            _div(q, a, b, prec)
+            _add(acc, q, two, prec)
+            _mul(t, three, r, prec)
+            _add(acc, acc, t, prec)
+            _mul(t, four, r, prec)
+            _mul(t, t, r, prec)
+            _add(acc, acc, t, prec)
+            _mul(t, d, f, prec)
+            _mul(t, t, acc, prec)
+            _add(num, num, t, prec)
+            # + (d * e) * (e * f) * (2 * (a / b) + 3)
+            _mul(t, d, e, prec)
+            _mul(u, e, f, prec)
+            _mul(t, t, u, prec)
+            _mul(acc, two, q, prec)
+            _add(acc, acc, three, prec)
+            _mul(t, t, acc, prec)
+            _add(num, num, t, prec)
+            # / ((1 - e * f) * (1 - e * f))
+            _sub(u, one, u, prec)
+            _mul(u, u, u, prec)
+            _div(num, num, u, prec)
+            _relative(corrected[k], target, num, tiny, scale, prec)
+            if not do_printed:
+                continue
+            # b**5 + d**2 * (a**3 + 2 * a**2 * b + 3 * a * b**2 + 4 * b**3)
+            #   + d**4 * (2 * b**3 + 2 * a + 3 * b), over (d**2 - a * b) ** 2
+            _pow(num, b, five, prec)
+            _pow(acc, a, three, prec)
+            _pow(t, a, two, prec)
+            _mul(t, two, t, prec)
+            _mul(t, t, b, prec)
+            _add(acc, acc, t, prec)
+            _mul(t, three, a, prec)
+            _pow(u, b, two, prec)
+            _mul(t, t, u, prec)
+            _add(acc, acc, t, prec)
+            _pow(u, b, three, prec)
+            _mul(t, four, u, prec)
+            _add(acc, acc, t, prec)
+            _mul(acc, d2, acc, prec)
+            _add(num, num, acc, prec)
+            _mul(acc, two, u, prec)
+            _mul(t, two, a, prec)
+            _add(acc, acc, t, prec)
+            _mul(t, three, b, prec)
+            _add(acc, acc, t, prec)
+            _mul(acc, d4, acc, prec)
+            _add(num, num, acc, prec)
+            _mul(t, a, b, prec)
+            _sub(t, d2, t, prec)
+            _pow(t, t, two, prec)
+            _div(num, num, t, prec)
+            _relative(printed[k], target, num, tiny, scale, prec)
+
+    @numba.njit(cache=False)
+    def _magnitude_into(out: int, a: Any, i: int, v: Any, j: int, prec: int, t: int) -> None:
+        """``polygon.magnitude(a, v)`` of one pair: ((|a^x| + |a^y|) + |v^x|) + |v^y|."""
+        _abs(out, a[2 * i])
+        _abs(t, a[2 * i + 1])
+        _add(out, out, t, prec)
+        _abs(t, v[2 * j])
+        _add(out, out, t, prec)
+        _abs(t, v[2 * j + 1])
+        _add(out, out, t, prec)
+
+    @numba.njit(cache=False)
+    def _right_angle(
+        out: int, vertex: Any, i: int, a: Any, j: int, b: Any, m: int, prec: int, s: int
+    ) -> None:
+        """``nikolaides.right_angle_residuals`` of one entry: vertex_i, a_j, b_m."""
+        ux, uy, wx, wy = s, s + _B, s + 2 * _B, s + 3 * _B
+        t, ma, mb = s + 4 * _B, s + 5 * _B, s + 6 * _B
+        _sub(ux, a[2 * j], vertex[2 * i], prec)
+        _sub(uy, a[2 * j + 1], vertex[2 * i + 1], prec)
+        _sub(wx, b[2 * m], vertex[2 * i], prec)
+        _sub(wy, b[2 * m + 1], vertex[2 * i + 1], prec)
+        _mul(ux, ux, wx, prec)
+        _mul(uy, uy, wy, prec)
+        _add(ux, ux, uy, prec)
+        _abs(ux, ux)
+        _magnitude_into(ma, a, j, vertex, i, prec, t)
+        _magnitude_into(mb, b, m, vertex, i, prec, t)
+        _mul(ma, ma, mb, prec)
+        _div(out, ux, ma, prec)
+
+    @numba.njit(cache=False)
+    def _nikolaides(tractrix: Any, axis: Any, p: Any, out: Any, prec: int, s: int) -> None:
+        """max(right angle at p_i, at p_{i+1}) (``arb_max``), as ``checks._nikolaides``."""
+        at_p, at_next, scratch = s, s + _B, s + 2 * _B
+        for k in range(out.shape[0]):
+            _right_angle(at_p, tractrix, k, axis, k, p, k, prec, scratch)
+            _right_angle(at_next, tractrix, k, axis, k, p, k + 1, prec, scratch)
+            _max(out[k], at_p, at_next, prec)
+
+
+def _small() -> tuple[list[Any], np.ndarray[Any, np.dtype[np.int64]]]:
+    """The exact balls 1 … 5 (kept alive by the caller) and their addresses."""
+    values = [flint.arb(k) for k in range(1, 6)]
+    return values, np.array([_address(v) for v in values], dtype=np.int64)
+
+
+def recursion_13(d: Any, y: np.ndarray[Any, Any], tiny: Any) -> np.ndarray[Any, Any]:
+    """The residuals of (13) on the heights ``y`` (balls), as ``checks._recursion`` computes
+    them on balls; ``(n,) -> (n − 2,)``."""
+    m = max(len(y) - 2, 0)
+    out = fresh(m, y)
+    if m:
+        one, two_d = flint.arb(1), 2 * d
+        with arb_loops.Scratch(7) as scratch:
+            _recursion_13(
+                arb_loops.addresses(y),
+                _address(d),
+                _address(two_d),
+                _address(one),
+                _address(tiny),
+                arb_loops.addresses(out),
+                flint.ctx.prec,
+                scratch,
+            )
+    return out
+
+
+def two_step(
+    d: Any, y: np.ndarray[Any, Any], tiny: Any, with_printed: bool
+) -> tuple[np.ndarray[Any, Any], np.ndarray[Any, Any] | None]:
+    """The residuals of (13) twice (corrected form) and, ``with_printed``, of the proof's
+    printed form, as ``checks._two_step`` computes them on balls; ``(n,) -> (n − 3,)``."""
+    m = max(len(y) - 3, 0)
+    corrected = fresh(m, y)
+    printed = fresh(m if with_printed else 0, y)
+    if m:
+        small, addresses = _small()
+        d2, d4 = d**2, d**4
+        with arb_loops.Scratch(9) as scratch:
+            _two_step(
+                arb_loops.addresses(y),
+                _address(d),
+                _address(d2),
+                _address(d4),
+                addresses,
+                _address(tiny),
+                arb_loops.addresses(corrected),
+                arb_loops.addresses(printed),
+                flint.ctx.prec,
+                scratch,
+            )
+        del small
+    return corrected, printed if with_printed else None
+
+
+def nikolaides(
+    tractrix: np.ndarray[Any, Any], axis: np.ndarray[Any, Any], p: np.ndarray[Any, Any], n: int
+) -> np.ndarray[Any, Any]:
+    """``checks._nikolaides`` on balls: the larger of the right-angle residuals at p_i and at
+    p_{i+1}, i < n; ``(n,)``."""
+    out = fresh(n, p)
+    if n:
+        with arb_loops.Scratch(9) as scratch:
+            _nikolaides(
+                arb_loops.addresses(tractrix[:n]),
+                arb_loops.addresses(axis[:n]),
+                arb_loops.addresses(p[: n + 1]),
+                arb_loops.addresses(out),
+                flint.ctx.prec,
+                scratch,
+            )
+    return out
+
+
+def _warm() -> None:
+    """Compile every loop now, at import, so that no request pays for it."""
+    points = np.empty((6, 2), dtype=object)
+    points[:, 0] = [flint.arb(k) / 3 for k in range(6)]
+    points[:, 1] = [flint.arb(k + 2) / 7 for k in range(6)]
+    tiny, d = flint.arb(1) / 1000, flint.arb(1) / 10
+    y = np.ascontiguousarray(points[:, 1])
+    recursion_13(d, y, tiny)
+    two_step(d, y, tiny, True)
+    nikolaides(points, points[::-1].copy(), points, 5)
+
+
+if AVAILABLE:
+    _warm()

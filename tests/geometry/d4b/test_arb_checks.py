@@ -1,0 +1,100 @@
+"""The compiled residuals of (D4b)'s checks on balls are the numpy code's balls, bit for bit."""
+
+from __future__ import annotations
+
+import random
+from typing import Any
+
+import flint
+import numpy as np
+import pytest
+
+from app.geometry import balls, nikolaides
+from app.geometry.ball_arithmetic import Ball
+from app.geometry.checks import relative_difference
+from app.geometry.d4b import arb_checks, certified, closed_forms, discretization
+
+pytestmark = pytest.mark.skipif(not arb_checks.AVAILABLE, reason="no bundled libflint")
+
+
+def _exact(value: Any) -> Any:
+    """An exact arb as (mantissa, exponent), or its text where it is not finite."""
+    return value.man_exp() if value.is_finite() else str(value)
+
+
+def _key(ball: Any) -> tuple[Any, ...]:
+    return (_exact(ball.mid()), _exact(ball.rad()))
+
+
+def _same(computed: np.ndarray, expected: np.ndarray) -> None:
+    assert len(computed) == len(expected)
+    assert [_key(b) for b in computed] == [_key(b) for b in expected]
+
+
+def _polygons(digits: int, h: float, d: float, i_min: int, i_max: int) -> tuple[Ball, Any]:
+    arguments = {"h": h, "d": d, "beta0": None, "i_min": i_min, "i_max": i_max}
+    ar = Ball(digits, certified.extra_digits(arguments), recursions_only=True)
+    return ar, discretization.polygons(ar, h, d, None, i_min, i_max)
+
+
+def _perturbed(points: np.ndarray, seed: int, zero: bool = True) -> np.ndarray:
+    """The points with a random radius on each coordinate (and an exact 0 among them), so the
+    radii's arithmetic is exercised too."""
+    rng = random.Random(seed)
+    out = points.copy()
+    flat = out.reshape(-1)
+    for k in range(flat.size):
+        flat[k] = flat[k] + flint.arb(0, rng.random() * 10.0 ** rng.randint(-40, -5))
+    if zero:
+        flat[3] = flint.arb(0)
+    return out
+
+
+CASES = [(30, 1.0, 0.1, -20, 19), (60, 1.0, 0.7, -8, 30), (25, 2.0, 0.05, 0, 40)]
+
+
+@pytest.mark.parametrize("case", CASES)
+@pytest.mark.parametrize("perturb", [False, True])
+def test_recursions_are_the_numpy_balls(case: tuple[Any, ...], perturb: bool) -> None:
+    ar, data = _polygons(*case)
+    with balls.working_precision(ar.bits):
+        p = _perturbed(data.p, case[0]) if perturb else data.p
+        y, d = p[:, 1], ar.scalar(case[2])
+        tiny = ar.scalar(np.finfo(np.float64).tiny)
+        expected = relative_difference(ar, y[2:], closed_forms.recursion_13(d, y[:-2], y[1:-1]))
+        _same(arb_checks.recursion_13(d, y, tiny), expected)
+        corrected, printed = arb_checks.two_step(d, y, tiny, True)
+        a, b = y[:-3], y[1:-2]
+        _same(corrected, relative_difference(ar, y[3:], closed_forms.two_step(d, a, b)))
+        assert printed is not None
+        _same(printed, relative_difference(ar, y[3:], closed_forms.two_step_printed(d, a, b)))
+
+
+@pytest.mark.parametrize("case", CASES)
+@pytest.mark.parametrize("perturb", [False, True])
+def test_nikolaides_is_the_numpy_balls(case: tuple[Any, ...], perturb: bool) -> None:
+    ar, data = _polygons(*case)
+    with balls.working_precision(ar.bits):
+        p, tractrix, axis = data.p, data.tractrix, data.axis
+        if perturb:
+            p, tractrix = _perturbed(p, 1), _perturbed(tractrix, 2, zero=False)
+        n = data.vertices - 1
+        at_p = nikolaides.right_angle_residuals(tractrix[:n], axis[:n], p[:n])
+        at_next = nikolaides.right_angle_residuals(tractrix[:n], axis[:n], p[1 : n + 1])
+        _same(arb_checks.nikolaides(tractrix, axis, p, n), ar.maximum(at_p, at_next))
+
+
+def test_short_polygons_give_no_residuals() -> None:
+    y = np.empty(2, dtype=object)
+    y[:] = [flint.arb(1), flint.arb(2)]
+    tiny = flint.arb(1) / 100
+    assert len(arb_checks.recursion_13(flint.arb(1) / 10, y, tiny)) == 0
+    corrected, printed = arb_checks.two_step(flint.arb(1) / 10, y, tiny, True)
+    assert len(corrected) == 0 and printed is not None and len(printed) == 0
+
+
+def test_other_entries_are_refused() -> None:
+    values = np.empty(3, dtype=object)
+    values[:] = [flint.arb(1), 2.0, flint.arb(3)]
+    assert not arb_checks.balls(values)
+    assert not arb_checks.balls(np.zeros(3))
