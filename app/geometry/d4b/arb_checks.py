@@ -19,6 +19,7 @@ Compiled at import, as ``arb_loops`` (≈ 1–2 s of CPU once per process).
 from __future__ import annotations
 
 import ctypes
+import weakref
 from typing import Any
 
 import flint
@@ -41,7 +42,8 @@ _pow = arb_loops.bind("arb_pow", *_BINARY)
 _max = arb_loops.bind("arb_max", *_BINARY)
 _atan2 = arb_loops.bind("arb_atan2", *_BINARY)
 _sqrt = arb_loops.bind("arb_sqrt", *_UNARY)
-_abs = arb_loops.bind("arb_abs", *_COPY)
+_arb_abs = arb_loops.bind("arb_abs", *_COPY)
+_set_round = arb_loops.bind("arb_set_round", *_UNARY)
 _set = arb_loops.bind("arb_set", *_COPY)
 _nonnegative = arb_loops.bind("arb_nonnegative_part", *_COPY)
 _gt = arb_loops.bind("arb_gt", *_TEST)
@@ -49,7 +51,21 @@ _gt = arb_loops.bind("arb_gt", *_TEST)
 #: Whether the compiled residuals can be used (else the callers' numpy code runs).
 AVAILABLE = arb_loops.AVAILABLE and all(
     f is not None
-    for f in (_add, _sub, _mul, _div, _pow, _max, _atan2, _sqrt, _abs, _set, _nonnegative, _gt)
+    for f in (
+        _add,
+        _sub,
+        _mul,
+        _div,
+        _pow,
+        _max,
+        _atan2,
+        _sqrt,
+        _arb_abs,
+        _set_round,
+        _set,
+        _nonnegative,
+        _gt,
+    )
 )
 
 _B = arb_loops.ARB_BYTES
@@ -75,12 +91,18 @@ def _address(ball: Any) -> int:
 if AVAILABLE:
 
     @numba.njit(cache=False)
+    def _abs(out: int, x: int, prec: int) -> None:
+        """|x| as python-flint's ``abs`` makes it: rounded to the working precision."""
+        _arb_abs(out, x)
+        _set_round(out, out, prec)
+
+    @numba.njit(cache=False)
     def _relative(out: int, computed: int, expected: int, tiny: int, scale: int, prec: int) -> None:
         """``checks.relative_difference`` of one entry: |c − e| / (|e| if |e| > tiny else
         tiny)."""
-        _abs(scale, expected)
+        _abs(scale, expected, prec)
         _sub(out, computed, expected, prec)
-        _abs(out, out)
+        _abs(out, out, prec)
         _div(out, out, scale if _gt(scale, tiny) else tiny, prec)
 
     @numba.njit(cache=False)
@@ -126,7 +148,6 @@ if AVAILABLE:
         e, f, r, q = s, s + _B, s + 2 * _B, s + 3 * _B
         t, u, num, acc = s + 4 * _B, s + 5 * _B, s + 6 * _B, s + 7 * _B
         scale = s + 8 * _B
-        do_printed = printed.shape[0] > 0
         for k in range(corrected.shape[0]):
             a, b, target = y[k], y[k + 1], y[k + 3]
             # e = d / a; f = d / b
@@ -160,8 +181,6 @@ if AVAILABLE:
             _mul(u, u, u, prec)
             _div(num, num, u, prec)
             _relative(corrected[k], target, num, tiny, scale, prec)
-            if not do_printed:
-                continue
             # b**5 + d**2 * (a**3 + 2 * a**2 * b + 3 * a * b**2 + 4 * b**3)
             #   + d**4 * (2 * b**3 + 2 * a + 3 * b), over (d**2 - a * b) ** 2
             _pow(num, b, five, prec)
@@ -195,12 +214,12 @@ if AVAILABLE:
     @numba.njit(cache=False)
     def _magnitude_into(out: int, a: Any, i: int, v: Any, j: int, prec: int, t: int) -> None:
         """``polygon.magnitude(a, v)`` of one pair: ((|a^x| + |a^y|) + |v^x|) + |v^y|."""
-        _abs(out, a[2 * i])
-        _abs(t, a[2 * i + 1])
+        _abs(out, a[2 * i], prec)
+        _abs(t, a[2 * i + 1], prec)
         _add(out, out, t, prec)
-        _abs(t, v[2 * j])
+        _abs(t, v[2 * j], prec)
         _add(out, out, t, prec)
-        _abs(t, v[2 * j + 1])
+        _abs(t, v[2 * j + 1], prec)
         _add(out, out, t, prec)
 
     @numba.njit(cache=False)
@@ -217,7 +236,7 @@ if AVAILABLE:
         _mul(ux, ux, wx, prec)
         _mul(uy, uy, wy, prec)
         _add(ux, ux, uy, prec)
-        _abs(ux, ux)
+        _abs(ux, ux, prec)
         _magnitude_into(ma, a, j, vertex, i, prec, t)
         _magnitude_into(mb, b, m, vertex, i, prec, t)
         _mul(ma, ma, mb, prec)
@@ -231,6 +250,265 @@ if AVAILABLE:
             _right_angle(at_p, tractrix, k, axis, k, p, k, prec, scratch)
             _right_angle(at_next, tractrix, k, axis, k, p, k + 1, prec, scratch)
             _max(out[k], at_p, at_next, prec)
+
+    # --- the columns of (D1), (D3) and eq. (2), and their fits ---
+
+    #: Column numbers in a ``Columns`` block (each ``stride`` balls long).
+    LENGTHS, SIZES, AREAS, AREA_SIZES, SECOND, SECOND_SIZES = 0, 1, 2, 3, 4, 5
+
+    @numba.njit(cache=False)
+    def _columns(p: Any, count: int, block: int, two: int, prec: int, s: int) -> None:
+        """The columns of ``polygon`` for the ``count`` vertices at ``p`` into ``block``
+        (column j, entry k at ball j·count + k), as ``edge_lengths`` (``arb_loops``' hypot),
+        ``edge_magnitude``, ``signed_areas``, ``area_magnitude``, ``second_difference`` and
+        ``second_difference_magnitude`` compute them."""
+        ex, ey, square, t, u = s, s + _B, s + 2 * _B, s + 3 * _B, s + 4 * _B
+        for k in range(count - 1):
+            x0, y0, x1, y1 = p[2 * k], p[2 * k + 1], p[2 * k + 2], p[2 * k + 3]
+            length = block + (LENGTHS * count + k) * _B
+            size = block + (SIZES * count + k) * _B
+            area = block + (AREAS * count + k) * _B
+            area_size = block + (AREA_SIZES * count + k) * _B
+            _sub(ex, x1, x0, prec)
+            _sub(ey, y1, y0, prec)
+            # hypot: sqrt(nonnegative part of ex·ex + ey·ey)
+            _mul(square, ex, ex, prec)
+            _mul(length, ey, ey, prec)
+            _add(square, square, length, prec)
+            _nonnegative(square, square)
+            _sqrt(length, square, prec)
+            # ((|x0| + |y0|) + |x1|) + |y1|
+            _abs(size, x0, prec)
+            _abs(t, y0, prec)
+            _add(size, size, t, prec)
+            _abs(t, x1, prec)
+            _add(size, size, t, prec)
+            _abs(t, y1, prec)
+            _add(size, size, t, prec)
+            # (y0 + y1) / 2 * (x1 − x0)
+            _add(area, y0, y1, prec)
+            _div(area, area, two, prec)
+            _mul(area, area, ex, prec)
+            # (|y0| + |y1|) / 2 * (|x0| + |x1|)
+            _abs(t, y0, prec)
+            _abs(u, y1, prec)
+            _add(area_size, t, u, prec)
+            _div(area_size, area_size, two, prec)
+            _abs(t, x0, prec)
+            _abs(u, x1, prec)
+            _add(t, t, u, prec)
+            _mul(area_size, area_size, t, prec)
+        for k in range(count - 2):
+            y0, y1, y2 = p[2 * k + 1], p[2 * k + 3], p[2 * k + 5]
+            second = block + (SECOND * count + k) * _B
+            second_size = block + (SECOND_SIZES * count + k) * _B
+            # y2 − 2·y1 + y0
+            _mul(t, two, y1, prec)
+            _sub(second, y2, t, prec)
+            _add(second, second, y0, prec)
+            # |y2| + 2·|y1| + |y0|
+            _abs(u, y1, prec)
+            _mul(t, two, u, prec)
+            _abs(u, y2, prec)
+            _add(second_size, u, t, prec)
+            _abs(u, y0, prec)
+            _add(second_size, second_size, u, prec)
+
+    @numba.njit(cache=False)
+    def _entry(block: int, count: int, column: int, k: int) -> int:
+        return block + (column * count + k) * _B
+
+    @numba.njit(cache=False)
+    def _sides(
+        block: int, count: int, kind: int, k: int, rhs: int, rhs_size: int, prec: int
+    ) -> tuple[int, int, int, int]:
+        """(lhs, |lhs|~, rhs, |rhs|~) of equation k of ``kind`` (0: (D1), 1: (D3), 2: eq. (2));
+        the paired right sides (r_k + r_{k+1}) are formed into ``rhs`` and ``rhs_size``."""
+        if kind == 1:
+            return (
+                _entry(block, count, AREAS, k),
+                _entry(block, count, AREA_SIZES, k),
+                _entry(block, count, LENGTHS, k),
+                _entry(block, count, SIZES, k),
+            )
+        r, r_size = (LENGTHS, SIZES) if kind == 0 else (AREAS, AREA_SIZES)
+        _add(rhs, _entry(block, count, r, k), _entry(block, count, r, k + 1), prec)
+        _add(rhs_size, _entry(block, count, r_size, k), _entry(block, count, r_size, k + 1), prec)
+        return (
+            _entry(block, count, SECOND, k),
+            _entry(block, count, SECOND_SIZES, k),
+            rhs,
+            rhs_size,
+        )
+
+    @numba.njit(cache=False)
+    def _fit_sums(
+        block: int, count: int, kind: int, m: int, tiny: int, vv: int, uv: int, prec: int, s: int
+    ) -> None:
+        """``conditions.fit``'s two sums (mp: no scaling) over equations 0 … m − 1: Σ v·v into
+        ``vv`` and Σ u·v into ``uv`` (numpy's order: from the first term on)."""
+        rhs, rhs_size, u, v, t, w = s, s + _B, s + 2 * _B, s + 3 * _B, s + 4 * _B, s + 5 * _B
+        for k in range(m):
+            lhs, lhs_size, r, _ = _sides(block, count, kind, k, rhs, rhs_size, prec)
+            weight = lhs_size if _gt(lhs_size, tiny) else tiny
+            _div(u, lhs, weight, prec)
+            _div(v, r, weight, prec)
+            _set(w, v)  # v·v of two balls (numpy's product of two arrays: no squaring)
+            _mul(t, v, w, prec)
+            if k == 0:
+                _set(vv, t)
+            else:
+                _add(vv, vv, t, prec)
+            _mul(t, u, v, prec)
+            if k == 0:
+                _set(uv, t)
+            else:
+                _add(uv, uv, t, prec)
+
+    @numba.njit(cache=False)
+    def _misfit(
+        block: int,
+        count: int,
+        kind: int,
+        c: int,
+        size_c: int,
+        tiny: int,
+        out: Any,
+        prec: int,
+        s: int,
+    ) -> None:
+        """``conditions.misfit`` with the constant c (``size_c`` = |c|) into ``out``."""
+        rhs, rhs_size, t, scale = s, s + _B, s + 2 * _B, s + 3 * _B
+        for k in range(out.shape[0]):
+            lhs, lhs_size, r, r_size = _sides(block, count, kind, k, rhs, rhs_size, prec)
+            _mul(t, size_c, r_size, prec)
+            _add(scale, lhs_size, t, prec)
+            _mul(t, c, r, prec)
+            _sub(t, lhs, t, prec)
+            _abs(t, t, prec)
+            _div(out[k], t, scale if _gt(scale, tiny) else tiny, prec)
+
+    @numba.njit(cache=False)
+    def _ratio_spread(
+        block: int, count: int, m: int, size: int, tiny: int, out: Any, prec: int, s: int
+    ) -> None:
+        """``checks._ratio_erratum``'s spread: ratio_j = Δ²y_{j+1} / (l_j + l_{j+1}) for
+        j < m, their mean (sum from the first on, over ``size`` = m), and
+        ``relative_difference(ratio, mean)``; the ratios are kept in ``out`` meanwhile."""
+        t, total, scale = s, s + _B, s + 2 * _B
+        for j in range(m):
+            _add(
+                t,
+                _entry(block, count, LENGTHS, j),
+                _entry(block, count, LENGTHS, j + 1),
+                prec,
+            )
+            _div(out[j], _entry(block, count, SECOND, j + 1), t, prec)
+            if j == 0:
+                _set(total, out[j])
+            else:
+                _add(total, total, out[j], prec)
+        _div(total, total, size, prec)
+        for j in range(m):
+            _relative(out[j], out[j], total, tiny, scale, prec)
+
+
+class Columns:
+    """The columns of (D1), (D3) and eq. (2) of a polygon of balls (``_columns``) in a block of
+    flint's balls, freed with this object; the fits and misfits of those conditions on the
+    polygon's first ``vertices`` vertices, and the ratio of the proof of Theorem 4 (i)."""
+
+    def __init__(self, p: np.ndarray[Any, Any], tiny: Any) -> None:
+        self.count = len(p)
+        self.tiny = tiny
+        self._two = flint.arb(2)
+        self._scratch = arb_loops.Scratch(6 * self.count)
+        self.block = self._scratch.__enter__()
+        weakref.finalize(self, self._scratch.__exit__, None, None, None)
+        if self.count >= 2:
+            with arb_loops.Scratch(5) as scratch:
+                _columns(
+                    arb_loops.addresses(p),
+                    self.count,
+                    self.block,
+                    _address(self._two),
+                    flint.ctx.prec,
+                    scratch,
+                )
+
+    def equations(self, kind: int, vertices: int) -> int:
+        """How many equations ``kind`` has on the first ``vertices`` vertices."""
+        return max(vertices - (1 if kind == D3 else 2), 0)
+
+    def fit(self, kind: int, vertices: int) -> tuple[Any, np.ndarray[Any, Any]]:
+        """``conditions.fit`` of ``kind`` (``D1``, ``D3``, ``EQUATION_2``) on the first
+        ``vertices`` vertices: (constant or None, residuals), the same balls."""
+        m = self.equations(kind, vertices)
+        if not m:
+            return None, self.misfit(kind, vertices, flint.arb(0))
+        sums = np.negative(np.array([self.tiny, self.tiny], dtype=object))
+        with arb_loops.Scratch(6) as scratch:
+            _fit_sums(
+                self.block,
+                self.count,
+                kind,
+                m,
+                _address(self.tiny),
+                _address(sums[0]),
+                _address(sums[1]),
+                flint.ctx.prec,
+                scratch,
+            )
+        vv, uv = sums
+        constant = uv / vv if vv > 0 else None
+        c = constant if constant is not None else flint.arb(0)
+        return constant, self.misfit(kind, vertices, c)
+
+    def misfit(self, kind: int, vertices: int, c: Any) -> np.ndarray[Any, Any]:
+        """``conditions.misfit`` of ``kind`` with the constant c (a ball)."""
+        m = self.equations(kind, vertices)
+        out = np.empty(m, dtype=object)
+        if m:
+            out = np.negative(np.full(m, self.tiny, dtype=object))
+            size_c = abs(c)
+            with arb_loops.Scratch(4) as scratch:
+                _misfit(
+                    self.block,
+                    self.count,
+                    kind,
+                    _address(c),
+                    _address(size_c),
+                    _address(self.tiny),
+                    arb_loops.addresses(out),
+                    flint.ctx.prec,
+                    scratch,
+                )
+        return out
+
+    def ratio_spread(self) -> np.ndarray[Any, Any] | None:
+        """The spread of the proof's ratio over the whole polygon (``checks._ratio_erratum``);
+        None for fewer than two ratios."""
+        m = self.count - 3
+        if m < 2:
+            return None
+        out = np.negative(np.full(m, self.tiny, dtype=object))
+        size = flint.arb(m)
+        with arb_loops.Scratch(3) as scratch:
+            _ratio_spread(
+                self.block,
+                self.count,
+                m,
+                _address(size),
+                _address(self.tiny),
+                arb_loops.addresses(out),
+                flint.ctx.prec,
+                scratch,
+            )
+        return out
+
+
+#: The kinds of ``Columns.fit``, as ``conditions``' float64 ``Columns``.
+D1, D3, EQUATION_2 = 0, 1, 2
 
 
 def _small() -> tuple[list[Any], np.ndarray[Any, np.dtype[np.int64]]]:
@@ -261,13 +539,12 @@ def recursion_13(d: Any, y: np.ndarray[Any, Any], tiny: Any) -> np.ndarray[Any, 
 
 
 def two_step(
-    d: Any, y: np.ndarray[Any, Any], tiny: Any, with_printed: bool
-) -> tuple[np.ndarray[Any, Any], np.ndarray[Any, Any] | None]:
-    """The residuals of (13) twice (corrected form) and, ``with_printed``, of the proof's
-    printed form, as ``checks._two_step`` computes them on balls; ``(n,) -> (n − 3,)``."""
+    d: Any, y: np.ndarray[Any, Any], tiny: Any
+) -> tuple[np.ndarray[Any, Any], np.ndarray[Any, Any]]:
+    """The residuals of (13) twice (corrected form) and of the proof's printed form, as
+    ``checks._two_step`` computes them on balls; ``(n,) -> (n − 3,)`` each."""
     m = max(len(y) - 3, 0)
-    corrected = fresh(m, y)
-    printed = fresh(m if with_printed else 0, y)
+    corrected, printed = fresh(m, y), fresh(m, y)
     if m:
         small, addresses = _small()
         d2, d4 = d**2, d**4
@@ -285,7 +562,7 @@ def two_step(
                 scratch,
             )
         del small
-    return corrected, printed if with_printed else None
+    return corrected, printed
 
 
 def nikolaides(
@@ -315,8 +592,12 @@ def _warm() -> None:
     tiny, d = flint.arb(1) / 1000, flint.arb(1) / 10
     y = np.ascontiguousarray(points[:, 1])
     recursion_13(d, y, tiny)
-    two_step(d, y, tiny, True)
+    two_step(d, y, tiny)
     nikolaides(points, points[::-1].copy(), points, 5)
+    columns = Columns(points, tiny)
+    for kind in (D1, D3, EQUATION_2):
+        columns.fit(kind, 5)
+    columns.ratio_spread()
 
 
 if AVAILABLE:

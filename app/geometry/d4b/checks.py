@@ -204,11 +204,29 @@ class _Context:
                 "d3": columns.fit(conditions.D3),
                 "eq2": columns.fit(conditions.EQUATION_2),
             }
+        ball_columns = self.ball_columns
+        if ball_columns is not None:  # the same balls from one set of columns, compiled
+            return {
+                name: conditions.ConditionFit(*ball_columns.fit(kind, self.n))
+                for name, kind in (
+                    ("d1", arb_checks.D1),
+                    ("d3", arb_checks.D3),
+                    ("eq2", arb_checks.EQUATION_2),
+                )
+            }
         return {
             "d1": conditions.d1(self.ar, p),
             "d3": conditions.d3(self.ar, p),
             "eq2": conditions.equation_2(self.ar, p),
         }
+
+    @cached_property
+    def ball_columns(self) -> arb_checks.Columns | None:
+        """Balls: the columns of (D1), (D3) and (2) on the whole polygon, for the compiled
+        fits, misfits and the proof's ratio (None where ``arb_checks`` does not apply)."""
+        if not self.ar.certified or not arb_checks.balls(self.data.p):
+            return None
+        return arb_checks.Columns(self.data.p, _tiny(self.ar))
 
     def check(
         self,
@@ -268,6 +286,8 @@ def _equation_2(ctx: _Context, fits: dict[str, conditions.ConditionFit], p: Arra
     if c1 is not None and c2 is not None and c2 != 0 and len(residuals):
         if ctx.ar.mode == "float64":  # p is ctx.data.p[: n], whose columns the fits used
             misfit = ctx.columns.misfit(conditions.EQUATION_2, c1 / c2)
+        elif ctx.ball_columns is not None and len(p) == ctx.n:  # compiled, the same balls
+            misfit = ctx.ball_columns.misfit(arb_checks.EQUATION_2, ctx.n, c1 / c2)
         else:
             misfit = conditions.equation_2_misfit(ctx.ar, p, c1 / c2)
         residuals = ctx.ar.maximum(residuals, misfit)
@@ -279,6 +299,10 @@ def _ratio_erratum(ctx: _Context, p: Array) -> Erratum | None:
     ar = ctx.ar
     if ar.mode == "float64":  # the same numbers in compiled passes, the ratios' array alone
         return Erratum(*ERRATUM_RATIO, printed_residual=residual_kernels.ratio_spread(p))
+    if p is ctx.data.p and ctx.ball_columns is not None:  # the same balls, compiled
+        spread = ctx.ball_columns.ratio_spread()
+        worst = None if spread is None else printed_residual(ar, spread)
+        return Erratum(*ERRATUM_RATIO, printed_residual=worst)
     y = p[:, 1]
     lengths = ar.hypot(p[1:, 0] - p[:-1, 0], y[1:] - y[:-1])  # lengths[k] = |p_{k+1} − p_k|
     # printed: Δ²p_i^y / (l'_i + l'_{i+1}) with l'_i = |p_i − p_{i−1}|, for i with p_{i−1} known
@@ -328,7 +352,7 @@ def _two_step(ctx: _Context, p: Array) -> Check:
     y = p[:, 1]
     ar = ctx.ar
     if ar.certified and arb_checks.balls(y):  # the same balls as below, compiled
-        corrected, printed = arb_checks.two_step(ctx.d, y, _tiny(ar), with_printed=True)
+        corrected, printed = arb_checks.two_step(ctx.d, y, _tiny(ar))
         erratum = Erratum(*ERRATUM_TWO_STEP, printed_residual=printed_residual(ar, printed))
         return ctx.check(TWO_STEP, 1, corrected, erratum, factor=3)
     if ar.mode == "float64" and float(np.max(abs(y))) < 1e60:  # the same, compiled

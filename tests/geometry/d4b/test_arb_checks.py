@@ -9,7 +9,7 @@ import flint
 import numpy as np
 import pytest
 
-from app.geometry import balls, nikolaides
+from app.geometry import balls, conditions, nikolaides
 from app.geometry.ball_arithmetic import Ball
 from app.geometry.checks import relative_difference
 from app.geometry.d4b import arb_checks, certified, closed_forms, discretization
@@ -63,10 +63,9 @@ def test_recursions_are_the_numpy_balls(case: tuple[Any, ...], perturb: bool) ->
         tiny = ar.scalar(np.finfo(np.float64).tiny)
         expected = relative_difference(ar, y[2:], closed_forms.recursion_13(d, y[:-2], y[1:-1]))
         _same(arb_checks.recursion_13(d, y, tiny), expected)
-        corrected, printed = arb_checks.two_step(d, y, tiny, True)
+        corrected, printed = arb_checks.two_step(d, y, tiny)
         a, b = y[:-3], y[1:-2]
         _same(corrected, relative_difference(ar, y[3:], closed_forms.two_step(d, a, b)))
-        assert printed is not None
         _same(printed, relative_difference(ar, y[3:], closed_forms.two_step_printed(d, a, b)))
 
 
@@ -89,8 +88,8 @@ def test_short_polygons_give_no_residuals() -> None:
     y[:] = [flint.arb(1), flint.arb(2)]
     tiny = flint.arb(1) / 100
     assert len(arb_checks.recursion_13(flint.arb(1) / 10, y, tiny)) == 0
-    corrected, printed = arb_checks.two_step(flint.arb(1) / 10, y, tiny, True)
-    assert len(corrected) == 0 and printed is not None and len(printed) == 0
+    corrected, printed = arb_checks.two_step(flint.arb(1) / 10, y, tiny)
+    assert len(corrected) == len(printed) == 0
 
 
 def test_other_entries_are_refused() -> None:
@@ -98,3 +97,48 @@ def test_other_entries_are_refused() -> None:
     values[:] = [flint.arb(1), 2.0, flint.arb(3)]
     assert not arb_checks.balls(values)
     assert not arb_checks.balls(np.zeros(3))
+
+
+@pytest.mark.parametrize("case", CASES)
+@pytest.mark.parametrize("perturb", [False, True])
+def test_fits_are_the_numpy_balls(case: tuple[Any, ...], perturb: bool) -> None:
+    ar, data = _polygons(*case)
+    with balls.working_precision(ar.bits):
+        p = _perturbed(data.p, 5) if perturb else data.p
+        n = len(p) - 1
+        tiny = ar.scalar(np.finfo(np.float64).tiny)
+        columns = arb_checks.Columns(p, tiny)
+        expected = {
+            arb_checks.D1: conditions.d1(ar, p[:n]),
+            arb_checks.D3: conditions.d3(ar, p[:n]),
+            arb_checks.EQUATION_2: conditions.equation_2(ar, p[:n]),
+        }
+        for kind, fit in expected.items():
+            constant, residuals = columns.fit(kind, n)
+            _same(residuals, fit.residuals)
+            assert fit.constant is not None and constant is not None
+            _same(np.array([constant]), np.array([fit.constant]))
+        c1, c3 = expected[arb_checks.D1].constant, expected[arb_checks.D3].constant
+        assert c1 is not None and c3 is not None
+        c = c1 / c3
+        misfit = columns.misfit(arb_checks.EQUATION_2, n, c)
+        _same(misfit, conditions.equation_2_misfit(ar, p[:n], c))
+        y = p[:, 1]
+        lengths = ar.hypot(p[1:, 0] - p[:-1, 0], y[1:] - y[:-1])
+        ratio = (y[3:] - 2 * y[2:-1] + y[1:-2]) / (lengths[:-2] + lengths[1:-1])
+        mean = np.full_like(ratio, np.sum(ratio) / len(ratio))
+        spread = columns.ratio_spread()
+        assert spread is not None
+        _same(spread, relative_difference(ar, ratio, mean))
+
+
+def test_fits_of_too_few_vertices() -> None:
+    p = np.empty((3, 2), dtype=object)
+    p[:, 0] = [flint.arb(k) for k in range(3)]
+    p[:, 1] = [flint.arb(1), flint.arb(2), flint.arb(4)]
+    columns = arb_checks.Columns(p, flint.arb(1) / 100)
+    assert columns.ratio_spread() is None
+    constant, residuals = columns.fit(arb_checks.D1, 2)
+    assert constant is None and len(residuals) == 0
+    constant, residuals = columns.fit(arb_checks.D3, 2)
+    assert constant is not None and len(residuals) == 1
