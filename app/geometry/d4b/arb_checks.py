@@ -412,6 +412,97 @@ if AVAILABLE:
         for j in range(m):
             _relative(out[j], out[j], total, tiny, scale, prec)
 
+    # --- the rotation angle, Darboux's transform ---
+
+    @numba.njit(cache=False)
+    def _signed_angle(
+        out: int, ax: int, ay: int, bx: int, by: int, prec: int, cross: int, t: int
+    ) -> None:
+        """``checks._signed_angle`` of one pair: atan2(a^x b^y − a^y b^x, a^x b^x + a^y b^y)."""
+        _mul(cross, ax, by, prec)
+        _mul(t, ay, bx, prec)
+        _sub(cross, cross, t, prec)
+        _mul(out, ax, bx, prec)
+        _mul(t, ay, by, prec)
+        _add(out, out, t, prec)
+        _atan2(out, cross, out, prec)
+
+    @numba.njit(cache=False)
+    def _rotation_angle(
+        p: Any, axis: Any, d: int, two: int, out: Any, printed: Any, prec: int, s: int
+    ) -> None:
+        """``checks._rotation_angle`` on balls for i = 1 … n − 1 (k = i − 1): |angle at p_i
+        between x_{i−1} and x_i − 2 atan2(d, p_i^y)| into ``out``, the printed indexing's
+        (x_i and x_{i+1}) into ``printed``."""
+        ax, ay, bx, by, cx, cy = s, s + _B, s + 2 * _B, s + 3 * _B, s + 4 * _B, s + 5 * _B
+        formula, angle, cross, t = s + 6 * _B, s + 7 * _B, s + 8 * _B, s + 9 * _B
+        for k in range(out.shape[0]):
+            i = k + 1
+            px, py = p[2 * i], p[2 * i + 1]
+            _sub(ax, axis[2 * k], px, prec)  # x_{i−1} − p_i
+            _sub(ay, axis[2 * k + 1], py, prec)
+            _sub(bx, axis[2 * i], px, prec)  # x_i − p_i
+            _sub(by, axis[2 * i + 1], py, prec)
+            _signed_angle(angle, ax, ay, bx, by, prec, cross, t)
+            _atan2(t, d, py, prec)
+            _mul(formula, two, t, prec)
+            _sub(angle, angle, formula, prec)
+            _abs(out[k], angle, prec)
+            _sub(cx, axis[2 * i + 2], px, prec)  # x_{i+1} − p_i
+            _sub(cy, axis[2 * i + 3], py, prec)
+            _signed_angle(angle, bx, by, cx, cy, prec, cross, t)
+            _sub(angle, angle, formula, prec)
+            _abs(printed[k], angle, prec)
+
+    @numba.njit(cache=False)
+    def _distance(out: int, a: Any, i: int, b: Any, j: int, prec: int, dx: int, dy: int) -> None:
+        """``checks.point_distance`` of one pair: hypot(a^x − b^x, a^y − b^y) (as
+        ``arb_loops``' hypot)."""
+        _sub(dx, a[2 * i], b[2 * j], prec)
+        _sub(dy, a[2 * i + 1], b[2 * j + 1], prec)
+        _mul(out, dx, dx, prec)
+        _mul(dy, dy, dy, prec)
+        _add(dx, out, dy, prec)
+        _nonnegative(dx, dx)
+        _sqrt(out, dx, prec)
+
+    @numba.njit(cache=False)
+    def _add_size(total: int, a: Any, i: int, prec: int, t: int) -> None:
+        """total + |a_i^x| + |a_i^y| (``polygon.magnitude``'s step)."""
+        _abs(t, a[2 * i], prec)
+        _add(total, total, t, prec)
+        _abs(t, a[2 * i + 1], prec)
+        _add(total, total, t, prec)
+
+    @numba.njit(cache=False)
+    def _darboux(
+        x: Any, e: Any, expected: int, edges: Any, distances: Any, prec: int, s: int
+    ) -> None:
+        """``darboux.edge_length_residuals`` into ``edges`` and ``distance_residuals`` (to
+        ``expected``) into ``distances``, on balls."""
+        ex, ee, dx, dy, size, t = s, s + _B, s + 2 * _B, s + 3 * _B, s + 4 * _B, s + 5 * _B
+        for k in range(edges.shape[0]):
+            _distance(ex, x, k + 1, x, k, prec, dx, dy)
+            _distance(ee, e, k + 1, e, k, prec, dx, dy)
+            _abs(size, x[2 * k + 2], prec)
+            _abs(t, x[2 * k + 3], prec)
+            _add(size, size, t, prec)
+            _add_size(size, x, k, prec, t)
+            _add_size(size, e, k + 1, prec, t)
+            _add_size(size, e, k, prec, t)
+            _sub(ee, ee, ex, prec)
+            _abs(ee, ee, prec)
+            _div(edges[k], ee, size, prec)
+        for k in range(distances.shape[0]):
+            _distance(ex, x, k, e, k, prec, dx, dy)
+            _sub(ex, ex, expected, prec)
+            _abs(ex, ex, prec)
+            _abs(size, x[2 * k], prec)
+            _abs(t, x[2 * k + 1], prec)
+            _add(size, size, t, prec)
+            _add_size(size, e, k, prec, t)
+            _div(distances[k], ex, size, prec)
+
 
 class Columns:
     """The columns of (D1), (D3) and eq. (2) of a polygon of balls (``_columns``) in a block of
@@ -584,6 +675,60 @@ def nikolaides(
     return out
 
 
+def rotation_angle(
+    d: Any, p: np.ndarray[Any, Any], axis: np.ndarray[Any, Any], n: int
+) -> tuple[np.ndarray[Any, Any], np.ndarray[Any, Any]]:
+    """``checks._rotation_angle`` on balls: (residuals, printed indexing's residuals), i = 1 …
+    n − 1; ``p`` and ``axis`` hold at least n + 1 points."""
+    m = max(n - 1, 0)
+    out, printed = fresh(m, p), fresh(m, p)
+    if m:
+        two = flint.arb(2)
+        with arb_loops.Scratch(10) as scratch:
+            _rotation_angle(
+                arb_loops.addresses(p[: n + 1]),
+                arb_loops.addresses(axis[: n + 1]),
+                _address(d),
+                _address(two),
+                arb_loops.addresses(out),
+                arb_loops.addresses(printed),
+                flint.ctx.prec,
+                scratch,
+            )
+    return out, printed
+
+
+def darboux_edges(x: np.ndarray[Any, Any], e: np.ndarray[Any, Any]) -> np.ndarray[Any, Any]:
+    """``darboux.edge_length_residuals`` of the ``(n, 2)`` points x, e on balls; ``(n − 1,)``."""
+    return _darboux_pass(x, e, None, max(len(x) - 1, 0), 0)[0]
+
+
+def darboux_distances(
+    x: np.ndarray[Any, Any], e: np.ndarray[Any, Any], expected: Any
+) -> np.ndarray[Any, Any]:
+    """``darboux.distance_residuals`` of the ``(n, 2)`` points x, e to ``expected`` on balls;
+    ``(n,)``."""
+    return _darboux_pass(x, e, expected, 0, len(x))[1]
+
+
+def _darboux_pass(
+    x: np.ndarray[Any, Any], e: np.ndarray[Any, Any], expected: Any, edges: int, distances: int
+) -> tuple[np.ndarray[Any, Any], np.ndarray[Any, Any]]:
+    out_edges, out_distances = fresh(edges, x), fresh(distances, x)
+    if edges or distances:
+        with arb_loops.Scratch(6) as scratch:
+            _darboux(
+                arb_loops.addresses(x),
+                arb_loops.addresses(e),
+                _address(expected if expected is not None else x[0, 0]),
+                arb_loops.addresses(out_edges),
+                arb_loops.addresses(out_distances),
+                flint.ctx.prec,
+                scratch,
+            )
+    return out_edges, out_distances
+
+
 def _warm() -> None:
     """Compile every loop now, at import, so that no request pays for it."""
     points = np.empty((6, 2), dtype=object)
@@ -598,6 +743,9 @@ def _warm() -> None:
     for kind in (D1, D3, EQUATION_2):
         columns.fit(kind, 5)
     columns.ratio_spread()
+    rotation_angle(d, points, points[::-1].copy(), 5)
+    darboux_edges(points, points[::-1].copy())
+    darboux_distances(points, points[::-1].copy(), d)
 
 
 if AVAILABLE:

@@ -322,6 +322,10 @@ def _rotation_angle(ctx: _Context, p: Array, axis: Array) -> Check:
         corrected, printed_angles = residual_kernels.rotation_angles(ctx.d, p, axis, n)
         erratum = Erratum(*ERRATUM_ANGLE, printed_residual=printed_residual(ar, printed_angles))
         return ctx.check(ROTATION_ANGLE, 1, corrected, erratum)
+    if ar.certified and arb_checks.balls(p[: n + 1], axis[: n + 1]):  # the same balls, compiled
+        corrected, printed_angles = arb_checks.rotation_angle(ctx.d, p, axis, n)
+        erratum = Erratum(*ERRATUM_ANGLE, printed_residual=printed_residual(ar, printed_angles))
+        return ctx.check(ROTATION_ANGLE, 1, corrected, erratum)
     a = axis[: n - 1] - p[1:n]  # x_{i−1} − p_i
     b = axis[1:n] - p[1:n]  # x_i − p_i
     angle = _signed_angle(ar, a, b)
@@ -429,12 +433,17 @@ def _nikolaides(ctx: _Context, p: Array, tractrix: Array, axis: Array) -> Check:
 
 def _darboux(ctx: _Context) -> Check:
     n, axis, e = ctx.n, ctx.data.axis, ctx.data.darboux
+    if ctx.ar.certified and arb_checks.balls(axis[:n], e[:n]):  # the same balls, compiled
+        return ctx.check(DARBOUX, 0, arb_checks.darboux_edges(axis[:n], e[:n]))
     return ctx.check(DARBOUX, 0, darboux.edge_length_residuals(ctx.ar, axis[:n], e[:n]))
 
 
 def _darboux_distance(ctx: _Context) -> Check:
     n, axis, e = ctx.n, ctx.data.axis, ctx.data.darboux
-    residuals = darboux.distance_residuals(ctx.ar, axis[:n], e[:n], 2 * ctx.h)
+    if ctx.ar.certified and arb_checks.balls(axis[:n], e[:n]):  # the same balls, compiled
+        residuals = arb_checks.darboux_distances(axis[:n], e[:n], 2 * ctx.h)
+    else:
+        residuals = darboux.distance_residuals(ctx.ar, axis[:n], e[:n], 2 * ctx.h)
     return ctx.check(DARBOUX_DISTANCE, 0, residuals)
 
 

@@ -9,10 +9,16 @@ import flint
 import numpy as np
 import pytest
 
-from app.geometry import balls, conditions, nikolaides
+from app.geometry import balls, conditions, darboux, nikolaides
 from app.geometry.ball_arithmetic import Ball
 from app.geometry.checks import relative_difference
-from app.geometry.d4b import arb_checks, certified, closed_forms, discretization
+from app.geometry.d4b import (
+    arb_checks,
+    certified,
+    checks as d4b_checks,
+    closed_forms,
+    discretization,
+)
 
 pytestmark = pytest.mark.skipif(not arb_checks.AVAILABLE, reason="no bundled libflint")
 
@@ -142,3 +148,32 @@ def test_fits_of_too_few_vertices() -> None:
     assert constant is None and len(residuals) == 0
     constant, residuals = columns.fit(arb_checks.D3, 2)
     assert constant is not None and len(residuals) == 1
+
+
+@pytest.mark.parametrize("case", CASES)
+@pytest.mark.parametrize("perturb", [False, True])
+def test_rotation_angle_and_darboux_are_the_numpy_balls(
+    case: tuple[Any, ...], perturb: bool
+) -> None:
+    ar, data = _polygons(*case)
+    with balls.working_precision(ar.bits):
+        p, axis, e = data.p, data.axis, data.darboux
+        if perturb:
+            p, axis, e = _perturbed(p, 7), _perturbed(axis, 8, zero=False), _perturbed(e, 9)
+        n, d = data.vertices - 1, ar.scalar(case[2])
+        a, b = axis[: n - 1] - p[1:n], axis[1:n] - p[1:n]
+        formula = 2 * ar.atan2(d, p[1:n, 1])
+        angle = d4b_checks._signed_angle(ar, a, b)
+        printed = d4b_checks._signed_angle(ar, b, axis[2 : n + 1] - p[1:n])
+        corrected, printed_residuals = arb_checks.rotation_angle(d, p, axis, n)
+        _same(corrected, abs(angle - formula))
+        _same(printed_residuals, abs(printed - formula))
+        expected = 2 * ar.scalar(case[1])
+        _same(
+            arb_checks.darboux_edges(axis[:n], e[:n]),
+            darboux.edge_length_residuals(ar, axis[:n], e[:n]),
+        )
+        _same(
+            arb_checks.darboux_distances(axis[:n], e[:n], expected),
+            darboux.distance_residuals(ar, axis[:n], e[:n], expected),
+        )
