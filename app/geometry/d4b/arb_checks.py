@@ -503,6 +503,32 @@ if AVAILABLE:
             _add_size(size, e, k, prec, t)
             _div(distances[k], ex, size, prec)
 
+    @numba.njit(cache=False)
+    def _relative_distances(
+        a: Any, b: Any, scales: Any, tiny: int, out: Any, prec: int, s: int
+    ) -> None:
+        """``checks.relative_to(point_distance(a, b), scales)`` entry by entry."""
+        dx, dy, t = s, s + _B, s + 2 * _B
+        for k in range(out.shape[0]):
+            _distance(t, a, k, b, k, prec, dx, dy)
+            _abs(t, t, prec)
+            scale = scales[k]
+            _div(out[k], t, scale if _gt(scale, tiny) else tiny, prec)
+
+    @numba.njit(cache=False)
+    def _hypothesis(
+        y: Any, d2: int, zero: int, violation: Any, ratios: Any, prec: int, s: int
+    ) -> None:
+        """``checks._hypothesis`` on balls: max(d² − y_{k} y_{k+1}, 0) / d² into ``violation``
+        and y_k y_{k+1} / d² into ``ratios``."""
+        product, t = s, s + _B
+        for k in range(violation.shape[0]):
+            _mul(product, y[k], y[k + 1], prec)
+            _sub(t, d2, product, prec)
+            _max(t, t, zero, prec)
+            _div(violation[k], t, d2, prec)
+            _div(ratios[k], product, d2, prec)
+
 
 class Columns:
     """The columns of (D1), (D3) and eq. (2) of a polygon of balls (``_columns``) in a block of
@@ -729,6 +755,48 @@ def _darboux_pass(
     return out_edges, out_distances
 
 
+def relative_distances(
+    a: np.ndarray[Any, Any], b: np.ndarray[Any, Any], scales: np.ndarray[Any, Any], tiny: Any
+) -> np.ndarray[Any, Any]:
+    """``checks.relative_to(ar, point_distance(ar, a, b), scales)`` on balls: |a_k − b_k| over
+    the scale floored at ``tiny``; ``(n, 2), (n, 2), (n,) -> (n,)``."""
+    out = fresh(len(a), a)
+    if len(a):
+        with arb_loops.Scratch(3) as scratch:
+            _relative_distances(
+                arb_loops.addresses(a),
+                arb_loops.addresses(b),
+                arb_loops.addresses(scales),
+                _address(tiny),
+                arb_loops.addresses(out),
+                flint.ctx.prec,
+                scratch,
+            )
+    return out
+
+
+def hypothesis(
+    d: Any, y: np.ndarray[Any, Any]
+) -> tuple[np.ndarray[Any, Any], np.ndarray[Any, Any]]:
+    """The hypothesis of Theorem 4 on balls as ``checks._hypothesis`` computes it: (max(d² −
+    y_k y_{k+1}, 0) / d², y_k y_{k+1} / d²); ``(m,) -> (m − 1,)`` each."""
+    m = max(len(y) - 1, 0)
+    violation, ratios = fresh(m, y), fresh(m, y)
+    if m:
+        d2, zero = d * d, flint.arb(0)
+        with arb_loops.Scratch(2) as scratch:
+            _hypothesis(
+                arb_loops.addresses(y),
+                _address(d2),
+                _address(zero),
+                arb_loops.addresses(violation),
+                arb_loops.addresses(ratios),
+                flint.ctx.prec,
+                scratch,
+            )
+    return violation, ratios
+
+
 def _warm() -> None:
     """Compile every loop now, at import, so that no request pays for it."""
     points = np.empty((6, 2), dtype=object)
@@ -745,6 +813,8 @@ def _warm() -> None:
     columns.ratio_spread()
     rotation_angle(d, points, points[::-1].copy(), 5)
     darboux_edges(points, points[::-1].copy())
+    relative_distances(points, points[::-1].copy(), y, tiny)
+    hypothesis(d, y)
     darboux_distances(points, points[::-1].copy(), d)
 
 

@@ -252,6 +252,13 @@ def _hypothesis(ctx: _Context, p: Array) -> Check:
         check = ctx.check(HYPOTHESIS, 1, largest)
         return replace(check, note=f"smallest p_(i-1)^y p_i^y / d² = {smallest:.6g}")
     y = p[: ctx.n, 1]
+    if ctx.ar.certified and arb_checks.balls(y):  # the same balls, compiled
+        violation, ratios = arb_checks.hypothesis(ctx.d, y)
+        check = ctx.check(HYPOTHESIS, 1, violation)
+        if len(ratios):
+            smallest = ctx.ar.to_float(np.min(ratios))
+            return replace(check, note=f"smallest p_(i-1)^y p_i^y / d² = {smallest:.6g}")
+        return check
     d2 = ctx.d * ctx.d
     products = y[:-1] * y[1:]
     violation = ctx.ar.maximum(d2 - products, ctx.ar.scalar(0)) / d2
@@ -406,6 +413,11 @@ def _closed_form(
     closed = closed_form()
     if scale is None:
         residuals = relative_point_difference(ctx.ar, computed[: ctx.n], closed[: ctx.n])
+    elif ctx.ar.certified and arb_checks.balls(computed[: ctx.n], closed[: ctx.n], scale[: ctx.n]):
+        # the same balls, compiled
+        residuals = arb_checks.relative_distances(
+            computed[: ctx.n], closed[: ctx.n], scale[: ctx.n], _tiny(ctx.ar)
+        )
     else:
         difference = point_distance(ctx.ar, computed[: ctx.n], closed[: ctx.n])
         residuals = relative_to(ctx.ar, difference, scale[: ctx.n])

@@ -11,7 +11,7 @@ import pytest
 
 from app.geometry import balls, conditions, darboux, nikolaides
 from app.geometry.ball_arithmetic import Ball
-from app.geometry.checks import relative_difference
+from app.geometry.checks import point_distance, relative_difference, relative_to
 from app.geometry.d4b import (
     arb_checks,
     certified,
@@ -177,3 +177,23 @@ def test_rotation_angle_and_darboux_are_the_numpy_balls(
             arb_checks.darboux_distances(axis[:n], e[:n], expected),
             darboux.distance_residuals(ar, axis[:n], e[:n], expected),
         )
+
+
+@pytest.mark.parametrize("case", CASES)
+@pytest.mark.parametrize("perturb", [False, True])
+def test_hypothesis_and_theorem_6_are_the_numpy_balls(case: tuple[Any, ...], perturb: bool) -> None:
+    ar, data = _polygons(*case)
+    with balls.working_precision(ar.bits):
+        p, tractrix, closed = data.p, data.tractrix, data.closed_tractrix
+        if perturb:
+            p, tractrix = _perturbed(p, 11), _perturbed(tractrix, 12)
+        n, d = data.vertices - 1, ar.scalar(case[2])
+        y = p[:n, 1]
+        products = y[:-1] * y[1:]
+        violation, ratios = arb_checks.hypothesis(d, y)
+        _same(violation, ar.maximum(d * d - products, ar.scalar(0)) / (d * d))
+        _same(ratios, products / (d * d))
+        scale = abs(data.axis[:n, 0]) + ar.scalar(case[1])
+        tiny = ar.scalar(np.finfo(np.float64).tiny)
+        expected = relative_to(ar, point_distance(ar, tractrix[:n], closed[:n]), scale)
+        _same(arb_checks.relative_distances(tractrix[:n], closed[:n], scale, tiny), expected)
