@@ -69,12 +69,13 @@ AVAILABLE = arb_loops.AVAILABLE and all(
 )
 
 _B = arb_loops.ARB_BYTES
+_ZERO = flint.arb(0)
 
 
-def fresh(count: int, like: np.ndarray[Any, Any]) -> np.ndarray[Any, Any]:
-    """``count`` fresh balls (numpy's negation loop: one allocation each), which nothing else
-    references yet, for a loop to write into; ``like`` holds at least ``count`` balls."""
-    return np.negative(like.reshape(-1)[:count])
+def fresh(count: int) -> np.ndarray[Any, Any]:
+    """``count`` fresh balls (numpy's negation loop over zeros: one allocation each), which
+    nothing else references yet, for a loop to write into."""
+    return np.negative(np.full(count, _ZERO, dtype=object))
 
 
 def balls(*arrays: Any) -> bool:
@@ -563,7 +564,7 @@ class Columns:
         m = self.equations(kind, vertices)
         if not m:
             return None, self.misfit(kind, vertices, flint.arb(0))
-        sums = np.negative(np.array([self.tiny, self.tiny], dtype=object))
+        sums = fresh(2)
         with arb_loops.Scratch(6) as scratch:
             _fit_sums(
                 self.block,
@@ -584,9 +585,8 @@ class Columns:
     def misfit(self, kind: int, vertices: int, c: Any) -> np.ndarray[Any, Any]:
         """``conditions.misfit`` of ``kind`` with the constant c (a ball)."""
         m = self.equations(kind, vertices)
-        out = np.empty(m, dtype=object)
+        out = fresh(m)
         if m:
-            out = np.negative(np.full(m, self.tiny, dtype=object))
             size_c = abs(c)
             with arb_loops.Scratch(4) as scratch:
                 _misfit(
@@ -608,7 +608,7 @@ class Columns:
         m = self.count - 3
         if m < 2:
             return None
-        out = np.negative(np.full(m, self.tiny, dtype=object))
+        out = fresh(m)
         size = flint.arb(m)
         with arb_loops.Scratch(3) as scratch:
             _ratio_spread(
@@ -638,7 +638,7 @@ def recursion_13(d: Any, y: np.ndarray[Any, Any], tiny: Any) -> np.ndarray[Any, 
     """The residuals of (13) on the heights ``y`` (balls), as ``checks._recursion`` computes
     them on balls; ``(n,) -> (n − 2,)``."""
     m = max(len(y) - 2, 0)
-    out = fresh(m, y)
+    out = fresh(m)
     if m:
         one, two_d = flint.arb(1), 2 * d
         with arb_loops.Scratch(7) as scratch:
@@ -661,7 +661,7 @@ def two_step(
     """The residuals of (13) twice (corrected form) and of the proof's printed form, as
     ``checks._two_step`` computes them on balls; ``(n,) -> (n − 3,)`` each."""
     m = max(len(y) - 3, 0)
-    corrected, printed = fresh(m, y), fresh(m, y)
+    corrected, printed = fresh(m), fresh(m)
     if m:
         small, addresses = _small()
         d2, d4 = d**2, d**4
@@ -687,7 +687,7 @@ def nikolaides(
 ) -> np.ndarray[Any, Any]:
     """``checks._nikolaides`` on balls: the larger of the right-angle residuals at p_i and at
     p_{i+1}, i < n; ``(n,)``."""
-    out = fresh(n, p)
+    out = fresh(n)
     if n:
         with arb_loops.Scratch(9) as scratch:
             _nikolaides(
@@ -707,7 +707,7 @@ def rotation_angle(
     """``checks._rotation_angle`` on balls: (residuals, printed indexing's residuals), i = 1 …
     n − 1; ``p`` and ``axis`` hold at least n + 1 points."""
     m = max(n - 1, 0)
-    out, printed = fresh(m, p), fresh(m, p)
+    out, printed = fresh(m), fresh(m)
     if m:
         two = flint.arb(2)
         with arb_loops.Scratch(10) as scratch:
@@ -740,7 +740,7 @@ def darboux_distances(
 def _darboux_pass(
     x: np.ndarray[Any, Any], e: np.ndarray[Any, Any], expected: Any, edges: int, distances: int
 ) -> tuple[np.ndarray[Any, Any], np.ndarray[Any, Any]]:
-    out_edges, out_distances = fresh(edges, x), fresh(distances, x)
+    out_edges, out_distances = fresh(edges), fresh(distances)
     if edges or distances:
         with arb_loops.Scratch(6) as scratch:
             _darboux(
@@ -760,7 +760,7 @@ def relative_distances(
 ) -> np.ndarray[Any, Any]:
     """``checks.relative_to(ar, point_distance(ar, a, b), scales)`` on balls: |a_k − b_k| over
     the scale floored at ``tiny``; ``(n, 2), (n, 2), (n,) -> (n,)``."""
-    out = fresh(len(a), a)
+    out = fresh(len(a))
     if len(a):
         with arb_loops.Scratch(3) as scratch:
             _relative_distances(
@@ -781,7 +781,7 @@ def hypothesis(
     """The hypothesis of Theorem 4 on balls as ``checks._hypothesis`` computes it: (max(d² −
     y_k y_{k+1}, 0) / d², y_k y_{k+1} / d²); ``(m,) -> (m − 1,)`` each."""
     m = max(len(y) - 1, 0)
-    violation, ratios = fresh(m, y), fresh(m, y)
+    violation, ratios = fresh(m), fresh(m)
     if m:
         d2, zero = d * d, flint.arb(0)
         with arb_loops.Scratch(2) as scratch:
