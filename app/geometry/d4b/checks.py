@@ -46,6 +46,7 @@ from app.geometry.checks import (
 )
 from app.geometry.curve import EVERYTHING, Selection
 from app.geometry.d4b import (
+    arb_checks,
     closed_forms as kinematic_closed_forms,
     curvature as d4b_curvature,
     residual_kernels,
@@ -203,11 +204,29 @@ class _Context:
                 "d3": columns.fit(conditions.D3),
                 "eq2": columns.fit(conditions.EQUATION_2),
             }
+        ball_columns = self.ball_columns
+        if ball_columns is not None:  # the same balls from one set of columns, compiled
+            return {
+                name: conditions.ConditionFit(*ball_columns.fit(kind, self.n))
+                for name, kind in (
+                    ("d1", arb_checks.D1),
+                    ("d3", arb_checks.D3),
+                    ("eq2", arb_checks.EQUATION_2),
+                )
+            }
         return {
             "d1": conditions.d1(self.ar, p),
             "d3": conditions.d3(self.ar, p),
             "eq2": conditions.equation_2(self.ar, p),
         }
+
+    @cached_property
+    def ball_columns(self) -> arb_checks.Columns | None:
+        """Balls: the columns of (D1), (D3) and (2) on the whole polygon, for the compiled
+        fits, misfits and the proof's ratio (None where ``arb_checks`` does not apply)."""
+        if not self.ar.certified or not arb_checks.balls(self.data.p):
+            return None
+        return arb_checks.Columns(self.data.p, _tiny(self.ar))
 
     def check(
         self,
@@ -233,6 +252,13 @@ def _hypothesis(ctx: _Context, p: Array) -> Check:
         check = ctx.check(HYPOTHESIS, 1, largest)
         return replace(check, note=f"smallest p_(i-1)^y p_i^y / d² = {smallest:.6g}")
     y = p[: ctx.n, 1]
+    if ctx.ar.certified and arb_checks.balls(y):  # the same balls, compiled
+        violation, ratios = arb_checks.hypothesis(ctx.d, y)
+        check = ctx.check(HYPOTHESIS, 1, violation)
+        if len(ratios):
+            smallest = ctx.ar.to_float(np.min(ratios))
+            return replace(check, note=f"smallest p_(i-1)^y p_i^y / d² = {smallest:.6g}")
+        return check
     d2 = ctx.d * ctx.d
     products = y[:-1] * y[1:]
     violation = ctx.ar.maximum(d2 - products, ctx.ar.scalar(0)) / d2
@@ -267,6 +293,8 @@ def _equation_2(ctx: _Context, fits: dict[str, conditions.ConditionFit], p: Arra
     if c1 is not None and c2 is not None and c2 != 0 and len(residuals):
         if ctx.ar.mode == "float64":  # p is ctx.data.p[: n], whose columns the fits used
             misfit = ctx.columns.misfit(conditions.EQUATION_2, c1 / c2)
+        elif ctx.ball_columns is not None and len(p) == ctx.n:  # compiled, the same balls
+            misfit = ctx.ball_columns.misfit(arb_checks.EQUATION_2, ctx.n, c1 / c2)
         else:
             misfit = conditions.equation_2_misfit(ctx.ar, p, c1 / c2)
         residuals = ctx.ar.maximum(residuals, misfit)
@@ -278,6 +306,10 @@ def _ratio_erratum(ctx: _Context, p: Array) -> Erratum | None:
     ar = ctx.ar
     if ar.mode == "float64":  # the same numbers in compiled passes, the ratios' array alone
         return Erratum(*ERRATUM_RATIO, printed_residual=residual_kernels.ratio_spread(p))
+    if p is ctx.data.p and ctx.ball_columns is not None:  # the same balls, compiled
+        spread = ctx.ball_columns.ratio_spread()
+        worst = None if spread is None else printed_residual(ar, spread)
+        return Erratum(*ERRATUM_RATIO, printed_residual=worst)
     y = p[:, 1]
     lengths = ar.hypot(p[1:, 0] - p[:-1, 0], y[1:] - y[:-1])  # lengths[k] = |p_{k+1} − p_k|
     # printed: Δ²p_i^y / (l'_i + l'_{i+1}) with l'_i = |p_i − p_{i−1}|, for i with p_{i−1} known
@@ -295,6 +327,10 @@ def _rotation_angle(ctx: _Context, p: Array, axis: Array) -> Check:
         return ctx.check(ROTATION_ANGLE, 1, largest, Erratum(*ERRATUM_ANGLE, worst))
     if ar.mode == "float64":  # the same residuals in one compiled pass
         corrected, printed_angles = residual_kernels.rotation_angles(ctx.d, p, axis, n)
+        erratum = Erratum(*ERRATUM_ANGLE, printed_residual=printed_residual(ar, printed_angles))
+        return ctx.check(ROTATION_ANGLE, 1, corrected, erratum)
+    if ar.certified and arb_checks.balls(p[: n + 1], axis[: n + 1]):  # the same balls, compiled
+        corrected, printed_angles = arb_checks.rotation_angle(ctx.d, p, axis, n)
         erratum = Erratum(*ERRATUM_ANGLE, printed_residual=printed_residual(ar, printed_angles))
         return ctx.check(ROTATION_ANGLE, 1, corrected, erratum)
     a = axis[: n - 1] - p[1:n]  # x_{i−1} − p_i
@@ -317,6 +353,8 @@ def _recursion(ctx: _Context, p: Array) -> Check:
     y = p[:, 1]
     if ctx.ar.mode == "float64" and p is ctx.data.p:  # the same residuals, compiled
         return ctx.check(RECURSION_13, 1, ctx.compiled_recursion[0])
+    if ctx.ar.certified and arb_checks.balls(y):  # the same balls, compiled
+        return ctx.check(RECURSION_13, 1, arb_checks.recursion_13(ctx.d, y, _tiny(ctx.ar)))
     predicted = kinematic_closed_forms.recursion_13(ctx.d, y[:-2], y[1:-1])
     return ctx.check(RECURSION_13, 1, relative_difference(ctx.ar, y[2:], predicted))
 
@@ -324,6 +362,10 @@ def _recursion(ctx: _Context, p: Array) -> Check:
 def _two_step(ctx: _Context, p: Array) -> Check:
     y = p[:, 1]
     ar = ctx.ar
+    if ar.certified and arb_checks.balls(y):  # the same balls as below, compiled
+        corrected, printed = arb_checks.two_step(ctx.d, y, _tiny(ar))
+        erratum = Erratum(*ERRATUM_TWO_STEP, printed_residual=printed_residual(ar, printed))
+        return ctx.check(TWO_STEP, 1, corrected, erratum, factor=3)
     if ar.mode == "float64" and float(np.max(abs(y))) < 1e60:  # the same, compiled
         worst = residual_kernels.largest_two_step_printed_residual(ctx.d, y)
         erratum = Erratum(*ERRATUM_TWO_STEP, printed_residual=worst)
@@ -342,6 +384,11 @@ def _two_step(ctx: _Context, p: Array) -> Check:
         corrected = kinematic_closed_forms.two_step(ctx.d, y[:-3], y[1:-2])
         residuals = relative_difference(ar, y[3:], corrected)
     return ctx.check(TWO_STEP, 1, residuals, erratum, factor=3)
+
+
+def _tiny(ar: Arithmetic) -> Scalar:
+    """The floor of ``checks.relative_difference``'s scale, as it makes it."""
+    return ar.scalar(np.finfo(np.float64).tiny)
 
 
 def _closed_form(
@@ -366,6 +413,11 @@ def _closed_form(
     closed = closed_form()
     if scale is None:
         residuals = relative_point_difference(ctx.ar, computed[: ctx.n], closed[: ctx.n])
+    elif ctx.ar.certified and arb_checks.balls(computed[: ctx.n], closed[: ctx.n], scale[: ctx.n]):
+        # the same balls, compiled
+        residuals = arb_checks.relative_distances(
+            computed[: ctx.n], closed[: ctx.n], scale[: ctx.n], _tiny(ctx.ar)
+        )
     else:
         difference = point_distance(ctx.ar, computed[: ctx.n], closed[: ctx.n])
         residuals = relative_to(ctx.ar, difference, scale[: ctx.n])
@@ -384,6 +436,8 @@ def _nikolaides(ctx: _Context, p: Array, tractrix: Array, axis: Array) -> Check:
         return ctx.check(
             NIKOLAIDES, 0, residual_kernels.right_angle_residuals(tractrix, axis, p, n)
         )
+    if ctx.ar.certified and arb_checks.balls(tractrix[:n], axis[:n], p[: n + 1]):  # compiled
+        return ctx.check(NIKOLAIDES, 0, arb_checks.nikolaides(tractrix, axis, p, n))
     at_p = nikolaides.right_angle_residuals(tractrix[:n], axis[:n], p[:n])
     at_next = nikolaides.right_angle_residuals(tractrix[:n], axis[:n], p[1 : n + 1])
     return ctx.check(NIKOLAIDES, 0, ctx.ar.maximum(at_p, at_next))
@@ -391,12 +445,17 @@ def _nikolaides(ctx: _Context, p: Array, tractrix: Array, axis: Array) -> Check:
 
 def _darboux(ctx: _Context) -> Check:
     n, axis, e = ctx.n, ctx.data.axis, ctx.data.darboux
+    if ctx.ar.certified and arb_checks.balls(axis[:n], e[:n]):  # the same balls, compiled
+        return ctx.check(DARBOUX, 0, arb_checks.darboux_edges(axis[:n], e[:n]))
     return ctx.check(DARBOUX, 0, darboux.edge_length_residuals(ctx.ar, axis[:n], e[:n]))
 
 
 def _darboux_distance(ctx: _Context) -> Check:
     n, axis, e = ctx.n, ctx.data.axis, ctx.data.darboux
-    residuals = darboux.distance_residuals(ctx.ar, axis[:n], e[:n], 2 * ctx.h)
+    if ctx.ar.certified and arb_checks.balls(axis[:n], e[:n]):  # the same balls, compiled
+        residuals = arb_checks.darboux_distances(axis[:n], e[:n], 2 * ctx.h)
+    else:
+        residuals = darboux.distance_residuals(ctx.ar, axis[:n], e[:n], 2 * ctx.h)
     return ctx.check(DARBOUX_DISTANCE, 0, residuals)
 
 
