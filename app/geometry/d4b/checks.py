@@ -48,6 +48,7 @@ from app.geometry.curve import EVERYTHING, Selection
 from app.geometry.d4b import (
     closed_forms as kinematic_closed_forms,
     curvature as d4b_curvature,
+    fused_checks,
     residual_kernels,
 )
 from app.geometry.d4b.residual_kernels import point_distance, relative_point_difference
@@ -188,26 +189,29 @@ class _Context:
         return residual_kernels.recursion_residuals(self.d, self.data.p[:, 1])
 
     @cached_property
-    def columns(self) -> conditions.Columns:
-        """Float64: the columns of (D1), (D3) and eq. (2) on p_{i_min} .. p_{i_max}, once."""
-        return conditions.Columns(self.data.p[: self.n])
+    def fused_fits(self) -> fused_checks.Fits:
+        """Float64: the fits of (D1), (D3) and eq. (2) on p_{i_min} .. p_{i_max}, eq. (2)'s misfit
+        and each check's largest residual, from one compiled call."""
+        return fused_checks.Fits(self.data.p[: self.n])
 
     @cached_property
     def fits(self) -> dict[str, conditions.ConditionFit]:
         """Least-squares fits of (D1), (D3) and (2) on p_{i_min} .. p_{i_max}."""
+        if self.ar.mode == "float64":  # the three from one set of columns, in one call
+            return self.fused_fits.fits
         p = self.data.p[: self.n]
-        if self.ar.mode == "float64":  # the three from one set of columns
-            columns = self.columns
-            return {
-                "d1": columns.fit(conditions.D1),
-                "d3": columns.fit(conditions.D3),
-                "eq2": columns.fit(conditions.EQUATION_2),
-            }
         return {
             "d1": conditions.d1(self.ar, p),
             "d3": conditions.d3(self.ar, p),
             "eq2": conditions.equation_2(self.ar, p),
         }
+
+    def fitted_residuals(self, key: str, residuals: Array) -> Array | Largest:
+        """A fit's residuals as a check takes them: float64 without ``detail`` the largest
+        alone (``fused_fits``; ``key`` ``"eq2"`` stands for eq. (2) with its misfit)."""
+        if self.ar.mode == "float64" and not self.detail:
+            return Largest(self.fused_fits.largest[key], len(residuals), lambda: residuals)
+        return residuals
 
     def check(
         self,
@@ -246,10 +250,11 @@ def _hypothesis(ctx: _Context, p: Array) -> Check:
 def _fitted(
     ctx: _Context,
     statement: Statement,
+    key: str,
     fit: conditions.ConditionFit,
     erratum: Erratum | None = None,
 ) -> Check:
-    check = ctx.check(statement, 0, fit.residuals, erratum)
+    check = ctx.check(statement, 0, ctx.fitted_residuals(key, fit.residuals), erratum)
     if fit.constant is not None and not fit.constant > 0 and check.holds:
         return replace(check, holds=False, note="the fitted constant is not > 0")
     return check
@@ -264,13 +269,12 @@ def _equation_2(ctx: _Context, fits: dict[str, conditions.ConditionFit], p: Arra
     """
     c, c1, c2 = (fits[k].constant for k in ("eq2", "d1", "d3"))
     residuals = fits["eq2"].residuals
-    if c1 is not None and c2 is not None and c2 != 0 and len(residuals):
-        if ctx.ar.mode == "float64":  # p is ctx.data.p[: n], whose columns the fits used
-            misfit = ctx.columns.misfit(conditions.EQUATION_2, c1 / c2)
-        else:
-            misfit = conditions.equation_2_misfit(ctx.ar, p, c1 / c2)
+    if ctx.ar.mode == "float64":  # p is ctx.data.p[: n]: both in the fits' one call
+        residuals = ctx.fused_fits.equation_2
+    elif c1 is not None and c2 is not None and c2 != 0 and len(residuals):
+        misfit = conditions.equation_2_misfit(ctx.ar, p, c1 / c2)
         residuals = ctx.ar.maximum(residuals, misfit)
-    return _fitted(ctx, THEOREM_4_III, conditions.ConditionFit(c, residuals))
+    return _fitted(ctx, THEOREM_4_III, "eq2", conditions.ConditionFit(c, residuals))
 
 
 def _ratio_erratum(ctx: _Context, p: Array) -> Erratum | None:
@@ -406,9 +410,9 @@ _EVALUATORS: tuple[tuple[Statement, Callable[[_Context], Check]], ...] = (
     (HYPOTHESIS, lambda c: _hypothesis(c, c.data.p)),
     (
         THEOREM_4_I,
-        lambda c: _fitted(c, THEOREM_4_I, c.fits["d1"], _ratio_erratum(c, c.data.p)),
+        lambda c: _fitted(c, THEOREM_4_I, "d1", c.fits["d1"], _ratio_erratum(c, c.data.p)),
     ),
-    (THEOREM_4_II, lambda c: _fitted(c, THEOREM_4_II, c.fits["d3"])),
+    (THEOREM_4_II, lambda c: _fitted(c, THEOREM_4_II, "d3", c.fits["d3"])),
     (THEOREM_4_III, lambda c: _equation_2(c, c.fits, c.data.p[: c.n])),
     (ROTATION_ANGLE, lambda c: _rotation_angle(c, c.data.p, c.data.axis)),
     (RECURSION_13, lambda c: _recursion(c, c.data.p)),

@@ -1,0 +1,151 @@
+"""(D4b) float64 at small n: several checks' numbers from one compiled call each.
+
+At 100 vertices a check's own arithmetic takes a few microseconds; what a request paid for was
+the calls around it (a numba dispatch, numpy's reductions, temporary arrays), each ≈ 3 µs warm
+and far more when the request runs cold after the server's own code. The kernels here do in
+one call what took a dozen, calling the same compiled passes (``conditions``) in the same
+order, so every number is the same, bit for bit (tests/geometry/test_checks_fused.py).
+
+``fits``: the three least-squares fits of Theorem 4 (i)–(iii) ((D1), (D3), eq. (2)) from one
+set of columns, eq. (2)'s misfit with c_(D1)/c_(D3), and the largest residual of each check,
+where ``conditions.Columns`` and the check took 13 calls and 6 numpy sums.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numba
+import numpy as np
+
+from app.geometry.compiled import kernel, largest_of_magnitudes
+from app.geometry.conditions import (
+    TINY,
+    ConditionFit,
+    _fit_scales,
+    _fit_terms,
+    _misfit_into,
+    _shared_columns,
+)
+from app.geometry.precision import Array
+
+
+@kernel("float64(float64[::1], int64, int64)")
+def _pairwise(values: Any, start: int, count: int) -> float:
+    """numpy's pairwise summation of ``values[start : start + count]`` (``pairwise_sum`` of
+    numpy/_core/src/umath/loops_utils.h: eight accumulators up to 128 entries, halves at a
+    multiple of 8 beyond), so that the sum has the bits of ``np.sum``."""
+    if count < 8:
+        total = 0.0
+        for k in range(count):
+            total += values[start + k]
+        return total
+    if count <= 128:
+        r0, r1 = values[start], values[start + 1]
+        r2, r3 = values[start + 2], values[start + 3]
+        r4, r5 = values[start + 4], values[start + 5]
+        r6, r7 = values[start + 6], values[start + 7]
+        end = count - count % 8
+        k = 8
+        while k < end:
+            at = start + k
+            r0 += values[at]
+            r1 += values[at + 1]
+            r2 += values[at + 2]
+            r3 += values[at + 3]
+            r4 += values[at + 4]
+            r5 += values[at + 5]
+            r6 += values[at + 6]
+            r7 += values[at + 7]
+            k += 8
+        total = ((r0 + r1) + (r2 + r3)) + ((r4 + r5) + (r6 + r7))
+        while k < count:
+            total += values[start + k]
+            k += 1
+        return total
+    half = count // 2
+    half -= half % 8
+    return _pairwise(values, start, half) + _pairwise(values, start + half, count - half)
+
+
+@kernel("float64(float64[::1])")
+def numpy_sum(values: Any) -> float:
+    """``np.sum`` of a contiguous float64 vector, bit for bit (0.0 for an empty one; the sum
+    starts from +0.0, so that a sum of −0.0 entries is +0.0 as numpy has it)."""
+    return 0.0 + _pairwise(values, 0, values.shape[0])
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _fit(
+    lhs: Any, lhs_size: Any, r: Any, r_size: Any, paired: bool, out: Any, products: Any
+) -> tuple[float, bool]:
+    """``conditions._fit_float64`` into ``out`` (its residuals): (constant, whether there is
+    one)."""
+    lhs_scale, rhs_scale, u_scale, v_scale = _fit_scales(lhs, lhs_size, r, paired, TINY)
+    _fit_terms(lhs, lhs_size, r, paired, TINY, lhs_scale, rhs_scale, u_scale, v_scale, out, products)
+    vv = numpy_sum(out)
+    constant, exists = 0.0, False
+    if vv > 0:
+        constant = numpy_sum(products) / vv * (u_scale / v_scale) * (lhs_scale / rhs_scale)
+        exists = True
+    _misfit_into(lhs, lhs_size, r, r_size, paired, constant, TINY, out)
+    return constant, exists
+
+
+@kernel(
+    "Tuple((float64[::1], float64[::1], float64[::1], float64[::1], float64[::1]))"
+    "(float64[:, :])"
+)
+def _fits(p: Any) -> tuple[Any, Any, Any, Any, Any]:
+    """(summary, (D1)'s residuals, (D3)'s, eq. (2)'s, eq. (2)'s with its misfit at
+    c_(D1)/c_(D3)); summary: the three constants, whether each exists (1.0 or 0.0), and the
+    largest residual of (D1), (D3) and eq. (2) with its misfit (``largest_of_magnitudes``)."""
+    columns = _shared_columns(p)
+    lengths, sizes = np.ascontiguousarray(columns[0]), np.ascontiguousarray(columns[1])
+    areas, area_sizes = np.ascontiguousarray(columns[2]), np.ascontiguousarray(columns[3])
+    second, second_sizes = np.ascontiguousarray(columns[4]), np.ascontiguousarray(columns[5])
+    inner, edges = second.shape[0], lengths.shape[0]
+    d1, d3, eq2 = np.empty(inner), np.empty(edges), np.empty(inner)
+    scratch = np.empty(max(inner, edges))
+    c1, has1 = _fit(second, second_sizes, lengths, sizes, True, d1, scratch[:inner])
+    c3, has3 = _fit(areas, area_sizes, lengths, sizes, False, d3, scratch[:edges])
+    c2, has2 = _fit(second, second_sizes, areas, area_sizes, True, eq2, scratch[:inner])
+    both = eq2.copy()
+    if has1 and has3 and c3 != 0 and inner > 0:  # ``checks._equation_2``
+        misfit = scratch[:inner]
+        _misfit_into(second, second_sizes, areas, area_sizes, True, c1 / c3, TINY, misfit)
+        for k in range(inner):  # np.maximum: NaN wins
+            a, b = both[k], misfit[k]
+            both[k] = a if (a != a or a >= b) else b
+    summary = np.empty(9)
+    summary[0], summary[1], summary[2] = c1, c3, c2
+    summary[3] = 1.0 if has1 else 0.0
+    summary[4] = 1.0 if has3 else 0.0
+    summary[5] = 1.0 if has2 else 0.0
+    summary[6] = largest_of_magnitudes(d1) if inner else 0.0
+    summary[7] = largest_of_magnitudes(d3) if edges else 0.0
+    summary[8] = largest_of_magnitudes(both) if inner else 0.0
+    return summary, d1, d3, eq2, both
+
+
+class Fits:
+    """Theorem 4 (i)–(iii) of one float64 polygon from one compiled call (``_fits``).
+
+    ``fits`` are the three ``ConditionFit`` of ``conditions.Columns`` (the same constants, as
+    numpy floats, and residuals); ``equation_2`` eq. (2)'s residuals with the misfit of
+    c_(D1)/c_(D3) as ``checks._equation_2`` takes them; ``largest`` the largest residual of
+    each check by its key (``"d1"``, ``"d3"``, ``"eq2"``: the last with the misfit).
+    """
+
+    __slots__ = ("equation_2", "fits", "largest")
+
+    def __init__(self, p: Array) -> None:
+        values, d1, d3, eq2, self.equation_2 = _fits(p)
+        summary = values.tolist()  # Python floats, as a check's residual is
+        constants = [np.float64(summary[k]) if summary[k + 3] else None for k in range(3)]
+        self.fits = {
+            "d1": ConditionFit(constants[0], d1),
+            "d3": ConditionFit(constants[1], d3),
+            "eq2": ConditionFit(constants[2], eq2),
+        }
+        self.largest = {"d1": summary[6], "d3": summary[7], "eq2": summary[8]}
