@@ -7,14 +7,15 @@ import pytest
 
 from app.geometry import conditions
 from app.geometry.d4b import discretization
-from app.geometry.d4b.fused_checks import Fits, numpy_sum
+from app.geometry.d4b.fused_checks import Fits, fill_closed_forms, numpy_sum
 from app.geometry.precision import Float64
 
 
 def _same(a: object, b: object) -> bool:
     """Equal bits (NaN equal to NaN, +0 apart from −0)."""
     return np.array_equal(
-        np.asarray(a, dtype=np.float64).view(np.int64), np.asarray(b, dtype=np.float64).view(np.int64)
+        np.asarray(a, dtype=np.float64).view(np.int64),
+        np.asarray(b, dtype=np.float64).view(np.int64),
     )
 
 
@@ -90,3 +91,50 @@ def test_fits_have_the_separate_numbers(p: np.ndarray) -> None:
             assert _same(fused.largest[key], np.abs(residuals).max())
     if len(both):
         assert _same(fused.largest["eq2"], np.abs(both).max())
+
+
+_CLOSED = ("closed_p", "closed_tractrix")
+_CLOSED_IMAGES = ("closed_tractrix_gauss", "closed_contact", "closed_gauss")
+
+
+@pytest.mark.parametrize(
+    ("h", "d", "beta0", "i_min", "i_max", "method"),
+    [
+        (1.0, 0.1, None, -50, 49, "construction"),
+        (1.0, 0.1, None, -10, 10, "closed-form"),
+        (1.0, 0.3, 0.5, -15, 15, "construction"),
+        (1.0, 0.3, 2.4, -15, 15, "closed-form"),
+        (2.5, 0.7, 1e-3, -3, 40, "construction"),
+        (1.0, 0.99, None, -20, 5, "construction"),
+        (100.0, 1.0, 1.2, -300, 300, "construction"),
+        (1.0, 1e-3, None, 0, 3000, "construction"),
+        (1.0, 0.1, None, 0, 0, "construction"),
+    ],
+)
+def test_closed_forms_have_the_separate_bits(
+    h: float, d: float, beta0: float | None, i_min: int, i_max: int, method: str
+) -> None:
+    ar = Float64()
+    fused = discretization.polygons(ar, h, d, beta0, i_min, i_max, method)  # type: ignore[arg-type]
+    fill_closed_forms(fused)
+    assert all(name in vars(fused) for name in _CLOSED)
+    assert all(name in vars(fused.gauss) for name in _CLOSED_IMAGES)
+    separate = discretization.polygons(ar, h, d, beta0, i_min, i_max, method)  # type: ignore[arg-type]
+    for name in _CLOSED:
+        a, b = getattr(fused, name), getattr(separate, name)
+        assert a.shape == b.shape and a.flags.c_contiguous and _same(a, b), name
+    for name in _CLOSED_IMAGES:
+        a, b = getattr(fused.gauss, name), getattr(separate.gauss, name)
+        assert a.shape == b.shape and a.flags.c_contiguous and _same(a, b), name
+
+
+def test_closed_forms_keep_what_is_there_and_leave_overflows_to_closed_forms() -> None:
+    ar = Float64()
+    data = discretization.polygons(ar, 1.0, 0.1, None, -10, 10)
+    given = np.zeros((22, 2))
+    data = data.replaced(closed_p=given)
+    fill_closed_forms(data)
+    assert data.closed_p is given
+    far = discretization.polygons(ar, 1.0, 0.5, None, 0, 700)  # cosh((i − ½)L) overflows
+    fill_closed_forms(far)
+    assert not any(name in vars(far) for name in _CLOSED)

@@ -33,6 +33,11 @@ from app.geometry.catalog.section4 import (
     D4B_THEOREM_6 as THEOREM_6,
     D4B_TWO_STEP as TWO_STEP,
 )
+from app.geometry.catalog.section5 import (
+    D4B_EQUATION_18,
+    D4B_EQUATION_19,
+    D4B_EQUATION_20,
+)
 from app.geometry.checks import (
     Check,
     Erratum,
@@ -81,6 +86,10 @@ ERRATUM_TWO_STEP = (
 )
 
 
+#: The statements that compare with a closed form (``fused_checks.fill_closed_forms``).
+_CLOSED_FORMS = (THEOREM_5, THEOREM_6, D4B_EQUATION_18, D4B_EQUATION_19, D4B_EQUATION_20)
+
+
 def conditioning(h: float, d: float) -> float:
     """κ = h²/(h² − d²): how much one step of (D4b) amplifies rounding.
 
@@ -108,6 +117,8 @@ def evaluate(
     as ``Selection.constants`` has it: a selection without those checks computes no fit.
     """
     ctx = _Context(ar, ar.scalar(h), ar.scalar(d), data, detail)
+    if ar.mode == "float64" and any(selection.wants_check(s.id) for s in _CLOSED_FORMS):
+        fused_checks.fill_closed_forms(data)  # the five closed forms in a few calls
     checks = [
         evaluator(ctx)
         for statement, evaluator in _EVALUATORS

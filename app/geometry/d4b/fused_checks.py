@@ -13,12 +13,12 @@ where ``conditions.Columns`` and the check took 13 calls and 6 numpy sums.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numba
 import numpy as np
 
-from app.geometry.compiled import kernel, largest_of_magnitudes
+from app.geometry.compiled import all_finite_vector, kernel, largest_of_magnitudes
 from app.geometry.conditions import (
     TINY,
     ConditionFit,
@@ -27,7 +27,11 @@ from app.geometry.conditions import (
     _misfit_into,
     _shared_columns,
 )
-from app.geometry.precision import Array
+from app.geometry.d4b import closed_forms
+from app.geometry.precision import BLOCK_SIZE, Array
+
+if TYPE_CHECKING:
+    from app.geometry.d4b.discretization import D4bPolygons
 
 
 @kernel("float64(float64[::1], int64, int64)")
@@ -82,7 +86,8 @@ def _fit(
     """``conditions._fit_float64`` into ``out`` (its residuals): (constant, whether there is
     one)."""
     lhs_scale, rhs_scale, u_scale, v_scale = _fit_scales(lhs, lhs_size, r, paired, TINY)
-    _fit_terms(lhs, lhs_size, r, paired, TINY, lhs_scale, rhs_scale, u_scale, v_scale, out, products)
+    scales = (lhs_scale, rhs_scale, u_scale, v_scale)
+    _fit_terms(lhs, lhs_size, r, paired, TINY, *scales, out, products)
     vv = numpy_sum(out)
     constant, exists = 0.0, False
     if vv > 0:
@@ -93,8 +98,7 @@ def _fit(
 
 
 @kernel(
-    "Tuple((float64[::1], float64[::1], float64[::1], float64[::1], float64[::1]))"
-    "(float64[:, :])"
+    "Tuple((float64[::1], float64[::1], float64[::1], float64[::1], float64[::1]))(float64[:, :])"
 )
 def _fits(p: Any) -> tuple[Any, Any, Any, Any, Any]:
     """(summary, (D1)'s residuals, (D3)'s, eq. (2)'s, eq. (2)'s with its misfit at
@@ -149,3 +153,97 @@ class Fits:
             "eq2": ConditionFit(constants[2], eq2),
         }
         self.largest = {"d1": summary[6], "d3": summary[7], "eq2": summary[8]}
+
+
+@kernel("float64[::1](int64, int64, float64, float64)")
+def _closed_arguments(i_min: int, i_max: int, L: float, shift: float) -> Any:
+    """The hyperbolic functions' arguments of the five closed forms, one after the other, each
+    computed as ``closed_forms`` computes it: (14)'s i·L + (τ − ½)L and (16)'s i·L + τL on
+    i_min .. i_max + 1, (19)'s (i + τ)L on i_min − 1 .. i_max + 1 (whose last n + 1 are (18)'s),
+    (20)'s (i − ½ + τ)L on i_min .. i_max + 1."""
+    rows = i_max - i_min + 2
+    out = np.empty(4 * rows + 1)
+    offset_p, offset_t = (shift - 0.5) * L, shift * L
+    for k in range(rows):
+        i = float(i_min + k)
+        u = i * L
+        out[k] = u + offset_p
+        out[rows + k] = u + offset_t
+        out[3 * rows + 1 + k] = (i - 0.5 + shift) * L
+    for k in range(rows + 1):
+        out[2 * rows + k] = (float(i_min - 1 + k) + shift) * L
+    return out
+
+
+@kernel(
+    "Tuple((float64[:, ::1], float64[:, ::1], float64[:, ::1], float64[:, ::1], float64[:, ::1]))"
+    "(int64, int64, float64[::1], float64[::1], float64[::1], float64, float64, float64, float64)"
+)
+def _closed_points(
+    i_min: int,
+    i_max: int,
+    cosh: Any,
+    sinh: Any,
+    tanh: Any,
+    h: float,
+    d: float,
+    amplitude: float,
+    gauss_amplitude: float,
+) -> tuple[Any, Any, Any, Any, Any]:
+    """The five closed forms from the hyperbolic functions of ``_closed_arguments`` (cosh of
+    all, sinh of (16)'s, tanh of (19)'s and (20)'s), by the operations of ``closed_forms``:
+    (p, tractrix, n, ñ, m)."""
+    rows = i_max - i_min + 2
+    step = 2 * d
+    p, tractrix = np.empty((rows, 2)), np.empty((rows, 2))
+    normal, contact, gauss = np.empty((rows, 2)), np.empty((rows + 1, 2)), np.empty((rows, 2))
+    for k in range(rows):
+        i = float(i_min + k)
+        x = i * step
+        p[k, 0] = x - d
+        p[k, 1] = amplitude * cosh[k]
+        sech = 1 / cosh[rows + k]
+        tractrix[k, 0] = x - h * (sinh[k] * sech)
+        tractrix[k, 1] = h * sech
+        normal[k, 0] = 1.0 / cosh[2 * rows + 1 + k]
+        normal[k, 1] = tanh[1 + k]
+        gauss[k, 0] = -tanh[rows + 1 + k]
+        gauss[k, 1] = gauss_amplitude / cosh[3 * rows + 1 + k]
+    for k in range(rows + 1):
+        contact[k, 0] = -tanh[k]
+        contact[k, 1] = 1.0 / cosh[2 * rows + k]
+    return p, tractrix, normal, contact, gauss
+
+
+def fill_closed_forms(data: D4bPolygons) -> None:
+    """Float64: Theorems 5, 6 and (18)–(20)'s closed forms of ``data`` from three numpy calls
+    (cosh, sinh, tanh: numpy's own vectorized functions, so the same bits as ``closed_forms``;
+    a contiguous slice of an argument array gives each entry the bits the separate array
+    gave) and two compiled ones, kept as if each had been computed on its own; those computed
+    already stay. Nothing is kept when a cosh overflows (``closed_forms`` has its other
+    branch for those) or beyond one block of ``Float64.points``."""
+    rows = data.vertices
+    if rows > BLOCK_SIZE:
+        return
+    ar, h, d = data.ar, float(data.h), float(data.d)
+    L = closed_forms.log_ratio(ar, data.h, data.d)
+    shift = data.shift
+    arguments = _closed_arguments(data.i_min, data.i_max, float(L), float(shift))
+    with np.errstate(over="ignore"):
+        cosh = np.cosh(arguments)
+    if not all_finite_vector(cosh):
+        return
+    sinh = np.sinh(arguments[rows : 2 * rows])
+    tanh = np.tanh(arguments[2 * rows :])
+    amplitude = ar.sqrt((data.h - data.d) * (data.h + data.d))
+    gauss_amplitude = data.h / ar.sqrt((data.h - data.d) * (data.h + data.d))
+    p, tractrix, normal, contact, gauss = _closed_points(
+        data.i_min, data.i_max, cosh, sinh, tanh, h, d, float(amplitude), float(gauss_amplitude)
+    )
+    kept = data.__dict__
+    kept.setdefault("closed_p", p)
+    kept.setdefault("closed_tractrix", tractrix)
+    images = data.gauss.__dict__
+    images.setdefault("closed_tractrix_gauss", normal)
+    images.setdefault("closed_contact", contact)
+    images.setdefault("closed_gauss", gauss)
