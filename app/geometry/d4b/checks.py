@@ -231,6 +231,7 @@ class _Context:
         residuals: Array | Largest,
         erratum: Erratum | None = None,
         factor: int = 1,
+        note: str | None = None,
     ) -> Check:
         """A check whose k-th residual belongs to index ``indices[first + k]``.
 
@@ -239,14 +240,18 @@ class _Context:
         """
         idx = self.indices[first : first + len(residuals)]
         tolerance = self.tolerance * factor
-        return check_residuals(statement, self.ar, idx, residuals, tolerance, self.detail, erratum)
+        return check_residuals(
+            statement, self.ar, idx, residuals, tolerance, self.detail, erratum, note
+        )
 
 
 def _hypothesis(ctx: _Context, p: Array) -> Check:
     if ctx.ar.mode == "float64" and not ctx.detail and ctx.n >= 2:  # one compiled pass
         largest, smallest = residual_kernels.hypothesis_largest(p, ctx.n, ctx.d)
-        check = ctx.check(HYPOTHESIS, 1, largest)
-        return replace(check, note=f"smallest p_(i-1)^y p_i^y / d² = {smallest:.6g}")
+        note = f"smallest p_(i-1)^y p_i^y / d² = {smallest:.6g}"
+        if math.isfinite(largest.value):  # the note is the check's only one
+            return ctx.check(HYPOTHESIS, 1, largest, note=note)
+        return replace(ctx.check(HYPOTHESIS, 1, largest), note=note)
     y = p[: ctx.n, 1]
     d2 = ctx.d * ctx.d
     products = y[:-1] * y[1:]

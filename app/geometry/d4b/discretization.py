@@ -293,6 +293,9 @@ def compute(
     if ar.mode == "float64":
         _require_float64_representable(h, d, beta0, i_min, i_max)
     data = polygons(ar, h, d, beta0, i_min, i_max, method)
+    wanted = [name for name in COMPANIONS if selection.wants_companion(name)]
+    if ar.mode == "float64" and len(wanted) == len(COMPANIONS):
+        data.compile_companions()  # all six in one compiled pass (the checks read them too)
     constants, checks = evaluate(ar, h, d, data, detail, beta0, selection)
     local, construction, _ = tolerances(ar, h, d, data)
     parameters: dict[str, Any] = {
@@ -303,9 +306,6 @@ def compute(
         "i_max": i_max,
         "method": method,
     }
-    wanted = [name for name in COMPANIONS if selection.wants_companion(name)]
-    if ar.mode == "float64" and len(wanted) == len(COMPANIONS):
-        data.compile_companions()  # all six in one compiled pass
     companions = {name: COMPANIONS[name](data) for name in wanted}
     gauss_tolerances = {}
     if any(name in companions for name in d4b_curvature.COMPANIONS):
