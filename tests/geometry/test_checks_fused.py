@@ -6,8 +6,9 @@ import numpy as np
 import pytest
 
 from app.geometry import conditions
-from app.geometry.d4b import discretization
-from app.geometry.d4b.fused_checks import Fits, fill_closed_forms, numpy_sum
+from app.geometry.checks import relative_to
+from app.geometry.d4b import discretization, residual_kernels
+from app.geometry.d4b.fused_checks import Fits, closed_comparisons, fill_closed_forms, numpy_sum
 from app.geometry.precision import Float64
 
 
@@ -138,3 +139,23 @@ def test_closed_forms_keep_what_is_there_and_leave_overflows_to_closed_forms() -
     far = discretization.polygons(ar, 1.0, 0.5, None, 0, 700)  # cosh((i − ½)L) overflows
     fill_closed_forms(far)
     assert not any(name in vars(far) for name in _CLOSED)
+
+
+@pytest.mark.parametrize(
+    ("h", "d", "beta0", "i_min", "i_max"),
+    [(1.0, 0.1, None, -50, 49), (1.0, 0.3, 1e-9, -15, 15), (2.5, 0.7, 3.1, -3, 40)],
+)
+def test_closed_comparisons_are_the_largest_of_the_arrays(
+    h: float, d: float, beta0: float | None, i_min: int, i_max: int
+) -> None:
+    data = discretization.polygons(Float64(), h, d, beta0, i_min, i_max)
+    n = data.vertices - 1
+    theorem_5, theorem_6 = closed_comparisons(data, n)
+    ar = Float64()
+    expected_5 = residual_kernels.relative_point_difference(ar, data.p[:n], data.closed_p[:n])
+    distance = residual_kernels.point_distance(ar, data.tractrix[:n], data.closed_tractrix[:n])
+    expected_6 = relative_to(ar, distance, (abs(data.axis[:, 0]) + h)[:n])
+    assert _same(theorem_5, np.abs(expected_5).max())
+    assert _same(theorem_6, np.abs(expected_6).max())
+    moved = data.replaced(p=data.p * (1 + 1e-6))
+    assert closed_comparisons(moved, n)[0] > 5e-7

@@ -200,6 +200,11 @@ class _Context:
         return residual_kernels.recursion_residuals(self.d, self.data.p[:, 1])
 
     @cached_property
+    def closed_largest(self) -> tuple[float, float]:
+        """Float64: the largest residuals of Theorems 5 and 6, from one compiled pass."""
+        return fused_checks.closed_comparisons(self.data, self.n)
+
+    @cached_property
     def fused_fits(self) -> fused_checks.Fits:
         """Float64: the fits of (D1), (D3) and eq. (2) on p_{i_min} .. p_{i_max}, eq. (2)'s misfit
         and each check's largest residual, from one compiled call."""
@@ -371,7 +376,8 @@ def _closed_form(
     computed: Array,
     closed_form: Callable[[], Array],
     steps: int,
-    scale: Array | None = None,
+    polygon: str,
+    scale: Callable[[], Array] | None = None,
 ) -> Check:
     """Construction against closed form; the construction's rounding grows with its steps.
 
@@ -379,19 +385,29 @@ def _closed_form(
     against where the vertex is a difference of larger terms: d_i = x_i + h·u_i is computed to
     a few units of |x_i| + h, and its x-coordinate vanishes (|d_i| → 0) near β0 → 0 or π, where
     a difference relative to |d_i| reported errors of 1e-7 for points right to 1e-16 (issue 15).
+    ``polygon`` names ``computed`` in ``ctx.data`` (``"p"``, ``"tractrix"``): in float64
+    without ``detail`` both theorems' largest residuals come from one compiled pass.
     """
     tolerance = conditioning(ctx.h, ctx.d) * ctx.ar.tolerance(max(steps, LOCAL_STEPS))
     if not constructed:
         return not_applicable(statement, tolerance, NOT_CONSTRUCTED)
-    closed = closed_form()
-    if scale is None:
-        residuals = relative_point_difference(ctx.ar, computed[: ctx.n], closed[: ctx.n])
+    n = ctx.n
+
+    def separate() -> Array:
+        closed = closed_form()
+        if scale is None:
+            return relative_point_difference(ctx.ar, computed[:n], closed[:n])
+        difference = point_distance(ctx.ar, computed[:n], closed[:n])
+        return relative_to(ctx.ar, difference, scale()[:n])
+
+    residuals: Array | Largest
+    if ctx.ar.mode == "float64" and not ctx.detail and computed is getattr(ctx.data, polygon):
+        # Theorems 5 and 6 from one compiled pass, the largest alone
+        largest = ctx.closed_largest[("p", "tractrix").index(polygon)]
+        residuals = Largest(largest, len(computed[:n]), separate)
     else:
-        difference = point_distance(ctx.ar, computed[: ctx.n], closed[: ctx.n])
-        residuals = relative_to(ctx.ar, difference, scale[: ctx.n])
-    return check_residuals(
-        statement, ctx.ar, ctx.indices[: ctx.n], residuals, tolerance, ctx.detail
-    )
+        residuals = separate()
+    return check_residuals(statement, ctx.ar, ctx.indices[:n], residuals, tolerance, ctx.detail)
 
 
 def _nikolaides(ctx: _Context, p: Array, tractrix: Array, axis: Array) -> Check:
@@ -436,7 +452,7 @@ _EVALUATORS: tuple[tuple[Statement, Callable[[_Context], Check]], ...] = (
     (
         THEOREM_5,
         lambda c: _closed_form(
-            c, THEOREM_5, c.data.constructed, c.data.p, lambda: c.data.closed_p, c.steps
+            c, THEOREM_5, c.data.constructed, c.data.p, lambda: c.data.closed_p, c.steps, "p"
         ),
     ),
     (
@@ -448,7 +464,8 @@ _EVALUATORS: tuple[tuple[Statement, Callable[[_Context], Check]], ...] = (
             c.data.tractrix,
             lambda: c.data.closed_tractrix,
             c.steps,
-            abs(c.data.axis[:, 0]) + c.h,  # d_i = x_i + h u_i: the terms' magnitude
+            "tractrix",
+            lambda: abs(c.data.axis[:, 0]) + c.h,  # d_i = x_i + h u_i: the terms' magnitude
         ),
     ),
     (DARBOUX, _darboux),

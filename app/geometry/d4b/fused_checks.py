@@ -18,7 +18,13 @@ from typing import TYPE_CHECKING, Any
 import numba
 import numpy as np
 
-from app.geometry.compiled import all_finite_vector, kernel, largest_of_magnitudes
+from app.geometry.compiled import (
+    all_finite_vector,
+    kernel,
+    largest_of_magnitudes,
+    length,
+    running_largest,
+)
 from app.geometry.conditions import (
     TINY,
     ConditionFit,
@@ -247,3 +253,50 @@ def fill_closed_forms(data: D4bPolygons) -> None:
     images.setdefault("closed_tractrix_gauss", normal)
     images.setdefault("closed_contact", contact)
     images.setdefault("closed_gauss", gauss)
+
+
+@kernel(
+    "UniTuple(float64, 2)(float64[:, :], float64[:, :], float64[:, :], float64[:, :], "
+    "float64[:, :], int64, float64, float64)"
+)
+def _closed_comparisons(
+    p: Any,
+    closed_p: Any,
+    tractrix: Any,
+    closed_tractrix: Any,
+    axis: Any,
+    n: int,
+    h: float,
+    tiny: float,
+) -> tuple[float, float]:
+    """The largest residuals of Theorems 5 and 6 on rows 0 .. n − 1, as ``checks._closed_form``
+    computes them (``residual_kernels``' relative point difference; the point distance over
+    |x_i| + h floored at ``tiny``), without the arrays: NaN if one is NaN."""
+    theorem_5 = theorem_6 = 0.0
+    for k in range(n):
+        ex, ey = closed_p[k, 0], closed_p[k, 1]
+        size = length(ex, ey)
+        size = size if size > tiny else tiny
+        theorem_5 = running_largest(length(p[k, 0] - ex, p[k, 1] - ey) / size, theorem_5)
+        distance = length(
+            tractrix[k, 0] - closed_tractrix[k, 0], tractrix[k, 1] - closed_tractrix[k, 1]
+        )
+        scale = abs(axis[k, 0]) + h
+        scale = scale if scale > tiny else tiny
+        theorem_6 = running_largest(abs(distance) / scale, theorem_6)
+    return theorem_5, theorem_6
+
+
+def closed_comparisons(data: D4bPolygons, n: int) -> tuple[float, float]:
+    """Float64: the largest residuals of Theorems 5 and 6 (construction against closed form on
+    i_min .. i_max) in one compiled pass."""
+    return _closed_comparisons(
+        data.p,
+        data.closed_p,
+        data.tractrix,
+        data.closed_tractrix,
+        data.axis,
+        n,
+        float(data.h),
+        TINY,
+    )
