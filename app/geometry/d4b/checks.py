@@ -119,7 +119,8 @@ def evaluate(
     """
     ctx = _Context(ar, ar.scalar(h), ar.scalar(d), data, detail)
     if ar.mode == "float64" and any(selection.wants_check(s.id) for s in _CLOSED_FORMS):
-        fused_checks.fill_closed_forms(data)  # the five closed forms in a few calls
+        images = any(selection.wants_check(s.id) for s in _CLOSED_FORMS[2:])
+        fused_checks.fill_closed_forms(data, images)  # the five closed forms in a few calls
     checks = [
         evaluator(ctx)
         for statement, evaluator in _EVALUATORS

@@ -221,7 +221,7 @@ def _closed_points(
     return p, tractrix, normal, contact, gauss
 
 
-def fill_closed_forms(data: D4bPolygons) -> None:
+def fill_closed_forms(data: D4bPolygons, images: bool = True) -> None:
     """Float64: Theorems 5, 6 and (18)–(20)'s closed forms of ``data`` from three numpy calls
     (cosh, sinh, tanh: numpy's own vectorized functions, so the same bits as ``closed_forms``;
     a contiguous slice of an argument array gives each entry the bits the separate array
@@ -249,10 +249,12 @@ def fill_closed_forms(data: D4bPolygons) -> None:
     kept = data.__dict__
     kept.setdefault("closed_p", p)
     kept.setdefault("closed_tractrix", tractrix)
-    images = data.gauss.__dict__
-    images.setdefault("closed_tractrix_gauss", normal)
-    images.setdefault("closed_contact", contact)
-    images.setdefault("closed_gauss", gauss)
+    if not images:  # Section 5 not selected: its Gauss images are not made for this
+        return
+    kept = data.gauss.__dict__
+    kept.setdefault("closed_tractrix_gauss", normal)
+    kept.setdefault("closed_contact", contact)
+    kept.setdefault("closed_gauss", gauss)
 
 
 @kernel(
