@@ -18,6 +18,8 @@ off) on a free port of 127.0.0.1 and measures, with wall-clock time:
 ``python bench/serving.py computed`` measures only the computed GETs of issue 13 on the served
 configuration (``python -m app.server``), with and without the fast lane (app/fast_lane.py):
 two servers, rounds interleaved, requests/s and the server's CPU per request side by side.
+``python bench/serving.py compute`` times the same 100-vertex D4b computation in process
+(wall clock, fresh processes alternating with ``BENCH_BEFORE``'s tree if given).
 
 Needs wrk (``make bench`` installs Debian's package when it is missing).
 Run: .venv/bin/python bench/serving.py   (about 100 s)
@@ -491,8 +493,80 @@ def main() -> None:
         server.wait(timeout=20)
 
 
+#: ``python bench/serving.py compute``: the computation alone, in a fresh process of each tree
+#: (``-c`` with the tree first on the path), per request: median and least wall-clock time of
+#: 600 computations after 300 to warm up, with every check and with none, and with every check
+#: after the data caches were flushed (an 8 MB array written between requests, as a server's
+#: own code leaves them). Wall clock: this host's per-process CPU clock moves in steps of tens
+#: of microseconds under load; the least of 600 is what a quiet core takes.
+IN_PROCESS = """
+import os, statistics, sys, time
+sys.path.insert(0, os.getcwd())
+import numpy as np
+from app.geometry.curve import EVERYTHING, Selection
+from app.geometry.d4b import discretization
+from app.geometry.precision import arithmetic
+junk = np.zeros(2**20)
+def run(d, selection):
+    ar = arithmetic("float64", None)
+    discretization.compute(ar, 1.0, d, None, -50, 49, "construction", False, selection)
+none = Selection(frozenset(), None)
+for k in range(300):
+    run(0.1 + k * 1e-9, EVERYTHING)
+for label, selection, flush in (("every", EVERYTHING, False), ("none", none, False),
+                                ("every, caches flushed", EVERYTHING, True)):
+    times = []
+    for k in range(600):
+        if flush:
+            junk += 1.0
+        start = time.perf_counter_ns()
+        run(0.2 + k * 1e-9, selection)
+        times.append(time.perf_counter_ns() - start)
+    print(label, statistics.median(times) / 1e3, min(times) / 1e3)
+"""
+
+
+def compute_alone(rounds: int = ROUNDS) -> None:
+    """The 100-vertex D4b computation in process, this tree against ``BENCH_BEFORE`` (fresh
+    processes, alternating): wall-clock µs per computation."""
+    trees = {"after": ROOT}
+    if BEFORE:
+        trees = {"before": Path(BEFORE).resolve(), **trees}
+    found: dict[str, dict[str, list[float]]] = {name: {} for name in trees}
+    for _ in range(rounds):
+        for name, tree in trees.items():
+            environment = {**os.environ, "NUMBA_CACHE_DIR": str(tree / ".numba-cache")}
+            output = subprocess.run(
+                [sys.executable, "-c", IN_PROCESS],
+                cwd=tree,
+                env=environment,
+                capture_output=True,
+                text=True,
+                check=True,
+            ).stdout
+            for line in output.splitlines():
+                label, median, least = line.rsplit(" ", 2)
+                found[name].setdefault(label, []).append(float(median))
+                found[name].setdefault(f"{label} (least)", []).append(float(least))
+    print(
+        f" 100-vertex D4b computed in process (discretization.compute), wall-clock µs per "
+        f"computation (each process's median, or least, of 600), median of {rounds} "
+        f"alternating fresh processes; load average "
+        f"{os.getloadavg()[0]:.1f}"
+    )
+    for label in found["after"]:
+        cells = [f"{name} {statistics.median(found[name][label]):7.1f}" for name in trees]
+        ratio = ""
+        if "before" in found:
+            after = statistics.median(found["after"][label])
+            ratio = f"   after/before {after / statistics.median(found['before'][label]):.3f}"
+        print(f"  {label:<30}" + "   ".join(cells) + ratio)
+
+
 if __name__ == "__main__":
     if sys.argv[1:] == ["computed"]:
         computed_gets()
+    elif sys.argv[1:] == ["compute"]:
+        compute_alone()
     else:
         main()

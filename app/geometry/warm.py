@@ -21,6 +21,7 @@ MODULES = (
     "app.geometry.d4a.construction",
     "app.geometry.d4b.closed_forms",
     "app.geometry.d4b.construction",
+    "app.geometry.d4b.fused_checks",
     "app.geometry.d4b.residual_kernels",
     "app.geometry.darboux",
     "app.geometry.surfaces.equation_17_kernel",

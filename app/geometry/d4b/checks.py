@@ -33,6 +33,11 @@ from app.geometry.catalog.section4 import (
     D4B_THEOREM_6 as THEOREM_6,
     D4B_TWO_STEP as TWO_STEP,
 )
+from app.geometry.catalog.section5 import (
+    D4B_EQUATION_18,
+    D4B_EQUATION_19,
+    D4B_EQUATION_20,
+)
 from app.geometry.checks import (
     Check,
     Erratum,
@@ -44,11 +49,13 @@ from app.geometry.checks import (
     relative_difference,
     relative_to,
 )
+from app.geometry.compiled import largest_of_magnitudes
 from app.geometry.curve import EVERYTHING, Selection
 from app.geometry.d4b import (
     arb_checks,
     closed_forms as kinematic_closed_forms,
     curvature as d4b_curvature,
+    fused_checks,
     residual_kernels,
 )
 from app.geometry.d4b.residual_kernels import point_distance, relative_point_difference
@@ -81,6 +88,10 @@ ERRATUM_TWO_STEP = (
 )
 
 
+#: The statements that compare with a closed form (``fused_checks.fill_closed_forms``).
+_CLOSED_FORMS = (THEOREM_5, THEOREM_6, D4B_EQUATION_18, D4B_EQUATION_19, D4B_EQUATION_20)
+
+
 def conditioning(h: float, d: float) -> float:
     """κ = h²/(h² − d²): how much one step of (D4b) amplifies rounding.
 
@@ -108,6 +119,9 @@ def evaluate(
     as ``Selection.constants`` has it: a selection without those checks computes no fit.
     """
     ctx = _Context(ar, ar.scalar(h), ar.scalar(d), data, detail)
+    if ar.mode == "float64" and any(selection.wants_check(s.id) for s in _CLOSED_FORMS):
+        images = any(selection.wants_check(s.id) for s in _CLOSED_FORMS[2:])
+        fused_checks.fill_closed_forms(data, images)  # the five closed forms in a few calls
     checks = [
         evaluator(ctx)
         for statement, evaluator in _EVALUATORS
@@ -189,21 +203,22 @@ class _Context:
         return residual_kernels.recursion_residuals(self.d, self.data.p[:, 1])
 
     @cached_property
-    def columns(self) -> conditions.Columns:
-        """Float64: the columns of (D1), (D3) and eq. (2) on p_{i_min} .. p_{i_max}, once."""
-        return conditions.Columns(self.data.p[: self.n])
+    def closed_largest(self) -> tuple[float, float]:
+        """Float64: the largest residuals of Theorems 5 and 6, from one compiled pass."""
+        return fused_checks.closed_comparisons(self.data, self.n)
+
+    @cached_property
+    def fused_fits(self) -> fused_checks.Fits:
+        """Float64: the fits of (D1), (D3) and eq. (2) on p_{i_min} .. p_{i_max}, eq. (2)'s misfit
+        and each check's largest residual, from one compiled call."""
+        return fused_checks.Fits(self.data.p[: self.n])
 
     @cached_property
     def fits(self) -> dict[str, conditions.ConditionFit]:
         """Least-squares fits of (D1), (D3) and (2) on p_{i_min} .. p_{i_max}."""
+        if self.ar.mode == "float64":  # the three from one set of columns, in one call
+            return self.fused_fits.fits
         p = self.data.p[: self.n]
-        if self.ar.mode == "float64":  # the three from one set of columns
-            columns = self.columns
-            return {
-                "d1": columns.fit(conditions.D1),
-                "d3": columns.fit(conditions.D3),
-                "eq2": columns.fit(conditions.EQUATION_2),
-            }
         ball_columns = self.ball_columns
         if ball_columns is not None:  # the same balls from one set of columns, compiled
             return {
@@ -228,6 +243,13 @@ class _Context:
             return None
         return arb_checks.Columns(self.data.p, _tiny(self.ar))
 
+    def fitted_residuals(self, key: str, residuals: Array) -> Array | Largest:
+        """A fit's residuals as a check takes them: float64 without ``detail`` the largest
+        alone (``fused_fits``; ``key`` ``"eq2"`` stands for eq. (2) with its misfit)."""
+        if self.ar.mode == "float64" and not self.detail:
+            return Largest(self.fused_fits.largest[key], len(residuals), lambda: residuals)
+        return residuals
+
     def check(
         self,
         statement: Statement,
@@ -235,6 +257,7 @@ class _Context:
         residuals: Array | Largest,
         erratum: Erratum | None = None,
         factor: int = 1,
+        note: str | None = None,
     ) -> Check:
         """A check whose k-th residual belongs to index ``indices[first + k]``.
 
@@ -243,14 +266,18 @@ class _Context:
         """
         idx = self.indices[first : first + len(residuals)]
         tolerance = self.tolerance * factor
-        return check_residuals(statement, self.ar, idx, residuals, tolerance, self.detail, erratum)
+        return check_residuals(
+            statement, self.ar, idx, residuals, tolerance, self.detail, erratum, note
+        )
 
 
 def _hypothesis(ctx: _Context, p: Array) -> Check:
     if ctx.ar.mode == "float64" and not ctx.detail and ctx.n >= 2:  # one compiled pass
         largest, smallest = residual_kernels.hypothesis_largest(p, ctx.n, ctx.d)
-        check = ctx.check(HYPOTHESIS, 1, largest)
-        return replace(check, note=f"smallest p_(i-1)^y p_i^y / d² = {smallest:.6g}")
+        note = f"smallest p_(i-1)^y p_i^y / d² = {smallest:.6g}"
+        if math.isfinite(largest.value):  # the note is the check's only one
+            return ctx.check(HYPOTHESIS, 1, largest, note=note)
+        return replace(ctx.check(HYPOTHESIS, 1, largest), note=note)
     y = p[: ctx.n, 1]
     if ctx.ar.certified and arb_checks.balls(y):  # the same balls, compiled
         violation, ratios = arb_checks.hypothesis(ctx.d, y)
@@ -272,10 +299,11 @@ def _hypothesis(ctx: _Context, p: Array) -> Check:
 def _fitted(
     ctx: _Context,
     statement: Statement,
+    key: str,
     fit: conditions.ConditionFit,
     erratum: Erratum | None = None,
 ) -> Check:
-    check = ctx.check(statement, 0, fit.residuals, erratum)
+    check = ctx.check(statement, 0, ctx.fitted_residuals(key, fit.residuals), erratum)
     if fit.constant is not None and not fit.constant > 0 and check.holds:
         return replace(check, holds=False, note="the fitted constant is not > 0")
     return check
@@ -290,15 +318,15 @@ def _equation_2(ctx: _Context, fits: dict[str, conditions.ConditionFit], p: Arra
     """
     c, c1, c2 = (fits[k].constant for k in ("eq2", "d1", "d3"))
     residuals = fits["eq2"].residuals
-    if c1 is not None and c2 is not None and c2 != 0 and len(residuals):
-        if ctx.ar.mode == "float64":  # p is ctx.data.p[: n], whose columns the fits used
-            misfit = ctx.columns.misfit(conditions.EQUATION_2, c1 / c2)
-        elif ctx.ball_columns is not None and len(p) == ctx.n:  # compiled, the same balls
+    if ctx.ar.mode == "float64":  # p is ctx.data.p[: n]: both in the fits' one call
+        residuals = ctx.fused_fits.equation_2
+    elif c1 is not None and c2 is not None and c2 != 0 and len(residuals):
+        if ctx.ball_columns is not None and len(p) == ctx.n:  # compiled, the same balls
             misfit = ctx.ball_columns.misfit(arb_checks.EQUATION_2, ctx.n, c1 / c2)
         else:
             misfit = conditions.equation_2_misfit(ctx.ar, p, c1 / c2)
         residuals = ctx.ar.maximum(residuals, misfit)
-    return _fitted(ctx, THEOREM_4_III, conditions.ConditionFit(c, residuals))
+    return _fitted(ctx, THEOREM_4_III, "eq2", conditions.ConditionFit(c, residuals))
 
 
 def _ratio_erratum(ctx: _Context, p: Array) -> Erratum | None:
@@ -366,10 +394,13 @@ def _two_step(ctx: _Context, p: Array) -> Check:
         corrected, printed = arb_checks.two_step(ctx.d, y, _tiny(ar))
         erratum = Erratum(*ERRATUM_TWO_STEP, printed_residual=printed_residual(ar, printed))
         return ctx.check(TWO_STEP, 1, corrected, erratum, factor=3)
-    if ar.mode == "float64" and float(np.max(abs(y))) < 1e60:  # the same, compiled
+    # the printed form has 7th powers: its residual only where they stay finite (max |y| as
+    # np.max(abs(y)), NaN included, by one compiled pass in float64)
+    small = float(largest_of_magnitudes(y)) < 1e60 if ar.mode == "float64" else True
+    if ar.mode == "float64" and small:  # the same, compiled
         worst = residual_kernels.largest_two_step_printed_residual(ctx.d, y)
         erratum = Erratum(*ERRATUM_TWO_STEP, printed_residual=worst)
-    elif ar.mode == "mp" or float(np.max(abs(y))) < 1e60:  # the printed form has 7th powers
+    elif ar.mode == "mp":
         printed = kinematic_closed_forms.two_step_printed(ctx.d, y[:-3], y[1:-2])
         erratum = Erratum(
             *ERRATUM_TWO_STEP,
@@ -398,7 +429,8 @@ def _closed_form(
     computed: Array,
     closed_form: Callable[[], Array],
     steps: int,
-    scale: Array | None = None,
+    polygon: str,
+    scale: Callable[[], Array] | None = None,
 ) -> Check:
     """Construction against closed form; the construction's rounding grows with its steps.
 
@@ -406,24 +438,33 @@ def _closed_form(
     against where the vertex is a difference of larger terms: d_i = x_i + h·u_i is computed to
     a few units of |x_i| + h, and its x-coordinate vanishes (|d_i| → 0) near β0 → 0 or π, where
     a difference relative to |d_i| reported errors of 1e-7 for points right to 1e-16 (issue 15).
+    ``polygon`` names ``computed`` in ``ctx.data`` (``"p"``, ``"tractrix"``): in float64
+    without ``detail`` both theorems' largest residuals come from one compiled pass.
     """
     tolerance = conditioning(ctx.h, ctx.d) * ctx.ar.tolerance(max(steps, LOCAL_STEPS))
     if not constructed:
         return not_applicable(statement, tolerance, NOT_CONSTRUCTED)
-    closed = closed_form()
-    if scale is None:
-        residuals = relative_point_difference(ctx.ar, computed[: ctx.n], closed[: ctx.n])
-    elif ctx.ar.certified and arb_checks.balls(computed[: ctx.n], closed[: ctx.n], scale[: ctx.n]):
-        # the same balls, compiled
-        residuals = arb_checks.relative_distances(
-            computed[: ctx.n], closed[: ctx.n], scale[: ctx.n], _tiny(ctx.ar)
-        )
+    n = ctx.n
+
+    def separate() -> Array:
+        closed = closed_form()
+        if scale is None:
+            return relative_point_difference(ctx.ar, computed[:n], closed[:n])
+        scales = scale()[:n]
+        if ctx.ar.certified and arb_checks.balls(computed[:n], closed[:n], scales):
+            # the same balls, compiled
+            return arb_checks.relative_distances(computed[:n], closed[:n], scales, _tiny(ctx.ar))
+        difference = point_distance(ctx.ar, computed[:n], closed[:n])
+        return relative_to(ctx.ar, difference, scales)
+
+    residuals: Array | Largest
+    if ctx.ar.mode == "float64" and not ctx.detail and computed is getattr(ctx.data, polygon):
+        # Theorems 5 and 6 from one compiled pass, the largest alone
+        largest = ctx.closed_largest[("p", "tractrix").index(polygon)]
+        residuals = Largest(largest, len(computed[:n]), separate)
     else:
-        difference = point_distance(ctx.ar, computed[: ctx.n], closed[: ctx.n])
-        residuals = relative_to(ctx.ar, difference, scale[: ctx.n])
-    return check_residuals(
-        statement, ctx.ar, ctx.indices[: ctx.n], residuals, tolerance, ctx.detail
-    )
+        residuals = separate()
+    return check_residuals(statement, ctx.ar, ctx.indices[:n], residuals, tolerance, ctx.detail)
 
 
 def _nikolaides(ctx: _Context, p: Array, tractrix: Array, axis: Array) -> Check:
@@ -465,9 +506,9 @@ _EVALUATORS: tuple[tuple[Statement, Callable[[_Context], Check]], ...] = (
     (HYPOTHESIS, lambda c: _hypothesis(c, c.data.p)),
     (
         THEOREM_4_I,
-        lambda c: _fitted(c, THEOREM_4_I, c.fits["d1"], _ratio_erratum(c, c.data.p)),
+        lambda c: _fitted(c, THEOREM_4_I, "d1", c.fits["d1"], _ratio_erratum(c, c.data.p)),
     ),
-    (THEOREM_4_II, lambda c: _fitted(c, THEOREM_4_II, c.fits["d3"])),
+    (THEOREM_4_II, lambda c: _fitted(c, THEOREM_4_II, "d3", c.fits["d3"])),
     (THEOREM_4_III, lambda c: _equation_2(c, c.fits, c.data.p[: c.n])),
     (ROTATION_ANGLE, lambda c: _rotation_angle(c, c.data.p, c.data.axis)),
     (RECURSION_13, lambda c: _recursion(c, c.data.p)),
@@ -475,7 +516,7 @@ _EVALUATORS: tuple[tuple[Statement, Callable[[_Context], Check]], ...] = (
     (
         THEOREM_5,
         lambda c: _closed_form(
-            c, THEOREM_5, c.data.constructed, c.data.p, lambda: c.data.closed_p, c.steps
+            c, THEOREM_5, c.data.constructed, c.data.p, lambda: c.data.closed_p, c.steps, "p"
         ),
     ),
     (
@@ -487,7 +528,8 @@ _EVALUATORS: tuple[tuple[Statement, Callable[[_Context], Check]], ...] = (
             c.data.tractrix,
             lambda: c.data.closed_tractrix,
             c.steps,
-            abs(c.data.axis[:, 0]) + c.h,  # d_i = x_i + h u_i: the terms' magnitude
+            "tractrix",
+            lambda: abs(c.data.axis[:, 0]) + c.h,  # d_i = x_i + h u_i: the terms' magnitude
         ),
     ),
     (DARBOUX, _darboux),

@@ -295,7 +295,7 @@ def compute(
     data = polygons(ar, h, d, beta0, i_min, i_max, method)
     wanted = [name for name in COMPANIONS if selection.wants_companion(name)]
     if ar.mode == "float64" and len(wanted) == len(COMPANIONS):
-        data.compile_companions()  # all six in one compiled pass, before the checks read them
+        data.compile_companions()  # all six in one compiled pass (the checks read them too)
     constants, checks = evaluate(ar, h, d, data, detail, beta0, selection)
     local, construction, _ = tolerances(ar, h, d, data)
     parameters: dict[str, Any] = {

@@ -1,0 +1,305 @@
+"""(D4b) float64 at small n: several checks' numbers from one compiled call each.
+
+At 100 vertices a check's own arithmetic takes a few microseconds; what a request paid for was
+the calls around it (a numba dispatch, numpy's reductions, temporary arrays), each ≈ 3 µs warm
+and far more when the request runs cold after the server's own code. The kernels here do in
+one call what took a dozen, calling the same compiled passes (``conditions``) in the same
+order, so every number is the same, bit for bit (tests/geometry/test_checks_fused.py).
+
+``fits``: the three least-squares fits of Theorem 4 (i)–(iii) ((D1), (D3), eq. (2)) from one
+set of columns, eq. (2)'s misfit with c_(D1)/c_(D3), and the largest residual of each check,
+where ``conditions.Columns`` and the check took 13 calls and 6 numpy sums.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+import numba
+import numpy as np
+
+from app.geometry.compiled import (
+    all_finite_vector,
+    kernel,
+    largest_of_magnitudes,
+    length,
+    running_largest,
+)
+from app.geometry.conditions import (
+    TINY,
+    ConditionFit,
+    _fit_scales,
+    _fit_terms,
+    _misfit_into,
+    _shared_columns,
+)
+from app.geometry.d4b import closed_forms
+from app.geometry.precision import BLOCK_SIZE, Array
+
+if TYPE_CHECKING:
+    from app.geometry.d4b.discretization import D4bPolygons
+
+
+@kernel("float64(float64[::1], int64, int64)")
+def _pairwise(values: Any, start: int, count: int) -> float:
+    """numpy's pairwise summation of ``values[start : start + count]`` (``pairwise_sum`` of
+    numpy/_core/src/umath/loops_utils.h: eight accumulators up to 128 entries, halves at a
+    multiple of 8 beyond), so that the sum has the bits of ``np.sum``."""
+    if count < 8:
+        total = 0.0
+        for k in range(count):
+            total += values[start + k]
+        return total
+    if count <= 128:
+        r0, r1 = values[start], values[start + 1]
+        r2, r3 = values[start + 2], values[start + 3]
+        r4, r5 = values[start + 4], values[start + 5]
+        r6, r7 = values[start + 6], values[start + 7]
+        end = count - count % 8
+        k = 8
+        while k < end:
+            at = start + k
+            r0 += values[at]
+            r1 += values[at + 1]
+            r2 += values[at + 2]
+            r3 += values[at + 3]
+            r4 += values[at + 4]
+            r5 += values[at + 5]
+            r6 += values[at + 6]
+            r7 += values[at + 7]
+            k += 8
+        total = ((r0 + r1) + (r2 + r3)) + ((r4 + r5) + (r6 + r7))
+        while k < count:
+            total += values[start + k]
+            k += 1
+        return total
+    half = count // 2
+    half -= half % 8
+    return _pairwise(values, start, half) + _pairwise(values, start + half, count - half)
+
+
+@kernel("float64(float64[::1])")
+def numpy_sum(values: Any) -> float:
+    """``np.sum`` of a contiguous float64 vector, bit for bit (0.0 for an empty one; the sum
+    starts from +0.0, so that a sum of −0.0 entries is +0.0 as numpy has it)."""
+    return 0.0 + _pairwise(values, 0, values.shape[0])
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _fit(
+    lhs: Any, lhs_size: Any, r: Any, r_size: Any, paired: bool, out: Any, products: Any
+) -> tuple[float, bool]:
+    """``conditions._fit_float64`` into ``out`` (its residuals): (constant, whether there is
+    one)."""
+    lhs_scale, rhs_scale, u_scale, v_scale = _fit_scales(
+        lhs, lhs_size, r, paired, TINY, products, out
+    )
+    _fit_terms(u_scale, v_scale, products, out)
+    vv = numpy_sum(out)
+    constant, exists = 0.0, False
+    if vv > 0:
+        constant = numpy_sum(products) / vv * (u_scale / v_scale) * (lhs_scale / rhs_scale)
+        exists = True
+    _misfit_into(lhs, lhs_size, r, r_size, paired, constant, TINY, out)
+    return constant, exists
+
+
+@kernel(
+    "Tuple((float64[::1], float64[::1], float64[::1], float64[::1], float64[::1]))(float64[:, :])"
+)
+def _fits(p: Any) -> tuple[Any, Any, Any, Any, Any]:
+    """(summary, (D1)'s residuals, (D3)'s, eq. (2)'s, eq. (2)'s with its misfit at
+    c_(D1)/c_(D3)); summary: the three constants, whether each exists (1.0 or 0.0), and the
+    largest residual of (D1), (D3) and eq. (2) with its misfit (``largest_of_magnitudes``)."""
+    columns = _shared_columns(p)
+    lengths, sizes = np.ascontiguousarray(columns[0]), np.ascontiguousarray(columns[1])
+    areas, area_sizes = np.ascontiguousarray(columns[2]), np.ascontiguousarray(columns[3])
+    second, second_sizes = np.ascontiguousarray(columns[4]), np.ascontiguousarray(columns[5])
+    inner, edges = second.shape[0], lengths.shape[0]
+    d1, d3, eq2 = np.empty(inner), np.empty(edges), np.empty(inner)
+    scratch = np.empty(max(inner, edges))
+    c1, has1 = _fit(second, second_sizes, lengths, sizes, True, d1, scratch[:inner])
+    c3, has3 = _fit(areas, area_sizes, lengths, sizes, False, d3, scratch[:edges])
+    c2, has2 = _fit(second, second_sizes, areas, area_sizes, True, eq2, scratch[:inner])
+    both = eq2.copy()
+    if has1 and has3 and c3 != 0 and inner > 0:  # ``checks._equation_2``
+        misfit = scratch[:inner]
+        _misfit_into(second, second_sizes, areas, area_sizes, True, c1 / c3, TINY, misfit)
+        for k in range(inner):  # np.maximum: NaN wins
+            a, b = both[k], misfit[k]
+            both[k] = a if (a != a or a >= b) else b
+    summary = np.empty(9)
+    summary[0], summary[1], summary[2] = c1, c3, c2
+    summary[3] = 1.0 if has1 else 0.0
+    summary[4] = 1.0 if has3 else 0.0
+    summary[5] = 1.0 if has2 else 0.0
+    summary[6] = largest_of_magnitudes(d1) if inner else 0.0
+    summary[7] = largest_of_magnitudes(d3) if edges else 0.0
+    summary[8] = largest_of_magnitudes(both) if inner else 0.0
+    return summary, d1, d3, eq2, both
+
+
+class Fits:
+    """Theorem 4 (i)–(iii) of one float64 polygon from one compiled call (``_fits``).
+
+    ``fits`` are the three ``ConditionFit`` of ``conditions.Columns`` (the same constants, as
+    numpy floats, and residuals); ``equation_2`` eq. (2)'s residuals with the misfit of
+    c_(D1)/c_(D3) as ``checks._equation_2`` takes them; ``largest`` the largest residual of
+    each check by its key (``"d1"``, ``"d3"``, ``"eq2"``: the last with the misfit).
+    """
+
+    __slots__ = ("equation_2", "fits", "largest")
+
+    def __init__(self, p: Array) -> None:
+        values, d1, d3, eq2, self.equation_2 = _fits(p)
+        summary = values.tolist()  # Python floats, as a check's residual is
+        constants = [np.float64(summary[k]) if summary[k + 3] else None for k in range(3)]
+        self.fits = {
+            "d1": ConditionFit(constants[0], d1),
+            "d3": ConditionFit(constants[1], d3),
+            "eq2": ConditionFit(constants[2], eq2),
+        }
+        self.largest = {"d1": summary[6], "d3": summary[7], "eq2": summary[8]}
+
+
+@kernel("float64[::1](int64, int64, float64, float64)")
+def _closed_arguments(i_min: int, i_max: int, L: float, shift: float) -> Any:
+    """The hyperbolic functions' arguments of the five closed forms, one after the other, each
+    computed as ``closed_forms`` computes it: (14)'s i·L + (τ − ½)L and (16)'s i·L + τL on
+    i_min .. i_max + 1, (19)'s (i + τ)L on i_min − 1 .. i_max + 1 (whose last n + 1 are (18)'s),
+    (20)'s (i − ½ + τ)L on i_min .. i_max + 1."""
+    rows = i_max - i_min + 2
+    out = np.empty(4 * rows + 1)
+    offset_p, offset_t = (shift - 0.5) * L, shift * L
+    for k in range(rows):
+        i = float(i_min + k)
+        u = i * L
+        out[k] = u + offset_p
+        out[rows + k] = u + offset_t
+        out[3 * rows + 1 + k] = (i - 0.5 + shift) * L
+    for k in range(rows + 1):
+        out[2 * rows + k] = (float(i_min - 1 + k) + shift) * L
+    return out
+
+
+@kernel(
+    "Tuple((float64[:, ::1], float64[:, ::1], float64[:, ::1], float64[:, ::1], float64[:, ::1]))"
+    "(int64, int64, float64[::1], float64[::1], float64[::1], float64, float64, float64, float64)"
+)
+def _closed_points(
+    i_min: int,
+    i_max: int,
+    cosh: Any,
+    sinh: Any,
+    tanh: Any,
+    h: float,
+    d: float,
+    amplitude: float,
+    gauss_amplitude: float,
+) -> tuple[Any, Any, Any, Any, Any]:
+    """The five closed forms from the hyperbolic functions of ``_closed_arguments`` (cosh of
+    all, sinh of (16)'s, tanh of (19)'s and (20)'s), by the operations of ``closed_forms``:
+    (p, tractrix, n, ñ, m)."""
+    rows = i_max - i_min + 2
+    step = 2 * d
+    p, tractrix = np.empty((rows, 2)), np.empty((rows, 2))
+    normal, contact, gauss = np.empty((rows, 2)), np.empty((rows + 1, 2)), np.empty((rows, 2))
+    for k in range(rows):
+        i = float(i_min + k)
+        x = i * step
+        p[k, 0] = x - d
+        p[k, 1] = amplitude * cosh[k]
+        sech = 1 / cosh[rows + k]
+        tractrix[k, 0] = x - h * (sinh[k] * sech)
+        tractrix[k, 1] = h * sech
+        normal[k, 0] = 1.0 / cosh[2 * rows + 1 + k]
+        normal[k, 1] = tanh[1 + k]
+        gauss[k, 0] = -tanh[rows + 1 + k]
+        gauss[k, 1] = gauss_amplitude / cosh[3 * rows + 1 + k]
+    for k in range(rows + 1):
+        contact[k, 0] = -tanh[k]
+        contact[k, 1] = 1.0 / cosh[2 * rows + k]
+    return p, tractrix, normal, contact, gauss
+
+
+def fill_closed_forms(data: D4bPolygons, images: bool = True) -> None:
+    """Float64: Theorems 5, 6 and (18)–(20)'s closed forms of ``data`` from three numpy calls
+    (cosh, sinh, tanh: numpy's own vectorized functions, so the same bits as ``closed_forms``;
+    a contiguous slice of an argument array gives each entry the bits the separate array
+    gave) and two compiled ones, kept as if each had been computed on its own; those computed
+    already stay. Nothing is kept when a cosh overflows (``closed_forms`` has its other
+    branch for those) or beyond one block of ``Float64.points``."""
+    rows = data.vertices
+    if rows > BLOCK_SIZE:
+        return
+    ar, h, d = data.ar, float(data.h), float(data.d)
+    L = closed_forms.log_ratio(ar, data.h, data.d)
+    shift = data.shift
+    arguments = _closed_arguments(data.i_min, data.i_max, float(L), float(shift))
+    with np.errstate(over="ignore"):
+        cosh = np.cosh(arguments)
+    if not all_finite_vector(cosh):
+        return
+    sinh = np.sinh(arguments[rows : 2 * rows])
+    tanh = np.tanh(arguments[2 * rows :])
+    amplitude = ar.sqrt((data.h - data.d) * (data.h + data.d))
+    gauss_amplitude = data.h / ar.sqrt((data.h - data.d) * (data.h + data.d))
+    p, tractrix, normal, contact, gauss = _closed_points(
+        data.i_min, data.i_max, cosh, sinh, tanh, h, d, float(amplitude), float(gauss_amplitude)
+    )
+    kept = data.__dict__
+    kept.setdefault("closed_p", p)
+    kept.setdefault("closed_tractrix", tractrix)
+    if not images:  # Section 5 not selected: its Gauss images are not made for this
+        return
+    kept = data.gauss.__dict__
+    kept.setdefault("closed_tractrix_gauss", normal)
+    kept.setdefault("closed_contact", contact)
+    kept.setdefault("closed_gauss", gauss)
+
+
+@kernel(
+    "UniTuple(float64, 2)(float64[:, :], float64[:, :], float64[:, :], float64[:, :], "
+    "float64[:, :], int64, float64, float64)"
+)
+def _closed_comparisons(
+    p: Any,
+    closed_p: Any,
+    tractrix: Any,
+    closed_tractrix: Any,
+    axis: Any,
+    n: int,
+    h: float,
+    tiny: float,
+) -> tuple[float, float]:
+    """The largest residuals of Theorems 5 and 6 on rows 0 .. n − 1, as ``checks._closed_form``
+    computes them (``residual_kernels``' relative point difference; the point distance over
+    |x_i| + h floored at ``tiny``), without the arrays: NaN if one is NaN."""
+    theorem_5 = theorem_6 = 0.0
+    for k in range(n):
+        ex, ey = closed_p[k, 0], closed_p[k, 1]
+        size = length(ex, ey)
+        size = size if size > tiny else tiny
+        theorem_5 = running_largest(length(p[k, 0] - ex, p[k, 1] - ey) / size, theorem_5)
+        distance = length(
+            tractrix[k, 0] - closed_tractrix[k, 0], tractrix[k, 1] - closed_tractrix[k, 1]
+        )
+        scale = abs(axis[k, 0]) + h
+        scale = scale if scale > tiny else tiny
+        theorem_6 = running_largest(abs(distance) / scale, theorem_6)
+    return theorem_5, theorem_6
+
+
+def closed_comparisons(data: D4bPolygons, n: int) -> tuple[float, float]:
+    """Float64: the largest residuals of Theorems 5 and 6 (construction against closed form on
+    i_min .. i_max) in one compiled pass."""
+    return _closed_comparisons(
+        data.p,
+        data.closed_p,
+        data.tractrix,
+        data.closed_tractrix,
+        data.axis,
+        n,
+        float(data.h),
+        TINY,
+    )

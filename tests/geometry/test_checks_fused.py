@@ -1,0 +1,161 @@
+"""The fused float64 passes of (D4b)'s checks give the numbers of the separate ones, bit for bit."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from app.geometry import conditions
+from app.geometry.checks import relative_to
+from app.geometry.d4b import discretization, residual_kernels
+from app.geometry.d4b.fused_checks import Fits, closed_comparisons, fill_closed_forms, numpy_sum
+from app.geometry.precision import Float64
+
+
+def _same(a: object, b: object) -> bool:
+    """Equal bits (NaN equal to NaN, +0 apart from −0)."""
+    return np.array_equal(
+        np.asarray(a, dtype=np.float64).view(np.int64),
+        np.asarray(b, dtype=np.float64).view(np.int64),
+    )
+
+
+@pytest.mark.parametrize("count", [*range(0, 40), 64, 127, 128, 129, 255, 256, 257, 1000, 4099])
+def test_numpy_sum_has_numpy_bits(count: int) -> None:
+    rng = np.random.default_rng(count)
+    for _ in range(5):
+        values = rng.standard_normal(count) * np.exp(rng.uniform(-30, 30, count))
+        assert _same(numpy_sum(values), np.sum(values))
+    zeros = np.full(count, -0.0)
+    assert _same(numpy_sum(zeros), np.sum(zeros))
+
+
+def _separate(p: np.ndarray) -> tuple[dict[str, conditions.ConditionFit], np.ndarray]:
+    """The fits as ``d4b.checks`` took them: ``conditions.Columns``, then eq. (2)'s misfit."""
+    columns = conditions.Columns(p)
+    fits = {
+        "d1": columns.fit(conditions.D1),
+        "d3": columns.fit(conditions.D3),
+        "eq2": columns.fit(conditions.EQUATION_2),
+    }
+    c1, c2 = fits["d1"].constant, fits["d3"].constant
+    both = fits["eq2"].residuals
+    if c1 is not None and c2 is not None and c2 != 0 and len(both):
+        both = np.maximum(both, columns.misfit(conditions.EQUATION_2, c1 / c2))
+    return fits, both
+
+
+def _polygons() -> list[np.ndarray]:
+    ar = Float64()
+    out = []
+    for h, d, i_min, i_max in [
+        (1.0, 0.1, -50, 49),
+        (1.0, 0.1, -10, 10),
+        (2.5, 0.7, -3, 40),
+        (1.0, 0.99, -20, 5),
+        (1.0, 1e-3, 0, 300),
+        (1.0, 0.1, 0, 0),
+        (1.0, 0.1, 0, 1),
+        (1.0, 0.1, 0, 2),
+    ]:
+        data = discretization.polygons(ar, h, d, None, i_min, i_max)
+        out.append(data.p[: data.vertices - 1])
+    rng = np.random.default_rng(7)
+    out += [rng.standard_normal((m, 2)) for m in (1, 2, 3, 9, 17, 130)]
+    out.append(np.zeros((12, 2)))
+    line = np.stack([np.arange(10.0), np.full(10, 2.0)], axis=1)  # Δ²y = 0: no (D1) constant
+    out.append(line)
+    broken = rng.standard_normal((20, 2))
+    broken[5, 1] = np.nan
+    out.append(broken)
+    broken = rng.standard_normal((20, 2))
+    broken[3, 0] = np.inf
+    out.append(broken)
+    return out
+
+
+@pytest.mark.parametrize("p", _polygons())
+def test_fits_have_the_separate_numbers(p: np.ndarray) -> None:
+    fused = Fits(p)
+    separate, both = _separate(p)
+    for key in ("d1", "d3", "eq2"):
+        a, b = fused.fits[key], separate[key]
+        assert (a.constant is None) == (b.constant is None)
+        if b.constant is not None:
+            assert type(a.constant) is type(b.constant)
+            assert _same(a.constant, b.constant)
+        assert _same(a.residuals, b.residuals)
+    assert _same(fused.equation_2, both)
+    assert all(type(value) is float for value in fused.largest.values())
+    for key, residuals in (("d1", separate["d1"].residuals), ("d3", separate["d3"].residuals)):
+        if len(residuals):
+            assert _same(fused.largest[key], np.abs(residuals).max())
+    if len(both):
+        assert _same(fused.largest["eq2"], np.abs(both).max())
+
+
+_CLOSED = ("closed_p", "closed_tractrix")
+_CLOSED_IMAGES = ("closed_tractrix_gauss", "closed_contact", "closed_gauss")
+
+
+@pytest.mark.parametrize(
+    ("h", "d", "beta0", "i_min", "i_max", "method"),
+    [
+        (1.0, 0.1, None, -50, 49, "construction"),
+        (1.0, 0.1, None, -10, 10, "closed-form"),
+        (1.0, 0.3, 0.5, -15, 15, "construction"),
+        (1.0, 0.3, 2.4, -15, 15, "closed-form"),
+        (2.5, 0.7, 1e-3, -3, 40, "construction"),
+        (1.0, 0.99, None, -20, 5, "construction"),
+        (100.0, 1.0, 1.2, -300, 300, "construction"),
+        (1.0, 1e-3, None, 0, 3000, "construction"),
+        (1.0, 0.1, None, 0, 0, "construction"),
+    ],
+)
+def test_closed_forms_have_the_separate_bits(
+    h: float, d: float, beta0: float | None, i_min: int, i_max: int, method: str
+) -> None:
+    ar = Float64()
+    fused = discretization.polygons(ar, h, d, beta0, i_min, i_max, method)  # type: ignore[arg-type]
+    fill_closed_forms(fused)
+    assert all(name in vars(fused) for name in _CLOSED)
+    assert all(name in vars(fused.gauss) for name in _CLOSED_IMAGES)
+    separate = discretization.polygons(ar, h, d, beta0, i_min, i_max, method)  # type: ignore[arg-type]
+    for name in _CLOSED:
+        a, b = getattr(fused, name), getattr(separate, name)
+        assert a.shape == b.shape and a.flags.c_contiguous and _same(a, b), name
+    for name in _CLOSED_IMAGES:
+        a, b = getattr(fused.gauss, name), getattr(separate.gauss, name)
+        assert a.shape == b.shape and a.flags.c_contiguous and _same(a, b), name
+
+
+def test_closed_forms_keep_what_is_there_and_leave_overflows_to_closed_forms() -> None:
+    ar = Float64()
+    data = discretization.polygons(ar, 1.0, 0.1, None, -10, 10)
+    given = np.zeros((22, 2))
+    data = data.replaced(closed_p=given)
+    fill_closed_forms(data)
+    assert data.closed_p is given
+    far = discretization.polygons(ar, 1.0, 0.5, None, 0, 700)  # cosh((i − ½)L) overflows
+    fill_closed_forms(far)
+    assert not any(name in vars(far) for name in _CLOSED)
+
+
+@pytest.mark.parametrize(
+    ("h", "d", "beta0", "i_min", "i_max"),
+    [(1.0, 0.1, None, -50, 49), (1.0, 0.3, 1e-9, -15, 15), (2.5, 0.7, 3.1, -3, 40)],
+)
+def test_closed_comparisons_are_the_largest_of_the_arrays(
+    h: float, d: float, beta0: float | None, i_min: int, i_max: int
+) -> None:
+    data = discretization.polygons(Float64(), h, d, beta0, i_min, i_max)
+    n = data.vertices - 1
+    theorem_5, theorem_6 = closed_comparisons(data, n)
+    ar = Float64()
+    expected_5 = residual_kernels.relative_point_difference(ar, data.p[:n], data.closed_p[:n])
+    distance = residual_kernels.point_distance(ar, data.tractrix[:n], data.closed_tractrix[:n])
+    expected_6 = relative_to(ar, distance, (abs(data.axis[:, 0]) + h)[:n])
+    assert _same(theorem_5, np.abs(expected_5).max())
+    assert _same(theorem_6, np.abs(expected_6).max())
+    moved = data.replaced(p=data.p * (1 + 1e-6))
+    assert closed_comparisons(moved, n)[0] > 5e-7
