@@ -395,10 +395,12 @@ def evaluate(
         return memo[name]
 
     def rings(pseudosphere: bool) -> tuple[Any, Any, int] | None:
-        """Float64: the ring's theorem and (17) residuals in one pass (``ring_checks``); their
-        largest values alone (``ring_largest``) when no residual is shown per index."""
+        """The ring's theorem and (17) residuals in one pass (``ring_checks``, float64 and
+        balls); in float64 their largest values alone (``ring_largest``) when no residual is
+        shown per index."""
         exact = not detail and len(tractrix) == len(p) == n + 1  # n faces each
-        fused = ring_largest if exact else ring_checks
+        # balls: the residual balls per face in one compiled pass (``arb_rings``)
+        fused = ring_largest if exact and not ar.certified else ring_checks
         if pseudosphere:
             return shared("pseudo", lambda: fused(ar, tractrix, nt(), -1 / (h * h)))
         return shared("catenoid", lambda: fused(ar, p, m(), None))
