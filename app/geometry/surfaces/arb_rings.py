@@ -36,6 +36,7 @@ _SIGNATURES: dict[str, tuple[Any, list[Any]]] = {
     "arb_div": (None, [_P, _P, _P, _W]),
     "arb_sqrt": (None, [_P, _P, _W]),
     "arb_abs": (None, [_P, _P]),
+    "arb_set_round": (None, [_P, _P, _W]),
     "arb_max": (None, [_P, _P, _P, _W]),
     "arb_set": (None, [_P, _P]),
     "arb_zero": (None, [_P]),
@@ -59,13 +60,20 @@ if AVAILABLE:
     _mul = _BOUND["arb_mul"]
     _div = _BOUND["arb_div"]
     _sqrt = _BOUND["arb_sqrt"]
-    _abs = _BOUND["arb_abs"]
+    _arb_abs = _BOUND["arb_abs"]
+    _set_round = _BOUND["arb_set_round"]
     _max = _BOUND["arb_max"]
     _set = _BOUND["arb_set"]
     _zero = _BOUND["arb_zero"]
     _gt = _BOUND["arb_gt"]
     _ne = _BOUND["arb_ne"]
     _B = arb_loops.ARB_BYTES
+
+    @numba.njit(cache=False)
+    def _abs(out: int, x: int, prec: int) -> None:
+        """python-flint's ``abs``: |x| rounded to the precision."""
+        _arb_abs(out, x)
+        _set_round(out, out, prec)
 
     @numba.njit(cache=False)
     def _ring(
@@ -134,14 +142,14 @@ if AVAILABLE:
             _add(t1, t1, t2, prec)
             _mul(t2, four, length, prec)
             _div(mixed, t1, t2, prec)
-            _abs(ax, x[a])
-            _abs(ay, y[a])
-            _abs(bx, x[b])
-            _abs(by, y[b])
-            _abs(au, u[a])
-            _abs(av, v[a])
-            _abs(bu, u[b])
-            _abs(bv, v[b])
+            _abs(ax, x[a], prec)
+            _abs(ay, y[a], prec)
+            _abs(bx, x[b], prec)
+            _abs(by, y[b], prec)
+            _abs(au, u[a], prec)
+            _abs(av, v[a], prec)
+            _abs(bu, u[b], prec)
+            _abs(bv, v[b], prec)
             _add(t1, ax, ay, prec)  # f1 = ax + ay + bx + by cs
             _add(t1, t1, bx, prec)
             _mul(t2, by, cs, prec)
@@ -169,11 +177,11 @@ if AVAILABLE:
             _mul(t1, dy, du, prec)  # turn = |Δy Δu − Δx Δv| sin √r
             _mul(t2, dx, dv, prec)
             _sub(t1, t1, t2, prec)
-            _abs(t1, t1)
+            _abs(t1, t1, prec)
             _mul(t1, t1, sin, prec)
             _mul(t3, t1, sqrt_r, prec)
             _mul(t1, s_f, s_n, prec)  # turned = |S_f S_n| turn / 4
-            _abs(t1, t1)
+            _abs(t1, t1, prec)
             _mul(t1, t1, t3, prec)
             _div(turned, t1, four, prec)
             # curvature.from_areas: the parallel residual
@@ -186,10 +194,10 @@ if AVAILABLE:
                 _add(t2, mag_n, t1, prec)
                 _mul(t1, curvature, area, prec)
                 _sub(t1, gauss_area, t1, prec)
-                _abs(t1, t1)
+                _abs(t1, t1, prec)
                 _div(residual, t1, t2, prec)
             else:
-                _abs(t1, mixed)
+                _abs(t1, mixed, prec)
                 _div(residual, t1, mag_fn, prec)
             _max(theorem[k], residual, parallel, prec)
             # revolution_formulas.face_residuals (balls: the radii unscaled)
@@ -207,8 +215,8 @@ if AVAILABLE:
             _mul(p0n0, p0, n0, prec)
             _mul(p1n1, p1, n1_, prec)
             _mul(t1, mag_fn, sp, prec)  # h_scale
-            _abs(t2, p0n0)
-            _abs(t3, p1n1)
+            _abs(t2, p0n0, prec)
+            _abs(t3, p1n1, prec)
             _add(t2, t2, t3, prec)
             _mul(t2, mag_f, t2, prec)
             _add(h_scale, t1, t2, prec)
@@ -216,13 +224,13 @@ if AVAILABLE:
             _sub(t2, n1sq, n0sq, prec)
             _mul(t2, area, t2, prec)
             _sub(t1, t1, t2, prec)
-            _abs(t1, t1)
+            _abs(t1, t1, prec)
             _div(k_res, t1, k_scale if _gt(k_scale, tiny) else tiny, prec)
             _mul(t1, mixed, dp, prec)  # h_res
             _sub(t2, p0n0, p1n1, prec)
             _mul(t2, area, t2, prec)
             _add(t1, t1, t2, prec)
-            _abs(t1, t1)
+            _abs(t1, t1, prec)
             _div(h_res, t1, h_scale if _gt(h_scale, tiny) else tiny, prec)
             is_defined = _ne(dp, zero) != 0
             defined[k] = is_defined
