@@ -8,7 +8,8 @@ curvatures with Section 5, which is evaluated as one block). For each: its CPU t
 elementwise operations on ``arb`` object arrays per vertex, counted by a numpy subclass that sees
 every ufunc call (``+ − × ÷``, ``abs``, comparisons, reductions, and ``Ball``'s functions; a
 hypot counts as its ×, +, part ≥ 0 and √), plus the float conversions of residuals; apart, the
-libflint calls made in ``arb_loops``' compiled loops (``compiled``: no Python call each).
+libflint calls made in compiled loops (``arb_loops``; Section 5's ``arb_rings`` and
+``arb_program``), counted as ``compiled``: no Python call each.
 
 The floor: the operations counted times the cost of the cheapest one (a negation or a
 comparison at the checks' working precision, measured here: a Python call on an ``arb``, since
@@ -34,7 +35,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from app.geometry import arb_loops, balls
+from app.geometry import arb_loops, arb_program, balls
 from app.geometry.ball_arithmetic import Ball
 from app.geometry.curve import EVERYTHING
 from app.geometry.d4b import (
@@ -45,6 +46,7 @@ from app.geometry.d4b import (
     discretization as d4b,
 )
 from app.geometry.d4b.closed_forms import tilt_shift
+from app.geometry.surfaces import arb_rings
 from bench.mp import HI, LO, D, H, plain_script
 
 DIGITS = 50
@@ -114,6 +116,7 @@ def _instrument() -> None:
                 COMPILED_SECONDS.append(time.process_time() - start)
 
         setattr(arb_loops, name, counted_loop)
+    _instrument_section_5()
     for name in ("array", "indices", "zeros", "empty"):
         method = getattr(Ball, name)
         setattr(Ball, name, lambda self, *a, _m=method: _counted(_m(self, *a)))
@@ -138,6 +141,37 @@ def _instrument() -> None:
         return built
 
     d4b.construct = counted_construct  # type: ignore[assignment]
+
+
+#: libflint calls per face of ``arb_rings``' ring pass (Theorem 7's branch; 8's is 4 fewer).
+RING_CALLS = 130
+
+
+def _instrument_section_5() -> None:
+    """Section 5's compiled passes counted as ``compiled`` (libflint calls) too: the ring pass
+    (``arb_rings``) and the straight-line programs (``arb_program.run``: an ``abs`` is two
+    calls, its rounding included)."""
+    ring_checks, run = arb_rings.ring_checks, arb_program.run
+
+    def counted_rings(meridian: Any, *arguments: Any) -> Any:
+        COUNTS["compiled"] += RING_CALLS * max(len(meridian) - 1, 0)
+        start = time.process_time()
+        try:
+            return ring_checks(meridian, *arguments)
+        finally:
+            COMPILED_SECONDS.append(time.process_time() - start)
+
+    def counted_run(program: Any, inputs: Any, *arguments: Any, **keywords: Any) -> Any:
+        calls = sum(2 if step[0] == arb_program.ABS else 1 for step in program.steps)
+        COUNTS["compiled"] += calls * len(next(iter(inputs.values())))
+        start = time.process_time()
+        try:
+            return run(program, inputs, *arguments, **keywords)
+        finally:
+            COMPILED_SECONDS.append(time.process_time() - start)
+
+    arb_rings.ring_checks = counted_rings  # type: ignore[assignment]
+    arb_program.run = counted_run  # type: ignore[assignment]
 
 
 def _timed(function: Callable[[], object]) -> tuple[float, dict[str, int]]:
