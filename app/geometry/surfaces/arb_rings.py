@@ -26,7 +26,7 @@ import flint
 import numba
 import numpy as np
 
-from app.geometry import arb_loops
+from app.geometry import arb_loops, arb_program
 
 _P, _W = ctypes.c_void_p, ctypes.c_long
 _SIGNATURES: dict[str, tuple[Any, list[Any]]] = {
@@ -258,7 +258,12 @@ def ring_checks(
         return None
     if meridian.dtype != object or gauss.dtype != object:
         return None
-    if not (arb_loops.all_balls(meridian) and arb_loops.all_balls(gauss)):
+    columns = [meridian[:, 0], meridian[:, 1], gauss[:, 0], gauss[:, 1]]
+    addresses = [arb_loops.addresses(column) for column in columns]
+    if arb_program.AVAILABLE:  # the compiled type check
+        if not all(arb_program.all_balls(found) for found in addresses):
+            return None
+    elif not (arb_loops.all_balls(meridian) and arb_loops.all_balls(gauss)):
         return None
     if type(cos) is not flint.arb or type(sin) is not flint.arb:
         return None
@@ -280,10 +285,7 @@ def ring_checks(
     defined = np.zeros(faces, dtype=np.bool_)
     with arb_loops.Scratch(_SCRATCH) as scratch:
         stopped = _ring(
-            arb_loops.addresses(meridian[:, 0]),
-            arb_loops.addresses(meridian[:, 1]),
-            arb_loops.addresses(gauss[:, 0]),
-            arb_loops.addresses(gauss[:, 1]),
+            *addresses,
             constants,
             curvature is not None,
             arb_loops.addresses(theorem),
