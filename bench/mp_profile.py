@@ -49,7 +49,7 @@ from app.geometry.d4b.closed_forms import tilt_shift
 from app.geometry.surfaces import arb_rings
 from bench.mp import HI, LO, D, H, plain_script
 
-DIGITS = 50
+DIGITS = int(os.environ.get("MP_PROFILE_DIGITS", "50"))  # 500: the same at 500 digits
 COUNTS: collections.Counter[str] = collections.Counter()
 TRANSCENDENTAL = (
     "exp",

@@ -149,9 +149,8 @@ if AVAILABLE:
                     flag = _lt(a, b) != 0
                 elif op == CHOOSE:
                     _set(d, a if flag else b)
-                elif op == REQUIRE_GT:
-                    if not _gt(a, b):
-                        return row
+                elif op == REQUIRE_GT and not _gt(a, b):
+                    return row
         return -1
 
 

@@ -284,8 +284,12 @@ def ring_checks(
     theorem, equation_17 = np.negative(column), np.negative(column)  # fresh balls, written over
     defined = np.zeros(faces, dtype=np.bool_)
     with arb_loops.Scratch(_SCRATCH) as scratch:
+        x, y, u, v = addresses
         stopped = _ring(
-            *addresses,
+            x,
+            y,
+            u,
+            v,
             constants,
             curvature is not None,
             arb_loops.addresses(theorem),

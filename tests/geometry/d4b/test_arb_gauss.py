@@ -52,7 +52,10 @@ def test_the_gauss_image_passes_are_the_numpy_balls(digits: int) -> None:
         _same(got[1], table.sech_t)
         _same(got[2], table.tanh_u)
         _same(got[3], table.sech_u)
-        _same(_points(arb_gauss.printed_20(h, d, table.tanh_t, table.sech_t)), table.printed("20", -41, 40))
+        _same(
+            _points(arb_gauss.printed_20(h, d, table.tanh_t, table.sech_t)),
+            table.printed("20", -41, 40),
+        )
         # the contact points, the poles, the inversion
         extended = data.gauss.contact_edges_before
         assert extended is not None
