@@ -21,6 +21,7 @@ from app.geometry.arb_program import (
     CHOOSE,
     DIV,
     EXP,
+    GT,
     LT,
     MIN,
     MUL,
@@ -37,13 +38,48 @@ AVAILABLE = ap.AVAILABLE
 Columns = list[np.ndarray[Any, Any]]
 
 
-def _hypot(program: Program, out: str, x: str, y: str) -> None:
+def _hypot(program: Program, out: str, x: str, y: str, low: bool = False) -> None:
     """``Ball.hypot`` (``arb_loops._hypot``): √(part ≥ 0 of x·x + y·y)."""
-    program.op(MUL, "hypot square", x, x)
-    program.op(MUL, "hypot other", y, y)
-    program.op(ADD, "hypot square", "hypot square", "hypot other")
+    program.op(MUL, "hypot square", x, x, low)
+    program.op(MUL, "hypot other", y, y, low)
+    program.op(ADD, "hypot square", "hypot square", "hypot other", low)
     program.op(NONNEGATIVE, "hypot square", "hypot square")
-    program.op(SQRT, out, "hypot square")
+    program.op(SQRT, out, "hypot square", low=low)
+
+
+def _relative_difference(program: Program, out: str) -> None:
+    """``checks.relative_point_difference`` (``arb_loops._relative_point_difference``): the
+    differences at the working precision, the lengths and the quotient at the low one."""
+    program.op(SUB, "dx", "cx", "ex")
+    program.op(SUB, "dy", "cy", "ey")
+    _hypot(program, "scale", "ex", "ey", low=True)
+    _hypot(program, "length", "dx", "dy", low=True)
+    program.op(GT, "scale", "scale", "tiny")
+    program.op(CHOOSE, "floor", "scale", "tiny")
+    program.op(DIV, out, "length", "floor", low=True)
+
+
+_DIFFERENCE = Program(["cx", "cy", "ex", "ey"], ["tiny"], ["out"])
+_relative_difference(_DIFFERENCE, "out")
+_SCALED_DIFFERENCE = Program(["cx", "cy", "ex", "ey", "factor"], ["tiny"], ["out"])
+_relative_difference(_SCALED_DIFFERENCE, "difference")
+_SCALED_DIFFERENCE.op(MUL, "out", "difference", "factor")
+
+
+def relative_difference(
+    computed: Any, expected: Any, tiny: Any, low: int, factor: Any = None
+) -> Any:
+    """``checks.relative_point_difference`` of two ``(n, 2)`` arrays of balls (``tiny`` and
+    ``low`` as it makes them), times ``factor`` entry by entry if given (``_scaled`` on
+    balls): the same balls, no array in between."""
+    inputs = {"cx": computed[:, 0], "cy": computed[:, 1]}
+    inputs |= {"ex": expected[:, 0], "ey": expected[:, 1]}
+    program = _DIFFERENCE
+    if factor is not None:
+        inputs["factor"] = factor
+        program = _SCALED_DIFFERENCE
+    done = ap.run(program, inputs, {"tiny": tiny}, low)
+    return None if done is None else done[0][0]
 
 
 def _tanh_sech(program: Program, e: str, tanh: str, sech: str) -> None:

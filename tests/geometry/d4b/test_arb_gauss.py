@@ -89,6 +89,18 @@ def test_the_gauss_image_passes_are_the_numpy_balls(digits: int) -> None:
         want = checks.point_distance(ar, c, rotated) * resolution[: n - 1]
         _same(arb_gauss.rotation(c, normals, resolution[: n - 1]), want)
         _same(arb_gauss.minimum(resolution, size), curvature._ball_minimum(resolution, size))
+        # relative point differences, alone and scaled (closed forms, errata, the inversion)
+        poles = curvature._poles(contact)[: n - 1]
+        inverted = closed_forms.pole_by_inversion(contact[:-1], contact[1:])
+        want = checks.relative_point_difference(ar, poles, inverted)
+        _same(curvature._relative(ar, poles, inverted), want)
+        _same(
+            curvature._relative(ar, poles, inverted, resolution[: n - 1]),
+            want * resolution[: n - 1],
+        )
+        wide = inverted + flint.arb(0, 1e-3)  # radii beyond the low precision's
+        want = checks.relative_point_difference(ar, poles, wide)
+        _same(curvature._relative(ar, poles, wide), want)
         _same(arb_gauss.product(resolution, size), resolution * size)
 
 
