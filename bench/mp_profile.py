@@ -8,7 +8,7 @@ curvatures with Section 5, which is evaluated as one block). For each: its CPU t
 elementwise operations on ``arb`` object arrays per vertex, counted by a numpy subclass that sees
 every ufunc call (``+ − × ÷``, ``abs``, comparisons, reductions, and ``Ball``'s functions; a
 hypot counts as its ×, +, part ≥ 0 and √), plus the float conversions of residuals; apart, the
-libflint calls made in compiled loops (``arb_loops``; Section 5's ``arb_rings`` and
+libflint calls made in compiled loops (``arb_loops``, and Section 5's straight-line programs of
 ``arb_program``), counted as ``compiled``: no Python call each.
 
 The floor: the operations counted times the cost of the cheapest one (a negation or a
@@ -46,7 +46,6 @@ from app.geometry.d4b import (
     discretization as d4b,
 )
 from app.geometry.d4b.closed_forms import tilt_shift
-from app.geometry.surfaces import arb_rings
 from bench.mp import HI, LO, D, H, plain_script
 
 DIGITS = int(os.environ.get("MP_PROFILE_DIGITS", "50"))  # 500: the same at 500 digits
@@ -143,23 +142,11 @@ def _instrument() -> None:
     d4b.construct = counted_construct  # type: ignore[assignment]
 
 
-#: libflint calls per face of ``arb_rings``' ring pass (Theorem 7's branch; 8's is 4 fewer).
-RING_CALLS = 130
-
-
 def _instrument_section_5() -> None:
-    """Section 5's compiled passes counted as ``compiled`` (libflint calls) too: the ring pass
-    (``arb_rings``) and the straight-line programs (``arb_program.run``: an ``abs`` is two
-    calls, its rounding included)."""
-    ring_checks, run = arb_rings.ring_checks, arb_program.run
-
-    def counted_rings(meridian: Any, *arguments: Any) -> Any:
-        COUNTS["compiled"] += RING_CALLS * max(len(meridian) - 1, 0)
-        start = time.process_time()
-        try:
-            return ring_checks(meridian, *arguments)
-        finally:
-            COMPILED_SECONDS.append(time.process_time() - start)
+    """Section 5's compiled straight-line programs (``arb_program.run``: the ring pass of
+    ``arb_rings`` and the Gauss images' formulas) counted as ``compiled`` too, each operation a
+    libflint call (an ``abs`` two, its rounding included)."""
+    run = arb_program.run
 
     def counted_run(program: Any, inputs: Any, *arguments: Any, **keywords: Any) -> Any:
         calls = sum(2 if step[0] == arb_program.ABS else 1 for step in program.steps)
@@ -170,7 +157,6 @@ def _instrument_section_5() -> None:
         finally:
             COMPILED_SECONDS.append(time.process_time() - start)
 
-    arb_rings.ring_checks = counted_rings  # type: ignore[assignment]
     arb_program.run = counted_run  # type: ignore[assignment]
 
 

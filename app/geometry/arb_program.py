@@ -44,6 +44,7 @@ _SIGNATURES: dict[str, tuple[Any, list[Any]]] = {
     "arb_nonnegative_part": (None, [_P, _P]),
     "arb_gt": (ctypes.c_int, [_P, _P]),
     "arb_lt": (ctypes.c_int, [_P, _P]),
+    "arb_ne": (ctypes.c_int, [_P, _P]),
 }
 _BOUND = {name: arb_loops.bind(name, *signature) for name, signature in _SIGNATURES.items()}
 #: GMP's comparison of limb vectors (libflint's dependency, through the same handle): one word
@@ -62,12 +63,14 @@ AVAILABLE = (
 
 # operation codes: (code, destination, a, b) on registers
 ADD, SUB, MUL, DIV, SQRT, EXP, ABS, NEG, MAX, MIN, SET, NONNEGATIVE = range(12)
-GT, LT, CHOOSE, REQUIRE_GT = range(12, 16)
-"""``GT``/``LT`` set the flag to a > b / a < b (certainly); ``CHOOSE`` sets d to a if the flag
-is set, else to b (an exact copy); ``REQUIRE_GT`` stops the run at the first row where a > b
-is not certain (``run`` returns that row)."""
+GT, LT, CHOOSE, REQUIRE_GT, NE, KEEP_FLAG = range(12, 18)
+"""``GT``/``LT``/``NE`` set the flag to a > b / a < b / a ≠ b (certainly); ``CHOOSE`` sets d to
+a if the flag is set, else to b (an exact copy); ``KEEP_FLAG`` keeps the flag as the row's
+entry of ``run``'s flags; ``REQUIRE_GT`` stops the run at the first row where a > b is not
+certain (``run`` returns that row)."""
 
-_ARITY = {ADD: 2, SUB: 2, MUL: 2, DIV: 2, MAX: 2, MIN: 2, GT: 2, LT: 2, CHOOSE: 2}
+_ARITY = {ADD: 2, SUB: 2, MUL: 2, DIV: 2, MAX: 2, MIN: 2, GT: 2, LT: 2, NE: 2, CHOOSE: 2}
+_ARITY |= {KEEP_FLAG: 1}
 _ARITY |= {REQUIRE_GT: 2, SQRT: 1, EXP: 1, ABS: 1, NEG: 1, SET: 1, NONNEGATIVE: 1}
 
 if AVAILABLE:
@@ -86,6 +89,7 @@ if AVAILABLE:
     _nonnegative = _BOUND["arb_nonnegative_part"]
     _gt = _BOUND["arb_gt"]
     _lt = _BOUND["arb_lt"]
+    _ne = _BOUND["arb_ne"]
 
     @numba.njit(cache=False)
     def _compiled_all_balls(addresses: Any, offset: int, key: int) -> bool:
@@ -98,7 +102,9 @@ if AVAILABLE:
         return True
 
     @numba.njit(cache=False)
-    def _run(code: Any, inputs: Any, outputs: Any, fixed: Any, prec: int, low: int) -> int:
+    def _run(
+        code: Any, inputs: Any, outputs: Any, fixed: Any, prec: int, low: int, flags: Any
+    ) -> int:
         """Every row of ``inputs``/``outputs`` (addresses, one column a register) through
         ``code`` (rows: operation, destination, a, b, 1 for the low precision); registers are
         the inputs, the outputs, then ``fixed`` (constants' and scratch balls' addresses).
@@ -147,6 +153,10 @@ if AVAILABLE:
                     flag = _gt(a, b) != 0
                 elif op == LT:
                     flag = _lt(a, b) != 0
+                elif op == NE:
+                    flag = _ne(a, b) != 0
+                elif op == KEEP_FLAG:
+                    flags[row] = flag
                 elif op == CHOOSE:
                     _set(d, a if flag else b)
                 elif op == REQUIRE_GT and not _gt(a, b):
@@ -191,10 +201,11 @@ def run(
     inputs: dict[str, np.ndarray[Any, Any]],
     constants: dict[str, Any],
     low: int | None = None,
-) -> tuple[list[np.ndarray[Any, Any]], int] | None:
+) -> tuple[list[np.ndarray[Any, Any]], int, np.ndarray[Any, np.dtype[np.bool_]]] | None:
     """``program`` on equal-length 1-d object arrays of balls (by input name) and constant
     balls: the outputs (in ``program.outputs`` order) as fresh balls, and −1 or the row where
-    a ``REQUIRE_GT`` failed (the outputs are then incomplete); None where the compiled loop
+    a ``REQUIRE_GT`` failed (the outputs are then incomplete), and the rows' kept flags
+    (``KEEP_FLAG``, else false); None where the compiled loop
     does not apply (not available, an entry not a ball, no rows: the caller's numpy code runs).
     ``low``: the precision of the operations marked low (default the working precision)."""
     if not AVAILABLE:
@@ -203,15 +214,16 @@ def run(
     rows = len(columns[0])
     if not rows or any(c.ndim != 1 or len(c) != rows or c.dtype != object for c in columns):
         return None
-    address_in = np.stack([arb_loops.addresses(c) for c in columns], axis=1)
+    address_in = np.ascontiguousarray(np.stack([arb_loops.addresses(c) for c in columns], 1))
     if not all_balls(address_in):
         return None
     fixed_balls = [constants[name] for name in program.constants]
     if any(type(ball) is not flint.arb for ball in fixed_balls):
         return None
     outputs = [np.negative(columns[0]) for _ in program.outputs]  # fresh balls, written over
-    address_out = np.stack([arb_loops.addresses(o) for o in outputs], axis=1)
+    address_out = np.ascontiguousarray(np.stack([arb_loops.addresses(o) for o in outputs], 1))
     prec = flint.ctx.prec
+    flags = np.zeros(rows, dtype=np.bool_)
     with arb_loops.Scratch(max(len(program.scratch), 1)) as scratch:
         fixed = np.array([id(ball) for ball in fixed_balls], dtype=np.int64) + arb_loops.OFFSET
         scratch_addresses = scratch + arb_loops.ARB_BYTES * np.arange(
@@ -224,9 +236,10 @@ def run(
             np.concatenate([fixed, scratch_addresses]),
             prec,
             prec if low is None else low,
+            flags,
         )
     del fixed_balls  # the constants lived until here
-    return outputs, int(stopped)
+    return outputs, int(stopped), flags
 
 
 def all_balls(addresses: np.ndarray[Any, np.dtype[np.int64]]) -> bool:

@@ -146,7 +146,8 @@ def contact_points(polygon: Any, sign: int) -> tuple[Columns, int] | None:
     inputs = {"x0": polygon[:-1, 0], "y0": polygon[:-1, 1]}
     inputs |= {"x1": polygon[1:, 0], "y1": polygon[1:, 1]}
     constants = {"sign": flint.arb(sign), "minus sign": flint.arb(-sign), "zero": flint.arb(0)}
-    return ap.run(_CONTACT, inputs, constants)
+    done = ap.run(_CONTACT, inputs, constants)
+    return None if done is None else (done[0], done[1])
 
 
 _POLES = Program(["ax", "ay", "bx", "by"], ["one"], ["x", "y"])
