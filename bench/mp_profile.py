@@ -8,7 +8,8 @@ curvatures with Section 5, which is evaluated as one block). For each: its CPU t
 elementwise operations on ``arb`` object arrays per vertex, counted by a numpy subclass that sees
 every ufunc call (``+ − × ÷``, ``abs``, comparisons, reductions, and ``Ball``'s functions; a
 hypot counts as its ×, +, part ≥ 0 and √), plus the float conversions of residuals; apart, the
-libflint calls made in ``arb_loops``' compiled loops (``compiled``: no Python call each).
+libflint calls made in compiled loops (``arb_loops``, and Section 5's straight-line programs of
+``arb_program``), counted as ``compiled``: no Python call each.
 
 The floor: the operations counted times the cost of the cheapest one (a negation or a
 comparison at the checks' working precision, measured here: a Python call on an ``arb``, since
@@ -34,7 +35,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from app.geometry import arb_loops, balls
+from app.geometry import arb_loops, arb_program, balls
 from app.geometry.ball_arithmetic import Ball
 from app.geometry.curve import EVERYTHING
 from app.geometry.d4b import (
@@ -47,7 +48,7 @@ from app.geometry.d4b import (
 from app.geometry.d4b.closed_forms import tilt_shift
 from bench.mp import HI, LO, D, H, plain_script
 
-DIGITS = 50
+DIGITS = int(os.environ.get("MP_PROFILE_DIGITS", "50"))  # 500: the same at 500 digits
 COUNTS: collections.Counter[str] = collections.Counter()
 TRANSCENDENTAL = (
     "exp",
@@ -114,6 +115,7 @@ def _instrument() -> None:
                 COMPILED_SECONDS.append(time.process_time() - start)
 
         setattr(arb_loops, name, counted_loop)
+    _instrument_section_5()
     for name in ("array", "indices", "zeros", "empty"):
         method = getattr(Ball, name)
         setattr(Ball, name, lambda self, *a, _m=method: _counted(_m(self, *a)))
@@ -138,6 +140,24 @@ def _instrument() -> None:
         return built
 
     d4b.construct = counted_construct  # type: ignore[assignment]
+
+
+def _instrument_section_5() -> None:
+    """Section 5's compiled straight-line programs (``arb_program.run``: the ring pass of
+    ``arb_rings`` and the Gauss images' formulas) counted as ``compiled`` too, each operation a
+    libflint call (an ``abs`` two, its rounding included)."""
+    run = arb_program.run
+
+    def counted_run(program: Any, inputs: Any, *arguments: Any, **keywords: Any) -> Any:
+        calls = sum(2 if step[0] == arb_program.ABS else 1 for step in program.steps)
+        COUNTS["compiled"] += calls * len(next(iter(inputs.values())))
+        start = time.process_time()
+        try:
+            return run(program, inputs, *arguments, **keywords)
+        finally:
+            COMPILED_SECONDS.append(time.process_time() - start)
+
+    arb_program.run = counted_run  # type: ignore[assignment]
 
 
 def _timed(function: Callable[[], object]) -> tuple[float, dict[str, int]]:

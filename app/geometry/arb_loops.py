@@ -135,13 +135,23 @@ def bind(name: str, result: Any, arguments: list[Any]) -> Any:
 
 def addresses(values: np.ndarray[Any, Any]) -> np.ndarray[Any, np.dtype[np.int64]]:
     """The ``arb_struct`` address of every entry of an object array of ``arb`` (all of them
-    ``arb``: the caller checks). The array must stay alive while the addresses are used."""
-    flat = np.ascontiguousarray(values).reshape(-1)
-    if not flat.size:
+    ``arb``: the caller checks). The array must stay alive while the addresses are used.
+
+    An object array stores its entries' object addresses (CPython's ``id``): they are read from
+    its buffer (a C-ordered copy for a strided view, such as a column) in one copy, about 5 ns
+    an entry where ``map(id, …)`` took about 80."""
+    if not _POINTER_BUFFER:
+        flat = values.reshape(-1)
+        return np.fromiter(map(id, flat), dtype=np.int64, count=flat.size) + OFFSET
+    contiguous = np.ascontiguousarray(values)
+    if not contiguous.size:
         return np.zeros(0, dtype=np.int64)
-    # an object array stores its entries' addresses (CPython's ``id``): read them in one copy
-    stored = (ctypes.c_int64 * flat.size).from_address(flat.ctypes.data)
-    return np.ctypeslib.as_array(stored).astype(np.int64) + OFFSET
+    pointers = (ctypes.c_int64 * contiguous.size).from_address(contiguous.ctypes.data)
+    return np.ctypeslib.as_array(pointers) + OFFSET  # a new array: no view of the buffer kept
+
+
+#: Whether an object array's buffer holds 64-bit object addresses (CPython on 64-bit hosts).
+_POINTER_BUFFER = ctypes.sizeof(ctypes.c_void_p) == 8 == np.dtype(object).itemsize
 
 
 def all_balls(values: np.ndarray[Any, Any]) -> bool:

@@ -18,9 +18,11 @@ from collections.abc import Callable
 from functools import cached_property
 from typing import Any, ClassVar
 
+import flint
 import numpy as np
 
 from app.geometry import gauss_image
+from app.geometry.ball_arithmetic import RESIDUAL_BITS
 from app.geometry.catalog.section5 import (
     D4B_EQUATION_18 as EQUATION_18,
     D4B_EQUATION_18_SLOPE as EQUATION_18_SLOPE,
@@ -41,7 +43,11 @@ from app.geometry.checks import (
     not_applicable,
     printed_residual,
 )
-from app.geometry.d4b import closed_forms as kinematic_closed_forms, residual_kernels
+from app.geometry.d4b import (
+    arb_gauss,
+    closed_forms as kinematic_closed_forms,
+    residual_kernels,
+)
 from app.geometry.d4b.residual_kernels import point_distance, relative_point_difference
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
@@ -244,7 +250,7 @@ def build(
         {
             **closed,
             "tractrix_gauss": lambda _: stack_points(directions[window, 1], -directions[window, 0]),
-            "contact": lambda _: gauss_image.contact_points(ar, p_extended),
+            "contact": lambda _: _contact_points(ar, p_extended),
             "gauss": (
                 # balls: the tangents at ñ_{i−1}, ñ_i intersected algebraically (``_poles``)
                 (lambda images: _poles(images.contact))
@@ -388,9 +394,7 @@ def evaluate(
                 built[:n], formula[:n], scale[:n]
             )
         else:
-            residuals = relative_point_difference(ar, built[:n], formula[:n])
-            if scale is not None:
-                residuals = _scaled(ar, residuals, scale[:n])
+            residuals = _relative(ar, built[:n], formula[:n], None if scale is None else scale[:n])
         return check(statement, residuals, tolerance, erratum)
 
     def printed_erratum(entry: tuple[str, str, str], built: Array, key: str) -> Erratum:
@@ -400,7 +404,7 @@ def evaluate(
         if ar.mode == "float64":  # the largest alone, in one pass
             worst = residual_kernels.largest_relative_point_difference(built[:n], formula[:n])
             return Erratum(*entry, printed_residual=worst)
-        residuals = relative_point_difference(ar, built[:n], formula[:n])
+        residuals = _relative(ar, built[:n], formula[:n])
         return Erratum(*entry, printed_residual=printed_residual(ar, residuals))
 
     memo: dict[str, Any] = {}
@@ -412,10 +416,12 @@ def evaluate(
         return memo[name]
 
     def rings(pseudosphere: bool) -> tuple[Any, Any, int] | None:
-        """Float64: the ring's theorem and (17) residuals in one pass (``ring_checks``); their
-        largest values alone (``ring_largest``) when no residual is shown per index."""
+        """The ring's theorem and (17) residuals in one pass (``ring_checks``, float64 and
+        balls); in float64 their largest values alone (``ring_largest``) when no residual is
+        shown per index."""
         exact = not detail and len(tractrix) == len(p) == n + 1  # n faces each
-        fused = ring_largest if exact else ring_checks
+        # balls: the residual balls per face in one compiled pass (``arb_rings``)
+        fused = ring_largest if exact and not ar.certified else ring_checks
         if pseudosphere:
             return shared("pseudo", lambda: fused(ar, tractrix, nt(), -1 / (h * h)))
         return shared("catenoid", lambda: fused(ar, p, m(), None))
@@ -479,7 +485,9 @@ def evaluate(
             assert images.contact_edges_before is not None
             before = _edge_resolution(ar, images.contact_edges_before)
             if ar.certified:  # balls: a ball holding each minimum (residuals stay balls)
-                return _ball_minimum(np.concatenate([before, resolution()[:-1]]), resolution())
+                previous = np.concatenate([before, resolution()[:-1]])
+                compiled = arb_gauss.minimum(previous, resolution())
+                return compiled if compiled is not None else _ball_minimum(previous, resolution())
             return np.minimum(
                 ar.to_floats(np.concatenate([before, resolution()[:-1]])),
                 ar.to_floats(resolution()),
@@ -491,6 +499,12 @@ def evaluate(
         if ar.mode == "float64":  # the same numbers in one pass, the largest alone
             worst = residual_kernels.largest_along_printed_slope(min(n, len(p) - 1), p)
             return Erratum(*ERRATUM_18_SLOPE, printed_residual=worst)
+        compiled = p_edges.compiled if ar.certified else None
+        if compiled is not None and n <= len(compiled[0]):  # balls: one compiled pass
+            ex, ey, size = (column[:n] for column in compiled[:3])
+            along = arb_gauss.along_printed_slope(ex, ey, size)
+            if along is not None:
+                return Erratum(*ERRATUM_18_SLOPE, printed_residual=printed_residual(ar, along))
         edges = p_edges.edges
         slope = edges[:, 1] / edges[:, 0]  # k_{i+1} of the edge p_i p_{i+1}, eq. (12)
         slope_printed = kinematic_closed_forms.normal_from_slope_printed(ar, slope)
@@ -505,6 +519,10 @@ def evaluate(
                 residual_kernels.contact_rotation_largest(c(), nt(), resolution(), n),
                 n_tolerance,
             )
+        if ar.certified:  # balls: the distances and their scaling in one compiled pass
+            compiled = arb_gauss.rotation(c()[1 : n + 1], nt()[:n], resolution()[:n])
+            if compiled is not None:
+                return check(EQUATION_19_ROTATION, compiled, n_tolerance)
         rotated = stack_points(-nt()[:, 1], nt()[:, 0])
         return check(
             EQUATION_19_ROTATION,
@@ -520,12 +538,10 @@ def evaluate(
                 residual_kernels.pole_inversion_largest(m(), c(), pole_resolution(), n),
                 local_tolerance,
             )
-        inverted = kinematic_closed_forms.pole_by_inversion(c()[:-1], c()[1:])  # i_min .. +1
+        inverted = _pole_by_inversion(ar, c()[:-1], c()[1:])  # i_min .. +1
         return check(
             EQUATION_20_INVERSION,
-            _scaled(
-                ar, relative_point_difference(ar, m()[:n], inverted[:n]), pole_resolution()[:n]
-            ),
+            _relative(ar, m()[:n], inverted[:n], pole_resolution()[:n]),
             local_tolerance,
         )
 
@@ -591,11 +607,23 @@ class _Edges:
         self.points = points
 
     @cached_property
+    def compiled(self) -> list[Array] | None:
+        """Balls: the edges' coordinates, sizes and resolutions in one compiled pass
+        (``arb_gauss.edges``: the same balls); None where it does not apply."""
+        return arb_gauss.edges(self.points) if len(self.points) >= 2 else None
+
+    @cached_property
     def edges(self) -> Array:
+        compiled = self.compiled
+        if compiled is not None:
+            return stack_points(compiled[0], compiled[1])
         return self.points[1:] - self.points[:-1]
 
     @cached_property
     def size(self) -> Array:
+        compiled = self.compiled
+        if compiled is not None:
+            return compiled[2]
         return magnitude(self.points[:-1], self.points[1:])
 
 
@@ -606,6 +634,8 @@ def _edge_resolution(ar: Arithmetic, points: Array, shared: _Edges | None = None
     if ar.mode == "float64":  # one compiled pass (the length within 2 ulp of hypot)
         return residual_kernels.edge_resolution(points)
     made = shared if shared is not None else _Edges(points)
+    if ar.certified and made.compiled is not None:
+        return made.compiled[3]
     edges = made.edges
     return ar.hypot(edges[:, 0], edges[:, 1]) / made.size
 
@@ -622,6 +652,11 @@ def _along(ar: Arithmetic, vectors: Array, points: Array, shared: _Edges | None 
         return residual_kernels.along(vectors, points)
     count = len(points) - 1
     made = shared if shared is not None else _Edges(points)
+    if ar.certified and made.compiled is not None:  # balls: one compiled pass
+        ex, ey, size = (column[:count] for column in made.compiled[:3])
+        compiled = arb_gauss.along(vectors, ex, ey, size)
+        if compiled is not None:
+            return compiled
     edges = made.edges[:count]
     crossed = abs(vectors[:, 0] * edges[:, 1] - vectors[:, 1] * edges[:, 0])
     residual = crossed / made.size[:count]
@@ -629,16 +664,53 @@ def _along(ar: Arithmetic, vectors: Array, points: Array, shared: _Edges | None 
     return np.where(backwards, ar.scalar(1), residual)
 
 
+def _relative(ar: Arithmetic, computed: Array, expected: Array, scale: Any = None) -> Array:
+    """``relative_point_difference`` of two ``(n, 2)`` arrays, times ``scale`` if given
+    (``_scaled``); on balls in one compiled program (``arb_gauss.relative_difference``: the
+    same balls, ``tiny`` and the low precision made as ``checks.relative_point_difference``
+    makes them)."""
+    if ar.certified and len(computed):
+        low = min(flint.ctx.prec, RESIDUAL_BITS)
+        with ar.residual_precision():
+            tiny = ar.scalar(np.finfo(np.float64).tiny)
+        found = arb_gauss.relative_difference(computed, expected, tiny, low, scale)
+        if found is not None:
+            return found
+    residuals = relative_point_difference(ar, computed, expected)
+    return residuals if scale is None else _scaled(ar, residuals, scale)
+
+
 def _scaled(ar: Arithmetic, residuals: Array, scale: Array) -> Array:
     """Residuals times their resolution factors: floats (each a bound on balls would round the
     product down, and underflow from 324 digits on), except on balls, where the product of the
     balls is kept, so that its bounds stay rigorous (``checks.check_residuals``)."""
     if ar.certified:
-        return residuals * scale
+        compiled = arb_gauss.product(residuals, scale)  # the same products, one pass
+        return compiled if compiled is not None else residuals * scale
     return ar.to_floats(residuals) * ar.to_floats(scale)
 
 
 _ball_minimum: Any = np.frompyfunc(lambda a, b: a.min(b), 2, 1)
+
+
+def _contact_points(ar: Arithmetic, polygon: Array) -> Array:
+    """``gauss_image.contact_points``; on balls in one compiled pass (``arb_gauss``: the same
+    balls), which leaves a polygon with an edge not certainly of positive length to it (the
+    refusal)."""
+    if ar.certified:
+        found = arb_gauss.contact_points(polygon, gauss_image.orientation(polygon))
+        if found is not None and found[1] < 0:
+            return stack_points(found[0][0], found[0][1])
+    return gauss_image.contact_points(ar, polygon)
+
+
+def _pole_by_inversion(ar: Arithmetic, before: Array, after: Array) -> Array:
+    """``closed_forms.pole_by_inversion``; on balls in one compiled pass (the same balls)."""
+    if ar.certified:
+        compiled = arb_gauss.pole_by_inversion(before, after)
+        if compiled is not None:
+            return stack_points(compiled[0], compiled[1])
+    return kinematic_closed_forms.pole_by_inversion(before, after)
 
 
 def _poles(contact: Array) -> Array:
@@ -649,6 +721,9 @@ def _poles(contact: Array) -> Array:
     |a + b| = 2cos(δ/2), 1 + a·b = 2cos²(δ/2)), without its two atan2, two cos and a sin per
     vertex; parallel edges give ñ_i, and 1 + a·b ≥ 1 for turning angles up to π/2.
     """
+    compiled = arb_gauss.poles(contact)  # the same balls in one compiled pass
+    if compiled is not None:
+        return stack_points(compiled[0], compiled[1])
     a, b = contact[:-1], contact[1:]
     total = a + b
     denominator = 1 + (a[:, 0] * b[:, 0] + a[:, 1] * b[:, 1])
@@ -665,11 +740,17 @@ class _BallHyperbolic:
 
     def __init__(self, ar: Arithmetic, h: Scalar, d: Scalar, shift: Scalar, lo: int, hi: int):
         self.lo, self.hi, self.h, self.d = lo, hi, h, d
-        t = (ar.indices(lo, hi) + shift) * kinematic_closed_forms.log_ratio(ar, h, d)
+        self.amplitude = h / ar.sqrt((h - d) * (h + d))  # h/√(h² − d²): m_i^y = h / p_i^y
+        log_ratio = kinematic_closed_forms.log_ratio(ar, h, d)
+        ratio = ar.sqrt((h - d) / (h + d))
+        compiled = arb_gauss.hyperbolic(ar.indices(lo, hi), shift, log_ratio, ratio)
+        if compiled is not None:  # the same balls in one compiled pass
+            self.tanh_t, self.sech_t, self.tanh_u, self.sech_u = compiled
+            return
+        t = (ar.indices(lo, hi) + shift) * log_ratio
         e = ar.exp(t)
         self.tanh_t, self.sech_t = self._tanh_sech(e)
-        self.tanh_u, self.sech_u = self._tanh_sech(e * ar.sqrt((h - d) / (h + d)))
-        self.amplitude = h / ar.sqrt((h - d) * (h + d))  # h/√(h² − d²): m_i^y = h / p_i^y
+        self.tanh_u, self.sech_u = self._tanh_sech(e * ratio)
 
     @staticmethod
     def _tanh_sech(e: Array) -> tuple[Array, Array]:
@@ -704,6 +785,9 @@ class _BallHyperbolic:
             return stack_points(sech, -tanh)
         if key == "19":
             return stack_points(tanh, sech)
+        compiled = arb_gauss.printed_20(self.h, self.d, tanh, sech)
+        if compiled is not None:  # the same balls in one compiled pass
+            return stack_points(compiled[0], compiled[1])
         denominator = self.h + self.d * tanh
         return stack_points((self.h * tanh - self.d) / denominator, self.h * sech / denominator)
 

@@ -20,7 +20,7 @@ from app.geometry.checks import Check, Largest, check_residuals, not_applicable
 from app.geometry.curvature import FaceCurvatures, face_curvatures, from_areas
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array
-from app.geometry.surfaces import ring_kernel
+from app.geometry.surfaces import arb_rings, ring_kernel
 from app.geometry.surfaces.mesh import ring_faces
 from app.geometry.surfaces.revolution_formulas import equation_17_residuals
 
@@ -140,11 +140,15 @@ def equation_17_check(
 
 
 def ring_checks(
-    ar: Arithmetic, meridian: Array, gauss: Array, curvature: float | None
+    ar: Arithmetic, meridian: Array, gauss: Array, curvature: Any
 ) -> tuple[Array, Array, int] | None:
-    """Float64: Theorem 7's (``curvature`` K) or 8's (None: H = 0) residuals and (17)'s on
-    one ring, in one compiled pass (``ring_kernel.ring_checks``); None in mp, or where the
-    numpy path must name a face without area."""
+    """Theorem 7's (``curvature`` K) or 8's (None: H = 0) residuals and (17)'s on one ring, in
+    one compiled pass: in float64 ``ring_kernel.ring_checks``, on balls ``arb_rings.ring_checks``
+    (the balls the numpy code makes); None on mpmath numbers, or where the numpy path must name
+    a face without area."""
+    if ar.certified:
+        theta = ar.pi / RING_M
+        return arb_rings.ring_checks(meridian, gauss, ar.cos(theta), ar.sin(theta), curvature)
     if ar.mode != "float64":
         return None
     theta = ar.pi / RING_M

@@ -1,0 +1,278 @@
+"""Straight-line ball formulas run row by row in one compiled loop, the same libflint calls.
+
+A formula on numpy object arrays of python-flint ``arb`` balls (``(a + b) / (1 + a·b)`` over
+1000 rows) makes one Python call and one new ball per operation and row. A ``Program`` writes
+the same formula as a list of libflint operations on named registers; ``run`` executes it for
+every row inside one numba loop (``app.geometry.arb_loops``' machinery: the balls' own
+``arb_struct``, scratch balls reused row after row), and writes the named outputs into fresh
+balls. Each operation is the libflint function python-flint calls for the operator, with the
+operands in python-flint's order (its ``abs`` and negation round to the precision, as here),
+at the working precision (``flint.ctx.prec``) or at a lower
+one given to ``run``: the balls are those of the numpy code (the callers' tests compare them bit
+for bit). A quantity the numpy code computes twice is computed once (the same call on the same
+balls gives the same ball).
+
+Compiled at import (about a second once per process, as ``arb_loops``); ``AVAILABLE`` false
+keeps the callers' numpy code.
+"""
+
+from __future__ import annotations
+
+import ctypes
+from typing import Any
+
+import flint
+import numba
+import numpy as np
+
+from app.geometry import arb_loops
+
+_P, _W = ctypes.c_void_p, ctypes.c_long
+_SIGNATURES: dict[str, tuple[Any, list[Any]]] = {
+    "arb_add": (None, [_P, _P, _P, _W]),
+    "arb_sub": (None, [_P, _P, _P, _W]),
+    "arb_mul": (None, [_P, _P, _P, _W]),
+    "arb_div": (None, [_P, _P, _P, _W]),
+    "arb_sqrt": (None, [_P, _P, _W]),
+    "arb_exp": (None, [_P, _P, _W]),
+    "arb_abs": (None, [_P, _P]),
+    "arb_set_round": (None, [_P, _P, _W]),
+    "arb_neg_round": (None, [_P, _P, _W]),
+    "arb_max": (None, [_P, _P, _P, _W]),
+    "arb_min": (None, [_P, _P, _P, _W]),
+    "arb_set": (None, [_P, _P]),
+    "arb_nonnegative_part": (None, [_P, _P]),
+    "arb_gt": (ctypes.c_int, [_P, _P]),
+    "arb_lt": (ctypes.c_int, [_P, _P]),
+    "arb_ne": (ctypes.c_int, [_P, _P]),
+}
+_BOUND = {name: arb_loops.bind(name, *signature) for name, signature in _SIGNATURES.items()}
+#: GMP's comparison of limb vectors (libflint's dependency, through the same handle): one word
+#: of each entry's object header, its type, against ``flint.arb``'s address (``_all_balls``).
+_COMPARE_WORDS = arb_loops.bind("__gmpn_cmp", ctypes.c_int, [_P, _P, _W])
+#: Where a CPython object keeps its type's address (after its reference count).
+_TYPE_OFFSET = ctypes.sizeof(ctypes.c_ssize_t)
+
+#: Whether programs run compiled (else the callers keep their numpy code).
+AVAILABLE = (
+    arb_loops.AVAILABLE
+    and all(f is not None for f in _BOUND.values())
+    and _COMPARE_WORDS is not None
+    and _TYPE_OFFSET == 8
+)
+
+# operation codes: (code, destination, a, b) on registers
+ADD, SUB, MUL, DIV, SQRT, EXP, ABS, NEG, MAX, MIN, SET, NONNEGATIVE = range(12)
+GT, LT, CHOOSE, REQUIRE_GT, NE, KEEP_FLAG = range(12, 18)
+"""``GT``/``LT``/``NE`` set the flag to a > b / a < b / a ≠ b (certainly); ``CHOOSE`` sets d to
+a if the flag is set, else to b (an exact copy); ``KEEP_FLAG`` keeps the flag as the row's
+entry of ``run``'s flags; ``REQUIRE_GT`` stops the run at the first row where a > b is not
+certain (``run`` returns that row)."""
+
+_ARITY = {ADD: 2, SUB: 2, MUL: 2, DIV: 2, MAX: 2, MIN: 2, GT: 2, LT: 2, NE: 2, CHOOSE: 2}
+_ARITY |= {KEEP_FLAG: 1}
+_ARITY |= {REQUIRE_GT: 2, SQRT: 1, EXP: 1, ABS: 1, NEG: 1, SET: 1, NONNEGATIVE: 1}
+
+if AVAILABLE:
+    _add = _BOUND["arb_add"]
+    _sub = _BOUND["arb_sub"]
+    _mul = _BOUND["arb_mul"]
+    _div = _BOUND["arb_div"]
+    _sqrt = _BOUND["arb_sqrt"]
+    _exp = _BOUND["arb_exp"]
+    _abs = _BOUND["arb_abs"]
+    _set_round = _BOUND["arb_set_round"]
+    _neg_round = _BOUND["arb_neg_round"]
+    _max = _BOUND["arb_max"]
+    _min = _BOUND["arb_min"]
+    _set = _BOUND["arb_set"]
+    _nonnegative = _BOUND["arb_nonnegative_part"]
+    _gt = _BOUND["arb_gt"]
+    _lt = _BOUND["arb_lt"]
+    _ne = _BOUND["arb_ne"]
+
+    @numba.njit(cache=False)
+    def _compiled_all_balls(addresses: Any, offset: int, key: int) -> bool:
+        """Whether the objects at these ``arb_struct`` addresses are all ``arb``: each
+        object's type word compared with the one at ``key`` (every entry of an object array
+        is an object, so its header can be read whatever it is)."""
+        for k in range(addresses.shape[0]):
+            if _COMPARE_WORDS(addresses[k] - offset, key, 1) != 0:
+                return False
+        return True
+
+    @numba.njit(cache=False)
+    def _run(
+        code: Any, inputs: Any, outputs: Any, fixed: Any, prec: int, low: int, flags: Any
+    ) -> int:
+        """Every row of ``inputs``/``outputs`` (addresses, one column a register) through
+        ``code`` (rows: operation, destination, a, b, 1 for the low precision); registers are
+        the inputs, the outputs, then ``fixed`` (constants' and scratch balls' addresses).
+        −1, or the row where a ``REQUIRE_GT`` failed."""
+        n_in, n_out = inputs.shape[1], outputs.shape[1]
+        registers = np.empty(n_in + n_out + fixed.shape[0], dtype=np.int64)
+        for j in range(fixed.shape[0]):
+            registers[n_in + n_out + j] = fixed[j]
+        flag = False
+        for row in range(inputs.shape[0]):
+            for j in range(n_in):
+                registers[j] = inputs[row, j]
+            for j in range(n_out):
+                registers[n_in + j] = outputs[row, j]
+            for step in range(code.shape[0]):
+                op = code[step, 0]
+                d = registers[code[step, 1]]
+                a, b = registers[code[step, 2]], registers[code[step, 3]]
+                p = low if code[step, 4] else prec
+                if op == ADD:
+                    _add(d, a, b, p)
+                elif op == SUB:
+                    _sub(d, a, b, p)
+                elif op == MUL:
+                    _mul(d, a, b, p)
+                elif op == DIV:
+                    _div(d, a, b, p)
+                elif op == SQRT:
+                    _sqrt(d, a, p)
+                elif op == EXP:
+                    _exp(d, a, p)
+                elif op == ABS:  # python-flint's abs: rounded to the precision
+                    _abs(d, a)
+                    _set_round(d, d, p)
+                elif op == NEG:  # and its negation
+                    _neg_round(d, a, p)
+                elif op == MAX:
+                    _max(d, a, b, p)
+                elif op == MIN:
+                    _min(d, a, b, p)
+                elif op == SET:
+                    _set(d, a)
+                elif op == NONNEGATIVE:
+                    _nonnegative(d, a)
+                elif op == GT:
+                    flag = _gt(a, b) != 0
+                elif op == LT:
+                    flag = _lt(a, b) != 0
+                elif op == NE:
+                    flag = _ne(a, b) != 0
+                elif op == KEEP_FLAG:
+                    flags[row] = flag
+                elif op == CHOOSE:
+                    _set(d, a if flag else b)
+                elif op == REQUIRE_GT and not _gt(a, b):
+                    return row
+        return -1
+
+
+class Program:
+    """A straight-line formula on named registers: ``inputs`` (one ball per row each),
+    ``constants`` (one ball for every row), ``outputs`` (written, fresh balls per row); any
+    other name is a scratch ball. ``op`` appends one operation (``low``: at ``run``'s low
+    precision)."""
+
+    def __init__(self, inputs: list[str], constants: list[str], outputs: list[str]) -> None:
+        self.inputs, self.constants, self.outputs = inputs, constants, outputs
+        self.scratch: list[str] = []
+        self.steps: list[tuple[int, str, str, str, bool]] = []
+
+    def op(self, code: int, d: str, a: str, b: str | None = None, low: bool = False) -> None:
+        if (b is None) != (_ARITY[code] == 1):
+            raise TypeError("wrong number of operands")
+        known = {*self.inputs, *self.constants, *self.outputs, *self.scratch}
+        for name in (a, b):
+            if name is not None and name not in known:
+                raise NameError(f"register {name!r} read before it is written")
+        if d in self.inputs or d in self.constants:
+            raise NameError(f"register {d!r} is read-only")
+        if d not in known:
+            self.scratch.append(d)
+        self.steps.append((code, d, a, a if b is None else b, low))
+
+    def compiled(self) -> np.ndarray[Any, np.dtype[np.int64]]:
+        """The operation table ``_run`` reads (register numbers)."""
+        names = [*self.inputs, *self.outputs, *self.constants, *self.scratch]
+        number = {name: k for k, name in enumerate(names)}
+        table = [(c, number[d], number[a], number[b], int(low)) for c, d, a, b, low in self.steps]
+        return np.array(table, dtype=np.int64).reshape(-1, 5)
+
+
+def run(
+    program: Program,
+    inputs: dict[str, np.ndarray[Any, Any]],
+    constants: dict[str, Any],
+    low: int | None = None,
+) -> tuple[list[np.ndarray[Any, Any]], int, np.ndarray[Any, np.dtype[np.bool_]]] | None:
+    """``program`` on equal-length 1-d object arrays of balls (by input name) and constant
+    balls: the outputs (in ``program.outputs`` order) as fresh balls, and −1 or the row where
+    a ``REQUIRE_GT`` failed (the outputs are then incomplete), and the rows' kept flags
+    (``KEEP_FLAG``, else false); None where the compiled loop
+    does not apply (not available, an entry not a ball, no rows: the caller's numpy code runs).
+    ``low``: the precision of the operations marked low (default the working precision)."""
+    if not AVAILABLE:
+        return None
+    columns = [inputs[name] for name in program.inputs]
+    rows = len(columns[0])
+    if not rows or any(c.ndim != 1 or len(c) != rows or c.dtype != object for c in columns):
+        return None
+    address_in = np.ascontiguousarray(np.stack([arb_loops.addresses(c) for c in columns], 1))
+    if not all_balls(address_in):
+        return None
+    fixed_balls = [constants[name] for name in program.constants]
+    if any(type(ball) is not flint.arb for ball in fixed_balls):
+        return None
+    outputs = [np.negative(columns[0]) for _ in program.outputs]  # fresh balls, written over
+    address_out = np.ascontiguousarray(np.stack([arb_loops.addresses(o) for o in outputs], 1))
+    prec = flint.ctx.prec
+    flags = np.zeros(rows, dtype=np.bool_)
+    with arb_loops.Scratch(max(len(program.scratch), 1)) as scratch:
+        fixed = np.array([id(ball) for ball in fixed_balls], dtype=np.int64) + arb_loops.OFFSET
+        scratch_addresses = scratch + arb_loops.ARB_BYTES * np.arange(
+            len(program.scratch), dtype=np.int64
+        )
+        stopped = _run(
+            program.compiled(),
+            address_in,
+            address_out,
+            np.concatenate([fixed, scratch_addresses]),
+            prec,
+            prec if low is None else low,
+            flags,
+        )
+    del fixed_balls  # the constants lived until here
+    return outputs, int(stopped), flags
+
+
+def all_balls(addresses: np.ndarray[Any, np.dtype[np.int64]]) -> bool:
+    """Whether every object of an object array is an ``arb``, from its ``arb_loops.addresses``
+    (about 3 ns an entry, where ``arb_loops.all_balls`` takes about 40): checked before any
+    ball is read through them."""
+    if not AVAILABLE or _COMPARE_WORDS is None or _TYPE_OFFSET != 8:
+        raise RuntimeError("no compiled type check")
+    key = np.array([id(flint.arb)], dtype=np.int64)
+    found = _compiled_all_balls(
+        addresses.reshape(-1), arb_loops.OFFSET - _TYPE_OFFSET, key.ctypes.data
+    )
+    return bool(found)
+
+
+def _warm() -> None:
+    """Compile the loop now, at import, so that no request pays for it."""
+    program = Program(["x"], ["one"], ["y"])
+    program.op(ADD, "s", "x", "one")
+    program.op(REQUIRE_GT, "s", "s", "one")
+    program.op(GT, "s", "s", "one")
+    program.op(CHOOSE, "y", "s", "one")
+    column = np.empty(2, dtype=object)
+    column[:] = [flint.arb(1), flint.arb(2)]
+    run(program, {"x": column}, {"one": flint.arb(1)})
+    mixed = np.empty(2, dtype=object)
+    mixed[:] = [flint.arb(1), 1.5]
+    if all_balls(arb_loops.addresses(column)) is not True or all_balls(arb_loops.addresses(mixed)):
+        raise RuntimeError("the compiled type check does not read object headers as expected")
+
+
+if AVAILABLE:
+    try:
+        _warm()
+    except RuntimeError:  # object headers not as expected: the numpy code runs
+        AVAILABLE = False

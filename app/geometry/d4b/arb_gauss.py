@@ -1,0 +1,291 @@
+"""Section 5 of (D4b) on balls: the Gauss images and their checks' elementwise formulas, each in
+one compiled pass (``arb_program``), the balls of the numpy code they replace.
+
+Each function mirrors a numpy formula of ``d4b.curvature`` / ``gauss_image`` /
+``closed_forms`` on balls operation for operation (python-flint's libflint call and operand
+order), and returns None where the compiled pass does not apply (the caller then runs the numpy
+formula). The tests compare every ball bit for bit with the numpy code's.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import flint
+import numpy as np
+
+from app.geometry import arb_program as ap
+from app.geometry.arb_program import (
+    ABS,
+    ADD,
+    CHOOSE,
+    DIV,
+    EXP,
+    GT,
+    LT,
+    MIN,
+    MUL,
+    NEG,
+    NONNEGATIVE,
+    REQUIRE_GT,
+    SQRT,
+    SUB,
+    Program,
+)
+
+AVAILABLE = ap.AVAILABLE
+
+Columns = list[np.ndarray[Any, Any]]
+
+
+def _hypot(program: Program, out: str, x: str, y: str, low: bool = False) -> None:
+    """``Ball.hypot`` (``arb_loops._hypot``): √(part ≥ 0 of x·x + y·y)."""
+    program.op(MUL, "hypot square", x, x, low)
+    program.op(MUL, "hypot other", y, y, low)
+    program.op(ADD, "hypot square", "hypot square", "hypot other", low)
+    program.op(NONNEGATIVE, "hypot square", "hypot square")
+    program.op(SQRT, out, "hypot square", low=low)
+
+
+def _relative_difference(program: Program, out: str) -> None:
+    """``checks.relative_point_difference`` (``arb_loops._relative_point_difference``): the
+    differences at the working precision, the lengths and the quotient at the low one."""
+    program.op(SUB, "dx", "cx", "ex")
+    program.op(SUB, "dy", "cy", "ey")
+    _hypot(program, "scale", "ex", "ey", low=True)
+    _hypot(program, "length", "dx", "dy", low=True)
+    program.op(GT, "scale", "scale", "tiny")
+    program.op(CHOOSE, "floor", "scale", "tiny")
+    program.op(DIV, out, "length", "floor", low=True)
+
+
+_DIFFERENCE = Program(["cx", "cy", "ex", "ey"], ["tiny"], ["out"])
+_relative_difference(_DIFFERENCE, "out")
+_SCALED_DIFFERENCE = Program(["cx", "cy", "ex", "ey", "factor"], ["tiny"], ["out"])
+_relative_difference(_SCALED_DIFFERENCE, "difference")
+_SCALED_DIFFERENCE.op(MUL, "out", "difference", "factor")
+
+
+def relative_difference(
+    computed: Any, expected: Any, tiny: Any, low: int, factor: Any = None
+) -> Any:
+    """``checks.relative_point_difference`` of two ``(n, 2)`` arrays of balls (``tiny`` and
+    ``low`` as it makes them), times ``factor`` entry by entry if given (``_scaled`` on
+    balls): the same balls, no array in between."""
+    inputs = {"cx": computed[:, 0], "cy": computed[:, 1]}
+    inputs |= {"ex": expected[:, 0], "ey": expected[:, 1]}
+    program = _DIFFERENCE
+    if factor is not None:
+        inputs["factor"] = factor
+        program = _SCALED_DIFFERENCE
+    done = ap.run(program, inputs, {"tiny": tiny}, low)
+    return None if done is None else done[0][0]
+
+
+def _tanh_sech(program: Program, e: str, tanh: str, sech: str) -> None:
+    """``_BallHyperbolic._tanh_sech``: 1 − 2/(E² + 1), 2/(E + 1/E)."""
+    program.op(MUL, "q", e, e)
+    program.op(ADD, "q", "q", "one")
+    program.op(DIV, "q", "two", "q")
+    program.op(SUB, tanh, "one", "q")
+    program.op(DIV, "r", "one", e)
+    program.op(ADD, "r", e, "r")
+    program.op(DIV, sech, "two", "r")
+
+
+_HYPERBOLIC = Program(
+    ["i"], ["shift", "L", "ratio", "one", "two"], ["tanh t", "sech t", "tanh u", "sech u"]
+)
+_HYPERBOLIC.op(ADD, "t", "i", "shift")
+_HYPERBOLIC.op(MUL, "t", "t", "L")
+_HYPERBOLIC.op(EXP, "e", "t")
+_tanh_sech(_HYPERBOLIC, "e", "tanh t", "sech t")
+_HYPERBOLIC.op(MUL, "e", "e", "ratio")
+_tanh_sech(_HYPERBOLIC, "e", "tanh u", "sech u")
+
+
+def hyperbolic(indices: Any, shift: Any, log_ratio: Any, ratio: Any) -> Columns | None:
+    """``_BallHyperbolic``'s tanh t, sech t, tanh u, sech u (t = (i + τ)L, e^u = e^t·ratio)."""
+    constants = {"shift": shift, "L": log_ratio, "ratio": ratio}
+    constants |= {"one": flint.arb(1), "two": flint.arb(2)}
+    done = ap.run(_HYPERBOLIC, {"i": indices}, constants)
+    return None if done is None else done[0]
+
+
+_PRINTED_20 = Program(["tanh", "sech"], ["h", "d"], ["x", "y"])
+_PRINTED_20.op(MUL, "a", "d", "tanh")
+_PRINTED_20.op(ADD, "denominator", "h", "a")
+_PRINTED_20.op(MUL, "b", "h", "tanh")
+_PRINTED_20.op(SUB, "b", "b", "d")
+_PRINTED_20.op(DIV, "x", "b", "denominator")
+_PRINTED_20.op(MUL, "c", "h", "sech")
+_PRINTED_20.op(DIV, "y", "c", "denominator")
+
+
+def printed_20(h: Any, d: Any, tanh: Any, sech: Any) -> Columns | None:
+    """``_BallHyperbolic.printed("20")``: ((h tanh − d), h sech)/(h + d tanh)."""
+    done = ap.run(_PRINTED_20, {"tanh": tanh, "sech": sech}, {"h": h, "d": d})
+    return None if done is None else done[0]
+
+
+_CONTACT = Program(["x0", "y0", "x1", "y1"], ["sign", "minus sign", "zero"], ["x", "y"])
+_CONTACT.op(SUB, "ex", "x1", "x0")
+_CONTACT.op(SUB, "ey", "y1", "y0")
+_hypot(_CONTACT, "length", "ex", "ey")
+_CONTACT.op(REQUIRE_GT, "length", "length", "zero")
+_CONTACT.op(MUL, "a", "ey", "minus sign")
+_CONTACT.op(DIV, "x", "a", "length")
+_CONTACT.op(MUL, "b", "ex", "sign")
+_CONTACT.op(DIV, "y", "b", "length")
+
+
+def contact_points(polygon: Any, sign: int) -> tuple[Columns, int] | None:
+    """``gauss_image.contact_points`` on balls: the unit normals (−s e^y, s e^x)/|e| of the
+    edges (s = ``sign``, the orientation), and −1 or the first edge of length not certainly
+    positive (the caller refuses the polygon as the numpy code does)."""
+    inputs = {"x0": polygon[:-1, 0], "y0": polygon[:-1, 1]}
+    inputs |= {"x1": polygon[1:, 0], "y1": polygon[1:, 1]}
+    constants = {"sign": flint.arb(sign), "minus sign": flint.arb(-sign), "zero": flint.arb(0)}
+    done = ap.run(_CONTACT, inputs, constants)
+    return None if done is None else (done[0], done[1])
+
+
+_POLES = Program(["ax", "ay", "bx", "by"], ["one"], ["x", "y"])
+_POLES.op(ADD, "tx", "ax", "bx")
+_POLES.op(ADD, "ty", "ay", "by")
+_POLES.op(MUL, "u", "ax", "bx")
+_POLES.op(MUL, "w", "ay", "by")
+_POLES.op(ADD, "u", "u", "w")
+_POLES.op(ADD, "denominator", "u", "one")
+_POLES.op(DIV, "x", "tx", "denominator")
+_POLES.op(DIV, "y", "ty", "denominator")
+
+
+def poles(contact: Any) -> Columns | None:
+    """``d4b.curvature._poles``: (a + b)/(1 + a·b) of consecutive contact points."""
+    inputs = {"ax": contact[:-1, 0], "ay": contact[:-1, 1]}
+    inputs |= {"bx": contact[1:, 0], "by": contact[1:, 1]}
+    done = ap.run(_POLES, inputs, {"one": flint.arb(1)})
+    return None if done is None else done[0]
+
+
+_EDGES = Program(["x0", "y0", "x1", "y1"], [], ["ex", "ey", "size", "resolution"])
+_EDGES.op(SUB, "ex", "x1", "x0")
+_EDGES.op(SUB, "ey", "y1", "y0")
+_EDGES.op(ABS, "a", "x0")
+_EDGES.op(ABS, "b", "y0")
+_EDGES.op(ADD, "size", "a", "b")
+_EDGES.op(ABS, "a", "x1")
+_EDGES.op(ADD, "size", "size", "a")
+_EDGES.op(ABS, "a", "y1")
+_EDGES.op(ADD, "size", "size", "a")
+_hypot(_EDGES, "length", "ex", "ey")
+_EDGES.op(DIV, "resolution", "length", "size")
+
+
+def edges(points: Any) -> Columns | None:
+    """``d4b.curvature._Edges`` and ``_edge_resolution`` on balls: the edges' coordinates, their
+    sizes |p_i| + |p_{i+1}| (coordinates summed) and |e_i| over that."""
+    inputs = {"x0": points[:-1, 0], "y0": points[:-1, 1]}
+    inputs |= {"x1": points[1:, 0], "y1": points[1:, 1]}
+    done = ap.run(_EDGES, inputs, {})
+    return None if done is None else done[0]
+
+
+def _along(program: Program, vx: str, vy: str) -> None:
+    """``d4b.curvature._along``: |v × e|/size, or 1 where v · e < 0."""
+    program.op(MUL, "a", vx, "ey")
+    program.op(MUL, "b", vy, "ex")
+    program.op(SUB, "a", "a", "b")
+    program.op(ABS, "a", "a")
+    program.op(DIV, "along", "a", "size")
+    program.op(MUL, "a", vx, "ex")
+    program.op(MUL, "b", vy, "ey")
+    program.op(ADD, "a", "a", "b")
+    program.op(LT, "a", "a", "zero")
+    program.op(CHOOSE, "out", "one", "along")
+
+
+_ALONG = Program(["vx", "vy", "ex", "ey", "size"], ["zero", "one"], ["out"])
+_along(_ALONG, "vx", "vy")
+
+_SLOPE = Program(["ex", "ey", "size"], ["zero", "one"], ["out"])
+_SLOPE.op(DIV, "k", "ey", "ex")
+_SLOPE.op(MUL, "kk", "k", "k")
+_SLOPE.op(ADD, "denominator", "kk", "one")
+_SLOPE.op(DIV, "c", "one", "denominator")
+_SLOPE.op(SQRT, "vx", "c")
+_SLOPE.op(DIV, "c", "kk", "denominator")
+_SLOPE.op(SQRT, "vy", "c")
+_along(_SLOPE, "vx", "vy")
+
+
+def along(vectors: Any, edge_x: Any, edge_y: Any, size: Any) -> Any:
+    """``d4b.curvature._along`` of unit vectors on edges (coordinates and sizes given)."""
+    inputs = {"vx": vectors[:, 0], "vy": vectors[:, 1], "ex": edge_x, "ey": edge_y, "size": size}
+    done = ap.run(_ALONG, inputs, {"zero": flint.arb(0), "one": flint.arb(1)})
+    return None if done is None else done[0][0]
+
+
+def along_printed_slope(edge_x: Any, edge_y: Any, size: Any) -> Any:
+    """``_along`` of the printed (18)'s first form from the edges' slopes k = e^y/e^x
+    (``closed_forms.normal_from_slope_printed``: (√(1/(1 + k²)), √(k²/(1 + k²))))."""
+    inputs = {"ex": edge_x, "ey": edge_y, "size": size}
+    done = ap.run(_SLOPE, inputs, {"zero": flint.arb(0), "one": flint.arb(1)})
+    return None if done is None else done[0][0]
+
+
+_ROTATION = Program(["cx", "cy", "nx", "ny", "scale"], [], ["out"])
+_ROTATION.op(NEG, "r", "ny")
+_ROTATION.op(SUB, "dx", "cx", "r")
+_ROTATION.op(SUB, "dy", "cy", "nx")
+_hypot(_ROTATION, "distance", "dx", "dy")
+_ROTATION.op(MUL, "out", "distance", "scale")
+
+
+def rotation(contact: Any, normals: Any, scale: Any) -> Any:
+    """The rotation check's residuals: |ñ − (−n^y, n^x)| times the resolution
+    (``checks.point_distance``, then ``_scaled``)."""
+    inputs = {"cx": contact[:, 0], "cy": contact[:, 1], "nx": normals[:, 0]}
+    inputs |= {"ny": normals[:, 1], "scale": scale}
+    done = ap.run(_ROTATION, inputs, {})
+    return None if done is None else done[0][0]
+
+
+_INVERSION = Program(["ax", "ay", "bx", "by"], ["two"], ["x", "y"])
+_INVERSION.op(ADD, "tx", "ax", "bx")
+_INVERSION.op(ADD, "ty", "ay", "by")
+_INVERSION.op(MUL, "s", "tx", "tx")
+_INVERSION.op(MUL, "w", "ty", "ty")
+_INVERSION.op(ADD, "s", "s", "w")
+_INVERSION.op(MUL, "a", "tx", "two")
+_INVERSION.op(DIV, "x", "a", "s")
+_INVERSION.op(MUL, "b", "ty", "two")
+_INVERSION.op(DIV, "y", "b", "s")
+
+
+def pole_by_inversion(before: Any, after: Any) -> Columns | None:
+    """``closed_forms.pole_by_inversion`` on balls: 2t/|t|², t = before + after."""
+    inputs = {"ax": before[:, 0], "ay": before[:, 1], "bx": after[:, 0], "by": after[:, 1]}
+    done = ap.run(_INVERSION, inputs, {"two": flint.arb(2)})
+    return None if done is None else done[0]
+
+
+_MINIMUM = Program(["a", "b"], [], ["out"])
+_MINIMUM.op(MIN, "out", "a", "b")
+
+
+def minimum(a: Any, b: Any) -> Any:
+    """arb's min entry by entry (``d4b.curvature._ball_minimum``)."""
+    done = ap.run(_MINIMUM, {"a": a, "b": b}, {})
+    return None if done is None else done[0][0]
+
+
+_SCALED = Program(["a", "b"], [], ["out"])
+_SCALED.op(MUL, "out", "a", "b")
+
+
+def product(a: Any, b: Any) -> Any:
+    """a·b entry by entry (``d4b.curvature._scaled`` on balls)."""
+    done = ap.run(_SCALED, {"a": a, "b": b}, {})
+    return None if done is None else done[0][0]

@@ -1,0 +1,219 @@
+"""Section 5's ring checks on balls in one compiled pass: Theorem 7's or 8's residuals and (17)'s.
+
+On balls (precision=mp) ``ring_curvature.ring_curvatures`` writes each face of a ring in its
+meridian coordinates (``_ring_curvatures_in_the_meridian_plane``), ``from_areas`` adds the
+parallel residual, and ``constant_curvature_residuals`` / ``minimal_residuals`` and
+``revolution_formulas.face_residuals`` turn the areas into residuals: about a hundred operations
+a face, each a Python call on numpy's object loop that allocates a ball for its result. Here the
+same formulas are one straight-line program (``arb_program``): the same libflint functions in
+the same order at the same precision (the working precision), the intermediates in scratch
+balls reused face after face, so that the residual balls are the very ones the numpy code makes
+(the tests compare them bit for bit). A quantity the numpy code computes twice (p_{i+1}^y²,
+q Δy, p_i^y n_i^y) is computed once: the same call on the same balls gives the same ball.
+
+Where the numpy code would leave the planar form (a face whose area is not certainly positive)
+the program stops and the caller keeps the numpy code, which names the face; ``AVAILABLE``
+false (``arb_program``) keeps the numpy code too.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import flint
+import numpy as np
+
+from app.geometry import arb_program
+from app.geometry.arb_program import (
+    ABS,
+    ADD,
+    CHOOSE,
+    DIV,
+    GT,
+    KEEP_FLAG,
+    MAX,
+    MUL,
+    NE,
+    REQUIRE_GT,
+    SQRT,
+    SUB,
+    Program,
+)
+
+#: Whether the compiled ring pass can run (else the numpy code does).
+AVAILABLE = arb_program.AVAILABLE
+
+_INPUTS = ["x0", "y0", "u0", "v0", "x1", "y1", "u1", "v1"]
+_CONSTANTS = ["q", "r", "cs", "sin", "sqrt r", "K", "|K|", "tiny", "zero", "two", "four"]
+
+
+def _ring_program(constant_k: bool) -> Program:
+    """The face of vertices 0, 1 of the meridian (x, y) and its Gauss image (u, v): the
+    theorem's residual (7 with ``constant_k``: K given, else 8: H = 0) and (17)'s larger
+    residual (0 where 0/0, the flag kept: whether (17) is defined)."""
+    program = Program(_INPUTS, _CONSTANTS, ["theorem", "equation 17"])
+    op = program.op
+    # ring_curvature._ring_curvatures_in_the_meridian_plane
+    op(ADD, "s_f", "y0", "y1")
+    op(REQUIRE_GT, "s_f", "s_f", "zero")
+    op(ADD, "s_n", "v0", "v1")
+    op(SUB, "dx", "x1", "x0")
+    op(SUB, "dy", "y1", "y0")
+    op(SUB, "du", "u1", "u0")
+    op(SUB, "dv", "v1", "v0")
+    op(MUL, "q dy", "q", "dy")
+    op(MUL, "t1", "q dy", "dy")
+    op(MUL, "r dx", "r", "dx")
+    op(MUL, "t2", "r dx", "dx")
+    op(ADD, "t1", "t1", "t2")
+    op(SQRT, "length", "t1")
+    op(REQUIRE_GT, "length", "length", "zero")
+    op(MUL, "t1", "q dy", "dv")
+    op(MUL, "t2", "r dx", "du")
+    op(ADD, "inner", "t1", "t2")
+    op(MUL, "t1", "s_f", "length")
+    op(DIV, "area", "t1", "two")
+    op(MUL, "t1", "s_n", "inner")
+    op(MUL, "t2", "two", "length")
+    op(DIV, "gauss area", "t1", "t2")
+    op(MUL, "t1", "s_f", "inner")
+    op(MUL, "t2", "s_n", "length")
+    op(MUL, "t2", "t2", "length")
+    op(ADD, "t1", "t1", "t2")
+    op(MUL, "t2", "four", "length")
+    op(DIV, "mixed", "t1", "t2")
+    for name in ("x0", "y0", "x1", "y1", "u0", "v0", "u1", "v1"):
+        op(ABS, f"|{name}|", name)
+    for f1, f2, (a, b, c, d) in (
+        ("f1", "f2", ("|x0|", "|y0|", "|x1|", "|y1|")),
+        ("n1", "n2", ("|u0|", "|v0|", "|u1|", "|v1|")),
+    ):
+        op(ADD, "t1", a, b)  # a + b + c + d cs
+        op(ADD, "t1", "t1", c)
+        op(MUL, "t2", d, "cs")
+        op(ADD, f1, "t1", "t2")
+        op(MUL, "t2", b, "cs")  # a + b cs + c + d
+        op(ADD, "t1", a, "t2")
+        op(ADD, "t1", "t1", c)
+        op(ADD, f2, "t1", d)
+    op(MUL, "t1", "f1", "f2")
+    op(DIV, "mag f", "t1", "two")
+    op(MUL, "t1", "n1", "n2")
+    op(DIV, "mag n", "t1", "two")
+    op(MUL, "t1", "f1", "n2")
+    op(MUL, "t2", "n1", "f2")
+    op(ADD, "t1", "t1", "t2")
+    op(DIV, "mag fn", "t1", "four")
+    op(MUL, "t1", "dy", "du")  # turn = |Δy Δu − Δx Δv| sin √r
+    op(MUL, "t2", "dx", "dv")
+    op(SUB, "t1", "t1", "t2")
+    op(ABS, "t1", "t1")
+    op(MUL, "t1", "t1", "sin")
+    op(MUL, "turn", "t1", "sqrt r")
+    op(MUL, "t1", "s_f", "s_n")  # turned = |S_f S_n| turn / 4
+    op(ABS, "t1", "t1")
+    op(MUL, "t1", "t1", "turn")
+    op(DIV, "turned", "t1", "four")
+    # curvature.from_areas: the parallel residual
+    op(MUL, "t1", "mag f", "mag n")
+    op(GT, "t1", "t1", "tiny")
+    op(CHOOSE, "t1", "t1", "tiny")
+    op(DIV, "parallel", "turned", "t1")
+    # the theorem: constant_curvature_residuals or minimal_residuals, then the larger of it
+    # and the parallel residual
+    if constant_k:
+        op(MUL, "t1", "|K|", "mag f")
+        op(ADD, "t2", "mag n", "t1")
+        op(MUL, "t1", "K", "area")
+        op(SUB, "t1", "gauss area", "t1")
+        op(ABS, "t1", "t1")
+        op(DIV, "residual", "t1", "t2")
+    else:
+        op(ABS, "t1", "mixed")
+        op(DIV, "residual", "t1", "mag fn")
+    op(MAX, "theorem", "residual", "parallel")
+    # revolution_formulas.face_residuals (balls: the radii unscaled)
+    op(MUL, "p1²", "y1", "y1")
+    op(MUL, "p0²", "y0", "y0")
+    op(SUB, "dp", "p1²", "p0²")
+    op(ADD, "sp", "p1²", "p0²")
+    op(MUL, "n1²", "v1", "v1")
+    op(MUL, "n0²", "v0", "v0")
+    op(MUL, "t1", "mag n", "sp")  # k_scale
+    op(ADD, "t2", "n1²", "n0²")
+    op(MUL, "t2", "mag f", "t2")
+    op(ADD, "k scale", "t1", "t2")
+    op(MUL, "p0 n0", "y0", "v0")
+    op(MUL, "p1 n1", "y1", "v1")
+    op(MUL, "t1", "mag fn", "sp")  # h_scale
+    op(ABS, "t2", "p0 n0")
+    op(ABS, "t3", "p1 n1")
+    op(ADD, "t2", "t2", "t3")
+    op(MUL, "t2", "mag f", "t2")
+    op(ADD, "h scale", "t1", "t2")
+    op(MUL, "t1", "gauss area", "dp")  # k_res
+    op(SUB, "t2", "n1²", "n0²")
+    op(MUL, "t2", "area", "t2")
+    op(SUB, "t1", "t1", "t2")
+    op(ABS, "t1", "t1")
+    op(GT, "k scale", "k scale", "tiny")
+    op(CHOOSE, "t3", "k scale", "tiny")
+    op(DIV, "k res", "t1", "t3")
+    op(MUL, "t1", "mixed", "dp")  # h_res
+    op(SUB, "t2", "p0 n0", "p1 n1")
+    op(MUL, "t2", "area", "t2")
+    op(ADD, "t1", "t1", "t2")
+    op(ABS, "t1", "t1")
+    op(GT, "h scale", "h scale", "tiny")
+    op(CHOOSE, "t3", "h scale", "tiny")
+    op(DIV, "h res", "t1", "t3")
+    op(MAX, "both", "k res", "h res")
+    op(NE, "dp", "dp", "zero")  # (17) defined: the larger residual, else 0
+    op(KEEP_FLAG, "dp", "dp")
+    op(CHOOSE, "equation 17", "both", "zero")
+    return program
+
+
+_THEOREM_7, _THEOREM_8 = _ring_program(True), _ring_program(False)
+
+
+def ring_checks(
+    meridian: np.ndarray[Any, Any],
+    gauss: np.ndarray[Any, Any],
+    cos: Any,
+    sin: Any,
+    curvature: Any,
+) -> tuple[np.ndarray[Any, Any], np.ndarray[Any, Any], int] | None:
+    """On balls: Theorem 7's residuals (``curvature`` the ball K) or 8's (None: H = 0) and
+    (17)'s larger residual per face (0 where (17) is 0/0, that many), the balls the numpy code
+    makes (``ring_curvature.ring_curvatures`` and the residual functions; the caller runs inside
+    the working precision); None where that code must run (not available, fewer than two
+    vertices, an entry not a ball, a face without certain area)."""
+    faces = len(meridian) - 1
+    if not AVAILABLE or faces < 1 or len(gauss) != faces + 1:
+        return None
+    if meridian.dtype != object or gauss.dtype != object or meridian.ndim != 2:
+        return None
+    if type(cos) is not flint.arb or type(sin) is not flint.arb:
+        return None
+    if curvature is not None and type(curvature) is not flint.arb:
+        return None
+    # the scalars exactly as the numpy code makes them
+    k = 1 - cos
+    q, r = sin * sin, sin * sin + k * k
+    constant = curvature if curvature is not None else flint.arb(0)
+    constants = {"q": q, "r": r, "cs": cos + sin, "sin": sin, "sqrt r": r.sqrt()}
+    constants |= {"K": constant, "|K|": abs(constant)}
+    constants["tiny"] = flint.arb(repr(float(np.finfo(np.float64).tiny)))  # ``Ball.scalar``
+    constants |= {"zero": flint.arb(0), "two": flint.arb(2), "four": flint.arb(4)}
+    inputs = {}
+    for end, rows in (("0", slice(None, -1)), ("1", slice(1, None))):
+        for name, points, column in (("x", meridian, 0), ("y", meridian, 1)):
+            inputs[name + end] = points[rows, column]
+        for name, points, column in (("u", gauss, 0), ("v", gauss, 1)):
+            inputs[name + end] = points[rows, column]
+    done = arb_program.run(_THEOREM_7 if curvature is not None else _THEOREM_8, inputs, constants)
+    if done is None or done[1] >= 0:
+        return None
+    (theorem, equation_17), _, defined = done
+    return theorem, equation_17, int(np.count_nonzero(~defined))

@@ -1,0 +1,117 @@
+"""Section 5's compiled passes on balls give the very balls of the numpy formulas they replace."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import flint
+import numpy as np
+import pytest
+
+from app.geometry import balls, checks, gauss_image
+from app.geometry.ball_arithmetic import Ball
+from app.geometry.d4b import arb_gauss, closed_forms, curvature, discretization as d4b
+from app.geometry.d4b.closed_forms import tilt_shift
+from app.geometry.polygon import magnitude
+from app.geometry.precision import stack_points
+
+pytestmark = pytest.mark.skipif(not arb_gauss.AVAILABLE, reason="no bundled libflint")
+
+
+def _same(got: Any, want: Any) -> None:
+    got, want = np.asarray(got).reshape(-1), np.asarray(want).reshape(-1)
+    assert len(got) == len(want) > 0
+    for a, b in zip(got, want, strict=True):
+        assert a.mid().man_exp() == b.mid().man_exp()
+        assert a.rad().man_exp() == b.rad().man_exp()
+
+
+def _points(columns: Any) -> Any:
+    assert columns is not None
+    return stack_points(columns[0], columns[1])
+
+
+@pytest.mark.parametrize("digits", [50, 500])
+def test_the_gauss_image_passes_are_the_numpy_balls(digits: int) -> None:
+    ar = Ball(digits, 4, recursions_only=True)
+    with balls.working_precision(ar.bits):
+        h, d = ar.scalar(1.0), ar.scalar(0.1)
+        data = d4b.polygons(ar, 1.0, 0.1, None, -40, 39)
+        p, images = data.p, data.gauss
+        shift = tilt_shift(ar, h, d, None)
+        # the hyperbolic table and the printed (20)
+        table = curvature._BallHyperbolic(ar, h, d, shift, -41, 40)
+        got = arb_gauss.hyperbolic(
+            ar.indices(-41, 40),
+            shift,
+            closed_forms.log_ratio(ar, h, d),
+            ar.sqrt((h - d) / (h + d)),
+        )
+        assert got is not None
+        _same(got[0], table.tanh_t)
+        _same(got[1], table.sech_t)
+        _same(got[2], table.tanh_u)
+        _same(got[3], table.sech_u)
+        _same(
+            _points(arb_gauss.printed_20(h, d, table.tanh_t, table.sech_t)),
+            table.printed("20", -41, 40),
+        )
+        # the contact points, the poles, the inversion
+        extended = data.gauss.contact_edges_before
+        assert extended is not None
+        sign = gauss_image.orientation(p)
+        contact = gauss_image.contact_points(ar, p)
+        found = arb_gauss.contact_points(p, sign)
+        assert found is not None and found[1] == -1
+        _same(_points(found[0]), contact)
+        _same(_points(arb_gauss.poles(contact)), curvature._poles(contact))
+        _same(
+            _points(arb_gauss.pole_by_inversion(contact[:-1], contact[1:])),
+            closed_forms.pole_by_inversion(contact[:-1], contact[1:]),
+        )
+        # the edges, their sizes and resolutions; _along of n and of the printed slope form
+        ex, ey, size, resolution = arb_gauss.edges(p)
+        edges = p[1:] - p[:-1]
+        _same(ex, edges[:, 0])
+        _same(ey, edges[:, 1])
+        _same(size, magnitude(p[:-1], p[1:]))
+        _same(resolution, curvature._edge_resolution(ar, p))
+        n = len(p) - 1
+        normals = images.tractrix_gauss[:n]
+        _same(arb_gauss.along(normals, ex, ey, size), curvature._along(ar, normals, p))
+        backwards = -normals  # v · e < 0: the residual 1
+        _same(arb_gauss.along(backwards, ex, ey, size), curvature._along(ar, backwards, p))
+        slope = closed_forms.normal_from_slope_printed(ar, edges[:, 1] / edges[:, 0])
+        _same(arb_gauss.along_printed_slope(ex, ey, size), curvature._along(ar, slope, p))
+        # the rotation's scaled distances, minima and products
+        c, normals = contact[1:n], normals[: n - 1]
+        rotated = stack_points(-normals[:, 1], normals[:, 0])
+        want = checks.point_distance(ar, c, rotated) * resolution[: n - 1]
+        _same(arb_gauss.rotation(c, normals, resolution[: n - 1]), want)
+        _same(arb_gauss.minimum(resolution, size), curvature._ball_minimum(resolution, size))
+        # relative point differences, alone and scaled (closed forms, errata, the inversion)
+        poles = curvature._poles(contact)[: n - 1]
+        inverted = closed_forms.pole_by_inversion(contact[:-1], contact[1:])
+        want = checks.relative_point_difference(ar, poles, inverted)
+        _same(curvature._relative(ar, poles, inverted), want)
+        _same(
+            curvature._relative(ar, poles, inverted, resolution[: n - 1]),
+            want * resolution[: n - 1],
+        )
+        wide = inverted + flint.arb(0, 1e-3)  # radii beyond the low precision's
+        want = checks.relative_point_difference(ar, poles, wide)
+        _same(curvature._relative(ar, poles, wide), want)
+        _same(arb_gauss.product(resolution, size), resolution * size)
+
+
+def test_a_zero_edge_and_other_entries() -> None:
+    ar = Ball(30)
+    with balls.working_precision(ar.bits):
+        points = np.empty((3, 2), dtype=object)
+        points[:, 0] = [flint.arb(0), flint.arb(1), flint.arb(1)]
+        points[:, 1] = [flint.arb(1), flint.arb(2), flint.arb(2)]
+        found = arb_gauss.contact_points(points, 1)
+        assert found is not None and found[1] == 1  # the second edge has no length
+        points[0, 0] = 0.5  # not a ball: the numpy code runs
+        assert arb_gauss.contact_points(points, 1) is None
+        assert arb_gauss.edges(points[:1]) is None  # no edge
