@@ -591,7 +591,12 @@ def evaluate(
         (THEOREM_7, theorem_7),
         (THEOREM_8, theorem_8),
     )
-    return [evaluate() for statement, evaluate in evaluators if wanted(statement.id)]
+    checks = []
+    for statement, evaluate in evaluators:
+        if wanted(statement.id):
+            ar.check_time()  # the compiled ball passes read no clock: one check per statement
+            checks.append(evaluate())
+    return checks
 
 
 def _first(residuals: Any, n: int) -> Any:
