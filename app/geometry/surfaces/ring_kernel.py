@@ -29,6 +29,35 @@ _FIELDS = 9
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
+def _areas(
+    f0: Any, f1: Any, f2: Any, f3: Any, g0: Any, g1: Any, g2: Any, g3: Any
+) -> tuple[Any, Any, Any]:
+    """A face's vector areas ½ (v2 − v0) × (v3 − v1) of f and of n, and the mixed one
+    ¼ (d1(f) × d2(n) + d1(n) × d2(f)) of [3], from the corners of f (``f0`` … ``f3``) and of n
+    (``g0`` … ``g3``), as ``curvature.face_curvatures`` writes them."""
+    fa = (f2[0] - f0[0], f2[1] - f0[1], f2[2] - f0[2])
+    fb = (f3[0] - f1[0], f3[1] - f1[1], f3[2] - f1[2])
+    ga = (g2[0] - g0[0], g2[1] - g0[1], g2[2] - g0[2])
+    gb = (g3[0] - g1[0], g3[1] - g1[1], g3[2] - g1[2])
+    af = (
+        (fa[1] * fb[2] - fa[2] * fb[1]) / 2,
+        (fa[2] * fb[0] - fa[0] * fb[2]) / 2,
+        (fa[0] * fb[1] - fa[1] * fb[0]) / 2,
+    )
+    an = (
+        (ga[1] * gb[2] - ga[2] * gb[1]) / 2,
+        (ga[2] * gb[0] - ga[0] * gb[2]) / 2,
+        (ga[0] * gb[1] - ga[1] * gb[0]) / 2,
+    )
+    mixed = (
+        ((fa[1] * gb[2] - fa[2] * gb[1]) + (ga[1] * fb[2] - ga[2] * fb[1])) / 4,
+        ((fa[2] * gb[0] - fa[0] * gb[2]) + (ga[2] * fb[0] - ga[0] * fb[2])) / 4,
+        ((fa[0] * gb[1] - fa[1] * gb[0]) + (ga[0] * fb[1] - ga[1] * fb[0])) / 4,
+    )
+    return af, an, mixed
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
 def _face(
     meridian: Any, gauss: Any, k: int, cos: float, sin: float, tiny: float
 ) -> tuple[float, float, float, float, float, float, float, float, float]:
@@ -50,27 +79,7 @@ def _face(
     g1 = (sx, sy * cos, sy * sin)
     g2 = (ex, ey * cos, ey * sin)
     g3 = (ex, ey * 1.0, ey * 0.0)
-    # diagonals v2 − v0, v3 − v1
-    fa = (f2[0] - f0[0], f2[1] - f0[1], f2[2] - f0[2])
-    fb = (f3[0] - f1[0], f3[1] - f1[1], f3[2] - f1[2])
-    ga = (g2[0] - g0[0], g2[1] - g0[1], g2[2] - g0[2])
-    gb = (g3[0] - g1[0], g3[1] - g1[1], g3[2] - g1[2])
-    # vector areas ½ fa × fb, ½ ga × gb and the mixed ¼ (fa × gb + ga × fb)
-    af = (
-        (fa[1] * fb[2] - fa[2] * fb[1]) / 2,
-        (fa[2] * fb[0] - fa[0] * fb[2]) / 2,
-        (fa[0] * fb[1] - fa[1] * fb[0]) / 2,
-    )
-    an = (
-        (ga[1] * gb[2] - ga[2] * gb[1]) / 2,
-        (ga[2] * gb[0] - ga[0] * gb[2]) / 2,
-        (ga[0] * gb[1] - ga[1] * gb[0]) / 2,
-    )
-    mixed = (
-        ((fa[1] * gb[2] - fa[2] * gb[1]) + (ga[1] * fb[2] - ga[2] * fb[1])) / 4,
-        ((fa[2] * gb[0] - fa[0] * gb[2]) + (ga[2] * fb[0] - ga[0] * fb[2])) / 4,
-        ((fa[0] * gb[1] - fa[1] * gb[0]) + (ga[0] * fb[1] - ga[1] * fb[0])) / 4,
-    )
+    af, an, mixed = _areas(f0, f1, f2, f3, g0, g1, g2, g3)
     size = hypot(hypot(af[0], af[1]), af[2])  # libm's, bit for bit (inline)
     unit = (af[0] / size, af[1] / size, af[2] / size)
     a_n = an[0] * unit[0] + an[1] * unit[1] + an[2] * unit[2]
@@ -141,25 +150,7 @@ def _face_residuals(
     g1 = (nsx, nsy * cos, nsy * sin)
     g2 = (nex, ney * cos, ney * sin)
     g3 = (nex, ney, ney * 0.0)
-    fa = (f2[0] - f0[0], f2[1] - f0[1], f2[2] - f0[2])
-    fb = (f3[0] - f1[0], f3[1] - f1[1], f3[2] - f1[2])
-    ga = (g2[0] - g0[0], g2[1] - g0[1], g2[2] - g0[2])
-    gb = (g3[0] - g1[0], g3[1] - g1[1], g3[2] - g1[2])
-    af = (
-        (fa[1] * fb[2] - fa[2] * fb[1]) / 2,
-        (fa[2] * fb[0] - fa[0] * fb[2]) / 2,
-        (fa[0] * fb[1] - fa[1] * fb[0]) / 2,
-    )
-    an = (
-        (ga[1] * gb[2] - ga[2] * gb[1]) / 2,
-        (ga[2] * gb[0] - ga[0] * gb[2]) / 2,
-        (ga[0] * gb[1] - ga[1] * gb[0]) / 2,
-    )
-    mixed = (
-        ((fa[1] * gb[2] - fa[2] * gb[1]) + (ga[1] * fb[2] - ga[2] * fb[1])) / 4,
-        ((fa[2] * gb[0] - fa[0] * gb[2]) + (ga[2] * fb[0] - ga[0] * fb[2])) / 4,
-        ((fa[0] * gb[1] - fa[1] * gb[0]) + (ga[0] * fb[1] - ga[1] * fb[0])) / 4,
-    )
+    af, an, mixed = _areas(f0, f1, f2, f3, g0, g1, g2, g3)
     area = hypot(hypot(af[0], af[1]), af[2])  # libm's, bit for bit (inline)
     if area > RECIPROCAL_FROM:  # the unit normal by one reciprocal (|a(f)| / area <= 1)
         inverse = 1.0 / area
