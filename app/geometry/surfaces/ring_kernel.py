@@ -58,6 +58,41 @@ def _areas(
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
+def _magnitudes(
+    f0: Any,
+    f1: Any,
+    f2: Any,
+    f3: Any,
+    g0: Any,
+    g1: Any,
+    g2: Any,
+    g3: Any,
+    af: Any,
+    an: Any,
+    tiny: float,
+) -> tuple[float, float, float, float]:
+    """The sizes of the numbers a face's areas come from (``mag_f``, ``mag_n``, ``mag_fn``: the
+    1-norms |v0| + |v2| and |v1| + |v3| of each diagonal's corners, multiplied as the areas
+    multiply them) and the parallel residual |a(f) × a(n)| / (mag_f · mag_n)."""
+    f_1 = (abs(f0[0]) + abs(f0[1]) + abs(f0[2])) + (abs(f2[0]) + abs(f2[1]) + abs(f2[2]))
+    f_2 = (abs(f1[0]) + abs(f1[1]) + abs(f1[2])) + (abs(f3[0]) + abs(f3[1]) + abs(f3[2]))
+    n_1 = (abs(g0[0]) + abs(g0[1]) + abs(g0[2])) + (abs(g2[0]) + abs(g2[1]) + abs(g2[2]))
+    n_2 = (abs(g1[0]) + abs(g1[1]) + abs(g1[2])) + (abs(g3[0]) + abs(g3[1]) + abs(g3[2]))
+    mag_f = f_1 * f_2 / 2
+    mag_n = n_1 * n_2 / 2
+    mag_fn = (f_1 * n_2 + n_1 * f_2) / 4
+    both = mag_f * mag_n
+    crossed = (
+        af[1] * an[2] - af[2] * an[1],
+        af[2] * an[0] - af[0] * an[2],
+        af[0] * an[1] - af[1] * an[0],
+    )
+    # a residual: the fast length (within 2 ulp of the nested hypot, ``compiled.length3``)
+    parallel = length3(crossed[0], crossed[1], crossed[2]) / (both if both > tiny else tiny)
+    return mag_f, mag_n, mag_fn, parallel
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
 def _face(
     meridian: Any, gauss: Any, k: int, cos: float, sin: float, tiny: float
 ) -> tuple[float, float, float, float, float, float, float, float, float]:
@@ -84,22 +119,7 @@ def _face(
     unit = (af[0] / size, af[1] / size, af[2] / size)
     a_n = an[0] * unit[0] + an[1] * unit[1] + an[2] * unit[2]
     a_fn = mixed[0] * unit[0] + mixed[1] * unit[1] + mixed[2] * unit[2]
-    # sizes of the numbers each diagonal comes from: |v0| + |v2|, |v1| + |v3| (1-norms)
-    f_1 = (abs(f0[0]) + abs(f0[1]) + abs(f0[2])) + (abs(f2[0]) + abs(f2[1]) + abs(f2[2]))
-    f_2 = (abs(f1[0]) + abs(f1[1]) + abs(f1[2])) + (abs(f3[0]) + abs(f3[1]) + abs(f3[2]))
-    n_1 = (abs(g0[0]) + abs(g0[1]) + abs(g0[2])) + (abs(g2[0]) + abs(g2[1]) + abs(g2[2]))
-    n_2 = (abs(g1[0]) + abs(g1[1]) + abs(g1[2])) + (abs(g3[0]) + abs(g3[1]) + abs(g3[2]))
-    mag_f = f_1 * f_2 / 2
-    mag_n = n_1 * n_2 / 2
-    both = mag_f * mag_n
-    crossed = (
-        af[1] * an[2] - af[2] * an[1],
-        af[2] * an[0] - af[0] * an[2],
-        af[0] * an[1] - af[1] * an[0],
-    )
-    # a residual: the fast length (within 2 ulp of the nested hypot, ``compiled.length3``)
-    parallel = length3(crossed[0], crossed[1], crossed[2]) / (both if both > tiny else tiny)
-    mag_fn = (f_1 * n_2 + n_1 * f_2) / 4
+    mag_f, mag_n, mag_fn, parallel = _magnitudes(f0, f1, f2, f3, g0, g1, g2, g3, af, an, tiny)
     return size, a_n, a_fn, a_n / size, -a_fn / size, parallel, mag_f, mag_n, mag_fn
 
 
@@ -159,20 +179,7 @@ def _face_residuals(
         unit = (af[0] / area, af[1] / area, af[2] / area)
     gauss_area = an[0] * unit[0] + an[1] * unit[1] + an[2] * unit[2]
     mixed_area = mixed[0] * unit[0] + mixed[1] * unit[1] + mixed[2] * unit[2]
-    f_1 = (abs(f0[0]) + abs(f0[1]) + abs(f0[2])) + (abs(f2[0]) + abs(f2[1]) + abs(f2[2]))
-    f_2 = (abs(f1[0]) + abs(f1[1]) + abs(f1[2])) + (abs(f3[0]) + abs(f3[1]) + abs(f3[2]))
-    n_1 = (abs(g0[0]) + abs(g0[1]) + abs(g0[2])) + (abs(g2[0]) + abs(g2[1]) + abs(g2[2]))
-    n_2 = (abs(g1[0]) + abs(g1[1]) + abs(g1[2])) + (abs(g3[0]) + abs(g3[1]) + abs(g3[2]))
-    mag_f = f_1 * f_2 / 2
-    mag_n = n_1 * n_2 / 2
-    mag_fn = (f_1 * n_2 + n_1 * f_2) / 4
-    both = mag_f * mag_n
-    crossed = (
-        af[1] * an[2] - af[2] * an[1],
-        af[2] * an[0] - af[0] * an[2],
-        af[0] * an[1] - af[1] * an[0],
-    )
-    parallel = length3(crossed[0], crossed[1], crossed[2]) / (both if both > tiny else tiny)
+    mag_f, mag_n, mag_fn, parallel = _magnitudes(f0, f1, f2, f3, g0, g1, g2, g3, af, an, tiny)
     if minimal:
         own = abs(mixed_area) / mag_fn
     else:
