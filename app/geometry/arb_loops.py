@@ -19,24 +19,61 @@ checked once against known balls before anything is read through it. Where eithe
 expected (another python-flint build), ``AVAILABLE`` is false and the callers keep their numpy
 code. The input balls are only read, and stay referenced by the caller's arrays during a call.
 
-Compiled at import (a ctypes function's address differs between processes, so numba cannot
-cache these loops on disk): about a second once per process, so that no request pays for it.
+The loops call libflint by symbol name (``extern``: each name registered with the JIT's linker
+at its address in this process), so no process's addresses are in the machine code and numba
+caches the loops on disk (``NUMBA_CACHE_DIR``, filled by ``python -m app.geometry.warm``): a
+process loads them at import instead of compiling them. (A ctypes function called from a loop is
+compiled in as a constant address, which numba refuses to cache.)
 """
 
 from __future__ import annotations
 
+import contextlib
 import ctypes
-from typing import Any
+from collections.abc import Callable
+from typing import Any, TypeVar, cast
 
 import flint
 import flint.types.arb as flint_arb_module
 import numba
 import numpy as np
+from numba.core import caching, externals
+
+from app.geometry import compiled
+
+F = TypeVar("F", bound=Callable[..., Any])
 
 #: Bytes of one ``arb_struct`` (midpoint ``arf_struct`` 32, radius ``mag_struct`` 16).
 ARB_BYTES = 48
 #: Offset of the radius (``arb_radref``) within an ``arb_struct``.
 RADIUS_OFFSET = 32
+
+
+_P, _W = ctypes.c_void_p, ctypes.c_long
+#: The libflint functions the loops call, and their types.
+_SIGNATURES: dict[str, tuple[Any, list[Any]]] = {
+    "arb_get_abs_ubound_arf": (None, [_P, _P, _W]),
+    "arb_get_abs_lbound_arf": (None, [_P, _P, _W]),
+    "arb_get_ubound_arf": (None, [_P, _P, _W]),
+    "arb_div": (None, [_P, _P, _P, _W]),
+    "arf_cmp": (ctypes.c_int, [_P, _P]),
+    "arf_set": (None, [_P, _P]),
+    "arf_set_mag": (None, [_P, _P]),
+    "arf_is_finite": (ctypes.c_int, [_P]),
+    "arf_is_zero": (ctypes.c_int, [_P]),
+    "mag_cmp": (ctypes.c_int, [_P, _P]),
+    "mag_is_zero": (ctypes.c_int, [_P]),
+    "mag_is_finite": (ctypes.c_int, [_P]),
+    "arf_get_d": (ctypes.c_double, [_P, ctypes.c_int]),
+    "arb_sub": (None, [_P, _P, _P, _W]),
+    "arb_add": (None, [_P, _P, _P, _W]),
+    "arb_mul": (None, [_P, _P, _P, _W]),
+    "arb_sqrt": (None, [_P, _P, _W]),
+    "arb_nonnegative_part": (None, [_P, _P]),
+    "arb_gt": (ctypes.c_int, [_P, _P]),
+    "_arb_vec_init": (_P, [_W]),
+    "_arb_vec_clear": (None, [_P, _W]),
+}
 
 
 def _library() -> Any:
@@ -54,32 +91,8 @@ def _library() -> Any:
 
 def _bind(library: Any) -> dict[str, Any] | None:
     """The libflint functions the loops call, typed; None if one is missing."""
-    pointer, word = ctypes.c_void_p, ctypes.c_long
-    signatures: dict[str, tuple[Any, list[Any]]] = {
-        "arb_get_abs_ubound_arf": (None, [pointer, pointer, word]),
-        "arb_get_abs_lbound_arf": (None, [pointer, pointer, word]),
-        "arb_get_ubound_arf": (None, [pointer, pointer, word]),
-        "arb_div": (None, [pointer, pointer, pointer, word]),
-        "arf_cmp": (ctypes.c_int, [pointer, pointer]),
-        "arf_set": (None, [pointer, pointer]),
-        "arf_set_mag": (None, [pointer, pointer]),
-        "arf_is_finite": (ctypes.c_int, [pointer]),
-        "arf_is_zero": (ctypes.c_int, [pointer]),
-        "mag_cmp": (ctypes.c_int, [pointer, pointer]),
-        "mag_is_zero": (ctypes.c_int, [pointer]),
-        "mag_is_finite": (ctypes.c_int, [pointer]),
-        "arf_get_d": (ctypes.c_double, [pointer, ctypes.c_int]),
-        "arb_sub": (None, [pointer, pointer, pointer, word]),
-        "arb_add": (None, [pointer, pointer, pointer, word]),
-        "arb_mul": (None, [pointer, pointer, pointer, word]),
-        "arb_sqrt": (None, [pointer, pointer, word]),
-        "arb_nonnegative_part": (None, [pointer, pointer]),
-        "arb_gt": (ctypes.c_int, [pointer, pointer]),
-        "_arb_vec_init": (pointer, [word]),
-        "_arb_vec_clear": (None, [pointer, word]),
-    }
     bound = {}
-    for name, (result, arguments) in signatures.items():
+    for name, (result, arguments) in _SIGNATURES.items():
         function = getattr(library, name, None)
         if function is None:
             return None
@@ -133,6 +146,94 @@ def bind(name: str, result: Any, arguments: list[Any]) -> Any:
     return function
 
 
+#: numba's types for the ctypes types of the functions' signatures (addresses as integers).
+_NUMBA_TYPES: dict[Any, Any] = {
+    None: numba.types.void,
+    ctypes.c_void_p: numba.types.int64,
+    ctypes.c_long: numba.types.int64,
+    ctypes.c_int: numba.types.int32,
+    ctypes.c_double: numba.types.float64,
+}
+
+
+def extern(name: str, result: Any, arguments: list[Any]) -> Any:
+    """One libflint function for the compiled loops, called by symbol name: ``arb_loops.<name>``
+    is registered with the JIT's linker at the function's address in this process (numba's own
+    helper for its C functions) and resolved when a loop is compiled or loaded from the cache.
+    A numba ``ExternalFunction`` typed as the ctypes signature (pointers and ``long`` as 64-bit
+    integers, ``int`` as 32-bit: the same registers in the C calling convention); None where
+    ``bind`` gives None or a type has no such match (the callers keep their Python code)."""
+    function = bind(name, result, arguments)
+    if function is None or not {result, *arguments} <= _NUMBA_TYPES.keys():
+        return None
+    if ctypes.sizeof(ctypes.c_void_p) != 8 or ctypes.sizeof(ctypes.c_long) != 8:
+        return None
+    symbol = f"arb_loops.{name}"
+    address = ctypes.cast(function, ctypes.c_void_p).value
+    externals._add_missing_symbol(symbol, address)  # type: ignore[no-untyped-call]
+    signature = _NUMBA_TYPES[result](*(_NUMBA_TYPES[a] for a in arguments))
+    return numba.types.ExternalFunction(symbol, signature)
+
+
+class _JointStamp:
+    """A cache locator for the files of ``loop``'s functions: their cache entries are stamped
+    with this file's contents as well as their own (numba's stamp: its source file only), since
+    they may call its loops (``_hypot``): a change here recompiles them too."""
+
+    @classmethod
+    def from_function(cls, py_func: Any, py_file: str) -> Any:
+        if py_file not in _LOOP_FILES:
+            return None
+        return super().from_function(py_func, py_file)  # type: ignore[misc]
+
+    def get_source_stamp(self) -> Any:
+        this_file = _ThisFile().get_source_stamp()  # type: ignore[no-untyped-call]
+        return super().get_source_stamp(), this_file  # type: ignore[misc]
+
+
+class _ThisFile(caching._SourceFileBackedLocatorMixin):
+    """numba's stamp of this file (a digest of its contents)."""
+
+    _py_file = __file__
+
+
+class _CacheDirectory(_JointStamp, compiled.ReadableCacheLocator):
+    """``NUMBA_CACHE_DIR`` (also read-only, as ``compiled``'s kernels)."""
+
+
+class _BesideSource(_JointStamp, caching.InTreeCacheLocator):
+    """``__pycache__`` beside the source where ``NUMBA_CACHE_DIR`` is not set."""
+
+
+caching.CacheImpl._locator_classes = [
+    _CacheDirectory,
+    _BesideSource,
+    *caching.CacheImpl._locator_classes,
+]
+#: The source files of ``loop``'s functions.
+_LOOP_FILES: set[str] = set()
+
+
+class _Cache(caching.FunctionCache):
+    """numba's cache of a function, where a failed save (a read-only cache without this loop:
+    another CPU, a changed file) leaves the loop compiled in memory instead of raising."""
+
+    def save_overload(self, sig: Any, data: Any) -> None:
+        with contextlib.suppress(OSError):
+            super().save_overload(sig, data)  # type: ignore[no-untyped-call]
+
+
+def loop(function: F) -> F:
+    """``numba.njit`` cached on disk (for loops that call libflint through ``extern`` only, and
+    other loops of ``loop``), compiled at the first call where the cache lacks it; in memory
+    only where numba finds no cache directory."""
+    _LOOP_FILES.add(function.__code__.co_filename)
+    dispatcher: Any = numba.njit(cache=False)(function)
+    with contextlib.suppress(RuntimeError):  # numba: no cache directory for this file
+        dispatcher._cache = _Cache(function)  # type: ignore[no-untyped-call]
+    return cast(F, dispatcher)
+
+
 def addresses(values: np.ndarray[Any, Any]) -> np.ndarray[Any, np.dtype[np.int64]]:
     """The ``arb_struct`` address of every entry of an object array of ``arb`` (all of them
     ``arb``: the caller checks). The array must stay alive while the addresses are used.
@@ -159,21 +260,25 @@ def all_balls(values: np.ndarray[Any, Any]) -> bool:
     return set(map(type, values.reshape(-1))) <= {flint.arb}
 
 
-if _FUNCTIONS is not None:
-    _abs_ubound = _FUNCTIONS["arb_get_abs_ubound_arf"]
-    _abs_lbound = _FUNCTIONS["arb_get_abs_lbound_arf"]
-    _ubound = _FUNCTIONS["arb_get_ubound_arf"]
-    _div = _FUNCTIONS["arb_div"]
-    _arf_cmp = _FUNCTIONS["arf_cmp"]
-    _arf_set = _FUNCTIONS["arf_set"]
-    _arf_set_mag = _FUNCTIONS["arf_set_mag"]
-    _arf_is_finite = _FUNCTIONS["arf_is_finite"]
-    _arf_is_zero = _FUNCTIONS["arf_is_zero"]
-    _mag_cmp = _FUNCTIONS["mag_cmp"]
-    _mag_is_zero = _FUNCTIONS["mag_is_zero"]
-    _mag_is_finite = _FUNCTIONS["mag_is_finite"]
+#: The functions of ``_SIGNATURES`` as the loops call them (``extern``).
+_EXTERN = {name: extern(name, *_SIGNATURES[name]) for name in _SIGNATURES} if AVAILABLE else {}
+if any(f is None for f in _EXTERN.values()):
+    AVAILABLE = False
+if AVAILABLE:
+    _abs_ubound = _EXTERN["arb_get_abs_ubound_arf"]
+    _abs_lbound = _EXTERN["arb_get_abs_lbound_arf"]
+    _ubound = _EXTERN["arb_get_ubound_arf"]
+    _div = _EXTERN["arb_div"]
+    _arf_cmp = _EXTERN["arf_cmp"]
+    _arf_set = _EXTERN["arf_set"]
+    _arf_set_mag = _EXTERN["arf_set_mag"]
+    _arf_is_finite = _EXTERN["arf_is_finite"]
+    _arf_is_zero = _EXTERN["arf_is_zero"]
+    _mag_cmp = _EXTERN["mag_cmp"]
+    _mag_is_zero = _EXTERN["mag_is_zero"]
+    _mag_is_finite = _EXTERN["mag_is_finite"]
 
-    @numba.njit(cache=False)
+    @loop
     def _argmax_abs(points: Any, upward: bool, prec: int, scratch: int) -> int:
         """Index of the largest |v| upper (``upward``) or lower bound; −1 for no entries, −2
         if a bound is not finite (the caller's Python reduction decides those)."""
@@ -191,7 +296,7 @@ if _FUNCTIONS is not None:
                 found = k
         return found
 
-    @numba.njit(cache=False)
+    @loop
     def _largest_radii(xs: Any, ys: Any, prec: int, scratch: int) -> Any:
         """For points (x, y): the index of the largest radius max(rad x, rad y) (−1: every
         point exact), the index of the largest upper bound of that radius over the point's
@@ -241,14 +346,14 @@ if _FUNCTIONS is not None:
                 largest_relative = k
         return largest, largest_relative, reaches_zero, False
 
-    _sub = _FUNCTIONS["arb_sub"]
-    _add = _FUNCTIONS["arb_add"]
-    _mul = _FUNCTIONS["arb_mul"]
-    _sqrt = _FUNCTIONS["arb_sqrt"]
-    _nonnegative = _FUNCTIONS["arb_nonnegative_part"]
-    _gt = _FUNCTIONS["arb_gt"]
+    _sub = _EXTERN["arb_sub"]
+    _add = _EXTERN["arb_add"]
+    _mul = _EXTERN["arb_mul"]
+    _sqrt = _EXTERN["arb_sqrt"]
+    _nonnegative = _EXTERN["arb_nonnegative_part"]
+    _gt = _EXTERN["arb_gt"]
 
-    @numba.njit(cache=False)
+    @loop
     def _hypot(out: int, x: int, y: int, prec: int, square: int) -> None:
         """out = sqrt(nonnegative part of x·x + y·y), as ``Ball.hypot`` (``square``: scratch)."""
         _mul(square, x, x, prec)
@@ -257,13 +362,13 @@ if _FUNCTIONS is not None:
         _nonnegative(square, square)
         _sqrt(out, square, prec)
 
-    @numba.njit(cache=False)
+    @loop
     def _hypots(xs: Any, ys: Any, out: Any, prec: int, square: int) -> None:
         """``_hypot`` entry by entry into the balls at ``out``."""
         for k in range(out.shape[0]):
             _hypot(out[k], xs[k], ys[k], prec, square)
 
-    @numba.njit(cache=False)
+    @loop
     def _relative_point_difference(
         computed: Any, expected: Any, tiny: int, out: Any, work: int, low: int, scratch: int
     ) -> None:
@@ -284,8 +389,8 @@ if _FUNCTIONS is not None:
             _hypot(length, dx, dy, low, square)
             _div(out[k], length, scale if _gt(scale, tiny) else tiny, low)
 
-    _vec_init = _FUNCTIONS["_arb_vec_init"]
-    _vec_clear = _FUNCTIONS["_arb_vec_clear"]
+    _vec_init = bind("_arb_vec_init", *_SIGNATURES["_arb_vec_init"])
+    _vec_clear = bind("_arb_vec_clear", *_SIGNATURES["_arb_vec_clear"])
 
 
 class Scratch:

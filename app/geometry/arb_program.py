@@ -12,8 +12,8 @@ one given to ``run``: the balls are those of the numpy code (the callers' tests 
 for bit). A quantity the numpy code computes twice is computed once (the same call on the same
 balls gives the same ball).
 
-Compiled at import (about a second once per process, as ``arb_loops``); ``AVAILABLE`` false
-keeps the callers' numpy code.
+Compiled once into numba's cache and loaded from it at import, as ``arb_loops``' loops (libflint
+called by symbol name); ``AVAILABLE`` false keeps the callers' numpy code.
 """
 
 from __future__ import annotations
@@ -22,7 +22,6 @@ import ctypes
 from typing import Any
 
 import flint
-import numba
 import numpy as np
 
 from app.geometry import arb_loops
@@ -46,10 +45,10 @@ _SIGNATURES: dict[str, tuple[Any, list[Any]]] = {
     "arb_lt": (ctypes.c_int, [_P, _P]),
     "arb_ne": (ctypes.c_int, [_P, _P]),
 }
-_BOUND = {name: arb_loops.bind(name, *signature) for name, signature in _SIGNATURES.items()}
+_BOUND = {name: arb_loops.extern(name, *signature) for name, signature in _SIGNATURES.items()}
 #: GMP's comparison of limb vectors (libflint's dependency, through the same handle): one word
 #: of each entry's object header, its type, against ``flint.arb``'s address (``_all_balls``).
-_COMPARE_WORDS = arb_loops.bind("__gmpn_cmp", ctypes.c_int, [_P, _P, _W])
+_COMPARE_WORDS = arb_loops.extern("__gmpn_cmp", ctypes.c_int, [_P, _P, _W])
 #: Where a CPython object keeps its type's address (after its reference count).
 _TYPE_OFFSET = ctypes.sizeof(ctypes.c_ssize_t)
 
@@ -91,7 +90,7 @@ if AVAILABLE:
     _lt = _BOUND["arb_lt"]
     _ne = _BOUND["arb_ne"]
 
-    @numba.njit(cache=False)
+    @arb_loops.loop
     def _compiled_all_balls(addresses: Any, offset: int, key: int) -> bool:
         """Whether the objects at these ``arb_struct`` addresses are all ``arb``: each
         object's type word compared with the one at ``key`` (every entry of an object array
@@ -101,7 +100,7 @@ if AVAILABLE:
                 return False
         return True
 
-    @numba.njit(cache=False)
+    @arb_loops.loop
     def _run(
         code: Any, inputs: Any, outputs: Any, fixed: Any, prec: int, low: int, flags: Any
     ) -> int:

@@ -14,11 +14,13 @@ from app.geometry.compiled import KERNELS
 
 #: The modules that declare kernels.
 MODULES = (
+    "app.geometry.arb_program",
     "app.geometry.companion_kernels",
     "app.geometry.conditions",
     "app.geometry.d1.construction",
     "app.geometry.d3.construction",
     "app.geometry.d4a.construction",
+    "app.geometry.d4b.arb_checks",
     "app.geometry.d4b.closed_forms",
     "app.geometry.d4b.construction",
     "app.geometry.d4b.fused_checks",

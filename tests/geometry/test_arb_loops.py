@@ -130,3 +130,83 @@ def test_bind_types_another_libflint_function_for_other_modules() -> None:
     result = -flint.arb(0)  # a fresh ball nothing else references
     negate(id(result) + arb_loops.OFFSET, id(ball) + arb_loops.OFFSET)
     assert result == -ball
+
+
+_LOADED = """
+import json
+import numba
+from app.geometry import arb_loops, arb_program
+from app.geometry.d4b import arb_checks
+
+loops = {
+    f"{module.__name__}.{name}": value
+    for module in (arb_loops, arb_program, arb_checks)
+    for name, value in vars(module).items()
+    if isinstance(value, numba.core.registry.CPUDispatcher)
+}
+print(json.dumps({
+    name: [sum(d.stats.cache_hits.values()), sum(d.stats.cache_misses.values())]
+    for name, d in loops.items()
+}))
+"""
+
+
+@pytest.mark.skipif(not arb_loops.AVAILABLE, reason="no bundled libflint")
+def test_every_ball_loop_loads_from_numbas_cache() -> None:
+    """The ball loops call libflint by symbol name, so numba caches them: a second process
+    loads every loop its import runs from the cache (the first fills it if it was stale) and
+    compiles none."""
+    import json
+    import subprocess
+    import sys
+
+    for _ in range(2):
+        done = subprocess.run(
+            [sys.executable, "-c", _LOADED], capture_output=True, text=True, check=True
+        )
+    counts = json.loads(done.stdout)
+    loaded = {name for name, (hits, _) in counts.items() if hits}
+    assert {"app.geometry.arb_program._run", "app.geometry.d4b.arb_checks._two_step"} <= loaded
+    assert "app.geometry.arb_loops._relative_point_difference" in loaded
+    assert len(loaded) >= 15  # the outer loops (helpers compile into them)
+    assert {name: misses for name, (_, misses) in counts.items() if misses} == {}
+
+
+def test_extern_declines_what_it_cannot_type() -> None:
+    """``extern`` gives None for a missing function and for a type it has no match for (the
+    callers then keep their Python code), a numba external function otherwise."""
+    import ctypes
+
+    import numba
+
+    assert arb_loops.extern("arb_no_such_function", None, []) is None
+    assert arb_loops.extern("arb_neg", None, [ctypes.c_void_p, ctypes.c_float]) is None
+    negate = arb_loops.extern("arb_neg", None, [ctypes.c_void_p, ctypes.c_void_p])
+    assert isinstance(negate, numba.types.ExternalFunction)
+
+    @numba.njit
+    def negated(out: int, x: int) -> None:
+        negate(out, x)
+
+    ball = flint.arb("0.75")
+    result = -flint.arb(0)  # a fresh ball nothing else references
+    negated(id(result) + arb_loops.OFFSET, id(ball) + arb_loops.OFFSET)
+    assert result == -ball
+
+
+def test_a_cache_that_cannot_be_written_leaves_the_loop_in_memory(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """A read-only cache that lacks a loop: saving it fails, and the loop still runs."""
+    from numba.core import caching
+
+    def refuse(*_: object) -> None:
+        raise PermissionError("read-only")
+
+    monkeypatch.setattr(caching.Cache, "_save_overload", refuse)
+
+    def doubled(x: int) -> int:
+        return 2 * x
+
+    compiled = arb_loops.loop(doubled)
+    assert compiled(21) == 42

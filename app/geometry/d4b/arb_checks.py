@@ -24,7 +24,6 @@ import weakref
 from typing import Any
 
 import flint
-import numba
 import numpy as np
 
 from app.geometry import arb_loops
@@ -35,19 +34,19 @@ _UNARY = (None, [_POINTER, _POINTER, _WORD])
 _COPY = (None, [_POINTER, _POINTER])
 _TEST = (ctypes.c_int, [_POINTER, _POINTER])
 
-_add = arb_loops.bind("arb_add", *_BINARY)
-_sub = arb_loops.bind("arb_sub", *_BINARY)
-_mul = arb_loops.bind("arb_mul", *_BINARY)
-_div = arb_loops.bind("arb_div", *_BINARY)
-_pow = arb_loops.bind("arb_pow", *_BINARY)
-_max = arb_loops.bind("arb_max", *_BINARY)
-_atan2 = arb_loops.bind("arb_atan2", *_BINARY)
-_sqrt = arb_loops.bind("arb_sqrt", *_UNARY)
-_arb_abs = arb_loops.bind("arb_abs", *_COPY)
-_set_round = arb_loops.bind("arb_set_round", *_UNARY)
-_set = arb_loops.bind("arb_set", *_COPY)
-_nonnegative = arb_loops.bind("arb_nonnegative_part", *_COPY)
-_gt = arb_loops.bind("arb_gt", *_TEST)
+_add = arb_loops.extern("arb_add", *_BINARY)
+_sub = arb_loops.extern("arb_sub", *_BINARY)
+_mul = arb_loops.extern("arb_mul", *_BINARY)
+_div = arb_loops.extern("arb_div", *_BINARY)
+_pow = arb_loops.extern("arb_pow", *_BINARY)
+_max = arb_loops.extern("arb_max", *_BINARY)
+_atan2 = arb_loops.extern("arb_atan2", *_BINARY)
+_sqrt = arb_loops.extern("arb_sqrt", *_UNARY)
+_arb_abs = arb_loops.extern("arb_abs", *_COPY)
+_set_round = arb_loops.extern("arb_set_round", *_UNARY)
+_set = arb_loops.extern("arb_set", *_COPY)
+_nonnegative = arb_loops.extern("arb_nonnegative_part", *_COPY)
+_gt = arb_loops.extern("arb_gt", *_TEST)
 
 #: Whether the compiled residuals can be used (else the callers' numpy code runs).
 AVAILABLE = arb_loops.AVAILABLE and all(
@@ -70,6 +69,7 @@ AVAILABLE = arb_loops.AVAILABLE and all(
 )
 
 _B = arb_loops.ARB_BYTES
+_hypot: Any = arb_loops._hypot if AVAILABLE else None
 _ZERO = flint.arb(0)
 
 
@@ -92,13 +92,13 @@ def _address(ball: Any) -> int:
 
 if AVAILABLE:
 
-    @numba.njit(cache=False)
+    @arb_loops.loop
     def _abs(out: int, x: int, prec: int) -> None:
         """|x| as python-flint's ``abs`` makes it: rounded to the working precision."""
         _arb_abs(out, x)
         _set_round(out, out, prec)
 
-    @numba.njit(cache=False)
+    @arb_loops.loop
     def _relative(out: int, computed: int, expected: int, tiny: int, scale: int, prec: int) -> None:
         """``checks.relative_difference`` of one entry: |c − e| / (|e| if |e| > tiny else
         tiny)."""
@@ -107,7 +107,7 @@ if AVAILABLE:
         _abs(out, out, prec)
         _div(out, out, scale if _gt(scale, tiny) else tiny, prec)
 
-    @numba.njit(cache=False)
+    @arb_loops.loop
     def _recursion_13(
         y: Any, d: int, two_d: int, one: int, tiny: int, out: Any, prec: int, s: int
     ) -> None:
@@ -130,7 +130,7 @@ if AVAILABLE:
             _div(num, num, den, prec)
             _relative(out[k], y[k + 2], num, tiny, scale, prec)
 
-    @numba.njit(cache=False)
+    @arb_loops.loop
     def _two_step(
         y: Any,
         d: int,
@@ -213,7 +213,7 @@ if AVAILABLE:
             _div(num, num, t, prec)
             _relative(printed[k], target, num, tiny, scale, prec)
 
-    @numba.njit(cache=False)
+    @arb_loops.loop
     def _magnitude_into(out: int, a: Any, i: int, v: Any, j: int, prec: int, t: int) -> None:
         """``polygon.magnitude(a, v)`` of one pair: ((|a^x| + |a^y|) + |v^x|) + |v^y|."""
         _abs(out, a[2 * i], prec)
@@ -224,7 +224,7 @@ if AVAILABLE:
         _abs(t, v[2 * j + 1], prec)
         _add(out, out, t, prec)
 
-    @numba.njit(cache=False)
+    @arb_loops.loop
     def _right_angle(
         out: int, vertex: Any, i: int, a: Any, j: int, b: Any, m: int, prec: int, s: int
     ) -> None:
@@ -244,7 +244,7 @@ if AVAILABLE:
         _mul(ma, ma, mb, prec)
         _div(out, ux, ma, prec)
 
-    @numba.njit(cache=False)
+    @arb_loops.loop
     def _nikolaides(tractrix: Any, axis: Any, p: Any, out: Any, prec: int, s: int) -> None:
         """max(right angle at p_i, at p_{i+1}) (``arb_max``), as ``checks._nikolaides``."""
         at_p, at_next, scratch = s, s + _B, s + 2 * _B
@@ -258,7 +258,7 @@ if AVAILABLE:
     #: Column numbers in a ``Columns`` block (each ``stride`` balls long).
     LENGTHS, SIZES, AREAS, AREA_SIZES, SECOND, SECOND_SIZES = 0, 1, 2, 3, 4, 5
 
-    @numba.njit(cache=False)
+    @arb_loops.loop
     def _columns(p: Any, count: int, block: int, two: int, prec: int, s: int) -> None:
         """The columns of ``polygon`` for the ``count`` vertices at ``p`` into ``block``
         (column j, entry k at ball j·count + k), as ``edge_lengths`` (``arb_loops``' hypot),
@@ -273,12 +273,7 @@ if AVAILABLE:
             area_size = block + (AREA_SIZES * count + k) * _B
             _sub(ex, x1, x0, prec)
             _sub(ey, y1, y0, prec)
-            # hypot: sqrt(nonnegative part of ex·ex + ey·ey)
-            _mul(square, ex, ex, prec)
-            _mul(length, ey, ey, prec)
-            _add(square, square, length, prec)
-            _nonnegative(square, square)
-            _sqrt(length, square, prec)
+            _hypot(length, ex, ey, prec, square)
             # ((|x0| + |y0|) + |x1|) + |y1|
             _abs(size, x0, prec)
             _abs(t, y0, prec)
@@ -316,11 +311,11 @@ if AVAILABLE:
             _abs(u, y0, prec)
             _add(second_size, second_size, u, prec)
 
-    @numba.njit(cache=False)
+    @arb_loops.loop
     def _entry(block: int, count: int, column: int, k: int) -> int:
         return block + (column * count + k) * _B
 
-    @numba.njit(cache=False)
+    @arb_loops.loop
     def _sides(
         block: int, count: int, kind: int, k: int, rhs: int, rhs_size: int, prec: int
     ) -> tuple[int, int, int, int]:
@@ -343,7 +338,7 @@ if AVAILABLE:
             rhs_size,
         )
 
-    @numba.njit(cache=False)
+    @arb_loops.loop
     def _fit_sums(
         block: int, count: int, kind: int, m: int, tiny: int, vv: int, uv: int, prec: int, s: int
     ) -> None:
@@ -367,7 +362,7 @@ if AVAILABLE:
             else:
                 _add(uv, uv, t, prec)
 
-    @numba.njit(cache=False)
+    @arb_loops.loop
     def _misfit(
         block: int,
         count: int,
@@ -390,7 +385,7 @@ if AVAILABLE:
             _abs(t, t, prec)
             _div(out[k], t, scale if _gt(scale, tiny) else tiny, prec)
 
-    @numba.njit(cache=False)
+    @arb_loops.loop
     def _ratio_spread(
         block: int, count: int, m: int, size: int, tiny: int, out: Any, prec: int, s: int
     ) -> None:
@@ -416,7 +411,7 @@ if AVAILABLE:
 
     # --- the rotation angle, Darboux's transform ---
 
-    @numba.njit(cache=False)
+    @arb_loops.loop
     def _signed_angle(
         out: int, ax: int, ay: int, bx: int, by: int, prec: int, cross: int, t: int
     ) -> None:
@@ -429,7 +424,7 @@ if AVAILABLE:
         _add(out, out, t, prec)
         _atan2(out, cross, out, prec)
 
-    @numba.njit(cache=False)
+    @arb_loops.loop
     def _rotation_angle(
         p: Any, axis: Any, d: int, two: int, out: Any, printed: Any, prec: int, s: int
     ) -> None:
@@ -456,19 +451,15 @@ if AVAILABLE:
             _sub(angle, angle, formula, prec)
             _abs(printed[k], angle, prec)
 
-    @numba.njit(cache=False)
+    @arb_loops.loop
     def _distance(out: int, a: Any, i: int, b: Any, j: int, prec: int, dx: int, dy: int) -> None:
-        """``checks.point_distance`` of one pair: hypot(a^x − b^x, a^y − b^y) (as
-        ``arb_loops``' hypot)."""
+        """``checks.point_distance`` of one pair: hypot(a^x − b^x, a^y − b^y) (``arb_loops``'
+        hypot, its square in ``dx``)."""
         _sub(dx, a[2 * i], b[2 * j], prec)
         _sub(dy, a[2 * i + 1], b[2 * j + 1], prec)
-        _mul(out, dx, dx, prec)
-        _mul(dy, dy, dy, prec)
-        _add(dx, out, dy, prec)
-        _nonnegative(dx, dx)
-        _sqrt(out, dx, prec)
+        _hypot(out, dx, dy, prec, dx)
 
-    @numba.njit(cache=False)
+    @arb_loops.loop
     def _add_size(total: int, a: Any, i: int, prec: int, t: int) -> None:
         """total + |a_i^x| + |a_i^y| (``polygon.magnitude``'s step)."""
         _abs(t, a[2 * i], prec)
@@ -476,7 +467,7 @@ if AVAILABLE:
         _abs(t, a[2 * i + 1], prec)
         _add(total, total, t, prec)
 
-    @numba.njit(cache=False)
+    @arb_loops.loop
     def _darboux(
         x: Any, e: Any, expected: int, edges: Any, distances: Any, prec: int, s: int
     ) -> None:
@@ -505,7 +496,7 @@ if AVAILABLE:
             _add_size(size, e, k, prec, t)
             _div(distances[k], ex, size, prec)
 
-    @numba.njit(cache=False)
+    @arb_loops.loop
     def _relative_distances(
         a: Any, b: Any, scales: Any, tiny: int, out: Any, prec: int, s: int
     ) -> None:
@@ -517,7 +508,7 @@ if AVAILABLE:
             scale = scales[k]
             _div(out[k], t, scale if _gt(scale, tiny) else tiny, prec)
 
-    @numba.njit(cache=False)
+    @arb_loops.loop
     def _hypothesis(
         y: Any, d2: int, zero: int, violation: Any, ratios: Any, prec: int, s: int
     ) -> None:
