@@ -13,8 +13,9 @@ bounds per index and their verdicts do not move.
 
 ``AVAILABLE`` false (another python-flint build, a function missing) leaves the callers on their
 numpy code; the callers also check that every entry is a ball before an address is read.
-Compiled at import, as ``arb_loops``: 3.9 s of CPU once per process at load 9 (arb_loops
-1.2 s), which forked children inherit.
+The loops call libflint by symbol name (``arb_loops.extern``) and are cached on disk by numba
+(``arb_loops.loop``): a process loads them at import (≈ 0.1 s) instead of compiling them (≈ 4 s
+of CPU); ``python -m app.geometry.warm`` fills the cache.
 """
 
 from __future__ import annotations
@@ -41,11 +42,9 @@ _div = arb_loops.extern("arb_div", *_BINARY)
 _pow = arb_loops.extern("arb_pow", *_BINARY)
 _max = arb_loops.extern("arb_max", *_BINARY)
 _atan2 = arb_loops.extern("arb_atan2", *_BINARY)
-_sqrt = arb_loops.extern("arb_sqrt", *_UNARY)
 _arb_abs = arb_loops.extern("arb_abs", *_COPY)
 _set_round = arb_loops.extern("arb_set_round", *_UNARY)
 _set = arb_loops.extern("arb_set", *_COPY)
-_nonnegative = arb_loops.extern("arb_nonnegative_part", *_COPY)
 _gt = arb_loops.extern("arb_gt", *_TEST)
 
 #: Whether the compiled residuals can be used (else the callers' numpy code runs).
@@ -59,11 +58,9 @@ AVAILABLE = arb_loops.AVAILABLE and all(
         _pow,
         _max,
         _atan2,
-        _sqrt,
         _arb_abs,
         _set_round,
         _set,
-        _nonnegative,
         _gt,
     )
 )
