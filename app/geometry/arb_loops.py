@@ -151,7 +151,9 @@ _NUMBA_TYPES: dict[Any, Any] = {
     None: numba.types.void,
     ctypes.c_void_p: numba.types.int64,
     ctypes.c_long: numba.types.int64,
+    ctypes.c_ulong: numba.types.uint64,
     ctypes.c_int: numba.types.int32,
+    ctypes.c_uint: numba.types.uint32,
     ctypes.c_double: numba.types.float64,
 }
 
@@ -162,7 +164,8 @@ def extern(name: str, result: Any, arguments: list[Any]) -> Any:
     helper for its C functions) and resolved when a loop is compiled or loaded from the cache.
     A numba ``ExternalFunction`` typed as the ctypes signature (pointers and ``long`` as 64-bit
     integers, ``int`` as 32-bit: the same registers in the C calling convention); None where
-    ``bind`` gives None or a type has no such match (the callers keep their Python code)."""
+    ``bind`` gives None or a type has no match here (add it to ``_NUMBA_TYPES``: the callers
+    otherwise keep their Python code)."""
     function = bind(name, result, arguments)
     if function is None or not {result, *arguments} <= _NUMBA_TYPES.keys():
         return None
