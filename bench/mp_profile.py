@@ -17,11 +17,18 @@ python-flint 0.9 has no elementwise vector type), plus the square roots and tran
 functions at their own cost, plus the time the compiled loops took (their libflint calls, no
 Python call each). No rewrite of the arithmetic below these definitions of the checks gets
 under it; only fewer operations do.
+
+Then the served computation itself (``balls.serve`` as ``bench/mp.py`` runs it, uncounted): how
+many times it computed (precision raises), the construction with every check, the rest of
+``compute``, the certificate's radii and ``serve``'s own share, their sum against the total of
+the parts; and apart, the decimal strings a response makes of every returned coordinate
+(``responses.coordinates``), which ``bench/mp.py``'s served figure does not include.
 """
 
 from __future__ import annotations
 
 import collections
+import math
 import os
 import statistics
 import sys
@@ -35,6 +42,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
+from app import responses
 from app.geometry import arb_loops, arb_program, balls
 from app.geometry.ball_arithmetic import Ball
 from app.geometry.curve import EVERYTHING
@@ -46,7 +54,7 @@ from app.geometry.d4b import (
     discretization as d4b,
 )
 from app.geometry.d4b.closed_forms import tilt_shift
-from bench.mp import HI, LO, D, H, plain_script
+from bench.mp import HI, LO, D, H, on_balls, plain_script
 
 DIGITS = int(os.environ.get("MP_PROFILE_DIGITS", "50"))  # 500: the same at 500 digits
 COUNTS: collections.Counter[str] = collections.Counter()
@@ -236,6 +244,59 @@ def _parts(ar: Ball) -> list[tuple[str, float, dict[str, int]]]:
     return rows
 
 
+def _served() -> list[tuple[str, float]]:
+    """The served computation of ``bench/mp.py`` (``balls.serve``) stage by stage, median of 3
+    (CPU ms): everything from the parameters to the returned ``Curve``, and apart the decimal
+    strings a response makes of its coordinates (``responses.coordinates``: not in
+    ``bench/mp.py``, whose served figure ends at the ``Curve``)."""
+    spent: collections.defaultdict[str, float] = collections.defaultdict(float)
+    wrapped = {
+        "evaluate": (d4b, d4b.evaluate),  # construction (first read of p) and every check
+        "compute": (d4b, d4b.compute),
+        "radii": (balls, balls._radii),
+    }
+
+    def timer(name: str, function: Any) -> Any:
+        def timed(*arguments: Any, **keywords: Any) -> Any:
+            spent[name + " calls"] += 1
+            start = time.process_time()
+            try:
+                return function(*arguments, **keywords)
+            finally:
+                spent[name] += time.process_time() - start
+
+        return timed
+
+    for name, (module, function) in wrapped.items():
+        setattr(module, function.__name__, timer(name, function))
+    runs: list[dict[str, float]] = []
+    try:
+        for _ in range(3):
+            spent.clear()
+            start = time.process_time()
+            curve = on_balls(DIGITS)
+            spent["served"] = time.process_time() - start
+            start = time.process_time()
+            for polyline in (curve.polygon, *curve.companions.values()):
+                responses.coordinates(curve.arithmetic, polyline.vertices)
+            spent["strings"] = time.process_time() - start
+            runs.append(dict(spent))
+    finally:
+        for module, function in wrapped.values():
+            setattr(module, function.__name__, function)
+    at = {key: statistics.median(run[key] for run in runs) for key in runs[0]}
+    values = 2 * sum(len(p.vertices) for p in (curve.polygon, *curve.companions.values()))
+    return [
+        ("served: balls.serve (bench/mp.py)", at["served"]),
+        (f"  computations (1 + raises): {at['compute calls']:.0f}", math.nan),
+        ("  construction, every check (evaluate)", at["evaluate"]),
+        ("  compute's rest (tolerances, Curve)", at["compute"] - at["evaluate"]),
+        ("  certificate radii (_radii)", at["radii"]),
+        ("  serve's own (precision, certificate)", at["served"] - at["compute"] - at["radii"]),
+        (f"response's decimal strings ({values})", at["strings"]),
+    ]
+
+
 def main() -> None:
     arguments = {"h": H, "d": D, "beta0": None, "i_min": LO, "i_max": HI}
     extra = certified.extra_digits(arguments)
@@ -244,6 +305,7 @@ def main() -> None:
     # times without the counting (median of 3), then the counts
     runs = [_parts(Ball(DIGITS, extra, recursions_only=True)) for _ in range(3)]
     seconds_of = [statistics.median(run[k][1] for run in runs) for k in range(len(runs[0]))]
+    served = _served()  # before the counting instruments anything
     _instrument()
     ar = Ball(DIGITS, extra, recursions_only=True)
     rows = [
@@ -293,6 +355,13 @@ def main() -> None:
     print(
         f"  {'total':<42} {total_time * 1e3:7.1f} {total_ops:11.0f}   ({total_time / script:.1f}× "
         "the script)"
+    )
+    for label, seconds in served:
+        shown = "" if math.isnan(seconds) else f"{seconds * 1e3:7.1f}"
+        print(f"  {label:<42} {shown}")
+    print(
+        f"  {'served − total of the parts':<42} {(served[0][1] - total_time) * 1e3:7.1f}   (the "
+        "decimal strings in neither: bench/mp.py's served figure ends at the Curve)"
     )
     print(
         f"  floor of the checks and the certificate: {total_ops:.0f} operations a vertex, each at "

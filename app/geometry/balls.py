@@ -43,7 +43,7 @@ import flint
 import numpy as np
 
 from app.geometry import arb_loops
-from app.geometry.ball_arithmetic import Ball
+from app.geometry.ball_arithmetic import Ball, all_balls
 from app.geometry.curve import Curve
 from app.geometry.d4b import certified as d4b_certified
 from app.geometry.errors import NotRepresentableError
@@ -204,7 +204,7 @@ def _radii(curve: Curve, digits: int) -> tuple[str, str, bool]:
         vertices = polyline.vertices
         if not len(vertices):
             continue
-        if arb_loops.AVAILABLE and arb_loops.all_balls(vertices):
+        if arb_loops.AVAILABLE and all_balls(vertices):
             # the winning points found in a compiled loop, their values computed as below
             at_largest, at_relative, reaches_zero, unbounded = arb_loops.largest_radii(
                 vertices[:, 0], vertices[:, 1]
