@@ -21,6 +21,7 @@ from app.geometry import arb_loops
 from app.geometry.ball_arithmetic import (
     BOUND_DIGITS,
     RESIDUAL_BITS,
+    all_balls,
     decimal_ball,
     decimal_bound,
     decimal_tolerance,
@@ -402,8 +403,8 @@ def _compiled_balls(ar: Arithmetic, computed: Array, expected: Array) -> bool:
         ar.certified
         and arb_loops.AVAILABLE
         and len(computed) == len(expected) > 0
-        and arb_loops.all_balls(computed)
-        and arb_loops.all_balls(expected)
+        and all_balls(computed)
+        and all_balls(expected)
     )
 
 

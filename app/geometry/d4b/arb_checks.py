@@ -28,6 +28,7 @@ import flint
 import numpy as np
 
 from app.geometry import arb_loops
+from app.geometry.ball_arithmetic import all_balls
 
 _POINTER, _WORD = ctypes.c_void_p, ctypes.c_long
 _BINARY = (None, [_POINTER, _POINTER, _POINTER, _WORD])
@@ -79,7 +80,7 @@ def fresh(count: int) -> np.ndarray[Any, Any]:
 def balls(*arrays: Any) -> bool:
     """Whether the compiled loops apply: available, and every entry of every array a ball."""
     return AVAILABLE and all(
-        isinstance(a, np.ndarray) and a.dtype == object and arb_loops.all_balls(a) for a in arrays
+        isinstance(a, np.ndarray) and a.dtype == object and all_balls(a) for a in arrays
     )
 
 
