@@ -191,6 +191,21 @@ def test_a_child_killed_while_idle_is_replaced_and_the_request_is_answered(
             end.close()
 
 
+def test_children_and_their_replacements_run_in_the_idle_scheduling_class(
+    pool_client: tuple[TestClient, ComputePool],
+) -> None:
+    # the worker's threads keep the normal class: a request's thread that wakes takes the CPU
+    # from a computing child at once
+    client, pool = pool_client
+    (first,) = children(pool)
+    assert os.sched_getscheduler(first) == os.SCHED_IDLE
+    kill(first)
+    assert client.get(CURVE, params=HEAVY).status_code == 200 and pool.jobs == 1
+    (second,) = children(pool)
+    assert second != first and os.sched_getscheduler(second) == os.SCHED_IDLE
+    assert os.sched_getscheduler(0) == os.SCHED_OTHER
+
+
 def test_a_cheap_request_stays_in_the_worker(
     pool_client: tuple[TestClient, ComputePool],
 ) -> None:
