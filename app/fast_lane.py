@@ -301,11 +301,12 @@ class FastLane:
         if found is None:
             if self.cache.max_bytes and raw in self.flights:
                 return None  # an identical request is computing: the chain waits for it
-            found = self._compute(scope, route, values)
-            if found is None:
+            computed = self._compute(scope, route, values)
+            if computed is None:
                 return None
-            if isinstance(found, Refusal):
-                return 503, found.headers, found.body
+            if isinstance(computed, Refusal):
+                return 503, computed.headers, computed.body
+            found = computed
         key, entry = found
         negotiable = route.statement is None
         if accept_encoding is None:  # no gzip: the headers of the last such reply, refilled
