@@ -29,9 +29,9 @@ of its parameters (the statement's defaults under the query, the curve's model, 
 
 Everything else, and every request whose parsing, computation or admission raises, goes on to
 the full chain, which answers it as before (an error is computed again there: errors are
-rare, and so their answers stay those of the exception handlers). One exception: a heavier
-(or mp) curve GET that the worker would refuse now gets the chain's 503 from here
-(``FastLane._refusal``), without the hop to a request thread that queued a burst's refusals. The response's headers are
+rare, and so their answers stay those of the exception handlers); but a heavier (or mp) curve
+GET that the worker would refuse now gets the chain's 503 from here (``FastLane._refusal``),
+without the hop to a request thread that queued a burst's refusals. The response's headers are
 those the chain adds to a computed 200 (``Vary`` from negotiation and CORS, the security
 headers; gzip is negotiated by ``reply`` exactly as the chain's ``Compress`` would leave it):
 tests/api/test_fast_lane.py compares status, headers and body with the full chain's. A reply
