@@ -141,8 +141,9 @@ class Admission:
         """Seconds after which the admitted work will likely have finished."""
         return min(math.ceil(self.seconds) + 1, math.ceil(self.settings.time_limit))
 
-    def charge(self, ticket: Ticket, seconds: float, nbytes: int) -> None:
-        """Admit ``seconds`` and ``nbytes`` more for ``ticket``, or raise ``OverloadedError``."""
+    def charge(self, ticket: Ticket, seconds: float, nbytes: int, dry: bool = False) -> None:
+        """Admit ``seconds`` and ``nbytes`` more for ``ticket``, or raise ``OverloadedError``
+        (``dry``: only raise, admit nothing)."""
         settings = self.settings
         with self._lock:
             if self.draining:
@@ -167,6 +168,8 @@ class Admission:
                     f"the worker is busy (the work it has admitted is at its {what} budget)",
                     self.retry_after(),
                 )
+            if dry:
+                return
             if first:
                 self.admitted += 1
                 self.generation += 1
@@ -219,12 +222,30 @@ _ADMISSION: contextvars.ContextVar[Admission | None] = contextvars.ContextVar(
 )
 
 
+_DRY_RUN: contextvars.ContextVar[bool] = contextvars.ContextVar("dry_run", default=False)
+
+
+@contextmanager
+def dry_run() -> Iterator[None]:
+    """Within: ``charge`` refuses as ever (``OverloadedError``, counted) but admits nothing, so
+    that the fast lane (app/fast_lane.py) can answer a refusal on the event loop and leave an
+    admitted request to the chain, which charges it."""
+    token = _DRY_RUN.set(True)
+    try:
+        yield
+    finally:
+        _DRY_RUN.reset(token)
+
+
 def charge(seconds: float, nbytes: int, parameter: str = "request") -> None:
     """Charge the current request (if any: direct calls outside a request are not admitted);
     ``parameter`` drives the cost (named if the computation is stopped)."""
     ticket = CURRENT.get()
     admission = _ADMISSION.get()
     if ticket is None or admission is None:
+        return
+    if _DRY_RUN.get():
+        admission.charge(ticket, seconds, nbytes, dry=True)
         return
     admission.charge(ticket, seconds, nbytes)
     ticket.parameter = parameter

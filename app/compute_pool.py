@@ -9,7 +9,8 @@ where the round trip would cost more than it saves.
 
 - The children are forked when the worker starts (``start``: after the app is imported, so they
   share its modules and loaded kernels page for page, before any other thread exists), run
-  at a lower priority (``NICENESS``: the serving processes win the CPU) and under an
+  under Linux's idle scheduling class (``lower_priority``: a serving thread that wakes takes the
+  CPU from a child at once, so refusals and /health do not wait behind heavy work) and under an
   address-space limit: what the child maps when it starts plus ``DCOSH_ADMISSION_BYTES`` (no
   admitted request may estimate more) plus ``HEADROOM``.
 - A child computes *and renders*: it returns the response's status, media type, headers and
@@ -66,8 +67,31 @@ from app import admission
 from app.server import end_with_parent
 from app.settings import Settings
 
-#: Niceness of the children (the serving processes keep 0).
-NICENESS = 5
+#: Niceness of the children where the idle scheduling class is not available (the serving
+#: processes keep 0).
+NICENESS = 19
+
+
+def lower_priority() -> str:
+    """Put this process (a child, single-threaded) under ``SCHED_IDLE``, else at ``NICENESS``;
+    returns which one it got.
+
+    Under ``SCHED_IDLE`` a thread of normal priority that wakes preempts the child at once
+    (the kernel's wake-up path checks the class first), whereas a child at niceness 5 kept its
+    slice: the worker's event loop, woken by each request of a burst, waited behind the
+    children for a few milliseconds per wake-up, and the last refusals of a burst came after
+    100 ms (docs/reliability.md). The children still get every cycle the serving processes do
+    not use; on a host whose other processes are busy they share what the service's group of
+    processes gets (autogroups, containers' cgroups), so admitted work slows only when the
+    service's own workers are busy, which the admission's slowdown learns."""
+    try:
+        os.sched_setscheduler(0, os.SCHED_IDLE, os.sched_param(0))
+        return "idle"
+    except (AttributeError, OSError):
+        with contextlib.suppress(OSError):
+            os.nice(NICENESS)
+        return f"nice {NICENESS}"
+
 
 #: Address space a child may map beyond its size at start and DCOSH_ADMISSION_BYTES (numpy's
 #: temporaries beyond the estimate, mpmath caches, a kernel numba has to compile).
@@ -161,8 +185,7 @@ def _child(conn: Connection, memory_limit: int) -> None:
     _close_sockets(keep=conn.fileno())
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C reaches the worker, which ends us
-    with contextlib.suppress(OSError):
-        os.nice(NICENESS)
+    lower_priority()
     limit = _mapped_bytes() + memory_limit + HEADROOM
     with contextlib.suppress(ValueError, OSError):
         resource.setrlimit(resource.RLIMIT_AS, (limit, limit))

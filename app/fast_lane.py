@@ -29,7 +29,9 @@ of its parameters (the statement's defaults under the query, the curve's model, 
 
 Everything else, and every request whose parsing, computation or admission raises, goes on to
 the full chain, which answers it as before (an error is computed again there: errors are
-rare, and so their answers stay those of the exception handlers). The response's headers are
+rare, and so their answers stay those of the exception handlers); but a heavier (or mp) curve
+GET that the worker would refuse now gets the chain's 503 from here (``FastLane._refusal``),
+without the hop to a request thread that queued a burst's refusals. The response's headers are
 those the chain adds to a computed 200 (``Vary`` from negotiation and CORS, the security
 headers; gzip is negotiated by ``reply`` exactly as the chain's ``Compress`` would leave it):
 tests/api/test_fast_lane.py compares status, headers and body with the full chain's. A reply
@@ -48,12 +50,21 @@ from __future__ import annotations
 import functools
 import types
 from collections.abc import Container, Sequence
+from dataclasses import dataclass
 from typing import Annotated, Any, Union, get_args, get_origin
 from urllib.parse import parse_qsl
 
 from starlette.types import ASGIApp, Receive, Scope, Send
 
-from app.admission import Admission, current
+from app.admission import (
+    PROBLEM_MEDIA_TYPE,
+    Admission,
+    OverloadedError,
+    current,
+    dry_run,
+    overloaded_headers,
+    problem_bytes,
+)
 from app.limits import curve_cost
 from app.negotiation import choose, endpoint_of, with_accept
 from app.registry import DISCRETIZATIONS, STATEMENTS, Discretization, StatementEntry
@@ -67,7 +78,7 @@ from app.response_cache import (
 )
 from app.responses import canonical_key, curve_document, encode_json
 from app.routers.caching import JSONBytesResponse
-from app.routers.common import compute, curve_response
+from app.routers.common import admit_curve, compute, curve_response
 from app.routers.theorems import theorem_response
 from app.security import with_defaults
 from app.services import theorems
@@ -202,6 +213,14 @@ def split_query(query: str) -> list[tuple[str, str]]:
     return pairs
 
 
+@dataclass(frozen=True)
+class Refusal:
+    """A 503 with Retry-After answered by the lane (``FastLane._refusal``)."""
+
+    headers: list[tuple[bytes, bytes]]
+    body: bytes
+
+
 class FastLane:
     """ASGI middleware: small computed curve GETs (see the module doc)."""
 
@@ -284,9 +303,12 @@ class FastLane:
         if found is None:
             if self.cache.max_bytes and raw in self.flights:
                 return None  # an identical request is computing: the chain waits for it
-            found = self._compute(scope, route, values)
-            if found is None:
+            computed = self._compute(scope, route, values)
+            if computed is None:
                 return None
+            if isinstance(computed, Refusal):
+                return 503, computed.headers, computed.body
+            found = computed
         key, entry = found
         negotiable = route.statement is None
         if accept_encoding is None:  # no gzip: the headers of the last such reply, refilled
@@ -315,9 +337,37 @@ class FastLane:
         except ValueError:
             return False
 
+    def _refusal(self, scope: Scope, entry: Discretization, query: Any) -> Refusal | None:
+        """The chain's 503 for a request it would refuse now, answered here (None: the chain
+        computes it, charged there).
+
+        A burst of heavy requests against a worker that has admitted its share: each refusal
+        took the chain's way, a hop to a request thread and back, where the thread hops of the
+        burst's other requests and the GIL queue behind them, and the last refusals of a burst
+        came after 100 ms (docs/reliability.md). The same limits and charge as the route
+        (``admit_curve``), as a dry run (``admission.dry_run``): an error of the limits goes on
+        to the chain, which answers it, as does a request the worker admits (charged there)
+        and one whose answer the cache holds."""
+        if canonical_key(scope["path"], query.model_dump()) in self.cache:
+            return None
+        try:
+            with dry_run():
+                admit_curve(entry, query, self.settings)
+        except OverloadedError as exc:
+            detail = f"Not admitted now: {exc.reason}; retry later."
+            body = problem_bytes(503, "overloaded", "Overloaded", detail)
+            headers = [
+                (b"content-length", str(len(body)).encode()),
+                (b"content-type", PROBLEM_MEDIA_TYPE.encode()),
+                *overloaded_headers(exc.retry_after),
+                (b"vary", b"Accept, Origin"),
+            ]
+            return Refusal(with_defaults(headers), body)
+        return None
+
     def _compute(
         self, scope: Scope, route: _Route, values: dict[str, Any]
-    ) -> tuple[str, Entry] | None:
+    ) -> tuple[str, Entry] | Refusal | None:
         """Parse, price, compute and keep a small request; None for the chain."""
         entry = route.entry
         statement = route.statement
@@ -353,7 +403,7 @@ class FastLane:
         try:
             query = entry.query.model_validate(values)
             if query.precision != "float64":
-                return None
+                return self._refusal(scope, entry, query) if statement is None else None
             arguments = query.core_arguments()
             i_min, i_max = arguments["i_min"], arguments["i_max"]
             vertices = max(0, i_max - i_min + 1)
@@ -362,7 +412,7 @@ class FastLane:
                 steps = max(abs(i_min), abs(i_max), vertices) + 1
             seconds, _ = curve_cost(vertices, steps, "float64", query.digits, entry.info.id)
             if seconds > settings.fast_lane_seconds or steps > MAX_STEPS:
-                return None
+                return self._refusal(scope, entry, query) if statement is None else None
             key = canonical_key(scope["path"], {**fixed, **query.model_dump()})
             kept = self.cache.get(key)
             if kept is None:

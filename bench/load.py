@@ -290,6 +290,8 @@ while not select.select([sys.stdin], [], [], 0)[0]:
         out.append((start, 10.0))
         sock.close()
         sock = connect()
+    if len(out) == 1:
+        print("ready", flush=True)  # started: the burst may be sent
     time.sleep(0.05)
 print(json.dumps(out))
 """
@@ -305,10 +307,14 @@ class HealthProbe:
             stdout=subprocess.PIPE,
             text=True,
         )
+        # its interpreter's start (≈ 35 ms of CPU) is over before the burst is sent: it
+        # overlapped the burst's first refusals, on the same two cores, before
+        assert self.process.stdout is not None
+        self.process.stdout.readline()
 
     def stop(self) -> list[tuple[float, float]]:
         out, _ = self.process.communicate("", timeout=60)
-        return [(t, latency) for t, latency in json.loads(out)]
+        return [(t, latency) for t, latency in json.loads(out.splitlines()[-1])]
 
 
 #: What httpx's client sends, so that the bursts' answers are compressed as before.

@@ -219,3 +219,48 @@ def test_the_workers_keep_their_request_threads_between_bursts(
     assert backend.WorkerThread.MAX_IDLE_TIME == server.REQUEST_THREAD_IDLE_SECONDS == 3600
     pruning = inspect.getsource(backend.AsyncIOBackend.run_sync_in_worker_thread)
     assert "WorkerThread.MAX_IDLE_TIME" in pruning
+
+
+#: Heavy GETs a worker at its budget refuses: float64 beyond the lane's estimate, and mp.
+REFUSED_HEAVY = [
+    "/discretizations/d4b?h=1.1&d=0.0001&method=closed-form&i_min=-500000&i_max=500000",
+    "/discretizations/d1?c=0.0001&delta=0.001&i_min=-500000&i_max=500000&format=npy",
+    "/discretizations/d4b?h=1.1&precision=mp&digits=50&i_min=-1249&i_max=1249",
+]
+
+
+@pytest.mark.parametrize("url", REFUSED_HEAVY)
+def test_a_heavy_get_the_worker_refuses_is_the_chains_503_from_the_fast_lane(url: str) -> None:
+    from tests.api.test_fast_lane import lane_of
+
+    answers = []
+    for lane_seconds in (0.002, 0.0):  # the lane, then the chain alone
+        app = create_app(Settings(compute_processes=0, fast_lane_seconds=lane_seconds))
+        state: Admission = app.state.admission
+        state.bytes, state.seconds, state.admitted = 1600 * 2**20, 11.9, 1  # at its budget
+        client = TestClient(app)
+        response = client.get(url, headers={"Accept-Encoding": "gzip, deflate"})
+        lane = lane_of(app)
+        answers.append((response.status_code, response.headers.raw, response.content))
+        assert (state.refused, state.admitted, state.seconds) == (1, 1, 11.9)
+        assert (lane.served if lane is not None else 0) == (1 if lane_seconds else 0)
+    assert answers[0] == answers[1]
+    assert answers[0][0] == 503 and b"retry-after" in dict(answers[0][1])
+
+
+def test_a_heavy_get_the_worker_admits_is_charged_once_and_computed_by_the_chain() -> None:
+    from tests.api.test_fast_lane import lane_of
+
+    app = create_app(Settings(compute_processes=0))
+    state: Admission = app.state.admission
+    client = TestClient(app)
+    url = "/discretizations/d4b?d=0.001&i_min=-3000&i_max=3000"  # above the lane's estimate
+    response = client.get(url)
+    assert response.status_code == 200 and len(response.json()["vertices"]) == 6001
+    lane = lane_of(app)
+    assert lane is not None and lane.served == 0
+    assert (state.admitted, state.seconds, state.bytes, state.refused) == (0, 0.0, 0, 0)
+    # a cached answer is never refused, busy or not
+    state.bytes, state.seconds, state.admitted = 1600 * 2**20, 11.9, 1
+    again = client.get("/discretizations/d4b?i_max=3000&i_min=-3000&d=0.001")
+    assert again.status_code == 200 and again.content == response.content

@@ -191,6 +191,32 @@ def test_a_child_killed_while_idle_is_replaced_and_the_request_is_answered(
             end.close()
 
 
+def scheduler(pid: int) -> int:
+    """The scheduling policy of ``pid`` once it has left the one its parent forked it with
+    (the child sets its own first thing), or that one after 10 s."""
+    for _ in range(200):
+        policy = os.sched_getscheduler(pid)
+        if policy != os.SCHED_OTHER:
+            return policy
+        time.sleep(0.05)
+    return os.sched_getscheduler(pid)
+
+
+def test_children_and_their_replacements_run_in_the_idle_scheduling_class(
+    pool_client: tuple[TestClient, ComputePool],
+) -> None:
+    # the worker's threads keep the normal class: a request's thread that wakes takes the CPU
+    # from a computing child at once
+    client, pool = pool_client
+    (first,) = children(pool)
+    assert scheduler(first) == os.SCHED_IDLE
+    kill(first)
+    assert client.get(CURVE, params=HEAVY).status_code == 200 and pool.jobs == 1
+    (second,) = children(pool)
+    assert second != first and scheduler(second) == os.SCHED_IDLE
+    assert os.sched_getscheduler(0) == os.SCHED_OTHER
+
+
 def test_a_cheap_request_stays_in_the_worker(
     pool_client: tuple[TestClient, ComputePool],
 ) -> None:
