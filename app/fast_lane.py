@@ -36,9 +36,12 @@ those the chain adds to a computed 200 (``Vary`` from negotiation and CORS, the 
 headers; gzip is negotiated by ``reply`` exactly as the chain's ``Compress`` would leave it):
 tests/api/test_fast_lane.py compares status, headers and body with the full chain's. A reply
 without gzip refills the headers of the last reply of its kind (``_Template``: only the ETag and
-the Content-Length differ), a JSON curve answer is kept straight from its encoded bytes
-(``json_entry``) and a query with nothing to unquote is split without ``parse_qsl``
-(``split_query``): each the same bytes, fewer steps on a path that runs mostly cold.
+the Content-Length differ), a JSON curve answer is sent straight from its encoded bytes and a
+query with nothing to unquote is split without ``parse_qsl`` (``split_query``): each the same
+bytes, fewer steps on a path that runs mostly cold. A computed answer is kept (its body
+compacted as ``entry_of`` keeps one, the cache's entry and the raw request's alias) and its
+curve let go only once the answer is sent (``FastLane._keep``): that work overlaps the
+client's reading instead of delaying it.
 
 A request computed here holds the event loop while it runs, so only requests estimated at a
 few milliseconds take the lane; the watchdog (which stops computations long past their
@@ -150,24 +153,27 @@ def _vary(value: bytes, negotiable: bool) -> bytes:
     return ((with_accept(present) if negotiable else present) + ", Origin").encode("latin-1")
 
 
-#: The kept form of a JSON answer with an empty body: its headers and media type are those of
-#: every JSON curve answer (``json_entry``).
-_JSON_ENTRY = entry_of(JSONBytesResponse(b""))
+def _json_entry() -> Entry:
+    """The kept form of a JSON answer with an empty body: its status, headers and media type
+    are those of every JSON curve answer (what ``entry_of(curve_response(curve, "json"))``
+    keeps)."""
+    entry = entry_of(JSONBytesResponse(b""))
+    if entry is None:  # a 200 with a bytes body always has one
+        raise RuntimeError("no entry for an empty JSON answer")
+    return entry
 
 
-def json_entry(body: bytes) -> Entry:
-    """What ``entry_of(curve_response(curve, "json"))`` keeps, given the encoded document,
-    without building the response (the same status, headers, media type and body bytes)."""
-    assert _JSON_ENTRY is not None
-    return entry_of_body(body, _JSON_ENTRY)
+_JSON_ENTRY = _json_entry()
 
 
-def entry_of_body(body: bytes, template: Entry) -> Entry:
-    """``template``'s status, headers and media type with ``body``, kept as ``entry_of`` keeps
-    a body (a short one copied out of the encoder's buffer)."""
-    if len(body) < COMPACT_BELOW:
-        body = bytes(memoryview(body))
-    return Entry(template.status, template.headers, body, template.media_type)
+class _Computed:
+    """An answer the lane found kept (``curve`` None) or computed now; a computed one is kept
+    once it is sent (``FastLane._keep``), its body compacted then if ``compact``."""
+
+    __slots__ = ("compact", "curve", "entry", "key")
+
+    def __init__(self, key: str, entry: Entry, curve: Any, compact: bool = False) -> None:
+        self.key, self.entry, self.curve, self.compact = key, entry, curve, compact
 
 
 #: Most reply templates a lane keeps (one per kind of answer: status, kept headers and whether
@@ -258,14 +264,19 @@ class FastLane:
             await self.app(scope, receive, send)
             return
         self.served += 1
-        status, headers, body = answer
-        await send({"type": "http.response.start", "status": status, "headers": headers})
-        await send({"type": "http.response.body", "body": body})
+        status, headers, body, later = answer
+        try:
+            await send({"type": "http.response.start", "status": status, "headers": headers})
+            await send({"type": "http.response.body", "body": body})
+        finally:
+            if later is not None:  # the client has its answer: keep it now
+                self._keep(scope, later)
 
     def _answer(
         self, scope: Scope, route: _Route
-    ) -> tuple[int, list[tuple[bytes, bytes]], bytes] | None:
-        """Status, raw headers and body, or None for the full chain."""
+    ) -> tuple[int, list[tuple[bytes, bytes]], bytes, _Computed | None] | None:
+        """Status, raw headers, body and what to keep once they are sent (a computed answer),
+        or None for the full chain."""
         accept = accept_encoding = None
         for name, value in scope["headers"]:
             name = name.lower()
@@ -284,6 +295,7 @@ class FastLane:
         # a raw request answered before passed every check below (only Accept may send the
         # same raw request elsewhere)
         found = self.cache.lookup(raw) if accept is None else None
+        later = None
         if found is None:
             pairs = split_query(query_string.decode("latin-1"))
             values: dict[str, Any] = dict(pairs)
@@ -307,14 +319,16 @@ class FastLane:
             if computed is None:
                 return None
             if isinstance(computed, Refusal):
-                return 503, computed.headers, computed.body
-            found = computed
+                return 503, computed.headers, computed.body, None
+            if computed.curve is not None:
+                later = computed
+            found = computed.key, computed.entry
         key, entry = found
         negotiable = route.statement is None
         if accept_encoding is None:  # no gzip: the headers of the last such reply, refilled
             template = self.templates.get((entry.status, entry.headers, negotiable))
             if template is not None:
-                return entry.status, template.fill(key, entry.body), entry.body
+                return entry.status, template.fill(key, entry.body), entry.body, later
         answer = get_reply(self.cache, key, entry, self.settings, accept_encoding)
         headers = answer.raw_headers()
         for index, (name, value) in enumerate(headers):
@@ -325,7 +339,7 @@ class FastLane:
             made = _Template.of(headers)
             if made is not None:
                 self.templates[(entry.status, entry.headers, negotiable)] = made
-        return answer.status, headers, answer.body
+        return answer.status, headers, answer.body, later
 
     def _digits_allowed(self, values: dict[str, Any]) -> bool:
         """Whether ``digits`` (if given) passes the app-wide limit without a doubt."""
@@ -367,8 +381,10 @@ class FastLane:
 
     def _compute(
         self, scope: Scope, route: _Route, values: dict[str, Any]
-    ) -> tuple[str, Entry] | Refusal | None:
-        """Parse, price, compute and keep a small request; None for the chain."""
+    ) -> _Computed | Refusal | None:
+        """Parse, price and compute a small request (or find its kept answer), or refuse it
+        as the chain would (``_refusal``); None for the chain. A computed answer is kept by
+        ``_keep`` once it is sent."""
         entry = route.entry
         statement = route.statement
         fixed: dict[str, Any] = {}
@@ -415,21 +431,39 @@ class FastLane:
                 return self._refusal(scope, entry, query) if statement is None else None
             key = canonical_key(scope["path"], {**fixed, **query.model_dump()})
             kept = self.cache.get(key)
-            if kept is None:
-                curve = compute(entry, query, settings, arguments)
-                if statement is None and query.format == "json":
-                    kept = json_entry(encode_json(curve_document(curve)))
-                elif statement is None:
-                    kept = entry_of(curve_response(curve, query.format))
-                else:
-                    owner = fixed["discretization"]
-                    kept = entry_of(theorem_response(statement, owner, curve, query.checks))
-                if kept is None:
-                    return None
-                self.cache.put(key, kept)
+            if kept is not None:
+                self.cache.alias((scope["path"], scope["query_string"]), key)
+                return _Computed(key, kept, None)
+            compact = False
+            curve = compute(entry, query, settings, arguments)
+            made: Entry | None
+            if statement is None and query.format == "json":
+                # the encoder's bytes go out as they are; ``_keep`` compacts what it keeps
+                body = encode_json(curve_document(curve))
+                made = Entry(_JSON_ENTRY.status, _JSON_ENTRY.headers, body, _JSON_ENTRY.media_type)
+                compact = True
+            elif statement is None:
+                made = entry_of(curve_response(curve, query.format))
+            else:
+                owner = fixed["discretization"]
+                made = entry_of(theorem_response(statement, owner, curve, query.checks))
+            if made is None:
+                return None
         except Exception:  # the chain answers every error as it always has
             admission.release(ticket)
             return None
+        return _Computed(key, made, curve, compact)
+
+    def _keep(self, scope: Scope, computed: _Computed) -> None:
+        """Keep a computed answer (sent already) as the chain keeps it, and remember its raw
+        request for the cache's fast path. The answer and its curve are let go here too, after
+        the send: their bookkeeping, copy and deallocation are off the client's wait."""
+        entry = computed.entry
+        if computed.compact and len(entry.body) < COMPACT_BELOW:
+            # as ``entry_of`` keeps a body: a short one copied out of the encoder's buffer
+            entry.body = bytes(memoryview(entry.body))
+        key = computed.key
+        self.cache.put(key, entry)
         if key in self.cache:
             self.cache.alias((scope["path"], scope["query_string"]), key)
-        return key, kept
+        computed.curve = None

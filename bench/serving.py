@@ -563,10 +563,139 @@ def compute_alone(rounds: int = ROUNDS) -> None:
         print(f"  {label:<30}" + "   ".join(cells) + ratio)
 
 
+#: ``python bench/serving.py stages``: the served path split in stages. A worker as
+#: ``python -m app.server`` configures it (h11, the service's limits, forked compute processes),
+#: with ``perf_counter_ns`` around the fast lane's stages and around the whole app call (to the
+#: send of the body: what the client waits for; and to the app's return); a raw-socket client
+#: (keep-alive, c=1, another process) sends ``STAGE_REQUESTS`` GETs of each kind. Per kind:
+#: the client's median wall time per request and each stage's median, in µs (medians do not
+#: add up; "app: to body sent" minus the stages inside is the middlewares, the sends and h11's
+#: writes).
+STAGES = """
+import collections, functools, os, statistics, subprocess, sys, threading, time
+sys.path.insert(0, os.getcwd())
+from time import perf_counter_ns as ns
+ACC = collections.defaultdict(list)
+def timed(owner, name, label):
+    function = getattr(owner, name)
+    @functools.wraps(function)
+    def wrapper(*args, **kwargs):
+        start = ns()
+        try:
+            return function(*args, **kwargs)
+        finally:
+            ACC[label].append(ns() - start)
+    setattr(owner, name, wrapper)
+import app.server as server
+config = server.uvicorn_config([*server.UVICORN_FLAGS, "--log-level", "warning", "--no-access-log"])
+config.load()
+server.warm_app(); server.tune_gc(); server.keep_request_threads(); server.start_pool()
+import app.fast_lane as lane
+from app.registry import DISCRETIZATIONS
+d4b = DISCRETIZATIONS["d4b"]
+for owner, name, label in [
+    (lane.FastLane, "_answer", "lane: answer (to the reply)"),
+    (lane.FastLane, "_compute", "lane: parse, price, compute, encode"),
+    (lane, "compute", "compute: admission, selection, core"),
+    (d4b.module, "compute", "core: D4b compute"),
+    (d4b.query, "model_validate", "parse: model_validate"),
+    (lane, "curve_document", "shape: curve_document"),
+    (lane, "encode_json", "encode: orjson"),
+    (lane, "canonical_key", "key: canonical_key"),
+    (lane._Template, "fill", "headers: template fill"),
+    (lane.FastLane, "_keep", "keep (after the send)"),
+]:
+    if hasattr(owner, name):
+        timed(owner, name, label)
+class Timed:
+    def __init__(self, app):
+        self.app = app
+    async def __call__(self, scope, receive, send):
+        if scope["type"] != "http":
+            return await self.app(scope, receive, send)
+        start = ns()
+        async def timed_send(message):
+            begin = ns()
+            await send(message)
+            ACC["h11: send (each)"].append(ns() - begin)
+            if message["type"] == "http.response.body":
+                ACC["app: to body sent"].append(ns() - start)
+        await self.app(scope, receive, timed_send)
+        ACC["app: to return"].append(ns() - start)
+config.loaded_app = Timed(config.loaded_app)
+sock = server.listening_socket("127.0.0.1", 0)
+port = sock.getsockname()[1]
+uvicorn = server.uvicorn_server(config)
+def client():
+    time.sleep(1)
+    out = {}
+    for kind in ("/health", "checks=none", "every check"):
+        ACC.clear()
+        wall = subprocess.run([sys.executable, "-c", CLIENT, str(port), kind, N], check=True,
+                              capture_output=True, text=True).stdout
+        out[kind] = (float(wall), {k: statistics.median(v) / 1e3 for k, v in ACC.items()})
+    for kind, (wall, stages) in out.items():
+        print(f"  {kind}: client wall {wall:.1f} µs per request")
+        for label, value in stages.items():
+            print(f"    {label:<40}{value:8.1f} µs")
+    uvicorn.should_exit = True
+threading.Thread(target=client, daemon=True).start()
+uvicorn.run(sockets=[sock])
+"""
+
+#: The raw-socket client of ``STAGES``: N keep-alive GETs (a new d each), median wall µs.
+STAGE_CLIENT = """
+import socket, statistics, sys, time
+port, kind, n = int(sys.argv[1]), sys.argv[2], int(sys.argv[3])
+sock = socket.create_connection(("127.0.0.1", port))
+sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+buffer = bytearray(1 << 20)
+times = []
+for k in range(n):
+    path = "/health"
+    if kind != "/health":
+        checks = "&checks=none" if kind == "checks=none" else ""
+        path = "%s%s&d=%.12f" % (SMALL, checks, 0.1 + k * 1e-9)
+    start = time.perf_counter_ns()
+    sock.sendall(("GET %s HTTP/1.1\\r\\nHost: bench\\r\\n\\r\\n" % path).encode())
+    total = 0
+    while True:
+        total += sock.recv_into(memoryview(buffer)[total:])
+        end = buffer.find(b"\\r\\n\\r\\n", 0, total)
+        if end >= 0:
+            head = bytes(buffer[:end]).lower()
+            at = head.index(b"content-length:") + 15
+            length = int(head[at:].split(b"\\r\\n", 1)[0])
+            if total >= end + 4 + length:
+                break
+    if not buffer.startswith(b"HTTP/1.1 200"):
+        raise SystemExit(bytes(buffer[:200]))
+    times.append(time.perf_counter_ns() - start)
+print(statistics.median(times) / 1e3)
+"""
+
+
+def served_stages(requests: int = 2000) -> None:
+    """The served path split in stages for /health, checks=none and every check (``STAGES``)."""
+    print(
+        f" the served path in stages (python -m app.server's worker, raw-socket client, c=1, "
+        f"{requests} requests a kind), medians in µs; load average {os.getloadavg()[0]:.1f}"
+    )
+    prelude = f"CLIENT = {STAGE_CLIENT.replace('SMALL', repr(SMALL))!r}\nN = {str(requests)!r}\n"
+    subprocess.run(
+        [sys.executable, "-c", prelude + STAGES],
+        cwd=ROOT,
+        env={**os.environ, **SERVER_ENV},
+        check=True,
+    )
+
+
 if __name__ == "__main__":
     if sys.argv[1:] == ["computed"]:
         computed_gets()
     elif sys.argv[1:] == ["compute"]:
         compute_alone()
+    elif sys.argv[1:] == ["stages"]:
+        served_stages(int(os.environ.get("STAGE_REQUESTS", "2000")))
     else:
         main()

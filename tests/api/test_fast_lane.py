@@ -11,6 +11,7 @@ from __future__ import annotations
 from typing import Any
 from urllib.parse import parse_qsl
 
+import anyio
 import pytest
 from fastapi import FastAPI
 from fastapi._compat.shared import field_annotation_is_sequence
@@ -281,3 +282,53 @@ def test_replies_without_accept_encoding_refill_their_template_as_the_chain_answ
 )
 def test_split_query_reads_a_query_as_parse_qsl(query: str) -> None:
     assert split_query(query) == parse_qsl(query, keep_blank_values=True)
+
+
+def test_a_computed_answer_is_kept_once_it_is_sent() -> None:
+    """The lane sends a computed answer first and keeps it after (``FastLane._keep``): while
+    the body goes out nothing is kept yet; afterwards the cache holds the same bytes (copied
+    out of the encoder's buffer), the raw request answers from it, and the answers agree."""
+    app = create_app(Settings())
+    cache = app.state.response_cache
+    url = f"{D4B}?{SMALL}&checks=none&d=0.2345"
+    path, _, query = url.partition("?")
+    seen: list[tuple[int, int]] = []
+
+    async def call() -> bytes:
+        scope = {
+            "type": "http",
+            "asgi": {"version": "3.0"},
+            "http_version": "1.1",
+            "method": "GET",
+            "scheme": "http",
+            "path": path,
+            "raw_path": path.encode(),
+            "query_string": query.encode(),
+            "root_path": "",
+            "headers": [(b"host", b"test")],
+            "client": ("127.0.0.1", 1),
+            "server": ("127.0.0.1", 80),
+        }
+        body = b""
+
+        async def receive() -> dict[str, Any]:
+            return {"type": "http.request", "body": b"", "more_body": False}
+
+        async def send(message: dict[str, Any]) -> None:
+            nonlocal body
+            if message["type"] == "http.response.body":
+                body = message["body"]
+                seen.append((len(cache), cache.fast_hits))
+
+        await app(scope, receive, send)
+        return body
+
+    TestClient(app).get("/health")  # builds the middleware stack
+    first = anyio.run(call)
+    assert seen == [(0, 0)]  # nothing kept while the answer was sent
+    [kept] = cache._entries.values()
+    assert kept.body == first and kept.body is not first
+    again = anyio.run(call)
+    assert again == first and seen[1] == (1, 1)  # the raw request, from the cache
+    fast = lane_of(app)
+    assert fast is not None and fast.served == 2
