@@ -118,10 +118,12 @@ def evaluate(
     constants of (D1), (D3) and (2) come with the checks that fit them (Theorem 4 (i)–(iii)),
     as ``Selection.constants`` has it: a selection without those checks computes no fit.
     """
-    ctx = _Context(ar, ar.scalar(h), ar.scalar(d), data, detail)
+    ctx = _Context(ar, ar.scalar(h), ar.scalar(d), data, detail, selection)
     if ar.mode == "float64" and any(selection.wants_check(s.id) for s in _CLOSED_FORMS):
+        kinematic = any(selection.wants_check(s.id) for s in _CLOSED_FORMS[:2])
         images = any(selection.wants_check(s.id) for s in _CLOSED_FORMS[2:])
-        fused_checks.fill_closed_forms(data, images)  # the five closed forms in a few calls
+        # the closed forms the selected statements compare with, in a few calls a block
+        fused_checks.fill_closed_forms(data, images, kinematic)
     checks = []
     for statement, evaluator in _EVALUATORS:
         if selection.wants_check(statement.id):
@@ -169,9 +171,16 @@ class _Context:
     """What the checks of one computation share, each part computed when first needed."""
 
     def __init__(
-        self, ar: Arithmetic, h: Scalar, d: Scalar, data: D4bPolygons, detail: bool
+        self,
+        ar: Arithmetic,
+        h: Scalar,
+        d: Scalar,
+        data: D4bPolygons,
+        detail: bool,
+        selection: Selection = EVERYTHING,
     ) -> None:
         self.ar, self.h, self.d, self.data, self.detail = ar, h, d, data, detail
+        self.selection = selection
         self.n = data.vertices - 1
         self.indices = np.arange(data.i_min, data.i_min + self.n + 1, dtype=np.int64)
 
@@ -204,8 +213,12 @@ class _Context:
 
     @cached_property
     def closed_largest(self) -> tuple[float, float]:
-        """Float64: the largest residuals of Theorems 5 and 6, from one compiled pass."""
-        return fused_checks.closed_comparisons(self.data, self.n)
+        """Float64: the largest residuals of Theorems 5 and 6 (those selected), from one
+        compiled pass."""
+        wanted = self.selection.wants_check
+        return fused_checks.closed_comparisons(
+            self.data, self.n, wanted(THEOREM_5.id), wanted(THEOREM_6.id)
+        )
 
     @cached_property
     def fused_fits(self) -> fused_checks.Fits:

@@ -183,8 +183,9 @@ def _closed_arguments(i_min: int, i_max: int, L: float, shift: float) -> Any:
 
 
 @kernel(
-    "Tuple((float64[:, ::1], float64[:, ::1], float64[:, ::1], float64[:, ::1], float64[:, ::1]))"
-    "(int64, int64, float64[::1], float64[::1], float64[::1], float64, float64, float64, float64)"
+    "void(int64, int64, float64[::1], float64[::1], float64[::1], float64, float64, float64, "
+    "float64, boolean, boolean, int64, float64[:, ::1], float64[:, ::1], float64[:, ::1], "
+    "float64[:, ::1], float64[:, ::1])"
 )
 def _closed_points(
     i_min: int,
@@ -196,71 +197,112 @@ def _closed_points(
     d: float,
     amplitude: float,
     gauss_amplitude: float,
-) -> tuple[Any, Any, Any, Any, Any]:
-    """The five closed forms from the hyperbolic functions of ``_closed_arguments`` (cosh of
-    all, sinh of (16)'s, tanh of (19)'s and (20)'s), by the operations of ``closed_forms``:
-    (p, tractrix, n, ñ, m)."""
+    kinematic: bool,
+    images: bool,
+    offset: int,
+    p: Any,
+    tractrix: Any,
+    normal: Any,
+    contact: Any,
+    gauss: Any,
+) -> None:
+    """The closed forms on i_min .. i_max + 1 (ñ from i_min − 1) from the hyperbolic functions
+    of ``_closed_arguments`` (cosh of all, sinh of (16)'s, tanh of (19)'s and (20)'s), by the
+    operations of ``closed_forms``, into rows ``offset`` .. of p and the tractrix (if
+    ``kinematic``) and of n, ñ, m (if ``images``; ñ's first row is index i_min − 1)."""
     rows = i_max - i_min + 2
     step = 2 * d
-    p, tractrix = np.empty((rows, 2)), np.empty((rows, 2))
-    normal, contact, gauss = np.empty((rows, 2)), np.empty((rows + 1, 2)), np.empty((rows, 2))
     for k in range(rows):
         i = float(i_min + k)
-        x = i * step
-        p[k, 0] = x - d
-        p[k, 1] = amplitude * cosh[k]
-        sech = 1 / cosh[rows + k]
-        tractrix[k, 0] = x - h * (sinh[k] * sech)
-        tractrix[k, 1] = h * sech
-        normal[k, 0] = 1.0 / cosh[2 * rows + 1 + k]
-        normal[k, 1] = tanh[1 + k]
-        gauss[k, 0] = -tanh[rows + 1 + k]
-        gauss[k, 1] = gauss_amplitude / cosh[3 * rows + 1 + k]
-    for k in range(rows + 1):
-        contact[k, 0] = -tanh[k]
-        contact[k, 1] = 1.0 / cosh[2 * rows + k]
-    return p, tractrix, normal, contact, gauss
+        at = offset + k
+        if kinematic:
+            x = i * step
+            p[at, 0] = x - d
+            p[at, 1] = amplitude * cosh[k]
+            sech = 1 / cosh[rows + k]
+            tractrix[at, 0] = x - h * (sinh[k] * sech)
+            tractrix[at, 1] = h * sech
+        if images:
+            normal[at, 0] = 1.0 / cosh[2 * rows + 1 + k]
+            normal[at, 1] = tanh[1 + k]
+            gauss[at, 0] = -tanh[rows + 1 + k]
+            gauss[at, 1] = gauss_amplitude / cosh[3 * rows + 1 + k]
+    if images:
+        for k in range(rows + 1):
+            contact[offset + k, 0] = -tanh[k]
+            contact[offset + k, 1] = 1.0 / cosh[2 * rows + k]
 
 
-def fill_closed_forms(data: D4bPolygons, images: bool = True) -> None:
-    """Float64: Theorems 5, 6 and (18)–(20)'s closed forms of ``data`` from three numpy calls
-    (cosh, sinh, tanh: numpy's own vectorized functions, so the same bits as ``closed_forms``;
-    a contiguous slice of an argument array gives each entry the bits the separate array
-    gave) and two compiled ones, kept as if each had been computed on its own; those computed
-    already stay. Nothing is kept when a cosh overflows (``closed_forms`` has its other
-    branch for those) or beyond one block of ``Float64.points``."""
+def fill_closed_forms(data: D4bPolygons, images: bool = True, kinematic: bool = True) -> None:
+    """Float64: Theorems 5, 6 (``kinematic``) and (18)–(20)'s (``images``) closed forms of
+    ``data`` from numpy's cosh, sinh and tanh (its own vectorized functions, so the same bits as
+    ``closed_forms``; a contiguous slice of an argument array gives each entry the bits the
+    separate array gave) and one compiled call, a block of ``BLOCK_SIZE`` indices at a time
+    (the arguments and the hyperbolic functions of a block stay in the cache; each point is
+    written once, into its polygon), kept as if each had been computed on its own; those
+    computed already stay. Nothing is kept when a cosh overflows (``closed_forms`` has its
+    other branch for those)."""
     rows = data.vertices
-    if rows > BLOCK_SIZE:
+    if not (images or kinematic) or rows == 0:
         return
     ar, h, d = data.ar, float(data.h), float(data.d)
-    L = closed_forms.log_ratio(ar, data.h, data.d)
-    shift = data.shift
-    arguments = _closed_arguments(data.i_min, data.i_max, float(L), float(shift))
-    with np.errstate(over="ignore"):
-        cosh = np.cosh(arguments)
-    if not all_finite_vector(cosh):
-        return
-    sinh = np.sinh(arguments[rows : 2 * rows])
-    tanh = np.tanh(arguments[2 * rows :])
-    amplitude = ar.sqrt((data.h - data.d) * (data.h + data.d))
-    gauss_amplitude = data.h / ar.sqrt((data.h - data.d) * (data.h + data.d))
-    p, tractrix, normal, contact, gauss = _closed_points(
-        data.i_min, data.i_max, cosh, sinh, tanh, h, d, float(amplitude), float(gauss_amplitude)
-    )
-    kept = data.__dict__
-    kept.setdefault("closed_p", p)
-    kept.setdefault("closed_tractrix", tractrix)
-    if not images:  # Section 5 not selected: its Gauss images are not made for this
-        return
-    kept = data.gauss.__dict__
-    kept.setdefault("closed_tractrix_gauss", normal)
-    kept.setdefault("closed_contact", contact)
-    kept.setdefault("closed_gauss", gauss)
+    L = float(closed_forms.log_ratio(ar, data.h, data.d))
+    shift = float(data.shift)
+    amplitude = float(ar.sqrt((data.h - data.d) * (data.h + data.d)))
+    gauss_amplitude = float(data.h / ar.sqrt((data.h - data.d) * (data.h + data.d)))
+    wide, tall = (rows, 2) if kinematic else (0, 2), (rows, 2) if images else (0, 2)
+    p, tractrix = np.empty(wide), np.empty(wide)
+    normal, gauss = np.empty(tall), np.empty(tall)
+    contact = np.empty((rows + 1, 2) if images else (0, 2))
+    block = min(rows, BLOCK_SIZE)
+    cosh, sinh, tanh = np.empty(4 * block + 1), np.empty(block), np.empty(2 * block + 1)
+    for start in range(0, rows, block):
+        count = min(block, rows - start)  # indices i_min + start .. + count − 1
+        first = data.i_min + start
+        arguments = _closed_arguments(first, first + count - 2, L, shift)
+        # cosh of (14)'s and (16)'s arguments if kinematic, of (19)'s and (20)'s if images
+        lo, hi = (0 if kinematic else 2 * count), (4 * count + 1 if images else 2 * count)
+        with np.errstate(over="ignore"):
+            np.cosh(arguments[lo:hi], out=cosh[lo:hi])
+        if not all_finite_vector(cosh[lo:hi]):
+            return
+        if kinematic:
+            np.sinh(arguments[count : 2 * count], out=sinh[:count])
+        if images:
+            np.tanh(arguments[2 * count :], out=tanh[: 2 * count + 1])
+        _closed_points(
+            first,
+            first + count - 2,
+            cosh,
+            sinh,
+            tanh,
+            h,
+            d,
+            amplitude,
+            gauss_amplitude,
+            kinematic,
+            images,
+            start,
+            p,
+            tractrix,
+            normal,
+            contact,
+            gauss,
+        )
+    if kinematic:
+        kept = data.__dict__
+        kept.setdefault("closed_p", p)
+        kept.setdefault("closed_tractrix", tractrix)
+    if images:
+        kept = data.gauss.__dict__
+        kept.setdefault("closed_tractrix_gauss", normal)
+        kept.setdefault("closed_contact", contact)
+        kept.setdefault("closed_gauss", gauss)
 
 
 @kernel(
     "UniTuple(float64, 2)(float64[:, :], float64[:, :], float64[:, :], float64[:, :], "
-    "float64[:, :], int64, float64, float64)"
+    "float64[:, :], int64, float64, float64, boolean, boolean)"
 )
 def _closed_comparisons(
     p: Any,
@@ -271,35 +313,48 @@ def _closed_comparisons(
     n: int,
     h: float,
     tiny: float,
+    theorem_5_wanted: bool,
+    theorem_6_wanted: bool,
 ) -> tuple[float, float]:
     """The largest residuals of Theorems 5 and 6 on rows 0 .. n − 1, as ``checks._closed_form``
     computes them (``residual_kernels``' relative point difference; the point distance over
-    |x_i| + h floored at ``tiny``), without the arrays: NaN if one is NaN."""
+    |x_i| + h floored at ``tiny``), without the arrays: NaN if one is NaN; 0.0 for a theorem
+    not wanted (its polygons are not read)."""
     theorem_5 = theorem_6 = 0.0
     for k in range(n):
-        ex, ey = closed_p[k, 0], closed_p[k, 1]
-        size = length(ex, ey)
-        size = size if size > tiny else tiny
-        theorem_5 = running_largest(length(p[k, 0] - ex, p[k, 1] - ey) / size, theorem_5)
-        distance = length(
-            tractrix[k, 0] - closed_tractrix[k, 0], tractrix[k, 1] - closed_tractrix[k, 1]
-        )
-        scale = abs(axis[k, 0]) + h
-        scale = scale if scale > tiny else tiny
-        theorem_6 = running_largest(abs(distance) / scale, theorem_6)
+        if theorem_5_wanted:
+            ex, ey = closed_p[k, 0], closed_p[k, 1]
+            size = length(ex, ey)
+            size = size if size > tiny else tiny
+            theorem_5 = running_largest(length(p[k, 0] - ex, p[k, 1] - ey) / size, theorem_5)
+        if theorem_6_wanted:
+            distance = length(
+                tractrix[k, 0] - closed_tractrix[k, 0], tractrix[k, 1] - closed_tractrix[k, 1]
+            )
+            scale = abs(axis[k, 0]) + h
+            scale = scale if scale > tiny else tiny
+            theorem_6 = running_largest(abs(distance) / scale, theorem_6)
     return theorem_5, theorem_6
 
 
-def closed_comparisons(data: D4bPolygons, n: int) -> tuple[float, float]:
+_NO_POINTS = np.empty((0, 2))
+
+
+def closed_comparisons(
+    data: D4bPolygons, n: int, theorem_5: bool = True, theorem_6: bool = True
+) -> tuple[float, float]:
     """Float64: the largest residuals of Theorems 5 and 6 (construction against closed form on
-    i_min .. i_max) in one compiled pass."""
+    i_min .. i_max) in one compiled pass; a theorem not asked for reads none of its polygons
+    (its closed form is not made for the other) and gives 0.0."""
     return _closed_comparisons(
-        data.p,
-        data.closed_p,
-        data.tractrix,
-        data.closed_tractrix,
-        data.axis,
+        data.p if theorem_5 else _NO_POINTS,
+        data.closed_p if theorem_5 else _NO_POINTS,
+        data.tractrix if theorem_6 else _NO_POINTS,
+        data.closed_tractrix if theorem_6 else _NO_POINTS,
+        data.axis if theorem_6 else _NO_POINTS,
         n,
         float(data.h),
         TINY,
+        theorem_5,
+        theorem_6,
     )
