@@ -27,7 +27,7 @@ import numpy as np
 
 from app.geometry import checks
 from app.geometry.checks import Largest
-from app.geometry.compiled import hypot, kernel, length, running_largest
+from app.geometry.compiled import kernel, length, running_largest
 from app.geometry.precision import Arithmetic, Array
 
 TINY = float(np.finfo(np.float64).tiny)
@@ -620,16 +620,17 @@ def largest_along_printed_slope(count: int, points: Any) -> float | None:
 @kernel("float64[:](float64[:, :])")
 def _printed_ratios(p: Any) -> Any:
     """The proof's ratio Δ²p_i^y / (l'_i + l'_{i+1}), l'_i = |p_i − p_{i−1}| (erratum E2), as
-    ``checks._ratio_erratum`` computes it: entry k from p_k .. p_{k+3}, lengths by libm's hypot
-    (inline, ``compiled.hypot``)."""
+    ``checks._ratio_erratum`` computes it: entry k from p_k .. p_{k+3}, the lengths by
+    ``compiled.length`` (within 2 ulp of libm's hypot, which numpy's evaluation takes: a printed
+    residual, far from rounding level, moves in its last bits)."""
     count = max(p.shape[0] - 3, 0)
     out = np.empty(count)
     if count == 0:
         return out
-    after = hypot(p[1, 0] - p[0, 0], p[1, 1] - p[0, 1])
+    after = length(p[1, 0] - p[0, 0], p[1, 1] - p[0, 1])
     for k in range(count):
         before = after
-        after = hypot(p[k + 2, 0] - p[k + 1, 0], p[k + 2, 1] - p[k + 1, 1])
+        after = length(p[k + 2, 0] - p[k + 1, 0], p[k + 2, 1] - p[k + 1, 1])
         second = p[k + 3, 1] - 2 * p[k + 2, 1] + p[k + 1, 1]
         out[k] = second / (before + after)
     return out
