@@ -403,7 +403,12 @@ def evaluate(
                 tolerance,
                 "method=closed-form: the Gauss image was not constructed to compare",
             )
-        if scale is not None and ar.mode == "float64":  # the same product, in one pass
+        residuals: Array | Largest
+        if ar.mode == "float64" and not detail:  # the largest alone, in one pass, no array
+            residuals = residual_kernels.largest_scaled_relative_point_difference(
+                built[:n], formula[:n], None if scale is None else scale[:n]
+            )
+        elif scale is not None and ar.mode == "float64":  # the same product, in one pass
             residuals = residual_kernels.scaled_relative_point_difference(
                 built[:n], formula[:n], scale[:n]
             )

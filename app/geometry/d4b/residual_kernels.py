@@ -533,6 +533,46 @@ def scaled_relative_point_difference(computed: Array, expected: Array, scale: Ar
     )
 
 
+@kernel("float64(float64[:, :], float64[:, :], float64, float64[:], boolean)")
+def _largest_scaled_relative_distance(
+    computed: Any, expected: Any, tiny: float, scale: Any, scaled: bool
+) -> float:
+    """max_k of ``_relative_distances`` (times scale_k if ``scaled``, as
+    ``_scaled_relative_distances``) without storing them: NaN if one is NaN, as the largest
+    magnitude of the array."""
+    largest = 0.0
+    for k in range(computed.shape[0]):
+        ex, ey = expected[k, 0], expected[k, 1]
+        size = length(ex, ey)
+        size = size if size > tiny else tiny
+        value = length(computed[k, 0] - ex, computed[k, 1] - ey) / size
+        if scaled:
+            value = value * scale[k]
+        largest = running_largest(value, largest)
+    return largest
+
+
+_NO_SCALE = np.empty(0)
+
+
+def largest_scaled_relative_point_difference(
+    computed: Array, expected: Array, scale: Array | None
+) -> Largest:
+    """Float64: the largest ``relative_point_difference`` (times ``scale`` if given, as
+    ``scaled_relative_point_difference``) in one pass, the array on demand (``checks.Largest``:
+    ``check_residuals`` asks for it only when the largest is not finite)."""
+    a, b = _points(computed), _points(expected)
+    factors = _NO_SCALE if scale is None else np.asarray(scale, dtype=np.float64)
+
+    def residuals() -> Any:
+        if scale is None:
+            return _relative_distances(a, b, TINY)
+        return _scaled_relative_distances(a, b, TINY, factors)
+
+    value = float(_largest_scaled_relative_distance(a, b, TINY, factors, scale is not None))
+    return Largest(value, len(a), residuals)
+
+
 def largest_relative_point_difference(computed: Array, expected: Array) -> float | None:
     """Float64: the largest ``relative_point_difference`` as ``checks.printed_residual`` reports
     it (None for no rows or a value that is not finite), without the array."""
