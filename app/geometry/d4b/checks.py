@@ -120,7 +120,8 @@ def evaluate(
     """
     ctx = _Context(ar, ar.scalar(h), ar.scalar(d), data, detail, selection)
     if ar.mode == "float64" and any(selection.wants_check(s.id) for s in _CLOSED_FORMS):
-        kinematic = any(selection.wants_check(s.id) for s in _CLOSED_FORMS[:2])
+        # Theorems 5, 6 without detail compare block by block (``closed_largest``): no arrays
+        kinematic = detail and any(selection.wants_check(s.id) for s in _CLOSED_FORMS[:2])
         images = any(selection.wants_check(s.id) for s in _CLOSED_FORMS[2:])
         # the closed forms the selected statements compare with, in a few calls a block
         fused_checks.fill_closed_forms(data, images, kinematic)
@@ -216,9 +217,15 @@ class _Context:
         """Float64: the largest residuals of Theorems 5 and 6 (those selected), from one
         compiled pass."""
         wanted = self.selection.wants_check
-        return fused_checks.closed_comparisons(
-            self.data, self.n, wanted(THEOREM_5.id), wanted(THEOREM_6.id)
-        )
+        theorem_5, theorem_6 = wanted(THEOREM_5.id), wanted(THEOREM_6.id)
+        given = {"closed_p", "closed_tractrix"} & vars(self.data).keys()
+        if self.data.constructed and not given:  # each closed point compared as it is made
+            found = fused_checks.closed_kinematic_comparisons(
+                self.data, self.n, theorem_5, theorem_6
+            )
+            if found is not None:
+                return found
+        return fused_checks.closed_comparisons(self.data, self.n, theorem_5, theorem_6)
 
     @cached_property
     def fused_fits(self) -> fused_checks.Fits:

@@ -340,6 +340,104 @@ def _closed_comparisons(
 _NO_POINTS = np.empty((0, 2))
 
 
+@kernel(
+    "UniTuple(float64, 2)(int64, int64, float64[::1], float64[::1], float64, float64, float64, "
+    "float64[:, :], float64[:, :], float64[:, :], int64, int64, float64, boolean, boolean, "
+    "float64, float64)"
+)
+def _closed_kinematic_block(
+    i_min: int,
+    i_max: int,
+    cosh: Any,
+    sinh: Any,
+    h: float,
+    d: float,
+    amplitude: float,
+    p: Any,
+    tractrix: Any,
+    axis: Any,
+    offset: int,
+    n: int,
+    tiny: float,
+    theorem_5_wanted: bool,
+    theorem_6_wanted: bool,
+    theorem_5: float,
+    theorem_6: float,
+) -> tuple[float, float]:
+    """``_closed_comparisons`` on the rows ``offset`` .. of one block of ``fill_closed_forms``
+    (indices i_min .. i_max + 1, rows below ``n``), each closed point made as ``_closed_points``
+    makes it and compared at once, not stored; the running largest of each theorem."""
+    rows = i_max - i_min + 2
+    step = 2 * d
+    for k in range(min(rows, n - offset)):
+        at = offset + k
+        x = float(i_min + k) * step
+        if theorem_5_wanted:
+            ex, ey = x - d, amplitude * cosh[k]
+            size = length(ex, ey)
+            size = size if size > tiny else tiny
+            residual = length(p[at, 0] - ex, p[at, 1] - ey) / size
+            theorem_5 = running_largest(residual, theorem_5)
+        if theorem_6_wanted:
+            sech = 1 / cosh[rows + k]
+            tx, ty = x - h * (sinh[k] * sech), h * sech
+            distance = length(tractrix[at, 0] - tx, tractrix[at, 1] - ty)
+            scale = abs(axis[at, 0]) + h
+            scale = scale if scale > tiny else tiny
+            theorem_6 = running_largest(abs(distance) / scale, theorem_6)
+    return theorem_5, theorem_6
+
+
+def closed_kinematic_comparisons(
+    data: D4bPolygons, n: int, theorem_5: bool = True, theorem_6: bool = True
+) -> tuple[float, float] | None:
+    """Float64: ``closed_comparisons`` with the closed forms (14), (16) made a block at a time
+    and compared at once (``fill_closed_forms``' arguments and numpy calls, so the same closed
+    points and the same largest residuals), none stored: two (n, 2) arrays fewer to write. None
+    when a cosh overflows (the separate closed forms have their other branch for those)."""
+    rows = data.vertices
+    ar, h, d = data.ar, float(data.h), float(data.d)
+    L = float(closed_forms.log_ratio(ar, data.h, data.d))
+    shift = float(data.shift)
+    amplitude = float(ar.sqrt((data.h - data.d) * (data.h + data.d)))
+    block = min(rows, BLOCK_SIZE)
+    cosh, sinh = np.empty(2 * block), np.empty(block)
+    largest_5 = largest_6 = 0.0
+    p = data.p if theorem_5 else _NO_POINTS
+    tractrix, axis = (data.tractrix, data.axis) if theorem_6 else (_NO_POINTS, _NO_POINTS)
+    for start in range(0, min(rows, n), block):
+        count = min(block, rows - start)
+        first = data.i_min + start
+        arguments = _closed_arguments(first, first + count - 2, L, shift)
+        lo, hi = (0 if theorem_5 else count), (2 * count if theorem_6 else count)
+        with np.errstate(over="ignore"):
+            np.cosh(arguments[lo:hi], out=cosh[lo:hi])
+        if not all_finite_vector(cosh[lo:hi]):
+            return None
+        if theorem_6:
+            np.sinh(arguments[count : 2 * count], out=sinh[:count])
+        largest_5, largest_6 = _closed_kinematic_block(
+            first,
+            first + count - 2,
+            cosh,
+            sinh,
+            h,
+            d,
+            amplitude,
+            p,
+            tractrix,
+            axis,
+            start,
+            n,
+            TINY,
+            theorem_5,
+            theorem_6,
+            largest_5,
+            largest_6,
+        )
+    return largest_5, largest_6
+
+
 def closed_comparisons(
     data: D4bPolygons, n: int, theorem_5: bool = True, theorem_6: bool = True
 ) -> tuple[float, float]:
