@@ -122,7 +122,10 @@ def evaluate(
     if ar.mode == "float64" and any(selection.wants_check(s.id) for s in _CLOSED_FORMS):
         # Theorems 5, 6 without detail compare block by block (``closed_largest``): no arrays
         kinematic = detail and any(selection.wants_check(s.id) for s in _CLOSED_FORMS[:2])
-        images = any(selection.wants_check(s.id) for s in _CLOSED_FORMS[2:])
+        # (18)-(20) on constructed images without detail compare block by block (``curvature``)
+        images = (detail or not data.constructed) and any(
+            selection.wants_check(s.id) for s in _CLOSED_FORMS[2:]
+        )
         # the closed forms the selected statements compare with, in a few calls a block
         fused_checks.fill_closed_forms(data, images, kinematic)
     checks = []

@@ -34,7 +34,7 @@ from app.geometry.conditions import (
     _shared_columns,
 )
 from app.geometry.d4b import closed_forms
-from app.geometry.precision import BLOCK_SIZE, Array
+from app.geometry.precision import BLOCK_SIZE, Arithmetic, Array, Scalar
 
 if TYPE_CHECKING:
     from app.geometry.d4b.discretization import D4bPolygons
@@ -233,6 +233,11 @@ def _closed_points(
             contact[offset + k, 1] = 1.0 / cosh[2 * rows + k]
 
 
+_CLOSED_KINEMATIC = frozenset({"closed_p", "closed_tractrix"})
+#: The closed forms of (18), (19), (20) on ``GaussImages``.
+CLOSED_IMAGES = frozenset({"closed_tractrix_gauss", "closed_contact", "closed_gauss"})
+
+
 def fill_closed_forms(data: D4bPolygons, images: bool = True, kinematic: bool = True) -> None:
     """Float64: Theorems 5, 6 (``kinematic``) and (18)–(20)'s (``images``) closed forms of
     ``data`` from numpy's cosh, sinh and tanh (its own vectorized functions, so the same bits as
@@ -243,6 +248,9 @@ def fill_closed_forms(data: D4bPolygons, images: bool = True, kinematic: bool = 
     computed already stay. Nothing is kept when a cosh overflows (``closed_forms`` has its
     other branch for those)."""
     rows = data.vertices
+    # those all there already (e.g. method=closed-form's polygons and companions) are not redone
+    kinematic = kinematic and not vars(data).keys() >= _CLOSED_KINEMATIC
+    images = images and not vars(data.gauss).keys() >= CLOSED_IMAGES
     if not (images or kinematic) or rows == 0:
         return
     ar, h, d = data.ar, float(data.h), float(data.d)
@@ -456,3 +464,143 @@ def closed_comparisons(
         theorem_5,
         theorem_6,
     )
+
+
+#: The largest residuals ``closed_image_comparisons`` gives, in this order: (18), (19), (20)
+#: against their corrected closed forms, then each against its printed form (the errata).
+IMAGE_COMPARISONS = ("18", "19", "20", "18 printed", "19 printed", "20 printed")
+
+
+@kernel(
+    "void(int64, int64, float64[::1], float64[::1], float64, float64, float64, float64[:, :], "
+    "float64[:, :], float64[:, :], float64[:], float64[:], int64, int64, float64, boolean[:], "
+    "float64[::1])"
+)
+def _closed_image_block(
+    i_min: int,
+    i_max: int,
+    cosh: Any,
+    tanh: Any,
+    h: float,
+    d: float,
+    gauss_amplitude: float,
+    normals: Any,
+    contact: Any,
+    gauss: Any,
+    contact_scale: Any,
+    gauss_scale: Any,
+    offset: int,
+    n: int,
+    tiny: float,
+    wanted: Any,
+    largest: Any,
+) -> None:
+    """One block of ``fill_closed_forms`` (indices i_min .. i_max + 1, rows ``offset`` .., those
+    below ``n``): n_i, ñ_i and m_i's closed forms made as ``_closed_points`` makes them and
+    compared at once, as ``curvature.evaluate`` compares the stored ones (``closed``: the
+    relative point difference, times the resolution for (19) and (20); ``PrintedForms.largest``:
+    ``residual_kernels._largest_printed_gauss``), into the running ``largest`` of each
+    ``wanted`` entry of ``IMAGE_COMPARISONS``."""
+    rows = i_max - i_min + 2
+    for k in range(min(rows, n - offset)):
+        at = offset + k
+        # n_i = (sech t, tanh t) and ñ_i = (−tanh t, sech t), t = (i + τ)L; m_i
+        sech, th = 1.0 / cosh[2 * rows + 1 + k], tanh[1 + k]
+        if wanted[0]:
+            size = length(sech, th)
+            size = size if size > tiny else tiny
+            value = length(normals[at, 0] - sech, normals[at, 1] - th) / size
+            largest[0] = running_largest(value, largest[0])
+        if wanted[3]:  # (18) printed: (sech t, −tanh t)
+            size = length(sech, -th)
+            size = size if size > tiny else tiny
+            value = length(normals[at, 0] - sech, normals[at, 1] - -th) / size
+            largest[3] = running_largest(value, largest[3])
+        if wanted[1] or wanted[4]:
+            cx, cy = -th, sech  # ñ_i at row k + 1 of the contact points (from i_min − 1)
+            if wanted[1]:
+                size = length(cx, cy)
+                size = size if size > tiny else tiny
+                value = length(contact[at + 1, 0] - cx, contact[at + 1, 1] - cy) / size
+                largest[1] = running_largest(value * contact_scale[at], largest[1])
+            if wanted[4]:  # (19) printed: (tanh t, sech t)
+                x, y = -cx, cy
+                size = length(x, y)
+                size = size if size > tiny else tiny
+                value = length(contact[at + 1, 0] - x, contact[at + 1, 1] - y) / size
+                largest[4] = running_largest(value, largest[4])
+        if wanted[2]:
+            mx, my = -tanh[rows + 1 + k], gauss_amplitude / cosh[3 * rows + 1 + k]
+            size = length(mx, my)
+            size = size if size > tiny else tiny
+            value = length(gauss[at, 0] - mx, gauss[at, 1] - my) / size
+            largest[2] = running_largest(value * gauss_scale[at], largest[2])
+        if wanted[5]:  # (20) printed, from n_i: ((h tanh t − d), h sech t)/(h + d tanh t)
+            denominator = h + d * th
+            x, y = (h * th - d) / denominator, h * sech / denominator
+            size = length(x, y)
+            size = size if size > tiny else tiny
+            value = length(gauss[at, 0] - x, gauss[at, 1] - y) / size
+            largest[5] = running_largest(value, largest[5])
+
+
+def closed_image_comparisons(
+    ar: Arithmetic,
+    h_scalar: Scalar,
+    d_scalar: Scalar,
+    shift_scalar: Scalar,
+    i_min: int,
+    n: int,
+    wanted: tuple[bool, ...],
+    normals: Array,
+    contact: Array,
+    gauss: Array,
+    contact_scale: Array | None,
+    gauss_scale: Array | None,
+) -> list[float] | None:
+    """Float64: the largest residuals of ``IMAGE_COMPARISONS`` (those ``wanted``; 0.0 for the
+    others) of the Gauss images n, ñ (from i_min − 1) and m against their closed forms, made a
+    block at a time with ``fill_closed_forms``' arguments and numpy calls and compared at once,
+    none stored (three (n, 2) arrays fewer to write); the polygon's h, d, τ and i_min given, its
+    rows i_min .. i_min + n. None when a cosh overflows."""
+    rows = n + 1
+    h, d = float(h_scalar), float(d_scalar)
+    L = float(closed_forms.log_ratio(ar, h_scalar, d_scalar))
+    shift = float(shift_scalar)
+    gauss_amplitude = float(h_scalar / ar.sqrt((h_scalar - d_scalar) * (h_scalar + d_scalar)))
+    block = min(rows, BLOCK_SIZE)
+    cosh, tanh = np.empty(4 * block + 1), np.empty(2 * block + 1)
+    largest = np.zeros(len(IMAGE_COMPARISONS))
+    flags = np.array(wanted, dtype=np.bool_)
+    none = np.empty(0)
+    scale_19 = none if contact_scale is None else np.asarray(contact_scale, dtype=np.float64)
+    scale_20 = none if gauss_scale is None else np.asarray(gauss_scale, dtype=np.float64)
+    for start in range(0, min(rows, n), block):
+        count = min(block, rows - start)
+        first = i_min + start
+        arguments = _closed_arguments(first, first + count - 2, L, shift)
+        with np.errstate(over="ignore"):
+            np.cosh(arguments[2 * count :], out=cosh[2 * count : 4 * count + 1])
+        if not all_finite_vector(cosh[2 * count : 4 * count + 1]):
+            return None
+        np.tanh(arguments[2 * count :], out=tanh[: 2 * count + 1])
+        _closed_image_block(
+            first,
+            first + count - 2,
+            cosh,
+            tanh,
+            h,
+            d,
+            gauss_amplitude,
+            normals,
+            contact,
+            gauss,
+            scale_19,
+            scale_20,
+            start,
+            n,
+            TINY,
+            flags,
+            largest,
+        )
+    return [float(v) for v in largest]

@@ -252,3 +252,38 @@ def _bits(per_index: object) -> bytes | None:
     if per_index is None:
         return None
     return np.asarray(per_index.indices).tobytes() + np.asarray(per_index.residuals).tobytes()  # type: ignore[attr-defined]
+
+
+@pytest.mark.parametrize(
+    ("d", "beta0", "i_min", "i_max"),
+    [(0.1, None, -10, 10), (0.5, None, -200, 300), (1e-3, 0.7, -9000, 11000), (0.3, 2.9, -3, 40)],
+)
+@pytest.mark.parametrize(
+    "checks",
+    [None, frozenset({"equation-18"}), frozenset({"equation-19"}), frozenset({"equation-20"})],
+)
+def test_blocked_image_comparisons_give_the_stored_closed_forms_checks(
+    monkeypatch: pytest.MonkeyPatch,
+    d: float,
+    beta0: float | None,
+    i_min: int,
+    i_max: int,
+    checks: frozenset[str] | None,
+) -> None:
+    """(18)-(20) without detail: each closed point made and compared a block at a time
+    (``fused_checks.closed_image_comparisons``) gives the checks, errata included, of the
+    stored closed forms, bit for bit."""
+    from app.geometry.curve import Selection
+    from app.geometry.d4b import fused_checks
+
+    def section_5() -> list[object]:
+        result = d4b.compute(Float64(), 1.0, d, beta0, i_min, i_max, selection=Selection(checks))
+        return [
+            (c.id, c.residual, c.tolerance, c.holds, c.erratum, c.note)
+            for c in result.checks
+            if c.id in SECTION_5
+        ]
+
+    blocked = section_5()
+    monkeypatch.setattr(fused_checks, "closed_image_comparisons", lambda *_: None)
+    assert blocked == section_5()
