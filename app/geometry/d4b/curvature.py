@@ -437,8 +437,8 @@ def evaluate(
     def printed_erratum(entry: tuple[str, str, str], built: Array, key: str) -> Erratum:
         fused = image_comparisons()
         if fused is not None:  # made and compared a block at a time (``image_comparisons``)
-            worst = fused[IMAGE_COMPARISONS.index(f"{key} printed")]
-            return Erratum(*entry, printed_residual=worst if math.isfinite(worst) else None)
+            found = fused[IMAGE_COMPARISONS.index(f"{key} printed")]
+            return Erratum(*entry, printed_residual=found if math.isfinite(found) else None)
         if ar.mode == "float64" and isinstance(printed, PrintedForms):  # one pass, no arrays
             return Erratum(*entry, printed_residual=printed.largest(key, built[:n], images))
         formula = printed(key)
@@ -470,12 +470,12 @@ def evaluate(
     if ar.mode == "float64" and n >= RINGS_THREADED_FROM and _both_rings(wanted):
         # both rings at once: the pseudosphere's on a second thread (the compiled pass releases
         # the GIL), the catenoid's here; the images are made here first (not thread-safe)
-        pseudo_ring, catenoid_ring = (tractrix, nt()), (p, m())
+        pseudo_gauss, catenoid_gauss = nt(), m()
         exact = not detail and len(tractrix) == len(p) == n + 1
-        fused = ring_largest if exact else ring_checks
+        fused: Callable[..., Any] = ring_largest if exact else ring_checks
         with ThreadPoolExecutor(max_workers=1, thread_name_prefix="ring") as pool:
-            pending = pool.submit(fused, ar, *pseudo_ring, -1 / (h * h))
-            memo["catenoid"] = fused(ar, *catenoid_ring, None)
+            pending = pool.submit(fused, ar, tractrix, pseudo_gauss, -1 / (h * h))
+            memo["catenoid"] = fused(ar, p, catenoid_gauss, None)
             memo["pseudo"] = pending.result()
 
     def curvatures(pseudosphere: bool) -> Any:
@@ -576,7 +576,7 @@ def evaluate(
                 pole_resolution() if chosen[2] else None,
             )
 
-        return shared("image comparisons", make)  # type: ignore[no-any-return]
+        return shared("image comparisons", make)
 
     def slope_erratum() -> Erratum:
         if ar.mode == "float64":  # the same numbers in one pass, the largest alone
