@@ -23,17 +23,21 @@ server's environment (the Makefile's ``SERVER_ENV``). ``--checks-only`` skips pa
 
 from __future__ import annotations
 
+import math
 import statistics
 import sys
 import time
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
+import numba
 import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
+from app.geometry.compiled import hypot, running_largest
 from app.geometry.curve import EVERYTHING, Selection
 from app.geometry.d1 import construction as d1
 from app.geometry.d3 import construction as d3
@@ -147,6 +151,208 @@ def checks(n: int = 10**6, rounds: int = 5) -> None:
         print(f"  {method + ': checks=none':<58} {statistics.median(none) * 1e3:8.1f} ms")
 
 
+# --- part 0: the arithmetic every check needs, and what it costs here at the least ---
+
+#: Per vertex of a 10^6 D4b with every check (method=construction), the calls each check's
+#: float64 pass makes, counted from the kernels' source (session 18): (check, divisions,
+#: square roots, libm-exact hypots, numpy cosh/sinh/tanh, numpy atan2). A ``length`` or
+#: ``length3`` is one square root; the fits keep libm's hypot (their constants are shown).
+#: Session 18 moved the rings (2 nested hypots a face), Darboux (3) and erratum E2 (1) from
+#: hypot to a square root. Divisions by a power of two are products and are not counted.
+ARITHMETIC: tuple[tuple[str, int, int, int, int, int], ...] = (
+    ("Theorem 4's hypothesis", 2, 0, 0, 0, 0),
+    ("Theorem 4 (i)-(iii): three fits + (2)'s misfit", 22, 0, 1, 0, 0),
+    ("erratum E2 (the proof's ratio)", 2, 1, 0, 0, 0),
+    ("Theorem 4's rotation angle (three atan2)", 0, 0, 0, 0, 3),
+    ("(13) and its two-step form", 8, 0, 0, 0, 0),
+    ("two-step as printed (E3)", 2, 0, 0, 0, 0),
+    ("Theorems 5, 6 (closed forms (14), (16) + comparison)", 3, 4, 0, 3, 0),
+    ("Darboux: edges and distance", 2, 3, 0, 0, 0),
+    ("Nikolaides' right angles", 2, 0, 0, 0, 0),
+    ("(18)-(20) closed forms (19), (20)", 2, 0, 0, 4, 0),
+    ("(18), (19), (20) corrected and printed comparisons", 8, 12, 0, 0, 0),
+    ("(18)'s slope form as printed (E61)", 4, 2, 0, 0, 0),
+    ("(19) as a rotation, (20) by inversion, resolutions", 4, 4, 0, 0, 0),
+    ("Theorems 7, 8 and (17): two rings", 12, 4, 0, 0, 0),
+)
+
+
+#: Entries of the cache-resident block the primitives loop over (``arithmetic``): 3 × 32 KB.
+BLOCK = 4096
+
+
+@numba.njit(error_model="numpy")
+def _divisions(x: Any, y: Any, out: Any, rounds: int) -> None:
+    for _ in range(rounds):
+        for k in range(x.shape[0]):
+            out[k] = x[k] / y[k]
+
+
+@numba.njit(error_model="numpy")
+def _roots(x: Any, y: Any, out: Any, rounds: int) -> None:
+    for _ in range(rounds):
+        for k in range(x.shape[0]):
+            out[k] = math.sqrt(x[k] * x[k] + y[k] * y[k])
+
+
+@numba.njit(error_model="numpy")
+def _hypots(x: Any, y: Any, out: Any, rounds: int) -> None:
+    for _ in range(rounds):
+        for k in range(x.shape[0]):
+            out[k] = hypot(x[k], y[k])
+
+
+@numba.njit(error_model="numpy")
+def _sums(x: Any, y: Any, out: Any, rounds: int) -> None:
+    for _ in range(rounds):
+        for k in range(x.shape[0]):
+            out[k] = x[k] + y[k]
+
+
+@numba.njit(error_model="numpy")
+def _divisions_scalar(x: Any, y: Any, out: Any, rounds: int) -> None:
+    largest = 0.0
+    for _ in range(rounds):
+        for k in range(x.shape[0]):
+            largest = running_largest(x[k] / y[k], largest)
+    out[0] = largest
+
+
+@numba.njit(error_model="numpy")
+def _roots_scalar(x: Any, y: Any, out: Any, rounds: int) -> None:
+    largest = 0.0
+    for _ in range(rounds):
+        for k in range(x.shape[0]):
+            largest = running_largest(math.sqrt(x[k] * x[k] + y[k] * y[k]), largest)
+    out[0] = largest
+
+
+@numba.njit(error_model="numpy")
+def _hypots_scalar(x: Any, y: Any, out: Any, rounds: int) -> None:
+    largest = 0.0
+    for _ in range(rounds):
+        for k in range(x.shape[0]):
+            largest = running_largest(hypot(x[k], y[k]), largest)
+    out[0] = largest
+
+
+@numba.njit(error_model="numpy")
+def _sums_scalar(x: Any, y: Any, out: Any, rounds: int) -> None:
+    largest = 0.0
+    for _ in range(rounds):
+        for k in range(x.shape[0]):
+            largest = running_largest(x[k] + y[k], largest)
+    out[0] = largest
+
+
+@numba.njit(error_model="numpy")
+def _libm_cosh(x: Any, y: Any, out: Any, rounds: int) -> None:
+    for _ in range(rounds):
+        for k in range(x.shape[0]):
+            out[k] = math.cosh(x[k])
+
+
+@numba.njit(error_model="numpy")
+def _libm_atan2(x: Any, y: Any, out: Any, rounds: int) -> None:
+    for _ in range(rounds):
+        for k in range(x.shape[0]):
+            out[k] = math.atan2(x[k], y[k])
+
+
+def _numpy_rounds(function: Any) -> Callable[[Any, Any, Any, int], None]:
+    """A numpy ufunc over the block, ``rounds`` times (its arguments as the kernels')."""
+
+    def run(x: Any, y: Any, out: Any, rounds: int) -> None:
+        for _ in range(rounds):
+            if function is np.arctan2:
+                function(x, y, out=out)
+            else:
+                function(x, out=out)
+
+    return run
+
+
+def arithmetic(n: int = 10**6, repeat: int = 9) -> float:
+    """Part 0: ns per entry of each primitive, n entries in all over a cache-resident block
+    (``BLOCK``, so memory is not what is timed; median of ``repeat``, CPU time), in a loop the
+    compiler vectorizes (``out[k] = …``) and in one it cannot (a running largest, as the checks'
+    passes keep), less the same loop adding two numbers; then the counts of ``ARITHMETIC`` times
+    those costs: the least time the checks' arithmetic takes on one core, however the passes
+    are fused. Returns the floor (vectorized) in seconds."""
+    rng = np.random.default_rng(18)
+    x = rng.uniform(0.5, 2.0, BLOCK)  # moderate magnitudes: hypot's unscaled branch
+    y = rng.uniform(0.5, 2.0, BLOCK)
+    t = rng.uniform(-30.0, 30.0, BLOCK)  # the closed forms' arguments at 10^6 (|t| <= 100)
+    out = np.empty(BLOCK)
+    rounds = max(n // BLOCK, 1)
+
+    def cpu(run: Callable[[Any, Any, Any, int], None], first: Any = x) -> float:
+        run(first, y, out, 1)
+        samples = []
+        for _ in range(repeat):
+            start = time.process_time()
+            run(first, y, out, rounds)
+            samples.append(time.process_time() - start)
+        return statistics.median(samples) / (rounds * BLOCK) * 1e9
+
+    base, base_scalar = cpu(_sums), cpu(_sums_scalar)
+    rows = {
+        "division": (cpu(_divisions), cpu(_divisions_scalar)),
+        "√(x² + y²)": (cpu(_roots), cpu(_roots_scalar)),
+        "hypot (libm's bits, inline)": (cpu(_hypots), cpu(_hypots_scalar)),
+        "cosh (numpy | libm)": (cpu(_numpy_rounds(np.cosh), t), cpu(_libm_cosh, t)),
+        "sinh (numpy)": (cpu(_numpy_rounds(np.sinh), t), math.nan),
+        "tanh (numpy)": (cpu(_numpy_rounds(np.tanh), t), math.nan),
+        "atan2 (numpy | libm)": (cpu(_numpy_rounds(np.arctan2)), cpu(_libm_atan2)),
+    }
+    print(
+        f" the checks' arithmetic, {n:,} entries over a {BLOCK}-entry block (ns an entry, CPU, "
+        f"median of {repeat}; less an addition's loop: {base:.2f} / {base_scalar:.2f} ns)"
+    )
+    print(f"  {'primitive':<30} {'vectorized':>10} {'scalar loop':>12}")
+    net: dict[str, tuple[float, float]] = {}
+    for name, (fast, slow) in rows.items():
+        libm = name.endswith("libm)")
+        vector = max(fast - base, 0.0)
+        scalar = max(slow - (base if libm else base_scalar), 0.0) if slow == slow else vector
+        net[name] = (vector, scalar)
+        print(f"  {name:<30} {vector:10.2f} {scalar:12.2f}")
+    kinds = (
+        ("division",),
+        ("√(x² + y²)",),
+        ("hypot (libm's bits, inline)",),
+        ("cosh (numpy | libm)", "sinh (numpy)", "tanh (numpy)"),
+        ("atan2 (numpy | libm)",),
+    )
+    # the checks take numpy's cosh, sinh, tanh and arctan2: their vectorized cost in both columns
+    per_kind = [statistics.mean(net[name][0] for name in kind) for kind in kinds]
+    per_kind_scalar = [
+        statistics.mean(net[name][0 if k >= 3 else 1] for name in kind)
+        for k, kind in enumerate(kinds)
+    ]
+    print(f"  {'per vertex, every check':<54} div sqrt hyp hyp.fn atan2   floor ns  scalar ns")
+    total = total_scalar = 0.0
+    counts = [0] * 5
+    for label, *row in ARITHMETIC:
+        ns = sum(c * cost for c, cost in zip(row, per_kind, strict=True))
+        ns_scalar = sum(c * cost for c, cost in zip(row, per_kind_scalar, strict=True))
+        total, total_scalar = total + ns, total_scalar + ns_scalar
+        counts = [a + b for a, b in zip(counts, row, strict=True)]
+        print(
+            f"  {label:<54} {row[0]:3d} {row[1]:4d} {row[2]:3d} {row[3]:6d} {row[4]:5d}"
+            f" {ns:10.1f} {ns_scalar:10.1f}"
+        )
+    print(
+        f"  {'total':<54} {counts[0]:3d} {counts[1]:4d} {counts[2]:3d} {counts[3]:6d} "
+        f"{counts[4]:5d} {total:10.1f} {total_scalar:10.1f}"
+    )
+    print(
+        f"  arithmetic floor at 10^6 vertices: {total:.0f} ms vectorized, {total_scalar:.0f} ms "
+        f"in scalar passes (ns/vertex × 10^6; the 100× target ≈ 100 ms)"
+    )
+    return total * 1e-3
+
+
 def first_request() -> None:
     from bench.load import free_port
     from bench.serving import fetch, start_server
@@ -217,19 +423,27 @@ source, destination = np.ones((n, 2)), np.zeros((n, 2))
 np.copyto(destination, source)
 floor = cpu(lambda: np.copyto(destination, source), 101)
 print(f"copy floor, 10^6 (warm, median of 101)|{floor * 1e3:.2f} ms")
+# the issue's own floor: a plain np.copy of the output, fresh pages each time (median of 101)
+fresh = cpu(lambda: source.copy(), 101)
+print(f"issue's floor: np.copy, fresh pages (median of 101)|{fresh * 1e3:.2f} ms")
 lo, hi = -(n // 2), n - n // 2 - 1
 none = Selection(checks=frozenset())
 for method in ("closed-form", "construction"):
     def run(selection, m=method):
-        start = time.process_time()
+        start, wall = time.process_time(), time.perf_counter()
         full.compute(ar, 1.0, 1e-4, None, lo, hi, m, selection=selection)
-        return time.process_time() - start
+        return time.process_time() - start, time.perf_counter() - wall
     run(EVERYTHING), run(none)
     pairs = [(run(EVERYTHING), run(none)) for _ in range(3)]
-    every = statistics.median(e for e, _ in pairs)
-    alone = statistics.median(e - o for e, o in pairs)
+    every = statistics.median(e[0] for e, _ in pairs)
+    alone = statistics.median(e[0] - o[0] for e, o in pairs)
+    alone_wall = statistics.median(e[1] - o[1] for e, o in pairs)
     print(f"D4b 10^6 every check, {method}|{every * 1e3:.0f} ms {every / floor:.0f}x")
-    print(f"D4b 10^6 checks alone, {method}|{alone * 1e3:.0f} ms {alone / floor:.0f}x")
+    print(
+        f"D4b 10^6 checks alone, {method}|{alone * 1e3:.0f} ms {alone / floor:.0f}x"
+        f" (issue's floor {alone / fresh:.0f}x)"
+    )
+    print(f"D4b 10^6 checks alone, wall, {method}|{alone_wall * 1e3:.0f} ms")
 """
 
 
@@ -250,6 +464,7 @@ def against(base: str, rounds: int, parts: str) -> None:
     plain = {k: v for k, v in os.environ.items() if not k.startswith("MALLOC_")}
     settings = {"glibc": plain, "server env": {**plain, **server_env()}}
     figures: dict[str, dict[str, list[str]]] = {}
+    loads = [os.getloadavg()[0]]
     for _ in range(rounds):
         for setting, env in settings.items():
             for name, root in (("base", base), ("here", str(ROOT))):
@@ -266,19 +481,27 @@ def against(base: str, rounds: int, parts: str) -> None:
                     if not label.endswith("10^5"):
                         label = f"{label} [{setting}]"
                     figures.setdefault(label, {}).setdefault(name, []).append(value)
-    print(f" {base} → this tree, {rounds} rounds, each in its own process (CPU time)")
+    loads.append(os.getloadavg()[0])
+    print(
+        f" {base} → this tree, {rounds} rounds, each in its own process (CPU time unless "
+        f"said; load average {loads[0]:.1f} at the start, {loads[1]:.1f} at the end)"
+    )
     for label, by_tree in sorted(figures.items(), key=lambda item: item[0].endswith("]")):
         before, after = ", ".join(by_tree["base"]), ", ".join(by_tree["here"])
         print(f"  {label:<58} {before}  →  {after}")
 
 
 def main() -> None:
+    if "--arithmetic" in sys.argv:
+        arithmetic()
+        return
     if "--base" in sys.argv:
         rounds = int(sys.argv[sys.argv.index("--rounds") + 1]) if "--rounds" in sys.argv else 2
         parts = "2" if "--checks-only" in sys.argv else "1"
         against(sys.argv[sys.argv.index("--base") + 1], rounds, parts)
         return
     print("Compiled float64 kernels (median of paired ratios; CPU time unless said)")
+    arithmetic()
     constructions()
     checks()
     first_request()

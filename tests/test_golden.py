@@ -63,6 +63,17 @@ TEXT_CHANGES: dict[tuple[str, str], str] = {
 #: scale); no vertex, companion, tolerance or verdict moved (24 answers compared with main,
 #: n up to 6001, d = 0.5 and 1e-3, detail). Residuals below 1e-9 compare equal
 #: (RESIDUAL_KEYS), so no entry below is needed.
+#: Issue 13 (session 18): the float64 residual passes of the rings (|a(f)| of each face: Theorems
+#: 7, 8 and (17) of D4b), of Darboux's edges and distances (D4a, D4b) and of erratum E2's ratio
+#: (D4b) take the square root of the sum of squares (``compiled.length``/``length3``, within 2
+#: ulp) where they called libm's exact hypot (≈ 4.7 ns against ≈ 1.8 a call here; 8 a vertex of
+#: every check): residuals move at rounding level, at most 5.8e-17 absolute (darboux-d4b-distance
+#: at d = 0.5h, tolerance 3.0e-13); in the default answers equation-17 of /discretizations/d4b
+#: 9.98e-19 -> 1.06e-18 and darboux-d4a-distance of /discretizations/d4a 2.630e-16 -> 2.585e-16;
+#: printed residuals by at most 1.6e-14 relative (theorem-4-i's E2 at h = 100, d = 1). No vertex,
+#: companion, tolerance or verdict moved (137 checks compared with main, D4b n up to 100,000,
+#: d = 0.5h, 0.99h, 1e-3, 1e-4, tilted starts, and D4a). Residuals below 1e-9 and printed
+#: residuals to 1e-6 compare equal (RESIDUAL_KEYS), so no entry below is needed.
 VALUE_CHANGES = re.compile(
     r"\.companions\.tractrix_gauss_image\."
     r"|^/surfaces/pseudosphere(-gauss-image)?\.face_values\.(H|K|planarity)\["

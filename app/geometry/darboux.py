@@ -11,7 +11,7 @@ from typing import Any
 import numpy as np
 
 from app.geometry.checks import point_distance
-from app.geometry.compiled import hypot, kernel
+from app.geometry.compiled import kernel, length
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array
 
@@ -52,11 +52,13 @@ def _f64(points: Array) -> Any:
 
 @kernel("float64[:](float64[:, :], float64[:, :])")
 def _edge_length_residuals(x: Any, e: Any) -> Any:
-    """``edge_length_residuals`` entry by entry (lengths by libm's hypot, inline)."""
+    """``edge_length_residuals`` entry by entry, the lengths by ``compiled.length`` (the square
+    root of the sum of squares, within 2 ulp of libm's hypot, which costs ≈ 4.7 ns an entry
+    here against ≈ 1.8; hypot where squares overflow or underflow)."""
     out = np.empty(max(x.shape[0] - 1, 0))
     for k in range(x.shape[0] - 1):
-        ex = hypot(x[k + 1, 0] - x[k, 0], x[k + 1, 1] - x[k, 1])
-        ee = hypot(e[k + 1, 0] - e[k, 0], e[k + 1, 1] - e[k, 1])
+        ex = length(x[k + 1, 0] - x[k, 0], x[k + 1, 1] - x[k, 1])
+        ee = length(e[k + 1, 0] - e[k, 0], e[k + 1, 1] - e[k, 1])
         size = abs(x[k + 1, 0]) + abs(x[k + 1, 1]) + abs(x[k, 0]) + abs(x[k, 1])
         size = size + abs(e[k + 1, 0]) + abs(e[k + 1, 1]) + abs(e[k, 0]) + abs(e[k, 1])
         out[k] = abs(ee - ex) / size
@@ -65,10 +67,10 @@ def _edge_length_residuals(x: Any, e: Any) -> Any:
 
 @kernel("float64[:](float64[:, :], float64[:, :], float64)")
 def _distance_residuals(x: Any, e: Any, expected: float) -> Any:
-    """``distance_residuals`` entry by entry."""
+    """``distance_residuals`` entry by entry, the distance by ``compiled.length``."""
     out = np.empty(x.shape[0])
     for k in range(x.shape[0]):
-        distance = hypot(x[k, 0] - e[k, 0], x[k, 1] - e[k, 1])
+        distance = length(x[k, 0] - e[k, 0], x[k, 1] - e[k, 1])
         size = abs(x[k, 0]) + abs(x[k, 1]) + abs(e[k, 0]) + abs(e[k, 1])
         out[k] = abs(distance - expected) / size
     return out

@@ -8,7 +8,13 @@ import pytest
 from app.geometry import conditions
 from app.geometry.checks import relative_to
 from app.geometry.d4b import discretization, residual_kernels
-from app.geometry.d4b.fused_checks import Fits, closed_comparisons, fill_closed_forms, numpy_sum
+from app.geometry.d4b.fused_checks import (
+    Fits,
+    closed_comparisons,
+    closed_kinematic_comparisons,
+    fill_closed_forms,
+    numpy_sum,
+)
 from app.geometry.precision import Float64
 
 
@@ -110,6 +116,9 @@ _CLOSED_IMAGES = ("closed_tractrix_gauss", "closed_contact", "closed_gauss")
         (100.0, 1.0, 1.2, -300, 300, "construction"),
         (1.0, 1e-3, None, 0, 3000, "construction"),
         (1.0, 0.1, None, 0, 0, "construction"),
+        # beyond one block (8192 rows): three blocks, the last a short one
+        (1.0, 1e-3, 0.7, -9000, 11000, "construction"),
+        (1.0, 1e-4, None, -8191, 0, "closed-form"),
     ],
 )
 def test_closed_forms_have_the_separate_bits(
@@ -127,6 +136,20 @@ def test_closed_forms_have_the_separate_bits(
     for name in _CLOSED_IMAGES:
         a, b = getattr(fused.gauss, name), getattr(separate.gauss, name)
         assert a.shape == b.shape and a.flags.c_contiguous and _same(a, b), name
+
+
+@pytest.mark.parametrize(("images", "kinematic"), [(True, False), (False, True)])
+def test_closed_forms_make_only_those_asked_for(images: bool, kinematic: bool) -> None:
+    ar = Float64()
+    fused = discretization.polygons(ar, 1.0, 1e-3, 0.4, -5000, 9000)
+    fill_closed_forms(fused, images, kinematic)
+    separate = discretization.polygons(ar, 1.0, 1e-3, 0.4, -5000, 9000)
+    assert all((name in vars(fused)) == kinematic for name in _CLOSED)
+    assert all((name in vars(fused.gauss)) == images for name in _CLOSED_IMAGES)
+    for name in _CLOSED if kinematic else ():
+        assert _same(getattr(fused, name), getattr(separate, name)), name
+    for name in _CLOSED_IMAGES if images else ():
+        assert _same(getattr(fused.gauss, name), getattr(separate.gauss, name)), name
 
 
 def test_closed_forms_keep_what_is_there_and_leave_overflows_to_closed_forms() -> None:
@@ -159,3 +182,33 @@ def test_closed_comparisons_are_the_largest_of_the_arrays(
     assert _same(theorem_6, np.abs(expected_6).max())
     moved = data.replaced(p=data.p * (1 + 1e-6))
     assert closed_comparisons(moved, n)[0] > 5e-7
+    # one theorem alone: its own largest, the other's closed form not made
+    alone = discretization.polygons(Float64(), h, d, beta0, i_min, i_max)
+    assert _same(closed_comparisons(alone, n, theorem_5=False)[1], theorem_6)
+    assert "closed_p" not in vars(alone)
+    assert _same(closed_comparisons(alone, n, theorem_6=False)[0], theorem_5)
+    # the closed points made and compared a block at a time: the same largest, nothing stored
+    fresh = discretization.polygons(Float64(), h, d, beta0, i_min, i_max)
+    found = closed_kinematic_comparisons(fresh, n)
+    assert found is not None and _same(found[0], theorem_5) and _same(found[1], theorem_6)
+    assert not {"closed_p", "closed_tractrix"} & vars(fresh).keys()
+    assert _same(closed_kinematic_comparisons(fresh, n, theorem_5=False)[1], theorem_6)  # type: ignore[index]
+    assert closed_kinematic_comparisons(moved, n)[0] > 5e-7  # type: ignore[index]
+
+
+@pytest.mark.parametrize(
+    ("h", "d", "beta0", "i_min", "i_max"),
+    [(1.0, 1e-3, 0.7, -9000, 11000), (1.0, 1e-4, None, -8191, 8191), (1.0, 0.5, None, 0, 700)],
+)
+def test_closed_kinematic_comparisons_beyond_one_block(
+    h: float, d: float, beta0: float | None, i_min: int, i_max: int
+) -> None:
+    data = discretization.polygons(Float64(), h, d, beta0, i_min, i_max)
+    n = data.vertices - 1
+    found = closed_kinematic_comparisons(data, n)
+    if i_max == 700:  # cosh((i − ½)L) overflows: left to the separate closed forms
+        assert found is None
+        return
+    assert found is not None
+    expected = closed_comparisons(data, n)
+    assert _same(found[0], expected[0]) and _same(found[1], expected[1])

@@ -118,10 +118,16 @@ def evaluate(
     constants of (D1), (D3) and (2) come with the checks that fit them (Theorem 4 (i)–(iii)),
     as ``Selection.constants`` has it: a selection without those checks computes no fit.
     """
-    ctx = _Context(ar, ar.scalar(h), ar.scalar(d), data, detail)
+    ctx = _Context(ar, ar.scalar(h), ar.scalar(d), data, detail, selection)
     if ar.mode == "float64" and any(selection.wants_check(s.id) for s in _CLOSED_FORMS):
-        images = any(selection.wants_check(s.id) for s in _CLOSED_FORMS[2:])
-        fused_checks.fill_closed_forms(data, images)  # the five closed forms in a few calls
+        # Theorems 5, 6 without detail compare block by block (``closed_largest``): no arrays
+        kinematic = detail and any(selection.wants_check(s.id) for s in _CLOSED_FORMS[:2])
+        # (18)-(20) on constructed images without detail compare block by block (``curvature``)
+        images = (detail or not data.constructed) and any(
+            selection.wants_check(s.id) for s in _CLOSED_FORMS[2:]
+        )
+        # the closed forms the selected statements compare with, in a few calls a block
+        fused_checks.fill_closed_forms(data, images, kinematic)
     checks = []
     for statement, evaluator in _EVALUATORS:
         if selection.wants_check(statement.id):
@@ -169,9 +175,16 @@ class _Context:
     """What the checks of one computation share, each part computed when first needed."""
 
     def __init__(
-        self, ar: Arithmetic, h: Scalar, d: Scalar, data: D4bPolygons, detail: bool
+        self,
+        ar: Arithmetic,
+        h: Scalar,
+        d: Scalar,
+        data: D4bPolygons,
+        detail: bool,
+        selection: Selection = EVERYTHING,
     ) -> None:
         self.ar, self.h, self.d, self.data, self.detail = ar, h, d, data, detail
+        self.selection = selection
         self.n = data.vertices - 1
         self.indices = np.arange(data.i_min, data.i_min + self.n + 1, dtype=np.int64)
 
@@ -204,8 +217,18 @@ class _Context:
 
     @cached_property
     def closed_largest(self) -> tuple[float, float]:
-        """Float64: the largest residuals of Theorems 5 and 6, from one compiled pass."""
-        return fused_checks.closed_comparisons(self.data, self.n)
+        """Float64: the largest residuals of Theorems 5 and 6 (those selected), from one
+        compiled pass."""
+        wanted = self.selection.wants_check
+        theorem_5, theorem_6 = wanted(THEOREM_5.id), wanted(THEOREM_6.id)
+        given = {"closed_p", "closed_tractrix"} & vars(self.data).keys()
+        if self.data.constructed and not given:  # each closed point compared as it is made
+            found = fused_checks.closed_kinematic_comparisons(
+                self.data, self.n, theorem_5, theorem_6
+            )
+            if found is not None:
+                return found
+        return fused_checks.closed_comparisons(self.data, self.n, theorem_5, theorem_6)
 
     @cached_property
     def fused_fits(self) -> fused_checks.Fits:

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from concurrent.futures import ThreadPoolExecutor
 from functools import cached_property
 from typing import Any, ClassVar
 
@@ -46,8 +47,10 @@ from app.geometry.checks import (
 from app.geometry.d4b import (
     arb_gauss,
     closed_forms as kinematic_closed_forms,
+    fused_checks,
     residual_kernels,
 )
+from app.geometry.d4b.fused_checks import CLOSED_IMAGES, IMAGE_COMPARISONS
 from app.geometry.d4b.residual_kernels import point_distance, relative_point_difference
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
@@ -324,6 +327,19 @@ class PrintedForms:
         )
 
 
+#: From this many faces a float64 computation that needs both rings (Theorems 7 and 8, or
+#: (17)) computes them on two threads (≈ 45 ms each at 10^6 faces here; a thread costs ≈ 0.1 ms).
+RINGS_THREADED_FROM = 100_000
+
+
+def _both_rings(wanted: Callable[[str], bool]) -> bool:
+    """Whether the selected statements read both rings: Theorem 7 the pseudosphere's, Theorem 8
+    the catenoid's, (17) both."""
+    if wanted(EQUATION_17.id):
+        return True
+    return wanted(THEOREM_7.id) and wanted(THEOREM_8.id)
+
+
 def printed_forms(
     ar: Arithmetic, h: Scalar, d: Scalar, shift: Scalar, i_min: int, i_max: int
 ) -> PrintedForms:
@@ -378,7 +394,7 @@ def evaluate(
     def closed(
         statement: Statement,
         built: Array,
-        formula: Array,
+        closed_form: Callable[[], Array],
         erratum: Erratum,
         tolerance: float = construction_tolerance,
         scale: Any = None,
@@ -389,7 +405,28 @@ def evaluate(
                 tolerance,
                 "method=closed-form: the Gauss image was not constructed to compare",
             )
-        if scale is not None and ar.mode == "float64":  # the same product, in one pass
+        fused = image_comparisons()
+        if fused is not None:  # made and compared a block at a time (``image_comparisons``)
+            largest = fused[IMAGE_COMPARISONS.index(statement.id.removeprefix("equation-"))]
+            return check(
+                statement,
+                Largest(
+                    largest,
+                    n,
+                    lambda: residual_kernels.largest_scaled_relative_point_difference(
+                        built[:n], closed_form()[:n], None if scale is None else scale[:n]
+                    ).residuals(),
+                ),
+                tolerance,
+                erratum,
+            )
+        formula = closed_form()
+        residuals: Array | Largest
+        if ar.mode == "float64" and not detail:  # the largest alone, in one pass, no array
+            residuals = residual_kernels.largest_scaled_relative_point_difference(
+                built[:n], formula[:n], None if scale is None else scale[:n]
+            )
+        elif scale is not None and ar.mode == "float64":  # the same product, in one pass
             residuals = residual_kernels.scaled_relative_point_difference(
                 built[:n], formula[:n], scale[:n]
             )
@@ -398,6 +435,10 @@ def evaluate(
         return check(statement, residuals, tolerance, erratum)
 
     def printed_erratum(entry: tuple[str, str, str], built: Array, key: str) -> Erratum:
+        fused = image_comparisons()
+        if fused is not None:  # made and compared a block at a time (``image_comparisons``)
+            found = fused[IMAGE_COMPARISONS.index(f"{key} printed")]
+            return Erratum(*entry, printed_residual=found if math.isfinite(found) else None)
         if ar.mode == "float64" and isinstance(printed, PrintedForms):  # one pass, no arrays
             return Erratum(*entry, printed_residual=printed.largest(key, built[:n], images))
         formula = printed(key)
@@ -425,6 +466,17 @@ def evaluate(
         if pseudosphere:
             return shared("pseudo", lambda: fused(ar, tractrix, nt(), -1 / (h * h)))
         return shared("catenoid", lambda: fused(ar, p, m(), None))
+
+    if ar.mode == "float64" and n >= RINGS_THREADED_FROM and _both_rings(wanted):
+        # both rings at once: the pseudosphere's on a second thread (the compiled pass releases
+        # the GIL), the catenoid's here; the images are made here first (not thread-safe)
+        pseudo_gauss, catenoid_gauss = nt(), m()
+        exact = not detail and len(tractrix) == len(p) == n + 1
+        fused: Callable[..., Any] = ring_largest if exact else ring_checks
+        with ThreadPoolExecutor(max_workers=1, thread_name_prefix="ring") as pool:
+            pending = pool.submit(fused, ar, tractrix, pseudo_gauss, -1 / (h * h))
+            memo["catenoid"] = fused(ar, p, catenoid_gauss, None)
+            memo["pseudo"] = pending.result()
 
     def curvatures(pseudosphere: bool) -> Any:
         """The ring's curvatures, numpy (mp, or a face without area to name)."""
@@ -495,6 +547,37 @@ def evaluate(
 
         return shared("pole resolution", make)
 
+    def image_comparisons() -> list[float] | None:
+        """Float64 without ``detail``, constructed images: the largest residuals of (18)–(20)
+        against their corrected and printed closed forms, those selected, from one blocked pass
+        that makes each closed point and compares it at once (``fused_checks``: the same
+        numbers as the stored closed forms give); None where that pass does not apply."""
+
+        def make() -> list[float] | None:
+            if not (ar.mode == "float64" and not detail and images.constructed and n > 0):
+                return None
+            if not isinstance(printed, PrintedForms) or CLOSED_IMAGES & vars(images).keys():
+                return None  # closed forms given (the tests perturb them) or made already
+            if len(nt()) < n or len(c()) < n + 1 or len(m()) < n:
+                return None
+            chosen = [wanted(s.id) for s in (EQUATION_18, EQUATION_19, EQUATION_20)]
+            return fused_checks.closed_image_comparisons(
+                ar,
+                printed.h,
+                printed.d,
+                printed.shift,
+                printed.i_min,
+                n,
+                (*chosen, *chosen),
+                nt(),
+                c(),
+                m(),
+                resolution() if chosen[1] else None,
+                pole_resolution() if chosen[2] else None,
+            )
+
+        return shared("image comparisons", make)
+
     def slope_erratum() -> Erratum:
         if ar.mode == "float64":  # the same numbers in one pass, the largest alone
             worst = residual_kernels.largest_along_printed_slope(min(n, len(p) - 1), p)
@@ -552,7 +635,7 @@ def evaluate(
             lambda: closed(
                 EQUATION_18,
                 nt(),
-                images.closed_tractrix_gauss,
+                lambda: images.closed_tractrix_gauss,
                 printed_erratum(ERRATUM_18, nt(), "18"),
                 n_tolerance,
             ),
@@ -571,7 +654,7 @@ def evaluate(
             lambda: closed(
                 EQUATION_19,
                 c()[1:],
-                images.closed_contact[1:],
+                lambda: images.closed_contact[1:],
                 printed_erratum(ERRATUM_19, c()[1:], "19"),
                 scale=resolution(),
             ),
@@ -583,7 +666,7 @@ def evaluate(
             lambda: closed(
                 EQUATION_20,
                 m(),
-                images.closed_gauss,
+                lambda: images.closed_gauss,
                 printed_erratum(ERRATUM_20, m(), "20"),
                 scale=pole_resolution(),
             ),

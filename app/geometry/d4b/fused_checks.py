@@ -34,7 +34,7 @@ from app.geometry.conditions import (
     _shared_columns,
 )
 from app.geometry.d4b import closed_forms
-from app.geometry.precision import BLOCK_SIZE, Array
+from app.geometry.precision import BLOCK_SIZE, Arithmetic, Array, Scalar
 
 if TYPE_CHECKING:
     from app.geometry.d4b.discretization import D4bPolygons
@@ -183,8 +183,9 @@ def _closed_arguments(i_min: int, i_max: int, L: float, shift: float) -> Any:
 
 
 @kernel(
-    "Tuple((float64[:, ::1], float64[:, ::1], float64[:, ::1], float64[:, ::1], float64[:, ::1]))"
-    "(int64, int64, float64[::1], float64[::1], float64[::1], float64, float64, float64, float64)"
+    "void(int64, int64, float64[::1], float64[::1], float64[::1], float64, float64, float64, "
+    "float64, boolean, boolean, int64, float64[:, ::1], float64[:, ::1], float64[:, ::1], "
+    "float64[:, ::1], float64[:, ::1])"
 )
 def _closed_points(
     i_min: int,
@@ -196,71 +197,120 @@ def _closed_points(
     d: float,
     amplitude: float,
     gauss_amplitude: float,
-) -> tuple[Any, Any, Any, Any, Any]:
-    """The five closed forms from the hyperbolic functions of ``_closed_arguments`` (cosh of
-    all, sinh of (16)'s, tanh of (19)'s and (20)'s), by the operations of ``closed_forms``:
-    (p, tractrix, n, ñ, m)."""
+    kinematic: bool,
+    images: bool,
+    offset: int,
+    p: Any,
+    tractrix: Any,
+    normal: Any,
+    contact: Any,
+    gauss: Any,
+) -> None:
+    """The closed forms on i_min .. i_max + 1 (ñ from i_min − 1) from the hyperbolic functions
+    of ``_closed_arguments`` (cosh of all, sinh of (16)'s, tanh of (19)'s and (20)'s), by the
+    operations of ``closed_forms``, into rows ``offset`` .. of p and the tractrix (if
+    ``kinematic``) and of n, ñ, m (if ``images``; ñ's first row is index i_min − 1)."""
     rows = i_max - i_min + 2
     step = 2 * d
-    p, tractrix = np.empty((rows, 2)), np.empty((rows, 2))
-    normal, contact, gauss = np.empty((rows, 2)), np.empty((rows + 1, 2)), np.empty((rows, 2))
     for k in range(rows):
         i = float(i_min + k)
-        x = i * step
-        p[k, 0] = x - d
-        p[k, 1] = amplitude * cosh[k]
-        sech = 1 / cosh[rows + k]
-        tractrix[k, 0] = x - h * (sinh[k] * sech)
-        tractrix[k, 1] = h * sech
-        normal[k, 0] = 1.0 / cosh[2 * rows + 1 + k]
-        normal[k, 1] = tanh[1 + k]
-        gauss[k, 0] = -tanh[rows + 1 + k]
-        gauss[k, 1] = gauss_amplitude / cosh[3 * rows + 1 + k]
-    for k in range(rows + 1):
-        contact[k, 0] = -tanh[k]
-        contact[k, 1] = 1.0 / cosh[2 * rows + k]
-    return p, tractrix, normal, contact, gauss
+        at = offset + k
+        if kinematic:
+            x = i * step
+            p[at, 0] = x - d
+            p[at, 1] = amplitude * cosh[k]
+            sech = 1 / cosh[rows + k]
+            tractrix[at, 0] = x - h * (sinh[k] * sech)
+            tractrix[at, 1] = h * sech
+        if images:
+            normal[at, 0] = 1.0 / cosh[2 * rows + 1 + k]
+            normal[at, 1] = tanh[1 + k]
+            gauss[at, 0] = -tanh[rows + 1 + k]
+            gauss[at, 1] = gauss_amplitude / cosh[3 * rows + 1 + k]
+    if images:
+        for k in range(rows + 1):
+            contact[offset + k, 0] = -tanh[k]
+            contact[offset + k, 1] = 1.0 / cosh[2 * rows + k]
 
 
-def fill_closed_forms(data: D4bPolygons, images: bool = True) -> None:
-    """Float64: Theorems 5, 6 and (18)–(20)'s closed forms of ``data`` from three numpy calls
-    (cosh, sinh, tanh: numpy's own vectorized functions, so the same bits as ``closed_forms``;
-    a contiguous slice of an argument array gives each entry the bits the separate array
-    gave) and two compiled ones, kept as if each had been computed on its own; those computed
-    already stay. Nothing is kept when a cosh overflows (``closed_forms`` has its other
-    branch for those) or beyond one block of ``Float64.points``."""
+_CLOSED_KINEMATIC = frozenset({"closed_p", "closed_tractrix"})
+#: The closed forms of (18), (19), (20) on ``GaussImages``.
+CLOSED_IMAGES = frozenset({"closed_tractrix_gauss", "closed_contact", "closed_gauss"})
+
+
+def fill_closed_forms(data: D4bPolygons, images: bool = True, kinematic: bool = True) -> None:
+    """Float64: Theorems 5, 6 (``kinematic``) and (18)–(20)'s (``images``) closed forms of
+    ``data`` from numpy's cosh, sinh and tanh (its own vectorized functions, so the same bits as
+    ``closed_forms``; a contiguous slice of an argument array gives each entry the bits the
+    separate array gave) and one compiled call, a block of ``BLOCK_SIZE`` indices at a time
+    (the arguments and the hyperbolic functions of a block stay in the cache; each point is
+    written once, into its polygon), kept as if each had been computed on its own; those
+    computed already stay. Nothing is kept when a cosh overflows (``closed_forms`` has its
+    other branch for those)."""
     rows = data.vertices
-    if rows > BLOCK_SIZE:
+    # those all there already (e.g. method=closed-form's polygons and companions) are not redone
+    kinematic = kinematic and not vars(data).keys() >= _CLOSED_KINEMATIC
+    images = images and not vars(data.gauss).keys() >= CLOSED_IMAGES
+    if not (images or kinematic) or rows == 0:
         return
     ar, h, d = data.ar, float(data.h), float(data.d)
-    L = closed_forms.log_ratio(ar, data.h, data.d)
-    shift = data.shift
-    arguments = _closed_arguments(data.i_min, data.i_max, float(L), float(shift))
-    with np.errstate(over="ignore"):
-        cosh = np.cosh(arguments)
-    if not all_finite_vector(cosh):
-        return
-    sinh = np.sinh(arguments[rows : 2 * rows])
-    tanh = np.tanh(arguments[2 * rows :])
-    amplitude = ar.sqrt((data.h - data.d) * (data.h + data.d))
-    gauss_amplitude = data.h / ar.sqrt((data.h - data.d) * (data.h + data.d))
-    p, tractrix, normal, contact, gauss = _closed_points(
-        data.i_min, data.i_max, cosh, sinh, tanh, h, d, float(amplitude), float(gauss_amplitude)
-    )
-    kept = data.__dict__
-    kept.setdefault("closed_p", p)
-    kept.setdefault("closed_tractrix", tractrix)
-    if not images:  # Section 5 not selected: its Gauss images are not made for this
-        return
-    kept = data.gauss.__dict__
-    kept.setdefault("closed_tractrix_gauss", normal)
-    kept.setdefault("closed_contact", contact)
-    kept.setdefault("closed_gauss", gauss)
+    L = float(closed_forms.log_ratio(ar, data.h, data.d))
+    shift = float(data.shift)
+    amplitude = float(ar.sqrt((data.h - data.d) * (data.h + data.d)))
+    gauss_amplitude = float(data.h / ar.sqrt((data.h - data.d) * (data.h + data.d)))
+    wide, tall = (rows, 2) if kinematic else (0, 2), (rows, 2) if images else (0, 2)
+    p, tractrix = np.empty(wide), np.empty(wide)
+    normal, gauss = np.empty(tall), np.empty(tall)
+    contact = np.empty((rows + 1, 2) if images else (0, 2))
+    block = min(rows, BLOCK_SIZE)
+    cosh, sinh, tanh = np.empty(4 * block + 1), np.empty(block), np.empty(2 * block + 1)
+    for start in range(0, rows, block):
+        count = min(block, rows - start)  # indices i_min + start .. + count − 1
+        first = data.i_min + start
+        arguments = _closed_arguments(first, first + count - 2, L, shift)
+        # cosh of (14)'s and (16)'s arguments if kinematic, of (19)'s and (20)'s if images
+        lo, hi = (0 if kinematic else 2 * count), (4 * count + 1 if images else 2 * count)
+        with np.errstate(over="ignore"):
+            np.cosh(arguments[lo:hi], out=cosh[lo:hi])
+        if not all_finite_vector(cosh[lo:hi]):
+            return
+        if kinematic:
+            np.sinh(arguments[count : 2 * count], out=sinh[:count])
+        if images:
+            np.tanh(arguments[2 * count :], out=tanh[: 2 * count + 1])
+        _closed_points(
+            first,
+            first + count - 2,
+            cosh,
+            sinh,
+            tanh,
+            h,
+            d,
+            amplitude,
+            gauss_amplitude,
+            kinematic,
+            images,
+            start,
+            p,
+            tractrix,
+            normal,
+            contact,
+            gauss,
+        )
+    if kinematic:
+        kept = data.__dict__
+        kept.setdefault("closed_p", p)
+        kept.setdefault("closed_tractrix", tractrix)
+    if images:
+        kept = data.gauss.__dict__
+        kept.setdefault("closed_tractrix_gauss", normal)
+        kept.setdefault("closed_contact", contact)
+        kept.setdefault("closed_gauss", gauss)
 
 
 @kernel(
     "UniTuple(float64, 2)(float64[:, :], float64[:, :], float64[:, :], float64[:, :], "
-    "float64[:, :], int64, float64, float64)"
+    "float64[:, :], int64, float64, float64, boolean, boolean)"
 )
 def _closed_comparisons(
     p: Any,
@@ -271,35 +321,286 @@ def _closed_comparisons(
     n: int,
     h: float,
     tiny: float,
+    theorem_5_wanted: bool,
+    theorem_6_wanted: bool,
 ) -> tuple[float, float]:
     """The largest residuals of Theorems 5 and 6 on rows 0 .. n − 1, as ``checks._closed_form``
     computes them (``residual_kernels``' relative point difference; the point distance over
-    |x_i| + h floored at ``tiny``), without the arrays: NaN if one is NaN."""
+    |x_i| + h floored at ``tiny``), without the arrays: NaN if one is NaN; 0.0 for a theorem
+    not wanted (its polygons are not read)."""
     theorem_5 = theorem_6 = 0.0
     for k in range(n):
-        ex, ey = closed_p[k, 0], closed_p[k, 1]
-        size = length(ex, ey)
-        size = size if size > tiny else tiny
-        theorem_5 = running_largest(length(p[k, 0] - ex, p[k, 1] - ey) / size, theorem_5)
-        distance = length(
-            tractrix[k, 0] - closed_tractrix[k, 0], tractrix[k, 1] - closed_tractrix[k, 1]
-        )
-        scale = abs(axis[k, 0]) + h
-        scale = scale if scale > tiny else tiny
-        theorem_6 = running_largest(abs(distance) / scale, theorem_6)
+        if theorem_5_wanted:
+            ex, ey = closed_p[k, 0], closed_p[k, 1]
+            size = length(ex, ey)
+            size = size if size > tiny else tiny
+            theorem_5 = running_largest(length(p[k, 0] - ex, p[k, 1] - ey) / size, theorem_5)
+        if theorem_6_wanted:
+            distance = length(
+                tractrix[k, 0] - closed_tractrix[k, 0], tractrix[k, 1] - closed_tractrix[k, 1]
+            )
+            scale = abs(axis[k, 0]) + h
+            scale = scale if scale > tiny else tiny
+            theorem_6 = running_largest(abs(distance) / scale, theorem_6)
     return theorem_5, theorem_6
 
 
-def closed_comparisons(data: D4bPolygons, n: int) -> tuple[float, float]:
+_NO_POINTS = np.empty((0, 2))
+
+
+@kernel(
+    "UniTuple(float64, 2)(int64, int64, float64[::1], float64[::1], float64, float64, float64, "
+    "float64[:, :], float64[:, :], float64[:, :], int64, int64, float64, boolean, boolean, "
+    "float64, float64)"
+)
+def _closed_kinematic_block(
+    i_min: int,
+    i_max: int,
+    cosh: Any,
+    sinh: Any,
+    h: float,
+    d: float,
+    amplitude: float,
+    p: Any,
+    tractrix: Any,
+    axis: Any,
+    offset: int,
+    n: int,
+    tiny: float,
+    theorem_5_wanted: bool,
+    theorem_6_wanted: bool,
+    theorem_5: float,
+    theorem_6: float,
+) -> tuple[float, float]:
+    """``_closed_comparisons`` on the rows ``offset`` .. of one block of ``fill_closed_forms``
+    (indices i_min .. i_max + 1, rows below ``n``), each closed point made as ``_closed_points``
+    makes it and compared at once, not stored; the running largest of each theorem."""
+    rows = i_max - i_min + 2
+    step = 2 * d
+    for k in range(min(rows, n - offset)):
+        at = offset + k
+        x = float(i_min + k) * step
+        if theorem_5_wanted:
+            ex, ey = x - d, amplitude * cosh[k]
+            size = length(ex, ey)
+            size = size if size > tiny else tiny
+            residual = length(p[at, 0] - ex, p[at, 1] - ey) / size
+            theorem_5 = running_largest(residual, theorem_5)
+        if theorem_6_wanted:
+            sech = 1 / cosh[rows + k]
+            tx, ty = x - h * (sinh[k] * sech), h * sech
+            distance = length(tractrix[at, 0] - tx, tractrix[at, 1] - ty)
+            scale = abs(axis[at, 0]) + h
+            scale = scale if scale > tiny else tiny
+            theorem_6 = running_largest(abs(distance) / scale, theorem_6)
+    return theorem_5, theorem_6
+
+
+def closed_kinematic_comparisons(
+    data: D4bPolygons, n: int, theorem_5: bool = True, theorem_6: bool = True
+) -> tuple[float, float] | None:
+    """Float64: ``closed_comparisons`` with the closed forms (14), (16) made a block at a time
+    and compared at once (``fill_closed_forms``' arguments and numpy calls, so the same closed
+    points and the same largest residuals), none stored: two (n, 2) arrays fewer to write. None
+    when a cosh overflows (the separate closed forms have their other branch for those)."""
+    rows = data.vertices
+    ar, h, d = data.ar, float(data.h), float(data.d)
+    L = float(closed_forms.log_ratio(ar, data.h, data.d))
+    shift = float(data.shift)
+    amplitude = float(ar.sqrt((data.h - data.d) * (data.h + data.d)))
+    block = min(rows, BLOCK_SIZE)
+    cosh, sinh = np.empty(2 * block), np.empty(block)
+    largest_5 = largest_6 = 0.0
+    p = data.p if theorem_5 else _NO_POINTS
+    tractrix, axis = (data.tractrix, data.axis) if theorem_6 else (_NO_POINTS, _NO_POINTS)
+    for start in range(0, min(rows, n), block):
+        count = min(block, rows - start)
+        first = data.i_min + start
+        arguments = _closed_arguments(first, first + count - 2, L, shift)
+        lo, hi = (0 if theorem_5 else count), (2 * count if theorem_6 else count)
+        with np.errstate(over="ignore"):
+            np.cosh(arguments[lo:hi], out=cosh[lo:hi])
+        if not all_finite_vector(cosh[lo:hi]):
+            return None
+        if theorem_6:
+            np.sinh(arguments[count : 2 * count], out=sinh[:count])
+        largest_5, largest_6 = _closed_kinematic_block(
+            first,
+            first + count - 2,
+            cosh,
+            sinh,
+            h,
+            d,
+            amplitude,
+            p,
+            tractrix,
+            axis,
+            start,
+            n,
+            TINY,
+            theorem_5,
+            theorem_6,
+            largest_5,
+            largest_6,
+        )
+    return largest_5, largest_6
+
+
+def closed_comparisons(
+    data: D4bPolygons, n: int, theorem_5: bool = True, theorem_6: bool = True
+) -> tuple[float, float]:
     """Float64: the largest residuals of Theorems 5 and 6 (construction against closed form on
-    i_min .. i_max) in one compiled pass."""
+    i_min .. i_max) in one compiled pass; a theorem not asked for reads none of its polygons
+    (its closed form is not made for the other) and gives 0.0."""
     return _closed_comparisons(
-        data.p,
-        data.closed_p,
-        data.tractrix,
-        data.closed_tractrix,
-        data.axis,
+        data.p if theorem_5 else _NO_POINTS,
+        data.closed_p if theorem_5 else _NO_POINTS,
+        data.tractrix if theorem_6 else _NO_POINTS,
+        data.closed_tractrix if theorem_6 else _NO_POINTS,
+        data.axis if theorem_6 else _NO_POINTS,
         n,
         float(data.h),
         TINY,
+        theorem_5,
+        theorem_6,
     )
+
+
+#: The largest residuals ``closed_image_comparisons`` gives, in this order: (18), (19), (20)
+#: against their corrected closed forms, then each against its printed form (the errata).
+IMAGE_COMPARISONS = ("18", "19", "20", "18 printed", "19 printed", "20 printed")
+
+
+@kernel(
+    "void(int64, int64, float64[::1], float64[::1], float64, float64, float64, float64[:, :], "
+    "float64[:, :], float64[:, :], float64[:], float64[:], int64, int64, float64, boolean[:], "
+    "float64[::1])"
+)
+def _closed_image_block(
+    i_min: int,
+    i_max: int,
+    cosh: Any,
+    tanh: Any,
+    h: float,
+    d: float,
+    gauss_amplitude: float,
+    normals: Any,
+    contact: Any,
+    gauss: Any,
+    contact_scale: Any,
+    gauss_scale: Any,
+    offset: int,
+    n: int,
+    tiny: float,
+    wanted: Any,
+    largest: Any,
+) -> None:
+    """One block of ``fill_closed_forms`` (indices i_min .. i_max + 1, rows ``offset`` .., those
+    below ``n``): n_i, ñ_i and m_i's closed forms made as ``_closed_points`` makes them and
+    compared at once, as ``curvature.evaluate`` compares the stored ones (``closed``: the
+    relative point difference, times the resolution for (19) and (20); ``PrintedForms.largest``:
+    ``residual_kernels._largest_printed_gauss``), into the running ``largest`` of each
+    ``wanted`` entry of ``IMAGE_COMPARISONS``."""
+    rows = i_max - i_min + 2
+    for k in range(min(rows, n - offset)):
+        at = offset + k
+        # n_i = (sech t, tanh t) and ñ_i = (−tanh t, sech t), t = (i + τ)L; m_i
+        sech, th = 1.0 / cosh[2 * rows + 1 + k], tanh[1 + k]
+        if wanted[0]:
+            size = length(sech, th)
+            size = size if size > tiny else tiny
+            value = length(normals[at, 0] - sech, normals[at, 1] - th) / size
+            largest[0] = running_largest(value, largest[0])
+        if wanted[3]:  # (18) printed: (sech t, −tanh t)
+            size = length(sech, -th)
+            size = size if size > tiny else tiny
+            value = length(normals[at, 0] - sech, normals[at, 1] - -th) / size
+            largest[3] = running_largest(value, largest[3])
+        if wanted[1] or wanted[4]:
+            cx, cy = -th, sech  # ñ_i at row k + 1 of the contact points (from i_min − 1)
+            if wanted[1]:
+                size = length(cx, cy)
+                size = size if size > tiny else tiny
+                value = length(contact[at + 1, 0] - cx, contact[at + 1, 1] - cy) / size
+                largest[1] = running_largest(value * contact_scale[at], largest[1])
+            if wanted[4]:  # (19) printed: (tanh t, sech t)
+                x, y = -cx, cy
+                size = length(x, y)
+                size = size if size > tiny else tiny
+                value = length(contact[at + 1, 0] - x, contact[at + 1, 1] - y) / size
+                largest[4] = running_largest(value, largest[4])
+        if wanted[2]:
+            mx, my = -tanh[rows + 1 + k], gauss_amplitude / cosh[3 * rows + 1 + k]
+            size = length(mx, my)
+            size = size if size > tiny else tiny
+            value = length(gauss[at, 0] - mx, gauss[at, 1] - my) / size
+            largest[2] = running_largest(value * gauss_scale[at], largest[2])
+        if wanted[5]:  # (20) printed, from n_i: ((h tanh t − d), h sech t)/(h + d tanh t)
+            denominator = h + d * th
+            x, y = (h * th - d) / denominator, h * sech / denominator
+            size = length(x, y)
+            size = size if size > tiny else tiny
+            value = length(gauss[at, 0] - x, gauss[at, 1] - y) / size
+            largest[5] = running_largest(value, largest[5])
+
+
+def closed_image_comparisons(
+    ar: Arithmetic,
+    h_scalar: Scalar,
+    d_scalar: Scalar,
+    shift_scalar: Scalar,
+    i_min: int,
+    n: int,
+    wanted: tuple[bool, ...],
+    normals: Array,
+    contact: Array,
+    gauss: Array,
+    contact_scale: Array | None,
+    gauss_scale: Array | None,
+) -> list[float] | None:
+    """Float64: the largest residuals of ``IMAGE_COMPARISONS`` (those ``wanted``; 0.0 for the
+    others) of the Gauss images n, ñ (from i_min − 1) and m against their closed forms, made a
+    block at a time with ``fill_closed_forms``' arguments and numpy calls and compared at once,
+    none stored (three (n, 2) arrays fewer to write); the polygon's h, d, τ and i_min given, its
+    rows i_min .. i_min + n. None when a cosh overflows."""
+    rows = n + 1
+    h, d = float(h_scalar), float(d_scalar)
+    L = float(closed_forms.log_ratio(ar, h_scalar, d_scalar))
+    shift = float(shift_scalar)
+    gauss_amplitude = float(h_scalar / ar.sqrt((h_scalar - d_scalar) * (h_scalar + d_scalar)))
+    block = min(rows, BLOCK_SIZE)
+    cosh, tanh = np.empty(4 * block + 1), np.empty(2 * block + 1)
+    largest = np.zeros(len(IMAGE_COMPARISONS))
+    flags = np.array(wanted, dtype=np.bool_)
+    none = np.empty(0)
+    scale_19 = none if contact_scale is None else np.asarray(contact_scale, dtype=np.float64)
+    scale_20 = none if gauss_scale is None else np.asarray(gauss_scale, dtype=np.float64)
+    for start in range(0, min(rows, n), block):
+        count = min(block, rows - start)
+        first = i_min + start
+        arguments = _closed_arguments(first, first + count - 2, L, shift)
+        with np.errstate(over="ignore"):
+            np.cosh(arguments[2 * count :], out=cosh[2 * count : 4 * count + 1])
+        if not all_finite_vector(cosh[2 * count : 4 * count + 1]):
+            return None
+        np.tanh(arguments[2 * count :], out=tanh[: 2 * count + 1])
+        _closed_image_block(
+            first,
+            first + count - 2,
+            cosh,
+            tanh,
+            h,
+            d,
+            gauss_amplitude,
+            normals,
+            contact,
+            gauss,
+            scale_19,
+            scale_20,
+            start,
+            n,
+            TINY,
+            flags,
+            largest,
+        )
+    return [float(v) for v in largest]

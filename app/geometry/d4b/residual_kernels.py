@@ -27,7 +27,7 @@ import numpy as np
 
 from app.geometry import checks
 from app.geometry.checks import Largest
-from app.geometry.compiled import hypot, kernel, length, running_largest
+from app.geometry.compiled import kernel, length, running_largest
 from app.geometry.precision import Arithmetic, Array
 
 TINY = float(np.finfo(np.float64).tiny)
@@ -533,6 +533,46 @@ def scaled_relative_point_difference(computed: Array, expected: Array, scale: Ar
     )
 
 
+@kernel("float64(float64[:, :], float64[:, :], float64, float64[:], boolean)")
+def _largest_scaled_relative_distance(
+    computed: Any, expected: Any, tiny: float, scale: Any, scaled: bool
+) -> float:
+    """max_k of ``_relative_distances`` (times scale_k if ``scaled``, as
+    ``_scaled_relative_distances``) without storing them: NaN if one is NaN, as the largest
+    magnitude of the array."""
+    largest = 0.0
+    for k in range(computed.shape[0]):
+        ex, ey = expected[k, 0], expected[k, 1]
+        size = length(ex, ey)
+        size = size if size > tiny else tiny
+        value = length(computed[k, 0] - ex, computed[k, 1] - ey) / size
+        if scaled:
+            value = value * scale[k]
+        largest = running_largest(value, largest)
+    return largest
+
+
+_NO_SCALE = np.empty(0)
+
+
+def largest_scaled_relative_point_difference(
+    computed: Array, expected: Array, scale: Array | None
+) -> Largest:
+    """Float64: the largest ``relative_point_difference`` (times ``scale`` if given, as
+    ``scaled_relative_point_difference``) in one pass, the array on demand (``checks.Largest``:
+    ``check_residuals`` asks for it only when the largest is not finite)."""
+    a, b = _points(computed), _points(expected)
+    factors = _NO_SCALE if scale is None else np.asarray(scale, dtype=np.float64)
+
+    def residuals() -> Any:
+        if scale is None:
+            return _relative_distances(a, b, TINY)
+        return _scaled_relative_distances(a, b, TINY, factors)
+
+    value = float(_largest_scaled_relative_distance(a, b, TINY, factors, scale is not None))
+    return Largest(value, len(a), residuals)
+
+
 def largest_relative_point_difference(computed: Array, expected: Array) -> float | None:
     """Float64: the largest ``relative_point_difference`` as ``checks.printed_residual`` reports
     it (None for no rows or a value that is not finite), without the array."""
@@ -620,16 +660,17 @@ def largest_along_printed_slope(count: int, points: Any) -> float | None:
 @kernel("float64[:](float64[:, :])")
 def _printed_ratios(p: Any) -> Any:
     """The proof's ratio Δ²p_i^y / (l'_i + l'_{i+1}), l'_i = |p_i − p_{i−1}| (erratum E2), as
-    ``checks._ratio_erratum`` computes it: entry k from p_k .. p_{k+3}, lengths by libm's hypot
-    (inline, ``compiled.hypot``)."""
+    ``checks._ratio_erratum`` computes it: entry k from p_k .. p_{k+3}, the lengths by
+    ``compiled.length`` (within 2 ulp of libm's hypot, which numpy's evaluation takes: a printed
+    residual, far from rounding level, moves in its last bits)."""
     count = max(p.shape[0] - 3, 0)
     out = np.empty(count)
     if count == 0:
         return out
-    after = hypot(p[1, 0] - p[0, 0], p[1, 1] - p[0, 1])
+    after = length(p[1, 0] - p[0, 0], p[1, 1] - p[0, 1])
     for k in range(count):
         before = after
-        after = hypot(p[k + 2, 0] - p[k + 1, 0], p[k + 2, 1] - p[k + 1, 1])
+        after = length(p[k + 2, 0] - p[k + 1, 0], p[k + 2, 1] - p[k + 1, 1])
         second = p[k + 3, 1] - 2 * p[k + 2, 1] + p[k + 1, 1]
         out[k] = second / (before + after)
     return out

@@ -218,3 +218,72 @@ def test_closed_n_read_off_the_closed_contact_points_has_the_bits_of_its_own_for
     )
     got = data.gauss.closed_tractrix_gauss
     assert got.view(np.int64).tolist() == expected.view(np.int64).tolist()
+
+
+@pytest.mark.parametrize("detail", [False, True])
+@pytest.mark.parametrize(
+    "checks", [None, frozenset({"equation-17"}), frozenset({"theorem-7", "theorem-8"})]
+)
+def test_both_rings_on_two_threads_give_the_one_thread_checks(
+    monkeypatch: pytest.MonkeyPatch, detail: bool, checks: frozenset[str] | None
+) -> None:
+    """Theorems 7, 8 and (17) with the two rings on two threads (from
+    ``RINGS_THREADED_FROM`` faces) are the checks of the rings computed one after the other."""
+    from app.geometry.curve import Selection
+    from app.geometry.d4b import curvature
+
+    def section_5(threaded_from: int) -> list[object]:
+        monkeypatch.setattr(curvature, "RINGS_THREADED_FROM", threaded_from)
+        result = d4b.compute(
+            Float64(), 1.0, 0.3, 0.8, -40, 60, detail=detail, selection=Selection(checks=checks)
+        )
+        return [
+            (c.id, c.residual, c.tolerance, c.holds, c.erratum, c.note, _bits(c.per_index))
+            for c in result.checks
+            if c.id in SECTION_5
+        ]
+
+    threaded, alone = section_5(1), section_5(10**9)
+    assert threaded == alone and len(threaded) == (9 if checks is None else len(checks))
+
+
+def _bits(per_index: object) -> bytes | None:
+    """A check's per-index residuals (and indices) as bytes: equal bits compare equal."""
+    if per_index is None:
+        return None
+    return np.asarray(per_index.indices).tobytes() + np.asarray(per_index.residuals).tobytes()  # type: ignore[attr-defined]
+
+
+@pytest.mark.parametrize(
+    ("d", "beta0", "i_min", "i_max"),
+    [(0.1, None, -10, 10), (0.5, None, -200, 300), (1e-3, 0.7, -9000, 11000), (0.3, 2.9, -3, 40)],
+)
+@pytest.mark.parametrize(
+    "checks",
+    [None, frozenset({"equation-18"}), frozenset({"equation-19"}), frozenset({"equation-20"})],
+)
+def test_blocked_image_comparisons_give_the_stored_closed_forms_checks(
+    monkeypatch: pytest.MonkeyPatch,
+    d: float,
+    beta0: float | None,
+    i_min: int,
+    i_max: int,
+    checks: frozenset[str] | None,
+) -> None:
+    """(18)-(20) without detail: each closed point made and compared a block at a time
+    (``fused_checks.closed_image_comparisons``) gives the checks, errata included, of the
+    stored closed forms, bit for bit."""
+    from app.geometry.curve import Selection
+    from app.geometry.d4b import fused_checks
+
+    def section_5() -> list[object]:
+        result = d4b.compute(Float64(), 1.0, d, beta0, i_min, i_max, selection=Selection(checks))
+        return [
+            (c.id, c.residual, c.tolerance, c.holds, c.erratum, c.note)
+            for c in result.checks
+            if c.id in SECTION_5
+        ]
+
+    blocked = section_5()
+    monkeypatch.setattr(fused_checks, "closed_image_comparisons", lambda *_: None)
+    assert blocked == section_5()

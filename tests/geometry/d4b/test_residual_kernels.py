@@ -384,3 +384,27 @@ def test_ratio_spread_equals_numpy(seed: int) -> None:
             expected = checks.printed_residual(ar, relative_difference(ar, ratio, mean))
             assert residual_kernels.ratio_spread(p) == expected
     assert residual_kernels.ratio_spread(np.ones((4, 2))) is None
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_largest_scaled_relative_point_difference_is_the_arrays_largest(seed: int) -> None:
+    """(18)-(20) against their closed forms without ``detail``: the largest of the residuals the
+    array passes give, bit for bit (NaN if one is NaN), and those arrays on demand."""
+    rng = np.random.default_rng(seed)
+    computed, expected = rng.normal(size=(300, 2)), rng.normal(size=(300, 2))
+    expected[7] = 0.0  # floored at tiny
+    scale = rng.uniform(0.0, 1.0, 300)
+    for factors in (None, scale):
+        found = residual_kernels.largest_scaled_relative_point_difference(
+            computed, expected, factors
+        )
+        if factors is None:
+            array = residual_kernels.relative_point_difference(Float64(), computed, expected)
+        else:
+            array = residual_kernels.scaled_relative_point_difference(computed, expected, factors)
+        assert found.value == float(np.max(np.abs(array))) and found.count == 300
+        np.testing.assert_array_equal(found.residuals(), array)
+    broken = computed.copy()
+    broken[11, 1] = np.nan
+    found = residual_kernels.largest_scaled_relative_point_difference(broken, expected, scale)
+    assert np.isnan(found.value)
