@@ -66,21 +66,6 @@ def _scaled_relative_distances(computed: Any, expected: Any, tiny: float, scale:
     return out
 
 
-@kernel("float64(float64[:, :], float64[:, :], float64)")
-def _largest_relative_distance(computed: Any, expected: Any, tiny: float) -> float:
-    """max_k of ``_relative_distances`` without storing them: NaN if one is NaN, as np.max."""
-    largest = 0.0
-    for k in range(computed.shape[0]):
-        ex, ey = expected[k, 0], expected[k, 1]
-        size = length(ex, ey)
-        size = size if size > tiny else tiny
-        value = length(computed[k, 0] - ex, computed[k, 1] - ey) / size
-        if value != value:
-            return value
-        largest = value if value > largest else largest
-    return largest
-
-
 @kernel("Tuple((float64[:], float64[:], float64, float64))(float64, float64[:], float64, boolean)")
 def _recursions(d: float, y: Any, tiny: float, store: bool) -> tuple[Any, Any, float, float]:
     """Relative differences of p_{i+1}^y from (13) and of p_{i+2}^y from its two-step form,
@@ -578,7 +563,11 @@ def largest_relative_point_difference(computed: Array, expected: Array) -> float
     it (None for no rows or a value that is not finite), without the array."""
     if len(computed) == 0:
         return None
-    worst = float(_largest_relative_distance(_points(computed), _points(expected), TINY))
+    worst = float(
+        _largest_scaled_relative_distance(
+            _points(computed), _points(expected), TINY, _NO_SCALE, False
+        )
+    )
     return worst if math.isfinite(worst) else None
 
 
