@@ -9,10 +9,13 @@ from app.geometry import conditions
 from app.geometry.checks import relative_to
 from app.geometry.d4b import discretization, residual_kernels
 from app.geometry.d4b.fused_checks import (
+    FIT_BLOCK,
     Fits,
     closed_comparisons,
     closed_kinematic_comparisons,
     fill_closed_forms,
+    fits_arrays,
+    fits_summary,
     numpy_sum,
 )
 from app.geometry.precision import Float64
@@ -77,6 +80,19 @@ def _polygons() -> list[np.ndarray]:
     broken = rng.standard_normal((20, 2))
     broken[3, 0] = np.inf
     out.append(broken)
+    # beyond one block of the summary passes, and a last block of one, two and three edges
+    for m in (FIT_BLOCK + 1, FIT_BLOCK + 2, FIT_BLOCK + 3, 2 * FIT_BLOCK + 2, 5000):
+        out.append(rng.standard_normal((m, 2)))
+    # hypot's scaled ranges (edges longer than 2^511, shorter than 2^-459, very flat ones)
+    out.append(rng.standard_normal((300, 2)) * np.exp(rng.uniform(-700, 700, (300, 1))))
+    flat = np.stack([np.arange(400.0), 1e-20 * rng.standard_normal(400)], axis=1)
+    out.append(flat)
+    broken = rng.standard_normal((3000, 2))
+    broken[2500, 1] = np.nan  # a NaN in the third block only
+    out.append(broken)
+    broken = rng.standard_normal((3000, 2))
+    broken[1500, 0] = -np.inf
+    out.append(broken)
     return out
 
 
@@ -98,6 +114,33 @@ def test_fits_have_the_separate_numbers(p: np.ndarray) -> None:
             assert _same(fused.largest[key], np.abs(residuals).max())
     if len(both):
         assert _same(fused.largest["eq2"], np.abs(both).max())
+
+
+@pytest.mark.parametrize("p", _polygons())
+def test_fits_summary_has_the_bits_of_the_fits_with_their_residuals(p: np.ndarray) -> None:
+    """The summary passes (no array of the polygon's size) give the constants and largest
+    residuals of the kernel that stores the columns and residuals, bit for bit; a strided p
+    gives the same."""
+    arrays = fits_arrays(p)
+    assert _same(fits_summary(p), arrays[0])
+    wide = np.zeros((len(p), 3))
+    wide[:, :2] = p
+    assert _same(fits_summary(wide[:, :2]), arrays[0])
+    alone, given = Fits(p), Fits(p, arrays)
+    assert alone.constants.keys() == given.constants.keys()
+    for key in alone.constants:
+        a, b = alone.constants[key], given.constants[key]
+        assert (a is None) == (b is None) and (a is None or _same(a, b))
+        assert _same(alone.largest[key], given.largest[key])
+        assert alone.counts[key] == len(given.fits[key].residuals)
+    assert _same(alone.equation_2, given.equation_2)
+
+
+def test_fits_summary_of_a_long_d4b_has_the_bits_of_the_stored_columns() -> None:
+    """200 001 vertices of (D4b) (about 1600 leaves of numpy's pairwise sums, 196 blocks)."""
+    data = discretization.polygons(Float64(), 1.0, 1e-4, None, -100_000, 100_000, "closed-form")
+    p = data.p[: data.vertices - 1]
+    assert _same(fits_summary(p), fits_arrays(p)[0])
 
 
 _CLOSED = ("closed_p", "closed_tractrix")

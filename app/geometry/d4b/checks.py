@@ -10,9 +10,10 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import replace
 from functools import cached_property
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -90,6 +91,12 @@ ERRATUM_TWO_STEP = (
 
 #: The statements that compare with a closed form (``fused_checks.fill_closed_forms``).
 _CLOSED_FORMS = (THEOREM_5, THEOREM_6, D4B_EQUATION_18, D4B_EQUATION_19, D4B_EQUATION_20)
+#: The statements that read the fits of (D1), (D3) and eq. (2).
+_FITTED = (THEOREM_4_I, THEOREM_4_II, THEOREM_4_III)
+#: From this many indices a float64 computation that checks a fit computes the fits on a second
+#: thread, from the start of the checks to where they are first read (≈ 30 ms at 10^6 here;
+#: a thread costs ≈ 0.1 ms), as ``curvature`` does with its two rings.
+FITS_THREADED_FROM = 100_000
 
 
 def conditioning(h: float, d: float) -> float:
@@ -119,6 +126,7 @@ def evaluate(
     as ``Selection.constants`` has it: a selection without those checks computes no fit.
     """
     ctx = _Context(ar, ar.scalar(h), ar.scalar(d), data, detail, selection)
+    ctx.start_fits()
     if ar.mode == "float64" and any(selection.wants_check(s.id) for s in _CLOSED_FORMS):
         # Theorems 5, 6 without detail compare block by block (``closed_largest``): no arrays
         kinematic = detail and any(selection.wants_check(s.id) for s in _CLOSED_FORMS[:2])
@@ -151,8 +159,8 @@ def evaluate(
             selection.wants_check,
         )
     constants: dict[str, Scalar] = {}
-    if "fits" in vars(ctx):  # the fitted constants come with the checks that fit them
-        constants = {k: f.constant for k, f in ctx.fits.items() if f.constant is not None}
+    if "fit_constants" in vars(ctx):  # the fitted constants come with the checks that fit them
+        constants = {k: c for k, c in ctx.fit_constants.items() if c is not None}
     return constants, checks
 
 
@@ -187,6 +195,19 @@ class _Context:
         self.selection = selection
         self.n = data.vertices - 1
         self.indices = np.arange(data.i_min, data.i_min + self.n + 1, dtype=np.int64)
+        self._pending_fits: Future[Any] | None = None
+
+    def start_fits(self) -> None:
+        """Float64 from ``FITS_THREADED_FROM`` indices, when a fit is checked: the fits' kernel
+        (a pure function of p that releases the GIL) on a second thread, joined where the fits
+        are first read (``fused_fits``), so that it runs beside the other checks."""
+        wanted = any(self.selection.wants_check(s.id) for s in _FITTED)
+        if self.ar.mode != "float64" or self.n < FITS_THREADED_FROM or not wanted:
+            return
+        kernel = fused_checks.fits_arrays if self.detail else fused_checks.fits_summary
+        pool = ThreadPoolExecutor(max_workers=1, thread_name_prefix="fits")
+        self._pending_fits = pool.submit(kernel, self.data.p[: self.n])
+        pool.shutdown(wait=False)  # the thread ends with its one task
 
     @cached_property
     def _tolerances(self) -> tuple[float, float, int]:
@@ -233,8 +254,19 @@ class _Context:
     @cached_property
     def fused_fits(self) -> fused_checks.Fits:
         """Float64: the fits of (D1), (D3) and eq. (2) on p_{i_min} .. p_{i_max}, eq. (2)'s misfit
-        and each check's largest residual, from one compiled call."""
-        return fused_checks.Fits(self.data.p[: self.n])
+        and each check's largest residual, from one compiled call (the residuals themselves
+        with ``detail``; on a second thread from ``FITS_THREADED_FROM``, ``start_fits``)."""
+        p = self.data.p[: self.n]
+        if self._pending_fits is not None:
+            return fused_checks.Fits(p, self._pending_fits.result())
+        return fused_checks.Fits(p, fused_checks.fits_arrays(p) if self.detail else None)
+
+    @cached_property
+    def fit_constants(self) -> dict[str, Scalar | None]:
+        """The fitted constants of (D1), (D3) and (2) (``None`` where there is none)."""
+        if self.ar.mode == "float64":  # without the residuals unless ``detail`` asks
+            return dict(self.fused_fits.constants)
+        return {key: fit.constant for key, fit in self.fits.items()}
 
     @cached_property
     def fits(self) -> dict[str, conditions.ConditionFit]:
@@ -266,12 +298,14 @@ class _Context:
             return None
         return arb_checks.Columns(self.data.p, _tiny(self.ar))
 
-    def fitted_residuals(self, key: str, residuals: Array) -> Array | Largest:
+    def fitted_residuals(self, key: str, residuals: Callable[[], Array]) -> Array | Largest:
         """A fit's residuals as a check takes them: float64 without ``detail`` the largest
-        alone (``fused_fits``; ``key`` ``"eq2"`` stands for eq. (2) with its misfit)."""
+        alone (``fused_fits``; ``key`` ``"eq2"`` stands for eq. (2) with its misfit), the
+        residuals computed only if the check asks for them."""
         if self.ar.mode == "float64" and not self.detail:
-            return Largest(self.fused_fits.largest[key], len(residuals), lambda: residuals)
-        return residuals
+            fits = self.fused_fits
+            return Largest(fits.largest[key], fits.counts[key], residuals)
+        return residuals()
 
     def check(
         self,
@@ -323,33 +357,38 @@ def _fitted(
     ctx: _Context,
     statement: Statement,
     key: str,
-    fit: conditions.ConditionFit,
     erratum: Erratum | None = None,
+    residuals: Callable[[], Array] | None = None,
 ) -> Check:
-    check = ctx.check(statement, 0, ctx.fitted_residuals(key, fit.residuals), erratum)
-    if fit.constant is not None and not fit.constant > 0 and check.holds:
+    """The check of the fit ``key``: its residuals (``ctx.fits[key]``'s unless given)."""
+    if residuals is None:
+        residuals = lambda: ctx.fits[key].residuals  # noqa: E731
+    check = ctx.check(statement, 0, ctx.fitted_residuals(key, residuals), erratum)
+    constant = ctx.fit_constants[key]
+    if constant is not None and not constant > 0 and check.holds:
         return replace(check, holds=False, note="the fitted constant is not > 0")
     return check
 
 
-def _equation_2(ctx: _Context, fits: dict[str, conditions.ConditionFit], p: Array) -> Check:
+def _equation_2(ctx: _Context, p: Array) -> Check:
     """(2) with the fitted c and with c = c_(D1)/c_(D3), both residuals measured alike.
 
     Comparing the constants themselves would ask more than the data resolve: a constant fitted
     to second differences is known only to eps·|y|/|Δ²y| relative, about eps·(h/d)², while the
     equation's residual stays relative to the magnitude of the numbers it is computed from.
     """
-    c, c1, c2 = (fits[k].constant for k in ("eq2", "d1", "d3"))
-    residuals = fits["eq2"].residuals
     if ctx.ar.mode == "float64":  # p is ctx.data.p[: n]: both in the fits' one call
-        residuals = ctx.fused_fits.equation_2
-    elif c1 is not None and c2 is not None and c2 != 0 and len(residuals):
+        return _fitted(ctx, THEOREM_4_III, "eq2", residuals=lambda: ctx.fused_fits.equation_2)
+    fits = ctx.fits
+    c1, c2 = fits["d1"].constant, fits["d3"].constant
+    residuals = fits["eq2"].residuals
+    if c1 is not None and c2 is not None and c2 != 0 and len(residuals):
         if ctx.ball_columns is not None and len(p) == ctx.n:  # compiled, the same balls
             misfit = ctx.ball_columns.misfit(arb_checks.EQUATION_2, ctx.n, c1 / c2)
         else:
             misfit = conditions.equation_2_misfit(ctx.ar, p, c1 / c2)
         residuals = ctx.ar.maximum(residuals, misfit)
-    return _fitted(ctx, THEOREM_4_III, "eq2", conditions.ConditionFit(c, residuals))
+    return _fitted(ctx, THEOREM_4_III, "eq2", residuals=lambda: residuals)
 
 
 def _ratio_erratum(ctx: _Context, p: Array) -> Erratum | None:
@@ -529,10 +568,10 @@ _EVALUATORS: tuple[tuple[Statement, Callable[[_Context], Check]], ...] = (
     (HYPOTHESIS, lambda c: _hypothesis(c, c.data.p)),
     (
         THEOREM_4_I,
-        lambda c: _fitted(c, THEOREM_4_I, "d1", c.fits["d1"], _ratio_erratum(c, c.data.p)),
+        lambda c: _fitted(c, THEOREM_4_I, "d1", _ratio_erratum(c, c.data.p)),
     ),
-    (THEOREM_4_II, lambda c: _fitted(c, THEOREM_4_II, "d3", c.fits["d3"])),
-    (THEOREM_4_III, lambda c: _equation_2(c, c.fits, c.data.p[: c.n])),
+    (THEOREM_4_II, lambda c: _fitted(c, THEOREM_4_II, "d3")),
+    (THEOREM_4_III, lambda c: _equation_2(c, c.data.p[: c.n])),
     (ROTATION_ANGLE, lambda c: _rotation_angle(c, c.data.p, c.data.axis)),
     (RECURSION_13, lambda c: _recursion(c, c.data.p)),
     (TWO_STEP, lambda c: _two_step(c, c.data.p)),

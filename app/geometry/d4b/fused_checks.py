@@ -19,7 +19,12 @@ import numba
 import numpy as np
 
 from app.geometry.compiled import (
+    HYPOT_EPS,
+    HYPOT_LARGE,
+    HYPOT_TINY,
+    _hypot_kernel,
     all_finite_vector,
+    hypot,
     kernel,
     largest_of_magnitudes,
     length,
@@ -28,6 +33,7 @@ from app.geometry.compiled import (
 from app.geometry.conditions import (
     TINY,
     ConditionFit,
+    _column_scale,
     _fit_scales,
     _fit_terms,
     _misfit_into,
@@ -139,27 +145,362 @@ def _fits(p: Any) -> tuple[Any, Any, Any, Any, Any]:
     return summary, d1, d3, eq2, both
 
 
-class Fits:
-    """Theorem 4 (i)–(iii) of one float64 polygon from one compiled call (``_fits``).
+# --- the fits' summary without their columns: four passes over p in blocks, nothing of size n ---
 
-    ``fits`` are the three ``ConditionFit`` of ``conditions.Columns`` (the same constants, as
-    numpy floats, and residuals); ``equation_2`` eq. (2)'s residuals with the misfit of
-    c_(D1)/c_(D3) as ``checks._equation_2`` takes them; ``largest`` the largest residual of
-    each check by its key (``"d1"``, ``"d3"``, ``"eq2"``: the last with the misfit).
+#: Edges a block of the summary passes holds (its columns ≈ 100 KB, in cache while read). Every
+#: loop over a block runs on one-dimensional buffers, which the compiler vectorizes.
+FIT_BLOCK = 1024
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _block_columns(p: Any, k0: int, buffers: Any) -> tuple[int, int]:
+    """The six columns of ``conditions._shared_columns`` on the edges and inner vertices k0, k0
+    + 1, … (up to FIT_BLOCK + 1 edges, FIT_BLOCK inner vertices) into ``buffers`` (``_buffers``),
+    each entry computed as there; returns (edges, inner vertices) filled. Edge lengths: glibc's
+    hypot in its unscaled range for every edge (``compiled._hypot_kernel``, the same
+    operations), then libm's whole ``hypot`` for those outside that range."""
+    x, y, dx, dy = buffers[0], buffers[1], buffers[2], buffers[3]
+    area, edge, area_size, size = buffers[4], buffers[5], buffers[6], buffers[7]
+    second, second_size = buffers[8], buffers[9]
+    n = p.shape[0]
+    edges = min(FIT_BLOCK + 1, max(n - 1 - k0, 0))
+    inner = min(FIT_BLOCK, max(n - 2 - k0, 0))
+    points = edges + 1 if edges else 0
+    for j in range(points):
+        x[j] = p[k0 + j, 0]
+        y[j] = p[k0 + j, 1]
+    if _edge_columns(x, y, dx, dy, area, edge, area_size, size, edges):
+        for j in range(edges):
+            a, b = abs(dx[j]), abs(dy[j])
+            big, small = (a, b) if a >= b else (b, a)
+            if not (big <= HYPOT_LARGE and small >= HYPOT_TINY and small > big * HYPOT_EPS):
+                edge[j] = hypot(dx[j], dy[j])
+    for j in range(inner):
+        second[j] = y[j + 2] - 2 * y[j + 1] + y[j]
+        second_size[j] = abs(y[j + 2]) + 2 * abs(y[j + 1]) + abs(y[j])
+    return edges, inner
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _edge_columns(
+    x: Any, y: Any, dx: Any, dy: Any, area: Any, edge: Any, area_size: Any, size: Any, count: int
+) -> bool:
+    """A_k, |A|~_k, |l|~_k and the unscaled hypot of the edges 0 .. count − 1 of (x, y); whether
+    an edge is outside hypot's unscaled range (or not finite)."""
+    outside = 0
+    for j in range(count):
+        x0, y0, x1, y1 = x[j], y[j], x[j + 1], y[j + 1]
+        area[j] = (y0 + y1) / 2 * (x1 - x0)
+        area_size[j] = (abs(y0) + abs(y1)) / 2 * (abs(x0) + abs(x1))
+        size[j] = abs(x0) + abs(y0) + abs(x1) + abs(y1)
+        dx[j], dy[j] = x1 - x0, y1 - y0
+        a, b = abs(x1 - x0), abs(y1 - y0)
+        big, small = (a, b) if a >= b else (b, a)
+        edge[j] = _hypot_kernel(big, small)
+        inside = big <= HYPOT_LARGE and small >= HYPOT_TINY and small > big * HYPOT_EPS
+        outside += 0 if inside else 1
+    return outside > 0
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _buffers() -> Any:
+    """The block buffers: x, y (FIT_BLOCK + 2 points), dx, dy and the six columns, then the
+    six terms of the sums (``_fill_terms``)."""
+    return np.empty((16, FIT_BLOCK + 2))
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _weight(size: float) -> float:
+    """``fit``'s weight of an equation: its left side's magnitude, at least the tiniest normal."""
+    return size if size > TINY else TINY
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _bigger(value: float, big: float) -> float:
+    """One step of max |value| ignoring NaN (``_largest`` without its flag)."""
+    magnitude = abs(value)
+    return magnitude if magnitude > big else big
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _scale_of(big: float, nan: bool) -> float:
+    """``_column_scale`` of the largest magnitude and whether a NaN was seen."""
+    return _column_scale(big, nan)
+
+
+#: Positions in ``_summary_passes``'s scale vector: the column scales of the first pass (Δ²y
+#: serves (D1) and eq. (2) alike), then those of u and v (u of Δ²y again shared).
+_S_SECOND, _S_PAIRED_L, _S_AREA, _S_L, _S_PAIRED_A = 0, 1, 2, 3, 4
+_S_U, _S_V1, _S_U3, _S_V3, _S_V2 = 5, 6, 7, 8, 9
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _scan(values: Any, count: int, big: Any, nan: Any, at: int) -> None:
+    """Fold max |v| (``_bigger``) and whether a v is NaN of values[:count] into big[at], nan[at]."""
+    largest, seen = big[at], False
+    for j in range(count):
+        value = values[j]
+        seen |= value != value
+        largest = _bigger(value, largest)
+    big[at] = largest
+    nan[at] |= seen
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _first_pass(buffers: Any, edges: int, inner: int, big: Any, nan: Any) -> None:
+    """Pass 1 on a block: the largest |Δ²y|, |l_k + l_{k+1}|, |A|, |l|, |A_k + A_{k+1}| into
+    ``big`` (NaN seen into ``nan``), at the positions of their scales (``_S_*``)."""
+    area, edge, second = buffers[4], buffers[5], buffers[8]
+    paired_l, paired_a = buffers[10], buffers[11]
+    for j in range(inner):
+        paired_l[j] = edge[j] + edge[j + 1]
+        paired_a[j] = area[j] + area[j + 1]
+    _scan(area, edges, big, nan, _S_AREA)
+    _scan(edge, edges, big, nan, _S_L)
+    _scan(second, inner, big, nan, _S_SECOND)
+    _scan(paired_l, inner, big, nan, _S_PAIRED_L)
+    _scan(paired_a, inner, big, nan, _S_PAIRED_A)
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _second_pass(buffers: Any, edges: int, inner: int, scales: Any, big: Any, nan: Any) -> None:
+    """Pass 2 on a block: the largest |u| and |v| of the three fits (``_fit_scales``'s second
+    loop, u of Δ²y shared by (D1) and eq. (2)) into ``big``, ``nan`` (``_S_U`` … ``_S_V2``);
+    the quotients first into buffers (a loop the compiler vectorizes), then their largest."""
+    area, edge, area_size = buffers[4], buffers[5], buffers[6]
+    second, second_size = buffers[8], buffers[9]
+    u, v1, v2, u3, v3 = buffers[10], buffers[11], buffers[12], buffers[13], buffers[14]
+    s_second, s_pl, s_area = scales[_S_SECOND], scales[_S_PAIRED_L], scales[_S_AREA]
+    s_l, s_pa = scales[_S_L], scales[_S_PAIRED_A]
+    for j in range(edges):
+        weight = _weight(area_size[j])
+        u3[j] = area[j] / s_area / weight
+        v3[j] = edge[j] / s_l / weight
+    for j in range(inner):
+        weight = _weight(second_size[j])
+        u[j] = second[j] / s_second / weight
+        v1[j] = (edge[j] + edge[j + 1]) / s_pl / weight
+        v2[j] = (area[j] + area[j + 1]) / s_pa / weight
+    _scan(u3, edges, big, nan, _S_U3)
+    _scan(v3, edges, big, nan, _S_V3)
+    _scan(u, inner, big, nan, _S_U)
+    _scan(v1, inner, big, nan, _S_V1)
+    _scan(v2, inner, big, nan, _S_V2)
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _fill_terms(p: Any, k0: int, scales: Any, buffers: Any, inner: bool) -> None:
+    """The terms of the fits' sums (``_fit_terms``'s v² and u·v, each computed as
+    ``_fit_scales`` and ``_fit_terms`` compute it) on the equations k0, k0 + 1, … of a block
+    into ``buffers[10:14]``: with ``inner`` (D1)'s then eq. (2)'s, else (D3)'s (two)."""
+    edges, inners = _block_columns(p, k0, buffers)
+    area, edge, area_size = buffers[4], buffers[5], buffers[6]
+    second, second_size = buffers[8], buffers[9]
+    t0, t1, t2, t3 = buffers[10], buffers[11], buffers[12], buffers[13]
+    if inner:
+        s_second, s_pl, s_pa = scales[_S_SECOND], scales[_S_PAIRED_L], scales[_S_PAIRED_A]
+        s_u, s_v1, s_v2 = scales[_S_U], scales[_S_V1], scales[_S_V2]
+        for j in range(inners):
+            weight = _weight(second_size[j])
+            u_k = second[j] / s_second / weight / s_u
+            v1 = (edge[j] + edge[j + 1]) / s_pl / weight / s_v1
+            v2 = (area[j] + area[j + 1]) / s_pa / weight / s_v2
+            t0[j] = v1 * v1
+            t1[j] = u_k * v1
+            t2[j] = v2 * v2
+            t3[j] = u_k * v2
+        return
+    s_area, s_l, s_u3, s_v3 = scales[_S_AREA], scales[_S_L], scales[_S_U3], scales[_S_V3]
+    for j in range(min(edges, FIT_BLOCK)):
+        weight = _weight(area_size[j])
+        v3 = edge[j] / s_l / weight / s_v3
+        t0[j] = v3 * v3
+        t1[j] = area[j] / s_area / weight / s_u3 * v3
+
+
+@kernel(
+    "UniTuple(float64, 4)(float64[:, :], int64, int64, float64[::1], float64[:, ::1], int64[::1], "
+    "boolean)"
+)
+def _tree_sums(
+    p: Any, start: int, count: int, scales: Any, buffers: Any, window: Any, inner: bool
+) -> tuple[float, float, float, float]:
+    """numpy's pairwise sums (``_pairwise``'s tree) of the terms start .. start + count − 1 of
+    ``_fill_terms`` (4 sums with ``inner``, else 2 and two zeros). The leaves (≤ 128 terms) are
+    read from the term buffers, which hold the block window[0] .. window[1] − 1 and are
+    refilled from a leaf's first term when the leaf is not in it (leaves come left to right)."""
+    if count == 0:
+        return 0.0, 0.0, 0.0, 0.0
+    if count <= 128:
+        if start < window[0] or start + count > window[1]:
+            _fill_terms(p, start, scales, buffers, inner)
+            window[0], window[1] = start, start + FIT_BLOCK
+        at = start - window[0]
+        first, second = _pairwise(buffers[10], at, count), _pairwise(buffers[11], at, count)
+        if inner:
+            third, fourth = _pairwise(buffers[12], at, count), _pairwise(buffers[13], at, count)
+            return first, second, third, fourth
+        return first, second, 0.0, 0.0
+    half = count // 2
+    half -= half % 8
+    a = _tree_sums(p, start, half, scales, buffers, window, inner)
+    b = _tree_sums(p, start + half, count - half, scales, buffers, window, inner)
+    return a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3]
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _fourth_pass(buffers: Any, edges: int, inner: int, c: Any, worst: Any) -> None:
+    """Pass 4 on a block: the largest residual of (D1), (D3) and eq. (2) (with its misfit at
+    c_(D1)/c_(D3) when c[3] is 1) into ``worst`` (``_misfit_into``, then ``largest_of_
+    magnitudes`` of eq. (2)'s maximum with its misfit, NaN winning); the residuals first into
+    buffers (a loop the compiler vectorizes), then their largest."""
+    area, edge, area_size, size = buffers[4], buffers[5], buffers[6], buffers[7]
+    second, second_size = buffers[8], buffers[9]
+    r3, r1, r2, misfit = buffers[10], buffers[11], buffers[12], buffers[13]
+    c1, c3, c2, ratio, c_ratio = c[0], c[1], c[2], c[3] != 0, c[4]
+    for j in range(edges):
+        scale = area_size[j] + abs(c3) * size[j]
+        r3[j] = abs(area[j] - c3 * edge[j]) / (scale if scale > TINY else TINY)
+    for j in range(inner):
+        scale = second_size[j] + abs(c1) * (size[j] + size[j + 1])
+        r1[j] = abs(second[j] - c1 * (edge[j] + edge[j + 1])) / (scale if scale > TINY else TINY)
+        paired_size = area_size[j] + area_size[j + 1]
+        scale = second_size[j] + abs(c2) * paired_size
+        r2[j] = abs(second[j] - c2 * (area[j] + area[j + 1])) / (scale if scale > TINY else TINY)
+    worst3, worst1, worst2 = worst[1], worst[0], worst[2]
+    for j in range(edges):
+        worst3 = running_largest(r3[j], worst3)
+    for j in range(inner):
+        worst1 = running_largest(r1[j], worst1)
+    if ratio:
+        for j in range(inner):
+            paired_size = area_size[j] + area_size[j + 1]
+            scale = second_size[j] + abs(c_ratio) * paired_size
+            paired = area[j] + area[j + 1]
+            misfit[j] = abs(second[j] - c_ratio * paired) / (scale if scale > TINY else TINY)
+        for j in range(inner):
+            a, b = r2[j], misfit[j]
+            worst2 = running_largest(a if (a != a or a >= b) else b, worst2)
+    else:
+        for j in range(inner):
+            worst2 = running_largest(r2[j], worst2)
+    worst[0], worst[1], worst[2] = worst1, worst3, worst2
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _constant(uv: float, vv: float, scales: Any, lhs: int, rhs: int, u: int, v: int) -> Any:
+    """``_fit``'s constant from its two sums (``numpy_sum``: from +0.0) and its four scales:
+    (constant, whether there is one)."""
+    uv, vv = 0.0 + uv, 0.0 + vv
+    if vv > 0:
+        return uv / vv * (scales[u] / scales[v]) * (scales[lhs] / scales[rhs]), True
+    return 0.0, False
+
+
+@kernel("float64[::1](float64[:, :])")
+def _summary_passes(p: Any) -> Any:
+    """``_fits``'s summary (its first array) without its columns and residuals: four passes
+    over p in blocks of FIT_BLOCK edges, each computing the columns it reads from the
+    coordinates (``_block_columns``) with the same operations on each entry as ``_fit_scales``,
+    ``_fit_terms`` and ``_misfit_into``; the sums by ``_pairwise``'s tree (``_tree_sums``), the
+    largest values as ``largest_of_magnitudes``. Every number has the bits of ``_fits``'s."""
+    n = p.shape[0]
+    edges, inner = max(n - 1, 0), max(n - 2, 0)
+    buffers = _buffers()
+    big, nan, scales = np.zeros(10), np.zeros(10, dtype=np.bool_), np.empty(10)
+    for k0 in range(0, edges, FIT_BLOCK):  # pass 1: the columns' scales
+        block, block_inner = _block_columns(p, k0, buffers)
+        _first_pass(buffers, min(block, FIT_BLOCK), block_inner, big, nan)
+    for k in range(5):
+        scales[k] = _scale_of(big[k], nan[k])
+    for k0 in range(0, edges, FIT_BLOCK):  # pass 2: the scales of u and v
+        block, block_inner = _block_columns(p, k0, buffers)
+        _second_pass(buffers, min(block, FIT_BLOCK), block_inner, scales, big, nan)
+    for k in range(5, 10):
+        scales[k] = _scale_of(big[k], nan[k])
+    window = np.zeros(2, dtype=np.int64)  # pass 3: the sums, in numpy's order
+    vv1, uv1, vv2, uv2 = _tree_sums(p, 0, inner, scales, buffers, window, True)
+    window[0], window[1] = 0, 0
+    vv3, uv3, _, _ = _tree_sums(p, 0, edges, scales, buffers, window, False)
+    c1, has1 = _constant(uv1, vv1, scales, _S_SECOND, _S_PAIRED_L, _S_U, _S_V1)
+    c3, has3 = _constant(uv3, vv3, scales, _S_AREA, _S_L, _S_U3, _S_V3)
+    c2, has2 = _constant(uv2, vv2, scales, _S_SECOND, _S_PAIRED_A, _S_U, _S_V2)
+    ratio = has1 and has3 and c3 != 0 and inner > 0
+    constants = np.array([c1, c3, c2, 1.0 if ratio else 0.0, c1 / c3 if ratio else 0.0])
+    worst = np.zeros(3)
+    for k0 in range(0, edges, FIT_BLOCK):  # pass 4: the largest residuals
+        block, block_inner = _block_columns(p, k0, buffers)
+        _fourth_pass(buffers, min(block, FIT_BLOCK), block_inner, constants, worst)
+    summary = np.empty(9)
+    summary[0], summary[1], summary[2] = c1, c3, c2
+    summary[3] = 1.0 if has1 else 0.0
+    summary[4] = 1.0 if has3 else 0.0
+    summary[5] = 1.0 if has2 else 0.0
+    summary[6], summary[7], summary[8] = worst[0], worst[1], worst[2]
+    return summary
+
+
+def fits_summary(p: Array) -> Any:
+    """The fits' summary of the float64 polygon ``p`` ((m, 2)): ``_fits``'s first array, bit
+    for bit, without an array of size m (``_summary_passes``). A pure function of ``p`` that
+    releases the GIL: ``d4b.checks`` runs it on a second thread at large m."""
+    return _summary_passes(p)
+
+
+def fits_arrays(p: Array) -> tuple[Any, Any, Any, Any, Any]:
+    """``_fits``: the summary and the per-equation residuals (``detail``); pure, as
+    ``fits_summary``."""
+    return _fits(p)
+
+
+class Fits:
+    """Theorem 4 (i)–(iii) of one float64 polygon from one compiled call (``_summary_passes``,
+    or ``_fits`` when the residuals are wanted).
+
+    ``constants`` are the three fitted constants (numpy floats, ``None`` where there is none),
+    ``largest`` the largest residual of each check by its key (``"d1"``, ``"d3"``, ``"eq2"``:
+    the last with eq. (2)'s misfit at c_(D1)/c_(D3)) and ``counts`` its number of equations;
+    ``fits`` (the three ``ConditionFit`` of ``conditions.Columns``, the same constants and
+    residuals) and ``equation_2`` (eq. (2)'s residuals with the misfit, as
+    ``checks._equation_2`` takes them) are computed when first read. ``found`` is what
+    ``fits_summary`` or ``fits_arrays`` gave for ``p``, when it was computed elsewhere.
     """
 
-    __slots__ = ("equation_2", "fits", "largest")
+    __slots__ = ("_arrays", "_p", "constants", "counts", "largest")
 
-    def __init__(self, p: Array) -> None:
-        values, d1, d3, eq2, self.equation_2 = _fits(p)
-        summary = values.tolist()  # Python floats, as a check's residual is
-        constants = [np.float64(summary[k]) if summary[k + 3] else None for k in range(3)]
-        self.fits = {
-            "d1": ConditionFit(constants[0], d1),
-            "d3": ConditionFit(constants[1], d3),
-            "eq2": ConditionFit(constants[2], eq2),
+    def __init__(self, p: Array, found: Any = None) -> None:
+        if found is None:
+            found = fits_summary(p)
+        self._p = p
+        self._arrays: tuple[Any, Any, Any, Any, Any] | None = None
+        if isinstance(found, tuple):
+            self._arrays = found
+            found = found[0]
+        summary = found.tolist()  # Python floats, as a check's residual is
+        keys = ("d1", "d3", "eq2")
+        self.constants = {
+            key: np.float64(summary[k]) if summary[k + 3] else None for k, key in enumerate(keys)
         }
-        self.largest = {"d1": summary[6], "d3": summary[7], "eq2": summary[8]}
+        self.largest = {key: summary[6 + k] for k, key in enumerate(keys)}
+        inner, edges = max(len(p) - 2, 0), max(len(p) - 1, 0)
+        self.counts = {"d1": inner, "d3": edges, "eq2": inner}
+
+    def _residuals(self) -> tuple[Any, Any, Any, Any, Any]:
+        if self._arrays is None:
+            self._arrays = fits_arrays(self._p)
+        return self._arrays
+
+    @property
+    def fits(self) -> dict[str, ConditionFit]:
+        """The three fits with their residuals (``_fits``'s arrays, computed once)."""
+        _, d1, d3, eq2, _ = self._residuals()
+        found = {"d1": d1, "d3": d3, "eq2": eq2}
+        return {key: ConditionFit(self.constants[key], found[key]) for key in found}
+
+    @property
+    def equation_2(self) -> Any:
+        """Eq. (2)'s residuals with its misfit at c_(D1)/c_(D3) (``np.maximum``)."""
+        return self._residuals()[4]
 
 
 @kernel("float64[::1](int64, int64, float64, float64)")

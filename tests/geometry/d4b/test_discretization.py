@@ -212,3 +212,46 @@ def test_each_section_5_check_alone_equals_its_value_among_all(
         ).checks
         assert [c.id for c in alone] == [statement.id]
         assert alone[0] == full[statement.id]
+
+
+_FITTED = ("theorem-4-i", "theorem-4-ii", "theorem-4-iii")
+
+
+@pytest.mark.parametrize("detail", [False, True])
+@pytest.mark.parametrize(
+    "checks",
+    [None, frozenset({"theorem-4-iii"}), frozenset({"theorem-4-ii", "recursion-13"}), frozenset()],
+)
+def test_fits_on_a_second_thread_give_the_one_thread_checks(
+    monkeypatch: pytest.MonkeyPatch, detail: bool, checks: frozenset[str] | None
+) -> None:
+    """Theorem 4 (i)-(iii) with the fits on a second thread (from ``FITS_THREADED_FROM``
+    indices) are the checks and constants of the fits computed where they are read."""
+    from app.geometry.curve import Selection
+    from app.geometry.d4b import checks as d4b_checks
+
+    def fitted(threaded_from: int) -> tuple[object, list[object]]:
+        monkeypatch.setattr(d4b_checks, "FITS_THREADED_FROM", threaded_from)
+        result = d4b.compute(
+            Float64(), 1.0, 0.3, 0.8, -40, 60, detail=detail, selection=Selection(checks=checks)
+        )
+        found = [
+            (c.id, c.residual, c.tolerance, c.holds, c.erratum, c.note, _bits(c.per_index))
+            for c in result.checks
+            if c.id in _FITTED
+        ]
+        constants = {k: float(v).hex() for k, v in result.constants.items()}
+        return constants, found
+
+    threaded, alone = fitted(1), fitted(10**9)
+    assert threaded == alone
+    wanted = [s for s in _FITTED if checks is None or s in checks]
+    assert [c[0] for c in threaded[1]] == wanted
+    assert all(c[1] is not None for c in threaded[1])
+
+
+def _bits(per_index: object) -> bytes | None:
+    """A check's per-index residuals (and indices) as bytes: equal bits compare equal."""
+    if per_index is None:
+        return None
+    return np.asarray(per_index.indices).tobytes() + np.asarray(per_index.residuals).tobytes()  # type: ignore[attr-defined]
