@@ -289,63 +289,115 @@ def _second_pass(buffers: Any, edges: int, inner: int, scales: Any, big: Any, na
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _fill_terms(p: Any, k0: int, scales: Any, buffers: Any, inner: bool) -> None:
+def _fill_terms(p: Any, k0: int, scales: Any, buffers: Any) -> tuple[int, int]:
     """The terms of the fits' sums (``_fit_terms``'s v² and u·v, each computed as
-    ``_fit_scales`` and ``_fit_terms`` compute it) on the equations k0, k0 + 1, … of a block
-    into ``buffers[10:14]``: with ``inner`` (D1)'s then eq. (2)'s, else (D3)'s (two)."""
-    edges, inners = _block_columns(p, k0, buffers)
+    ``_fit_scales`` and ``_fit_terms`` compute it) on the equations k0, k0 + 1, … of a block:
+    (D1)'s and eq. (2)'s into ``buffers[10:14]``, (D3)'s into ``buffers[14:16]``; returns how
+    many of each ((D1) and eq. (2), (D3))."""
+    edges, inner = _block_columns(p, k0, buffers)
+    edges = min(edges, FIT_BLOCK)
     area, edge, area_size = buffers[4], buffers[5], buffers[6]
     second, second_size = buffers[8], buffers[9]
     t0, t1, t2, t3 = buffers[10], buffers[11], buffers[12], buffers[13]
-    if inner:
-        s_second, s_pl, s_pa = scales[_S_SECOND], scales[_S_PAIRED_L], scales[_S_PAIRED_A]
-        s_u, s_v1, s_v2 = scales[_S_U], scales[_S_V1], scales[_S_V2]
-        for j in range(inners):
-            weight = _weight(second_size[j])
-            u_k = second[j] / s_second / weight / s_u
-            v1 = (edge[j] + edge[j + 1]) / s_pl / weight / s_v1
-            v2 = (area[j] + area[j + 1]) / s_pa / weight / s_v2
-            t0[j] = v1 * v1
-            t1[j] = u_k * v1
-            t2[j] = v2 * v2
-            t3[j] = u_k * v2
-        return
+    t4, t5 = buffers[14], buffers[15]
+    s_second, s_pl, s_pa = scales[_S_SECOND], scales[_S_PAIRED_L], scales[_S_PAIRED_A]
+    s_u, s_v1, s_v2 = scales[_S_U], scales[_S_V1], scales[_S_V2]
+    for j in range(inner):
+        weight = _weight(second_size[j])
+        u_k = second[j] / s_second / weight / s_u
+        v1 = (edge[j] + edge[j + 1]) / s_pl / weight / s_v1
+        v2 = (area[j] + area[j + 1]) / s_pa / weight / s_v2
+        t0[j] = v1 * v1
+        t1[j] = u_k * v1
+        t2[j] = v2 * v2
+        t3[j] = u_k * v2
     s_area, s_l, s_u3, s_v3 = scales[_S_AREA], scales[_S_L], scales[_S_U3], scales[_S_V3]
-    for j in range(min(edges, FIT_BLOCK)):
+    for j in range(edges):
         weight = _weight(area_size[j])
         v3 = edge[j] / s_l / weight / s_v3
-        t0[j] = v3 * v3
-        t1[j] = area[j] / s_area / weight / s_u3 * v3
+        t4[j] = v3 * v3
+        t5[j] = area[j] / s_area / weight / s_u3 * v3
+    return inner, edges
+
+
+@kernel("int64(int64, int64, int64[:, ::1], int64)")
+def _leaves(start: int, count: int, out: Any, at: int) -> int:
+    """The leaves of ``_pairwise``'s tree on start .. start + count − 1, left to right, as rows
+    (first, count) of ``out`` from row ``at``; returns the row after the last."""
+    if count <= 128:
+        out[at, 0], out[at, 1] = start, count
+        return at + 1
+    half = count // 2
+    half -= half % 8
+    at = _leaves(start, half, out, at)
+    return _leaves(start + half, count - half, out, at)
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _refill(
+    p: Any, k0: int, scales: Any, buffers: Any, window: Any, leaves: Any, sums: Any
+) -> None:
+    """The terms of the block from k0 (``_fill_terms``), then the sums of (D3)'s leaves that lie
+    in it, in order (window: first index, end of (D1)'s terms, end of (D3)'s, next leaf)."""
+    inner, edges = _fill_terms(p, k0, scales, buffers)
+    window[0], window[1], window[2] = k0, k0 + inner, k0 + edges
+    at = window[3]
+    while at < leaves.shape[0]:
+        first, count = leaves[at, 0], leaves[at, 1]
+        if first < k0 or first + count > k0 + edges:
+            break
+        sums[at, 0] = _pairwise(buffers[14], first - k0, count)
+        sums[at, 1] = _pairwise(buffers[15], first - k0, count)
+        at += 1
+    window[3] = at
 
 
 @kernel(
     "UniTuple(float64, 4)(float64[:, :], int64, int64, float64[::1], float64[:, ::1], int64[::1], "
-    "boolean)"
+    "int64[:, ::1], float64[:, ::1])"
 )
 def _tree_sums(
-    p: Any, start: int, count: int, scales: Any, buffers: Any, window: Any, inner: bool
+    p: Any, start: int, count: int, scales: Any, buffers: Any, window: Any, leaves: Any, sums: Any
 ) -> tuple[float, float, float, float]:
-    """numpy's pairwise sums (``_pairwise``'s tree) of the terms start .. start + count − 1 of
-    ``_fill_terms`` (4 sums with ``inner``, else 2 and two zeros). The leaves (≤ 128 terms) are
-    read from the term buffers, which hold the block window[0] .. window[1] − 1 and are
-    refilled from a leaf's first term when the leaf is not in it (leaves come left to right)."""
+    """numpy's pairwise sums (``_pairwise``'s tree) of (D1)'s and eq. (2)'s terms start ..
+    start + count − 1 (``_fill_terms``). The leaves (≤ 128 terms) are read from the term
+    buffers, refilled (``_refill``) from a leaf's first term, or from the first of (D3)'s
+    leaves still to sum if that is before it, when the leaf is not in them (leaves come left to
+    right); each refill also sums (D3)'s leaves ``leaves`` it holds into ``sums``."""
     if count == 0:
         return 0.0, 0.0, 0.0, 0.0
     if count <= 128:
         if start < window[0] or start + count > window[1]:
-            _fill_terms(p, start, scales, buffers, inner)
-            window[0], window[1] = start, start + FIT_BLOCK
+            k0 = start
+            if window[3] < leaves.shape[0]:
+                k0 = min(k0, leaves[window[3], 0])
+            _refill(p, k0, scales, buffers, window, leaves, sums)
         at = start - window[0]
         first, second = _pairwise(buffers[10], at, count), _pairwise(buffers[11], at, count)
-        if inner:
-            third, fourth = _pairwise(buffers[12], at, count), _pairwise(buffers[13], at, count)
-            return first, second, third, fourth
-        return first, second, 0.0, 0.0
+        third, fourth = _pairwise(buffers[12], at, count), _pairwise(buffers[13], at, count)
+        return first, second, third, fourth
     half = count // 2
     half -= half % 8
-    a = _tree_sums(p, start, half, scales, buffers, window, inner)
-    b = _tree_sums(p, start + half, count - half, scales, buffers, window, inner)
+    a = _tree_sums(p, start, half, scales, buffers, window, leaves, sums)
+    b = _tree_sums(p, start + half, count - half, scales, buffers, window, leaves, sums)
     return a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3]
+
+
+@kernel("UniTuple(float64, 2)(int64, float64[:, ::1], int64[::1])")
+def _leaf_tree(count: int, sums: Any, at: Any) -> tuple[float, float]:
+    """``_pairwise``'s tree over count terms whose leaves' sums are the rows of ``sums`` from
+    row at[0] on (advanced past those it reads)."""
+    if count == 0:
+        return 0.0, 0.0
+    if count <= 128:
+        row = at[0]
+        at[0] = row + 1
+        return sums[row, 0], sums[row, 1]
+    half = count // 2
+    half -= half % 8
+    a = _leaf_tree(half, sums, at)
+    b = _leaf_tree(count - half, sums, at)
+    return a[0] + b[0], a[1] + b[1]
 
 
 @numba.njit(cache=True, error_model="numpy")
@@ -418,10 +470,15 @@ def _summary_passes(p: Any) -> Any:
         _second_pass(buffers, min(block, FIT_BLOCK), block_inner, scales, big, nan)
     for k in range(5, 10):
         scales[k] = _scale_of(big[k], nan[k])
-    window = np.zeros(2, dtype=np.int64)  # pass 3: the sums, in numpy's order
-    vv1, uv1, vv2, uv2 = _tree_sums(p, 0, inner, scales, buffers, window, True)
-    window[0], window[1] = 0, 0
-    vv3, uv3, _, _ = _tree_sums(p, 0, edges, scales, buffers, window, False)
+    # pass 3: the sums, in numpy's order; (D3)'s leaves from the same blocks as the others'
+    leaves = np.empty((edges // 64 + 2, 2), dtype=np.int64)
+    leaves = leaves[: _leaves(0, edges, leaves, 0) if edges else 0]
+    sums = np.empty((leaves.shape[0], 2))
+    window = np.zeros(4, dtype=np.int64)
+    vv1, uv1, vv2, uv2 = _tree_sums(p, 0, inner, scales, buffers, window, leaves, sums)
+    while window[3] < leaves.shape[0]:  # (D3)'s last leaves, past (D1)'s equations
+        _refill(p, leaves[window[3], 0], scales, buffers, window, leaves, sums)
+    vv3, uv3 = _leaf_tree(edges, sums, np.zeros(1, dtype=np.int64))
     c1, has1 = _constant(uv1, vv1, scales, _S_SECOND, _S_PAIRED_L, _S_U, _S_V1)
     c3, has3 = _constant(uv3, vv3, scales, _S_AREA, _S_L, _S_U3, _S_V3)
     c2, has2 = _constant(uv2, vv2, scales, _S_SECOND, _S_PAIRED_A, _S_U, _S_V2)
