@@ -136,11 +136,19 @@ def evaluate(
         )
         # the closed forms the selected statements compare with, in a few calls a block
         fused_checks.fill_closed_forms(data, images, kinematic)
-    checks = []
-    for statement, evaluator in _EVALUATORS:
+    found: dict[int, Check] = {}
+    later = []  # with the fits on their thread: their checks after the others, in their place
+    for position, (statement, evaluator) in enumerate(_EVALUATORS):
         if selection.wants_check(statement.id):
+            if ctx.fits_threaded and statement in _FITTED:
+                later.append(position)
+                continue
             ar.check_time()  # the compiled ball passes read no clock: one check per statement
-            checks.append(evaluator(ctx))
+            found[position] = evaluator(ctx)
+    for position in later:
+        ar.check_time()
+        found[position] = _EVALUATORS[position][1](ctx)
+    checks = [found[position] for position in sorted(found)]
     if any(selection.wants_check(s.id) for s in d4b_curvature.STATEMENTS):
         n = ctx.n
         shift = kinematic_closed_forms.tilt_shift(ar, ctx.h, ctx.d, beta0)
@@ -197,10 +205,17 @@ class _Context:
         self.indices = np.arange(data.i_min, data.i_min + self.n + 1, dtype=np.int64)
         self._pending_fits: Future[Any] | None = None
 
+    @property
+    def fits_threaded(self) -> bool:
+        """Whether the fits run on a second thread (``start_fits``)."""
+        return self._pending_fits is not None
+
     def start_fits(self) -> None:
         """Float64 from ``FITS_THREADED_FROM`` indices, when a fit is checked: the fits' kernel
         (a pure function of p that releases the GIL) on a second thread, joined where the fits
-        are first read (``fused_fits``), so that it runs beside the other checks."""
+        are first read (``fused_fits``): ``evaluate`` takes Theorem 4 (i)–(iii) after the other
+        checks of Sections 3 and 4.2 (before Section 5's rings, which take a second thread of
+        their own), so that the fits run beside them."""
         wanted = any(self.selection.wants_check(s.id) for s in _FITTED)
         if self.ar.mode != "float64" or self.n < FITS_THREADED_FROM or not wanted:
             return

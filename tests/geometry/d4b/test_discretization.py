@@ -226,11 +226,12 @@ def test_fits_on_a_second_thread_give_the_one_thread_checks(
     monkeypatch: pytest.MonkeyPatch, detail: bool, checks: frozenset[str] | None
 ) -> None:
     """Theorem 4 (i)-(iii) with the fits on a second thread (from ``FITS_THREADED_FROM``
-    indices) are the checks and constants of the fits computed where they are read."""
+    indices, their checks evaluated after the others) are the checks and constants of the fits
+    computed where they are read, in the same place of the response."""
     from app.geometry.curve import Selection
     from app.geometry.d4b import checks as d4b_checks
 
-    def fitted(threaded_from: int) -> tuple[object, list[object]]:
+    def fitted(threaded_from: int) -> tuple[object, list[object], list[str]]:
         monkeypatch.setattr(d4b_checks, "FITS_THREADED_FROM", threaded_from)
         result = d4b.compute(
             Float64(), 1.0, 0.3, 0.8, -40, 60, detail=detail, selection=Selection(checks=checks)
@@ -241,7 +242,7 @@ def test_fits_on_a_second_thread_give_the_one_thread_checks(
             if c.id in _FITTED
         ]
         constants = {k: float(v).hex() for k, v in result.constants.items()}
-        return constants, found
+        return constants, found, [c.id for c in result.checks]  # in the response's order
 
     threaded, alone = fitted(1), fitted(10**9)
     assert threaded == alone
