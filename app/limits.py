@@ -22,6 +22,10 @@ MP_OVERHEAD_DIGITS = 200
 # with the digits.
 
 #: float64: seconds and bytes per vertex of a polygon (computed, checked and encoded as JSON).
+#: From 10^5 vertices (D4b) runs its fits and one of its rings on second threads of the request
+#: (``d4b.checks.FITS_THREADED_FROM``, ``d4b.curvature.RINGS_THREADED_FROM``): the same CPU
+#: seconds (≈ 0.04 and 0.045 s at 10^6, far inside the 4 s charged), two threads at a time (the
+#: fits are joined before the rings start).
 F64_VERTEX_SECONDS = 4e-6
 F64_VERTEX_BYTES = 800
 #: float64: seconds per sequential construction step (from index 0 to i_min and i_max): the
