@@ -637,6 +637,39 @@ def largest_printed_gauss_difference(
     return worst if math.isfinite(worst) else None
 
 
+@kernel("UniTuple(float64, 2)(float64[:, :], float64[:, :])")
+def _largest_along_both(vectors: Any, points: Any) -> tuple[float, float]:
+    """``_along`` of ``vectors`` and ``_largest_along_printed_slope`` on their first
+    len(vectors) edges, in one pass: the largest of each (NaN if one is NaN), each edge and
+    its size made once for both, every quotient as the two passes make it."""
+    largest, printed = 0.0, 0.0
+    for k in range(vectors.shape[0]):
+        ex = points[k + 1, 0] - points[k, 0]
+        ey = points[k + 1, 1] - points[k, 1]
+        size = abs(points[k, 0]) + abs(points[k, 1]) + abs(points[k + 1, 0]) + abs(points[k + 1, 1])
+        vx, vy = vectors[k, 0], vectors[k, 1]
+        residual = abs(vx * ey - vy * ex) / size
+        largest = running_largest(1.0 if vx * ex + vy * ey < 0 else residual, largest)
+        slope = ey / ex
+        wx = math.sqrt(1 / (1 + slope * slope))
+        wy = math.sqrt(slope * slope / (1 + slope * slope))
+        residual = abs(wx * ey - wy * ex) / size
+        printed = running_largest(1.0 if wx * ex + wy * ey < 0 else residual, printed)
+    return largest, printed
+
+
+def along_largest(vectors: Any, points: Any) -> tuple[Largest, float | None]:
+    """Float64: ``along(vectors, points)`` as its largest (``checks.Largest``, the rows made only
+    if asked) and ``largest_along_printed_slope(len(vectors), points)``, from one pass (the
+    check of (18) by slopes and its erratum E61); ``points`` has len(vectors) + 1 rows or
+    more."""
+    v, q = _points(vectors), _points(points)
+    count = len(v)
+    largest, printed = _largest_along_both(v, q)
+    worst = float(printed) if count > 0 and math.isfinite(printed) else None
+    return Largest(float(largest), count, lambda: along(v, q[: count + 1])), worst
+
+
 def largest_along_printed_slope(count: int, points: Any) -> float | None:
     """The printed residual of (18) from the slopes (``curvature.slope_erratum``): the largest
     ``along`` of the printed unit vectors of the first ``count`` edges of ``points``."""
@@ -683,5 +716,12 @@ def ratio_spread(p: Any) -> float | None:
     ratio = _printed_ratios(_points(p))
     if len(ratio) < 2:
         return None
-    worst = float(_largest_spread(ratio, float(np.sum(ratio) / len(ratio)), TINY))
+    mean = float(np.sum(ratio) / len(ratio))
+    # |v − mean| / scale grows with v on either side of the mean (a rounded difference and a
+    # quotient by a positive scale are monotone): its largest is at the smallest or the largest
+    # ratio, the same number ``_largest_spread`` finds in a pass with a division per entry
+    scale = abs(mean)
+    scale = scale if scale > TINY else TINY
+    low, high = float(np.min(ratio)), float(np.max(ratio))  # NaN if one is NaN
+    worst = max(abs(high - mean) / scale, abs(low - mean) / scale)
     return worst if math.isfinite(worst) else None

@@ -408,3 +408,30 @@ def test_largest_scaled_relative_point_difference_is_the_arrays_largest(seed: in
     broken[11, 1] = np.nan
     found = residual_kernels.largest_scaled_relative_point_difference(broken, expected, scale)
     assert np.isnan(found.value)
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_ratio_spread_from_the_extremes_equals_the_pass_over_every_ratio(seed: int) -> None:
+    """The spread read at the smallest and largest ratio is the pass's (a division an entry)."""
+    rng = np.random.default_rng(seed)
+    for data in polygons(seed):
+        for p in (data.p, perturbed(data, seed)[0], data.p * rng.uniform(0.5, 2, data.p.shape)):
+            ratio = residual_kernels._printed_ratios(np.asarray(p, dtype=np.float64))
+            if len(ratio) < 2:
+                continue
+            mean = float(np.sum(ratio) / len(ratio))
+            expected = float(residual_kernels._largest_spread(ratio, mean, residual_kernels.TINY))
+            assert residual_kernels.ratio_spread(p) == expected
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_along_and_its_printed_slope_in_one_pass_equal_the_two_passes(seed: int) -> None:
+    for data in polygons(seed):
+        p = perturbed(data, seed)[0]
+        n = len(p) - 1
+        for vectors in (data.gauss.tractrix_gauss[:n], -data.gauss.tractrix_gauss[:n]):
+            largest, printed = residual_kernels.along_largest(vectors, p)
+            rows = residual_kernels.along(vectors, p[: n + 1])
+            assert largest.value == checks.largest_magnitude(rows)
+            np.testing.assert_array_equal(largest.residuals(), rows)
+            assert printed == residual_kernels.largest_along_printed_slope(n, p)
