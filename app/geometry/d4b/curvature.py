@@ -609,7 +609,36 @@ def evaluate(
             slope_erratum(),
         )
 
+    def one_pass() -> tuple[float, float] | None:
+        """Float64 without ``detail``: (19) as a rotation and (20) by inversion, the largest
+        of each (those selected), from one pass that makes the resolutions as it goes; None
+        where the resolutions' arrays are made anyway (made already, or the comparisons with
+        the constructed images' closed forms take them) or the lengths do not fit."""
+
+        def make() -> tuple[float, float] | None:
+            if ar.mode != "float64" or detail or n <= 0 or "resolution" in memo:
+                return None
+            before = images.contact_edges_before
+            if images.constructed and (wanted(EQUATION_19.id) or wanted(EQUATION_20.id)):
+                return None
+            if before is None or len(before) != 2 or len(p) <= n or len(c()) <= n:
+                return None
+            if len(nt()) < n or len(m()) < n:
+                return None
+            rotation, inversion = wanted(EQUATION_19_ROTATION.id), wanted(EQUATION_20_INVERSION.id)
+            return residual_kernels.rotation_and_inversion_largest(
+                p, before, c(), nt(), m(), n, rotation, inversion
+            )
+
+        return shared("rotation and inversion", make)
+
     def rotation() -> Check:
+        fused = one_pass()
+        if fused is not None:
+            rows = lambda: residual_kernels.contact_rotation_largest(  # noqa: E731
+                c(), nt(), resolution(), n
+            ).residuals()
+            return check(EQUATION_19_ROTATION, Largest(fused[0], n, rows), n_tolerance)
         count = min(n, len(c()) - 1, len(nt()), len(resolution()))
         if ar.mode == "float64" and not detail and count == n > 0:  # one pass, no arrays
             return check(
@@ -629,6 +658,12 @@ def evaluate(
         )
 
     def inversion() -> Check:
+        fused = one_pass()
+        if fused is not None:
+            rows = lambda: residual_kernels.pole_inversion_largest(  # noqa: E731
+                m(), c(), pole_resolution(), n
+            ).residuals()
+            return check(EQUATION_20_INVERSION, Largest(fused[1], n, rows), local_tolerance)
         count = min(n, len(m()), len(c()) - 1, len(pole_resolution()))
         if ar.mode == "float64" and not detail and count == n > 0:  # one pass, no arrays
             return check(

@@ -435,3 +435,33 @@ def test_along_and_its_printed_slope_in_one_pass_equal_the_two_passes(seed: int)
             assert largest.value == checks.largest_magnitude(rows)
             np.testing.assert_array_equal(largest.residuals(), rows)
             assert printed == residual_kernels.largest_along_printed_slope(n, p)
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_rotation_and_inversion_in_one_pass_equal_the_passes_over_stored_scales(seed: int) -> None:
+    """(19) as a rotation and (20) by inversion with their resolutions made as the pass goes:
+    the largest residuals of the passes over the stored resolution and pole resolution (as
+    ``curvature.evaluate`` makes them), NaN included."""
+    rng = np.random.default_rng(seed)
+    for data in polygons(seed):
+        images = data.gauss
+        before = images.contact_edges_before
+        p, c, nt, m = data.p, images.contact, images.tractrix_gauss, images.gauss
+        noisy = p * (1 + rng.normal(size=p.shape) * 1e-6)
+        with_nan = p.copy()
+        with_nan[len(p) // 2, 1] = np.nan
+        for points in (p, noisy, with_nan):
+            n = len(points) - 1
+            resolution = residual_kernels.edge_resolution(points)
+            previous = np.concatenate([residual_kernels.edge_resolution(before), resolution[:-1]])
+            pole = np.minimum(previous, resolution)
+            rotation = residual_kernels.contact_rotation_largest(c, nt, resolution, n)
+            inversion = residual_kernels.pole_inversion_largest(m, c, pole, n)
+            found = residual_kernels.rotation_and_inversion_largest(
+                points, before, c, nt, m, n, True, True
+            )
+            np.testing.assert_array_equal(found, (rotation.value, inversion.value))
+            alone = residual_kernels.rotation_and_inversion_largest(
+                points, before, c, nt, m, n, False, True
+            )
+            np.testing.assert_array_equal(alone, (0.0, inversion.value))
