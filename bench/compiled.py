@@ -19,6 +19,9 @@ Run: .venv/bin/python bench/compiled.py   (about 60 s; ``make bench`` runs it wi
 its own process, alternating for ``--rounds`` rounds (CPU time; the kernels of DIR compile into
 its own cache on its first run); part 2 runs once with glibc's default malloc and once with the
 server's environment (the Makefile's ``SERVER_ENV``). ``--checks-only`` skips part 1.
+
+``--statements`` (with or without ``--base DIR``): the checks of a 10^6 D4b one statement at a
+time (``BREAKDOWN``, method=closed-form), each tree in its own process, glibc and server env.
 """
 
 from __future__ import annotations
@@ -444,7 +447,130 @@ for method in ("closed-form", "construction"):
         f" (issue's floor {alone / fresh:.0f}x)"
     )
     print(f"D4b 10^6 checks alone, wall, {method}|{alone_wall * 1e3:.0f} ms")
+    least = min(e[0] for e, _ in pairs) - min(o[0] for _, o in pairs)
+    print(f"D4b 10^6 checks alone, least every - least none, {method}|{least * 1e3:.0f} ms")
 """
+
+
+#: Part 2b, the checks one by one, in one process on the tree given as its argument: for each
+#: statement the CPU of "checks=none + that statement" less checks=none (paired, interleaved,
+#: median of ``sys.argv[3]`` pairs), then the groups whose members share a quantity (the first
+#: member to need it pays for it alone), and the sum against "checks alone" (every − none).
+BREAKDOWN = """
+import sys, time, statistics, os
+sys.path.insert(0, sys.argv[1])
+from app.geometry.curve import EVERYTHING, Selection
+from app.geometry.d4b import checks as section4, curvature as section5, discretization as full
+from app.geometry.precision import Float64
+ar = Float64()
+n, rounds, method = 10**6, int(sys.argv[2]), sys.argv[3]
+lo, hi = -(n // 2), n - n // 2 - 1
+ids = [s.id for s, _ in section4._EVALUATORS] + [s.id for s in section5.STATEMENTS]
+def run(selection):
+    start = time.process_time()
+    full.compute(ar, 1.0, 1e-4, None, lo, hi, method, selection=selection)
+    return time.process_time() - start
+none = Selection(checks=frozenset())
+nones = []
+def alone(chosen):
+    selection = EVERYTHING if chosen is None else Selection(checks=frozenset(chosen))
+    run(selection)
+    pairs = []
+    for k in range(rounds):
+        if k % 2:
+            o = run(none); e = run(selection)
+        else:
+            e = run(selection); o = run(none)
+        pairs.append((e, o))
+        nones.append(o)
+    # paired median, and the least of the selection's runs less the least checks=none so far
+    # (on a loaded host noise only adds: the least runs are the least disturbed)
+    return statistics.median(e - o for e, o in pairs), min(e for e, _ in pairs)
+def least(value):
+    return value - min(nones)
+run(none)
+total, total_least = alone(None)
+rows = {i: alone([i]) for i in ids}
+for i in ids:
+    print(f"{i}|{rows[i][0] * 1e3:.1f} / {least(rows[i][1]) * 1e3:.1f}")
+paired, fewest = sum(r[0] for r in rows.values()), sum(least(r[1]) for r in rows.values())
+print(f"sum of the rows|{paired * 1e3:.1f} / {fewest * 1e3:.1f}")
+print(f"checks alone (every - none)|{total * 1e3:.1f} / {least(total_least) * 1e3:.1f}")
+print(f"checks=none (least)|{min(nones) * 1e3:.1f}")
+for name, members in GROUPS:
+    members = [m for m in members if m in rows]
+    together = alone(members)
+    shared = sum(least(rows[m][1]) for m in members) - least(together[1])
+    print(
+        f"group {name}: together (shared)|{together[0] * 1e3:.1f} / "
+        f"{least(together[1]) * 1e3:.1f} ({shared * 1e3:.1f})"
+    )
+print(f"load average|{os.getloadavg()[0]:.2f}")
+"""
+
+#: Statements that share a quantity computed once for all of them (what the first to need it
+#: pays): the three fits; (13) and its two-step form (one recursion pass); Theorems 5, 6 (one
+#: pass over the closed forms); (18)-(20) and their two resolutions and comparisons (one blocked
+#: pass); the two rings (Theorems 7, 8 and (17)).
+GROUPS = (
+    ("fits", ("theorem-4-i", "theorem-4-ii", "theorem-4-iii")),
+    ("recursion", ("recursion-13", "two-step")),
+    ("closed kinematics", ("theorem-5", "theorem-6")),
+    (
+        "Gauss images",
+        (
+            "equation-18",
+            "equation-18-slope",
+            "equation-19",
+            "equation-19-rotation",
+            "equation-20-inversion",
+            "equation-20",
+        ),
+    ),
+    ("rings", ("theorem-7", "theorem-8", "equation-17")),
+    ("Darboux", ("darboux", "darboux-distance")),
+)
+
+
+def breakdown(trees: list[tuple[str, str]], rounds: int, method: str) -> None:
+    """Part 2b for each (name, root) of ``trees``, each in its own process, with glibc's
+    default malloc and with the server's (``SERVER_ENV``); one column per tree and setting."""
+    import os
+    import subprocess
+
+    plain = {k: v for k, v in os.environ.items() if not k.startswith("MALLOC_")}
+    settings = {"glibc": plain, "server env": {**plain, **server_env()}}
+    script = f"GROUPS = {GROUPS!r}\n" + BREAKDOWN
+    columns: list[str] = []
+    figures: dict[str, dict[str, str]] = {}
+    start_load = os.getloadavg()[0]
+    for setting, env in settings.items():
+        for name, root in trees:
+            column = f"{name}, {setting}"
+            columns.append(column)
+            out = subprocess.run(
+                [sys.executable, "-c", script, root, str(rounds), method],
+                capture_output=True,
+                text=True,
+                check=True,
+                cwd=root,
+                env=env,
+            ).stdout
+            for line in out.splitlines():
+                label, value = line.split("|")
+                figures.setdefault(label, {})[column] = value
+    print(
+        f" the checks one by one at 10^6, {method}: CPU ms of checks=none + the statement less "
+        f"checks=none, as 'paired median of {rounds} / least run less least checks=none' (the "
+        f"second is the steadier under load); a quantity shared by a group is paid by "
+        f"whichever member runs (each row alone pays for it), the group row shows the members "
+        f"together and (in brackets, least) what they share; load average {start_load:.1f} at "
+        f"the start"
+    )
+    print(f"  {'statement':<40}" + "".join(f"{c:>24}" for c in columns))
+    for label, by_column in figures.items():
+        cells = "".join(f"{by_column.get(c, ''):>24}" for c in columns)
+        print(f"  {label:<40}{cells}")
 
 
 def server_env() -> dict[str, str]:
@@ -494,6 +620,13 @@ def against(base: str, rounds: int, parts: str) -> None:
 def main() -> None:
     if "--arithmetic" in sys.argv:
         arithmetic()
+        return
+    if "--statements" in sys.argv:
+        rounds = int(sys.argv[sys.argv.index("--rounds") + 1]) if "--rounds" in sys.argv else 3
+        trees = [("here", str(ROOT))]
+        if "--base" in sys.argv:
+            trees.insert(0, ("base", sys.argv[sys.argv.index("--base") + 1]))
+        breakdown(trees, rounds, "closed-form")
         return
     if "--base" in sys.argv:
         rounds = int(sys.argv[sys.argv.index("--rounds") + 1]) if "--rounds" in sys.argv else 2

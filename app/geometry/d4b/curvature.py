@@ -395,16 +395,18 @@ def evaluate(
         statement: Statement,
         built: Array,
         closed_form: Callable[[], Array],
-        erratum: Erratum,
+        make_erratum: Callable[[], Erratum],
         tolerance: float = construction_tolerance,
-        scale: Any = None,
+        make_scale: Callable[[], Any] | None = None,
     ) -> Check:
-        if not images.constructed:
+        if not images.constructed:  # neither the erratum nor the scale is read
             return not_applicable(
                 statement,
                 tolerance,
                 "method=closed-form: the Gauss image was not constructed to compare",
             )
+        erratum = make_erratum()
+        scale = None if make_scale is None else make_scale()
         fused = image_comparisons()
         if fused is not None:  # made and compared a block at a time (``image_comparisons``)
             largest = fused[IMAGE_COMPARISONS.index(statement.id.removeprefix("equation-"))]
@@ -594,7 +596,49 @@ def evaluate(
         along = _along(ar, slope_printed[:n], p[: n + 1], p_edges)
         return Erratum(*ERRATUM_18_SLOPE, printed_residual=printed_residual(ar, along))
 
+    def slope() -> Check:
+        if ar.mode == "float64" and not detail and n > 0 and len(nt()) >= n and len(p) > n:
+            # the check and its erratum from one pass, the largest of each alone
+            largest, worst = residual_kernels.along_largest(nt()[:n], p[: n + 1])
+            erratum = Erratum(*ERRATUM_18_SLOPE, printed_residual=worst)
+            return check(EQUATION_18_SLOPE, largest, n_tolerance, erratum)
+        return check(
+            EQUATION_18_SLOPE,
+            _along(ar, nt()[:n], p[: n + 1], p_edges),
+            n_tolerance,
+            slope_erratum(),
+        )
+
+    def one_pass() -> tuple[float, float] | None:
+        """Float64 without ``detail``: (19) as a rotation and (20) by inversion, the largest
+        of each (those selected), from one pass that makes the resolutions as it goes; None
+        where the resolutions' arrays are made anyway (made already, or the comparisons with
+        the constructed images' closed forms take them) or the lengths do not fit."""
+
+        def make() -> tuple[float, float] | None:
+            if ar.mode != "float64" or detail or n <= 0 or "resolution" in memo:
+                return None
+            before = images.contact_edges_before
+            if images.constructed and (wanted(EQUATION_19.id) or wanted(EQUATION_20.id)):
+                return None
+            if before is None or len(before) != 2 or len(p) <= n or len(c()) <= n:
+                return None
+            if len(nt()) < n or len(m()) < n:
+                return None
+            rotation, inversion = wanted(EQUATION_19_ROTATION.id), wanted(EQUATION_20_INVERSION.id)
+            return residual_kernels.rotation_and_inversion_largest(
+                p, before, c(), nt(), m(), n, rotation, inversion
+            )
+
+        return shared("rotation and inversion", make)
+
     def rotation() -> Check:
+        fused = one_pass()
+        if fused is not None:
+            rows = lambda: residual_kernels.contact_rotation_largest(  # noqa: E731
+                c(), nt(), resolution(), n
+            ).residuals()
+            return check(EQUATION_19_ROTATION, Largest(fused[0], n, rows), n_tolerance)
         count = min(n, len(c()) - 1, len(nt()), len(resolution()))
         if ar.mode == "float64" and not detail and count == n > 0:  # one pass, no arrays
             return check(
@@ -614,6 +658,12 @@ def evaluate(
         )
 
     def inversion() -> Check:
+        fused = one_pass()
+        if fused is not None:
+            rows = lambda: residual_kernels.pole_inversion_largest(  # noqa: E731
+                m(), c(), pole_resolution(), n
+            ).residuals()
+            return check(EQUATION_20_INVERSION, Largest(fused[1], n, rows), local_tolerance)
         count = min(n, len(m()), len(c()) - 1, len(pole_resolution()))
         if ar.mode == "float64" and not detail and count == n > 0:  # one pass, no arrays
             return check(
@@ -636,27 +686,19 @@ def evaluate(
                 EQUATION_18,
                 nt(),
                 lambda: images.closed_tractrix_gauss,
-                printed_erratum(ERRATUM_18, nt(), "18"),
+                lambda: printed_erratum(ERRATUM_18, nt(), "18"),
                 n_tolerance,
             ),
         ),
-        (
-            EQUATION_18_SLOPE,
-            lambda: check(
-                EQUATION_18_SLOPE,
-                _along(ar, nt()[:n], p[: n + 1], p_edges),
-                n_tolerance,
-                slope_erratum(),
-            ),
-        ),
+        (EQUATION_18_SLOPE, slope),
         (
             EQUATION_19,
             lambda: closed(
                 EQUATION_19,
                 c()[1:],
                 lambda: images.closed_contact[1:],
-                printed_erratum(ERRATUM_19, c()[1:], "19"),
-                scale=resolution(),
+                lambda: printed_erratum(ERRATUM_19, c()[1:], "19"),
+                make_scale=resolution,
             ),
         ),
         (EQUATION_19_ROTATION, rotation),
@@ -667,8 +709,8 @@ def evaluate(
                 EQUATION_20,
                 m(),
                 lambda: images.closed_gauss,
-                printed_erratum(ERRATUM_20, m(), "20"),
-                scale=pole_resolution(),
+                lambda: printed_erratum(ERRATUM_20, m(), "20"),
+                make_scale=pole_resolution,
             ),
         ),
         (THEOREM_7, theorem_7),

@@ -311,6 +311,86 @@ def pole_inversion_largest(gauss: Any, contact: Any, scale: Any, count: int) -> 
     return Largest(float(largest), count, lambda: _pole_inversion(*arrays, count, TINY, True)[0])
 
 
+@kernel(
+    "UniTuple(float64, 2)(float64[:, :], float64[:, :], float64[:, :], float64[:, :], "
+    "float64[:, :], int64, boolean, boolean, float64)"
+)
+def _rotation_and_inversion(
+    p: Any,
+    before: Any,
+    contact: Any,
+    normals: Any,
+    gauss: Any,
+    count: int,
+    rotation: bool,
+    inversion: bool,
+    tiny: float,
+) -> tuple[float, float]:
+    """``_contact_rotation`` (if ``rotation``) and ``_pole_inversion`` (if ``inversion``) as
+    their largest values, k = 0 .. count − 1, in one pass that makes their scales as it goes:
+    the edge resolution of p_k p_{k+1} (``_edge_resolution``) and the pole's, the smaller of it
+    and the previous edge's (np.minimum's, NaN if either is; the edge before the range is
+    ``before``'s one edge), so that neither scale is stored. The same numbers as the passes
+    over the stored scales."""
+    ex = before[1, 0] - before[0, 0]
+    ey = before[1, 1] - before[0, 1]
+    size = abs(before[0, 0]) + abs(before[0, 1]) + abs(before[1, 0]) + abs(before[1, 1])
+    previous = length(ex, ey) / size
+    largest_rotation, largest_inversion = 0.0, 0.0
+    for k in range(count):
+        ex = p[k + 1, 0] - p[k, 0]
+        ey = p[k + 1, 1] - p[k, 1]
+        size = abs(p[k, 0]) + abs(p[k, 1]) + abs(p[k + 1, 0]) + abs(p[k + 1, 1])
+        resolution = length(ex, ey) / size
+        if rotation:
+            distance = length(
+                contact[k + 1, 0] - (-normals[k, 1]), contact[k + 1, 1] - normals[k, 0]
+            )
+            largest_rotation = running_largest(distance * resolution, largest_rotation)
+        if inversion:
+            keep = previous < resolution or previous != previous
+            scale = previous if keep else resolution
+            tx = contact[k, 0] + contact[k + 1, 0]
+            ty = contact[k, 1] + contact[k + 1, 1]
+            squared = tx * tx + ty * ty
+            px, py = 2 * tx / squared, 2 * ty / squared
+            pole = length(px, py)
+            pole = pole if pole > tiny else tiny
+            value = length(gauss[k, 0] - px, gauss[k, 1] - py) / pole * scale
+            largest_inversion = running_largest(value, largest_inversion)
+        previous = resolution
+    return largest_rotation, largest_inversion
+
+
+def rotation_and_inversion_largest(
+    p: Any,
+    before: Any,
+    contact: Any,
+    normals: Any,
+    gauss: Any,
+    count: int,
+    rotation: bool,
+    inversion: bool,
+) -> tuple[float, float]:
+    """Float64: the largest residuals of (19) as a rotation and of (20) by inversion
+    (``contact_rotation_largest`` with ``edge_resolution(p)``, ``pole_inversion_largest`` with
+    the pole resolution ``curvature.evaluate`` makes from it and ``before``), those asked for
+    (0.0 for the other), from one pass without the scales' arrays; ``p`` and ``contact`` need
+    count + 1 rows, ``normals`` and ``gauss`` count, ``before`` two."""
+    found = _rotation_and_inversion(
+        _points(p),
+        _points(before),
+        _points(contact),
+        _points(normals),
+        _points(gauss),
+        count,
+        rotation,
+        inversion,
+        TINY,
+    )
+    return float(found[0]), float(found[1])
+
+
 #: Vertices per block of the rotation angle's passes (its scratch rows stay in the cache).
 ROTATION_BLOCK = 8192
 
@@ -637,6 +717,39 @@ def largest_printed_gauss_difference(
     return worst if math.isfinite(worst) else None
 
 
+@kernel("UniTuple(float64, 2)(float64[:, :], float64[:, :])")
+def _largest_along_both(vectors: Any, points: Any) -> tuple[float, float]:
+    """``_along`` of ``vectors`` and ``_largest_along_printed_slope`` on their first
+    len(vectors) edges, in one pass: the largest of each (NaN if one is NaN), each edge and
+    its size made once for both, every quotient as the two passes make it."""
+    largest, printed = 0.0, 0.0
+    for k in range(vectors.shape[0]):
+        ex = points[k + 1, 0] - points[k, 0]
+        ey = points[k + 1, 1] - points[k, 1]
+        size = abs(points[k, 0]) + abs(points[k, 1]) + abs(points[k + 1, 0]) + abs(points[k + 1, 1])
+        vx, vy = vectors[k, 0], vectors[k, 1]
+        residual = abs(vx * ey - vy * ex) / size
+        largest = running_largest(1.0 if vx * ex + vy * ey < 0 else residual, largest)
+        slope = ey / ex
+        wx = math.sqrt(1 / (1 + slope * slope))
+        wy = math.sqrt(slope * slope / (1 + slope * slope))
+        residual = abs(wx * ey - wy * ex) / size
+        printed = running_largest(1.0 if wx * ex + wy * ey < 0 else residual, printed)
+    return largest, printed
+
+
+def along_largest(vectors: Any, points: Any) -> tuple[Largest, float | None]:
+    """Float64: ``along(vectors, points)`` as its largest (``checks.Largest``, the rows made only
+    if asked) and ``largest_along_printed_slope(len(vectors), points)``, from one pass (the
+    check of (18) by slopes and its erratum E61); ``points`` has len(vectors) + 1 rows or
+    more."""
+    v, q = _points(vectors), _points(points)
+    count = len(v)
+    largest, printed = _largest_along_both(v, q)
+    worst = float(printed) if count > 0 and math.isfinite(printed) else None
+    return Largest(float(largest), count, lambda: along(v, q[: count + 1])), worst
+
+
 def largest_along_printed_slope(count: int, points: Any) -> float | None:
     """The printed residual of (18) from the slopes (``curvature.slope_erratum``): the largest
     ``along`` of the printed unit vectors of the first ``count`` edges of ``points``."""
@@ -683,5 +796,12 @@ def ratio_spread(p: Any) -> float | None:
     ratio = _printed_ratios(_points(p))
     if len(ratio) < 2:
         return None
-    worst = float(_largest_spread(ratio, float(np.sum(ratio) / len(ratio)), TINY))
+    mean = float(np.sum(ratio) / len(ratio))
+    # |v − mean| / scale grows with v on either side of the mean (a rounded difference and a
+    # quotient by a positive scale are monotone): its largest is at the smallest or the largest
+    # ratio, the same number ``_largest_spread`` finds in a pass with a division per entry
+    scale = abs(mean)
+    scale = scale if scale > TINY else TINY
+    low, high = float(np.min(ratio)), float(np.max(ratio))  # NaN if one is NaN
+    worst = max(abs(high - mean) / scale, abs(low - mean) / scale)
     return worst if math.isfinite(worst) else None

@@ -12,12 +12,20 @@ definition of Bobenko–Pottmann–Wallner [3] still, not the paper's formula (1
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numba
 import numpy as np
 
-from app.geometry.compiled import hypot, kernel, length3, running_largest
+from app.geometry.compiled import (
+    SQUARES_HIGH,
+    SQUARES_LOW,
+    hypot,
+    kernel,
+    length3,
+    running_largest,
+)
 from app.geometry.curvature import FaceCurvatures
 
 TINY = float(np.finfo(np.float64).tiny)
@@ -254,6 +262,177 @@ def _ring_checks(
     return out, skipped, True, largest, largest_17
 
 
+#: Faces a block of ``_ring_largest`` (six 4 KB rows, cache-resident).
+RING_BLOCK = 512
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _face_unbranched(
+    meridian: Any,
+    gauss: Any,
+    k: int,
+    cos: float,
+    sin: float,
+    curvature: float,
+    minimal: bool,
+    tiny: float,
+) -> tuple[float, float, float, float, bool]:
+    """``_face_residuals`` on its usual branch, with no branch the compiler cannot make a
+    select: (area, the theorem's residual, (17)'s residual (0 where 0/0), Δ, usual).
+
+    The same operations in the same order as ``_face_residuals`` takes when both of its
+    lengths are square roots of sums of squares (``compiled.length3``'s unscaled branch) and
+    the unit normal is a product with 1/|a(f)| (|a(f)| > ``RECIPROCAL_FROM``): ``usual`` says
+    whether the face is on that branch; the other faces' numbers are to be taken from
+    ``_face_residuals`` (``_ring_largest``). Without branches, the compiler runs four faces at
+    once in the vector registers (the quotients and square roots are IEEE's, correctly rounded
+    in each lane, and numba contracts no product into an FMA): the same bits.
+    """
+    sx, sy, ex, ey = meridian[k, 0], meridian[k, 1], meridian[k + 1, 0], meridian[k + 1, 1]
+    f0 = (sx, sy, sy * 0.0)
+    f1 = (sx, sy * cos, sy * sin)
+    f2 = (ex, ey * cos, ey * sin)
+    f3 = (ex, ey, ey * 0.0)
+    nsx, nsy, nex, ney = gauss[k, 0], gauss[k, 1], gauss[k + 1, 0], gauss[k + 1, 1]
+    g0 = (nsx, nsy, nsy * 0.0)
+    g1 = (nsx, nsy * cos, nsy * sin)
+    g2 = (nex, ney * cos, ney * sin)
+    g3 = (nex, ney, ney * 0.0)
+    af, an, mixed = _areas(f0, f1, f2, f3, g0, g1, g2, g3)
+    big = max(abs(af[0]), abs(af[1]), abs(af[2]))
+    area = math.sqrt(af[0] * af[0] + af[1] * af[1] + af[2] * af[2])
+    inverse = 1.0 / area
+    unit = (af[0] * inverse, af[1] * inverse, af[2] * inverse)
+    gauss_area = an[0] * unit[0] + an[1] * unit[1] + an[2] * unit[2]
+    mixed_area = mixed[0] * unit[0] + mixed[1] * unit[1] + mixed[2] * unit[2]
+    # ``_magnitudes`` with its length3 on the unscaled branch
+    f_1 = (abs(f0[0]) + abs(f0[1]) + abs(f0[2])) + (abs(f2[0]) + abs(f2[1]) + abs(f2[2]))
+    f_2 = (abs(f1[0]) + abs(f1[1]) + abs(f1[2])) + (abs(f3[0]) + abs(f3[1]) + abs(f3[2]))
+    n_1 = (abs(g0[0]) + abs(g0[1]) + abs(g0[2])) + (abs(g2[0]) + abs(g2[1]) + abs(g2[2]))
+    n_2 = (abs(g1[0]) + abs(g1[1]) + abs(g1[2])) + (abs(g3[0]) + abs(g3[1]) + abs(g3[2]))
+    mag_f = f_1 * f_2 / 2
+    mag_n = n_1 * n_2 / 2
+    mag_fn = (f_1 * n_2 + n_1 * f_2) / 4
+    both = mag_f * mag_n
+    c0 = af[1] * an[2] - af[2] * an[1]
+    c1 = af[2] * an[0] - af[0] * an[2]
+    c2 = af[0] * an[1] - af[1] * an[0]
+    crossed_big = max(abs(c0), abs(c1), abs(c2))
+    crossed = math.sqrt(c0 * c0 + c1 * c1 + c2 * c2)
+    parallel = crossed / (both if both > tiny else tiny)
+    usual = (
+        (SQUARES_LOW < big < SQUARES_HIGH)
+        and (SQUARES_LOW < crossed_big < SQUARES_HIGH)
+        and area > RECIPROCAL_FROM
+    )
+    if minimal:
+        own = abs(mixed_area) / mag_fn
+    else:
+        own = abs(gauss_area - curvature * area) / (mag_n + abs(curvature) * mag_f)
+    theorem = own if (own >= parallel or own != own) else parallel
+    c = max(abs(sy), abs(ey))
+    if not c > tiny:
+        c = 1.0
+    rc = 1.0 / c
+    q0 = sy * rc
+    q1 = ey * rc
+    dp = q1 * q1 - q0 * q0
+    sp = q1 * q1 + q0 * q0
+    area_h = area * rc
+    mag_h = mag_f * rc
+    k_scale = mag_n * sp + mag_h * rc * (ney * ney + nsy * nsy)
+    h_scale = mag_fn * sp + mag_h * (abs(q0 * nsy) + abs(q1 * ney))
+    k_res = abs(gauss_area * dp - area_h * rc * (ney * ney - nsy * nsy))
+    h_res = abs(mixed_area * dp + area_h * (q0 * nsy - q1 * ney))
+    k_res = k_res / (k_scale if k_scale > tiny else tiny)
+    h_res = h_res / (h_scale if h_scale > tiny else tiny)
+    equation_17 = k_res if (k_res >= h_res or k_res != k_res) else h_res
+    return area, theorem, (equation_17 if dp != 0 else 0.0), dp, usual
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _faces_unbranched(
+    meridian: Any,
+    gauss: Any,
+    cos: float,
+    sin: float,
+    curvature: float,
+    minimal: bool,
+    tiny: float,
+    areas: Any,
+    theorems: Any,
+    equations: Any,
+    differences: Any,
+    usual: Any,
+) -> None:
+    """``_face_unbranched`` on faces 0 .. len(meridian) − 2 into the rows given (a function of
+    its own: the compiler vectorizes this loop alone)."""
+    for j in range(meridian.shape[0] - 1):
+        found = _face_unbranched(meridian, gauss, j, cos, sin, curvature, minimal, tiny)
+        areas[j], theorems[j], equations[j], differences[j], usual[j] = found
+
+
+@kernel(
+    "Tuple((int64, boolean, float64, float64))"
+    "(float64[:, ::1], float64[:, ::1], float64, float64, float64, boolean, float64)"
+)
+def _ring_largest(
+    meridian: Any,
+    gauss: Any,
+    cos: float,
+    sin: float,
+    curvature: float,
+    minimal: bool,
+    tiny: float,
+) -> tuple[int, bool, float, float]:
+    """``_ring_checks`` without rows, a block of ``RING_BLOCK`` faces at a time: the faces'
+    numbers in a loop without branches (``_face_unbranched``, vectorized by the compiler),
+    then, face by face in order, those off its branch recomputed by ``_face_residuals``, the
+    test of a positive area, the 0/0 count and the running largest, as ``_ring_checks`` takes
+    them: the same (skipped, valid, largest, largest (17)). ``meridian`` and ``gauss`` are
+    C-contiguous (the compiler reads their rows as pairs)."""
+    faces = meridian.shape[0] - 1
+    areas = np.empty(RING_BLOCK)
+    theorems = np.empty(RING_BLOCK)
+    equations = np.empty(RING_BLOCK)
+    differences = np.empty(RING_BLOCK)
+    usual = np.empty(RING_BLOCK, dtype=np.bool_)
+    skipped = 0
+    largest, largest_17 = 0.0, 0.0
+    for start in range(0, faces, RING_BLOCK):
+        count = min(RING_BLOCK, faces - start)
+        _faces_unbranched(
+            meridian[start : start + count + 1],
+            gauss[start : start + count + 1],
+            cos,
+            sin,
+            curvature,
+            minimal,
+            tiny,
+            areas,
+            theorems,
+            equations,
+            differences,
+            usual,
+        )
+        for j in range(count):
+            area, theorem, equation_17, dp = areas[j], theorems[j], equations[j], differences[j]
+            if not usual[j]:  # a length or 1/|a(f)| off the usual branch: the scalar face
+                area, theorem, k_res, h_res, dp = _face_residuals(
+                    meridian, gauss, start + j, cos, sin, curvature, minimal, tiny
+                )
+                equation_17 = 0.0
+                if dp != 0:
+                    equation_17 = k_res if (k_res >= h_res or k_res != k_res) else h_res
+            if not area > 0:
+                return skipped, False, largest, largest_17
+            if dp == 0:
+                skipped += 1
+            largest = running_largest(theorem, largest)
+            largest_17 = running_largest(equation_17, largest_17)
+    return skipped, True, largest, largest_17
+
+
 def ring_curvatures(meridian: Any, gauss: Any, cos: float, sin: float) -> FaceCurvatures | None:
     """``FaceCurvatures`` of the ring between the angles 0 and θ (cos θ, sin θ given).
 
@@ -293,7 +472,19 @@ def ring_largest(
 ) -> tuple[float, float, int] | None:
     """``ring_checks`` without the rows: the largest theorem residual, the largest (17) residual
     (NaN if one is NaN) and the faces where (17) is 0/0; None as ``ring_checks``."""
-    _, skipped, valid, largest, largest_17 = _one_ring(meridian, gauss, cos, sin, curvature, False)
+    m, g = np.asarray(meridian, dtype=np.float64), np.asarray(gauss, dtype=np.float64)
+    if m.flags.c_contiguous and g.flags.c_contiguous and m.ndim == g.ndim == 2:
+        skipped, valid, largest, largest_17 = _ring_largest(
+            m,
+            g,
+            float(cos),
+            float(sin),
+            0.0 if curvature is None else float(curvature),
+            curvature is None,
+            TINY,
+        )
+    else:
+        _, skipped, valid, largest, largest_17 = _one_ring(m, g, cos, sin, curvature, False)
     return (float(largest), float(largest_17), int(skipped)) if valid else None
 
 

@@ -287,3 +287,31 @@ def test_blocked_image_comparisons_give_the_stored_closed_forms_checks(
     blocked = section_5()
     monkeypatch.setattr(fused_checks, "closed_image_comparisons", lambda *_: None)
     assert blocked == section_5()
+
+
+@pytest.mark.parametrize("method", ["construction", "closed-form"])
+@pytest.mark.parametrize("detail", [False, True])
+def test_every_path_of_section_5_gives_the_same_checks(method: str, detail: bool) -> None:
+    """Each statement of Section 5 alone, the Gauss images' statements together, and every
+    check: the same residuals, verdicts and errata (the statements share passes differently:
+    (19) as a rotation and (20) by inversion in one pass without the resolutions' arrays when
+    nothing else reads them; (18) by slopes with its erratum in one pass)."""
+    from app.geometry.curve import EVERYTHING, Selection
+    from app.geometry.d4b import curvature as section5
+
+    ar = Float64()
+
+    def answer(selection: Selection) -> dict[str, object]:
+        curve = d4b.compute(ar, 1.0, 0.3, 1.2, -40, 60, method, detail, selection)  # type: ignore[arg-type]
+        return {
+            c.id: (c.residual, c.tolerance, c.holds, c.erratum, c.note, repr(c.per_index))
+            for c in curve.checks
+        }
+
+    every = answer(EVERYTHING)
+    ids = [s.id for s in section5.STATEMENTS]
+    groups = [[i] for i in ids] + [ids[3:7], ["equation-19-rotation", "equation-20-inversion"]]
+    for group in groups:
+        found = answer(Selection(checks=frozenset(group)))
+        for i in group:
+            assert found[i] == every[i], i

@@ -408,3 +408,60 @@ def test_largest_scaled_relative_point_difference_is_the_arrays_largest(seed: in
     broken[11, 1] = np.nan
     found = residual_kernels.largest_scaled_relative_point_difference(broken, expected, scale)
     assert np.isnan(found.value)
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_ratio_spread_from_the_extremes_equals_the_pass_over_every_ratio(seed: int) -> None:
+    """The spread read at the smallest and largest ratio is the pass's (a division an entry)."""
+    rng = np.random.default_rng(seed)
+    for data in polygons(seed):
+        for p in (data.p, perturbed(data, seed)[0], data.p * rng.uniform(0.5, 2, data.p.shape)):
+            ratio = residual_kernels._printed_ratios(np.asarray(p, dtype=np.float64))
+            if len(ratio) < 2:
+                continue
+            mean = float(np.sum(ratio) / len(ratio))
+            expected = float(residual_kernels._largest_spread(ratio, mean, residual_kernels.TINY))
+            assert residual_kernels.ratio_spread(p) == expected
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_along_and_its_printed_slope_in_one_pass_equal_the_two_passes(seed: int) -> None:
+    for data in polygons(seed):
+        p = perturbed(data, seed)[0]
+        n = len(p) - 1
+        for vectors in (data.gauss.tractrix_gauss[:n], -data.gauss.tractrix_gauss[:n]):
+            largest, printed = residual_kernels.along_largest(vectors, p)
+            rows = residual_kernels.along(vectors, p[: n + 1])
+            assert largest.value == checks.largest_magnitude(rows)
+            np.testing.assert_array_equal(largest.residuals(), rows)
+            assert printed == residual_kernels.largest_along_printed_slope(n, p)
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_rotation_and_inversion_in_one_pass_equal_the_passes_over_stored_scales(seed: int) -> None:
+    """(19) as a rotation and (20) by inversion with their resolutions made as the pass goes:
+    the largest residuals of the passes over the stored resolution and pole resolution (as
+    ``curvature.evaluate`` makes them), NaN included."""
+    rng = np.random.default_rng(seed)
+    for data in polygons(seed):
+        images = data.gauss
+        before = images.contact_edges_before
+        p, c, nt, m = data.p, images.contact, images.tractrix_gauss, images.gauss
+        noisy = p * (1 + rng.normal(size=p.shape) * 1e-6)
+        with_nan = p.copy()
+        with_nan[len(p) // 2, 1] = np.nan
+        for points in (p, noisy, with_nan):
+            n = len(points) - 1
+            resolution = residual_kernels.edge_resolution(points)
+            previous = np.concatenate([residual_kernels.edge_resolution(before), resolution[:-1]])
+            pole = np.minimum(previous, resolution)
+            rotation = residual_kernels.contact_rotation_largest(c, nt, resolution, n)
+            inversion = residual_kernels.pole_inversion_largest(m, c, pole, n)
+            found = residual_kernels.rotation_and_inversion_largest(
+                points, before, c, nt, m, n, True, True
+            )
+            np.testing.assert_array_equal(found, (rotation.value, inversion.value))
+            alone = residual_kernels.rotation_and_inversion_largest(
+                points, before, c, nt, m, n, False, True
+            )
+            np.testing.assert_array_equal(alone, (0.0, inversion.value))

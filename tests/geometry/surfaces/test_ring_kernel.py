@@ -14,7 +14,7 @@ from app.geometry.curvature import face_curvatures
 from app.geometry.d4b import discretization as d4b
 from app.geometry.errors import DomainError
 from app.geometry.precision import Float64
-from app.geometry.surfaces import revolution_formulas, ring_curvature
+from app.geometry.surfaces import revolution_formulas, ring_curvature, ring_kernel
 from app.geometry.surfaces.mesh import ring_faces
 from app.geometry.surfaces.ring_kernel import ring_curvatures
 
@@ -191,3 +191,90 @@ def test_fused_ring_checks_leave_a_face_without_area_to_the_numpy_path() -> None
     meridian = np.array([[0.0, 1.0], [1.0, 1.0], [1.0, 1.0], [2.0, 2.0]])
     gauss = np.array([[0.0, 1.0], [0.5, 1.0], [0.7, 1.0], [1.0, 1.5]])
     assert ring_curvature.ring_checks(Float64(), meridian, gauss, -1.0) is None
+
+
+def _scalar_largest(
+    meridian: np.ndarray, gauss: np.ndarray, curvature: float | None
+) -> tuple[float, float, int] | None:
+    """``ring_kernel.ring_largest`` as the face-by-face pass computes it (``_ring_checks``)."""
+    ar = Float64()
+    theta = ar.pi / ring_curvature.RING_M
+    _, skipped, valid, largest, largest_17 = ring_kernel._one_ring(
+        meridian, gauss, ar.cos(theta), ar.sin(theta), curvature, False
+    )
+    return (float(largest), float(largest_17), int(skipped)) if valid else None
+
+
+def _blocked_largest(
+    meridian: np.ndarray, gauss: np.ndarray, curvature: float | None
+) -> tuple[float, float, int] | None:
+    ar = Float64()
+    theta = ar.pi / ring_curvature.RING_M
+    return ring_kernel.ring_largest(meridian, gauss, ar.cos(theta), ar.sin(theta), curvature)
+
+
+def _same(found: object, expected: object) -> None:
+    """Equal tuples, NaN equal to NaN, floats compared bit for bit."""
+    assert (found is None) == (expected is None)
+    if found is not None and expected is not None:
+        assert isinstance(found, tuple) and isinstance(expected, tuple)
+        np.testing.assert_array_equal(np.array(found[:2]), np.array(expected[:2]))
+        assert found[2] == expected[2]
+
+
+@pytest.mark.parametrize(
+    ("d", "i_min", "i_max"), [(1e-3, -700, 900), (0.5, -200, 300), (0.99, -40, 60)]
+)
+def test_blocked_ring_largest_has_the_bits_of_the_face_by_face_pass(
+    d: float, i_min: int, i_max: int
+) -> None:
+    """Both rings of a D4b over several blocks (areas from 1e-135 to 1e266 at d = h/2, where
+    some faces leave the unscaled square root or the reciprocal and are redone face by face)."""
+    ar = Float64()
+    data = d4b.polygons(ar, 1.0, d, None, i_min, i_max)
+    pairs = [(data.tractrix, data.gauss.tractrix_gauss, -1.0), (data.p, data.gauss.gauss, None)]
+    for meridian, gauss, curvature in pairs:
+        m, g = np.ascontiguousarray(meridian), np.ascontiguousarray(gauss)
+        _same(_blocked_largest(m, g, curvature), _scalar_largest(m, g, curvature))
+
+
+def test_blocked_ring_largest_takes_faces_off_the_usual_branch_face_by_face() -> None:
+    """Tiny and huge faces (lengths by hypot, quotients by |a(f)|), a 0/0 face of (17), a NaN
+    and a face without area, in the middle of blocks: the same as the face-by-face pass."""
+    rng = np.random.default_rng(19)
+    count = 3 * ring_kernel.RING_BLOCK + 7
+    x = np.cumsum(rng.uniform(0.1, 1.0, count))
+    meridian = np.column_stack([x, rng.uniform(0.5, 2.0, count)])
+    gauss = np.column_stack([rng.uniform(-1, 1, count), rng.uniform(0.5, 2.0, count)])
+    meridian[100:103] *= 1e-170  # squares underflow
+    meridian[700:702] *= 1e170  # squares overflow
+    meridian[900, 1] = meridian[901, 1]  # (17) 0/0
+    for curvature in (-1.0, None):
+        _same(
+            _blocked_largest(meridian, gauss, curvature),
+            _scalar_largest(meridian, gauss, curvature),
+        )
+    with_nan = meridian.copy()
+    with_nan[1200, 0] = np.nan
+    for curvature in (-1.0, None):
+        _same(
+            _blocked_largest(with_nan, gauss, curvature),
+            _scalar_largest(with_nan, gauss, curvature),
+        )
+    flat = meridian.copy()
+    flat[1300] = flat[1301]  # a face without area: both refuse it (None)
+    assert _scalar_largest(flat, gauss, -1.0) is None
+    assert _blocked_largest(flat, gauss, -1.0) is None
+
+
+def test_ring_largest_of_strided_meridians_takes_the_face_by_face_pass() -> None:
+    ar = Float64()
+    data = d4b.polygons(ar, 1.0, 0.1, None, -50, 50)
+    wide = np.zeros((len(data.p), 4))
+    wide[:, :2] = data.p
+    strided = wide[:, :2]
+    assert not strided.flags.c_contiguous
+    _same(
+        _blocked_largest(strided, data.gauss.gauss, None),
+        _scalar_largest(np.ascontiguousarray(strided), data.gauss.gauss, None),
+    )
