@@ -23,6 +23,7 @@ from typing import Any
 import numpy as np
 
 from app.geometry.compiled import hypot, kernel
+from app.geometry.d4b.construction import _sticks
 
 
 @kernel("Tuple((float64[:, :], boolean))(float64[:, :], float64)")
@@ -148,3 +149,32 @@ def d4b_companions(
     contact, positive = contact_points(centres, sign)
     y, x, _ = circumscribed_arguments(centres, sign)
     return axis, tractrix, darboux, inscribed, contact, y, x, positive
+
+
+@kernel(
+    "Tuple((float64[:], float64[:], float64[:], float64[:, :], float64[:, :], float64[:, :],"
+    " float64[:, :], float64[:, :], float64[:, :], float64[:, :], float64[:, :], boolean))"
+    "(float64, float64, float64, float64, int64, int64, int64, int64)"
+)
+def d4b_construction(
+    h: float, d: float, c0: float, s0: float, lo: int, hi: int, i_min: int, i_max: int
+) -> Any:
+    """A float64 (D4b) construction and its companions in one compiled call: the recursion
+    (``construction._sticks`` over sticks lo .. hi, stick 0 pointing along (c0, s0)), then
+    ``d4b_companions`` on it, and p_i = ((2i − 1)d, p_i^y) on i = i_min .. i_max + 1 as
+    ``construction._point_array`` makes the centres. Returns cos β_j, sin β_j, p_j^y (from
+    j = lo), the axis points, the tractrix, the Darboux transform, the inscribed Gauss image, p,
+    the contact points, the arctangents' arguments and whether every edge of p is positive:
+    one dispatch for what a default small request returns, the same bits as the separate
+    kernels."""
+    cos_u, sin_u, centre_y = _sticks(h, d, c0, s0, lo, hi)
+    axis, tractrix, darboux, inscribed, contact, y, x, positive = d4b_companions(
+        h, d, cos_u, sin_u, centre_y, lo, i_min, i_max
+    )
+    rows = i_max - i_min + 2
+    p = np.empty((rows, 2))
+    for k in range(rows):
+        i = float(i_min + k)
+        p[k, 0] = (2 * i - 1) * d
+        p[k, 1] = centre_y[i_min + k - lo]
+    return cos_u, sin_u, centre_y, axis, tractrix, darboux, inscribed, p, contact, y, x, positive
