@@ -354,7 +354,10 @@ def compute(
     companions = {name: COMPANIONS[name](data) for name in wanted}
     gauss_tolerances = {}
     if any(name in companions for name in d4b_curvature.COMPANIONS):
-        gauss_tolerances = d4b_curvature.companion_tolerances(ar, data.gauss, construction)
+        # what the tolerances read of the images is their class's (``conditioning``): the
+        # images are not built for it when the companions were kept aside (``image``)
+        images = vars(data).get("gauss", _NO_IMAGES)
+        gauss_tolerances = d4b_curvature.companion_tolerances(ar, images, construction)
     return INFO.curve(
         ar,
         parameters,
@@ -367,6 +370,9 @@ def compute(
         selection=selection,
     )
 
+
+#: Gauss images with no polygon: ``companion_tolerances`` reads only their ``conditioning``.
+_NO_IMAGES = d4b_curvature.GaussImages(True, {})
 
 #: How each companion of ``INFO`` is read off the polygons (computed only when selected).
 COMPANIONS: dict[str, Callable[[D4bPolygons], Array]] = {

@@ -238,3 +238,17 @@ def test_no_check_is_every_check_without_them(
         assert alone.companions[name].indices.tolist() == polyline.indices.tolist()
     assert alone.local_tolerance == every.local_tolerance
     assert alone.companion_tolerances == every.companion_tolerances
+
+
+def test_no_check_builds_no_gauss_images(float64: Float64, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The Gauss image companions come from the compiled call; their closed forms' table (the
+    checks') is not built."""
+    from app.geometry.curve import Selection
+    from app.geometry.d4b import curvature
+
+    def refuse(*args: object, **kwargs: object) -> None:
+        raise AssertionError("built")
+
+    monkeypatch.setattr(curvature, "build", refuse)
+    curve = d4b.compute(float64, selection=Selection(checks=frozenset()))
+    assert set(curve.companions) == set(d4b.INFO.companions)
