@@ -23,6 +23,7 @@ from typing import Any
 import numpy as np
 
 from app.geometry.compiled import hypot, kernel
+from app.geometry.d4b.construction import _sticks
 
 
 @kernel("Tuple((float64[:, :], boolean))(float64[:, :], float64)")
@@ -148,3 +149,45 @@ def d4b_companions(
     contact, positive = contact_points(centres, sign)
     y, x, _ = circumscribed_arguments(centres, sign)
     return axis, tractrix, darboux, inscribed, contact, y, x, positive
+
+
+@kernel(
+    "Tuple((float64[:, :], float64[:, :, :], float64[:, :], float64[:, :, :], boolean))"
+    "(float64, float64, float64, float64, int64, int64, int64, int64)"
+)
+def d4b_construction(
+    h: float, d: float, c0: float, s0: float, lo: int, hi: int, i_min: int, i_max: int
+) -> Any:
+    """A float64 (D4b) construction and its companions in one compiled call: the recursion
+    (``construction._sticks`` over sticks lo .. hi, stick 0 pointing along (c0, s0)), then
+    ``d4b_companions`` on it, and p_i = ((2i − 1)d, p_i^y) on i = i_min .. i_max + 1 as
+    ``construction._point_array`` makes the centres: one dispatch for what a default small
+    request returns, the same bits as the separate kernels.
+
+    Four arrays (each array handed back to Python costs about as much as a short pass): rows
+    cos β_j, sin β_j, p_j^y of the recursion (from j = lo); the axis points, the tractrix, the
+    Darboux transform, the inscribed Gauss image and p, ``(5, n + 1, 2)``; the contact points;
+    the arctangents' arguments y and x, ``(2, 2, n)``; and whether every edge of p is positive.
+    """
+    cos_u, sin_u, centre_y = _sticks(h, d, c0, s0, lo, hi)
+    axis, tractrix, darboux, inscribed, contact, y, x, positive = d4b_companions(
+        h, d, cos_u, sin_u, centre_y, lo, i_min, i_max
+    )
+    sticks = np.empty((3, cos_u.shape[0]))
+    sticks[0] = cos_u
+    sticks[1] = sin_u
+    sticks[2] = centre_y
+    rows = i_max - i_min + 2
+    points = np.empty((5, rows, 2))
+    points[0] = axis
+    points[1] = tractrix
+    points[2] = darboux
+    points[3] = inscribed
+    for k in range(rows):
+        i = float(i_min + k)
+        points[4, k, 0] = (2 * i - 1) * d
+        points[4, k, 1] = centre_y[i_min + k - lo]
+    arguments = np.empty((2, 2, y.shape[1]))
+    arguments[0] = y
+    arguments[1] = x
+    return sticks, points, contact, arguments, positive

@@ -7,7 +7,7 @@ import pytest
 
 from app.geometry.precision import Float64
 from app.response_cache import Reply
-from app.responses import not_finite
+from app.responses import JOINED_VALUES, not_finite
 
 
 @pytest.mark.parametrize(
@@ -21,10 +21,14 @@ from app.responses import not_finite
         [[0.0, 0.0], [0.0, -np.inf]],
     ],
 )
-def test_the_finiteness_test_agrees_with_isfinite(values: list[list[float]]) -> None:
+@pytest.mark.parametrize("rows", [2, JOINED_VALUES])  # joined into one test, or array by array
+def test_the_finiteness_test_agrees_with_isfinite(values: list[list[float]], rows: int) -> None:
     array = np.array(values, dtype=np.float64)
     expected = None if np.isfinite(array).all() else "q"
-    assert not_finite(Float64(), [("p", np.zeros((2, 2))), ("q", array)]) == expected
+    named = [("p", np.zeros((rows, 2))), ("q", array), ("r", np.ones((3, 2)))]
+    assert not_finite(Float64(), named) == expected
+    assert not_finite(Float64(), named[1:]) == expected
+    assert not_finite(Float64(), [("q", array)]) == expected
 
 
 @pytest.mark.parametrize(

@@ -89,6 +89,52 @@ def test_the_d4b_companions_in_one_pass_give_the_separate_bits(arguments: tuple)
         assert one.tobytes() == other.tobytes(), name
 
 
+@pytest.mark.parametrize(
+    "arguments",
+    [
+        (1.0, 0.1, None, -50, 49),
+        (1.0, 0.3, 1.0, -5, 7),
+        (2.0, 0.01, 2.5, 3, 40),
+        (1.0, 0.2, None, -30, -4),
+        (1.0, 0.1, None, 0, 0),
+        (1e-3, 1e-4, 0.1, -200, 3),
+    ],
+)
+def test_the_construction_and_companions_in_one_call_give_the_separate_bits(
+    arguments: tuple,
+) -> None:
+    """``compile_companions`` before the construction ran: the recursion, p, every companion
+    and the Gauss images built later (for the checks) are the separate constructions' bits,
+    and the images are not built for the companions alone."""
+    fused, separate = polygons(FLOAT64, *arguments), polygons(FLOAT64, *arguments)
+    fused.compile_companions()
+    assert "gauss" not in vars(fused) and "p" in vars(fused)
+    for name, build in COMPANIONS.items():
+        one, other = build(fused), build(separate)
+        assert one.shape == other.shape, name
+        assert one.tobytes() == other.tobytes(), name
+    assert "gauss" not in vars(fused)
+    assert fused.p.tobytes() == separate.p.tobytes()
+    (lo, built), (other_lo, other_built) = fused._hull, separate._hull
+    assert lo == other_lo
+    for one, other in zip(built.recursion or (), other_built.recursion or (), strict=True):
+        assert np.asarray(one).tobytes() == np.asarray(other).tobytes()
+    for name in ("axis_points", "tractrix", "centres", "directions"):
+        assert getattr(built, name).tobytes() == getattr(other_built, name).tobytes(), name
+    for name in ("tractrix_gauss", "contact", "gauss", "closed_contact", "closed_gauss"):
+        one, other = getattr(fused.gauss, name), getattr(separate.gauss, name)
+        assert one.tobytes() == other.tobytes(), name
+
+
+def test_a_replaced_gauss_image_is_the_companion() -> None:
+    data = polygons(FLOAT64, 1.0, 0.1, None, -10, 10)
+    data.compile_companions()
+    moved = data.image("gauss") + 1.0
+    changed = data.replaced(gauss=data.gauss.replaced(gauss=moved))
+    assert COMPANIONS["gauss_image"](changed) is moved
+    assert COMPANIONS["gauss_image"](data) is not moved
+
+
 def test_companions_built_already_are_kept() -> None:
     data = polygons(FLOAT64, 1.0, 0.1, None, -10, 10)
     tractrix, contact = data.tractrix, data.gauss.contact

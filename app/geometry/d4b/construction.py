@@ -21,6 +21,7 @@ the bisector and the normal, then the rotation of ``rotation_about``.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from functools import cached_property
 from typing import Any, Literal, NamedTuple
@@ -95,13 +96,13 @@ class KinematicTractrix:
 
 def validate(h: float, d: float, beta0: float | None) -> None:
     """Raise ``DomainError`` unless 0 < d < h and 0 < beta0 < π."""
-    if not np.isfinite(h) or h <= 0:
+    if not math.isfinite(h) or h <= 0:
         raise DomainError("h", "h > 0", h)
-    if not np.isfinite(d) or d <= 0:
+    if not math.isfinite(d) or d <= 0:
         raise DomainError("d", "0 < d < h", d)
     if d >= h:
         raise DomainError("d", "0 < d < h", d, f"the stick length is h = {h!r}")
-    if beta0 is not None and not (0 < beta0 < np.pi):
+    if beta0 is not None and not (0 < beta0 < math.pi):
         raise DomainError(
             "beta0", "0 < beta0 < π (the stick points into the upper half-plane)", beta0
         )
@@ -233,19 +234,13 @@ def construct(
     """
     validate(h, d, beta0)
     hh, dd = ar.scalar(h), ar.scalar(d)
-    lo, hi = min(0, i_min - 1), max(0, i_max)
+    lo, hi = stick_range(i_min, i_max)
     window = slice(i_min - lo, i_max - lo + 1)
     if ar.mode == "float64":
         c0, s0 = initial_direction(ar, beta0)
-        cos_f, sin_f, centre_f = _sticks(float(h), float(d), float(c0), float(s0), lo, hi)
+        sticks = _sticks(float(h), float(d), float(c0), float(s0), lo, hi)
         ar.check_time()  # once, after the kernel: ≈ 20 ns per stick
-        arguments = (float(h), float(d), cos_f, sin_f, centre_f, i_min - lo, i_min, i_max)
-        return KinematicTractrix(
-            i_min,
-            i_max,
-            lambda name: _point_array(_POINT_NAMES.index(name), *arguments),
-            Recursion(float(h), float(d), cos_f, sin_f, centre_f, lo),
-        )
+        return from_sticks(float(h), float(d), i_min, i_max, lo, sticks)
     cos_u = [ar.scalar(0)] * (hi - lo + 1)
     sin_u = list(cos_u)
     centre_y = list(cos_u)
@@ -275,6 +270,27 @@ def construct(
         ar.array(cos_u[window]),
         ar.array(sin_u[window]),
         ar.array(centre_y[window]),
+    )
+
+
+def stick_range(i_min: int, i_max: int) -> tuple[int, int]:
+    """The sticks lo .. hi the recursion of ``construct`` on i_min .. i_max runs over (from
+    stick 0, and one before i_min: p_i needs stick i − 1)."""
+    return min(0, i_min - 1), max(0, i_max)
+
+
+def from_sticks(
+    h: float, d: float, i_min: int, i_max: int, lo: int, sticks: tuple[Array, Array, Array]
+) -> KinematicTractrix:
+    """The float64 construction on i_min .. i_max from its recursion's arrays (``_sticks`` on
+    ``stick_range(i_min, i_max)``, starting at ``lo``): its points made when read."""
+    cos_f, sin_f, centre_f = sticks
+    arguments = (h, d, cos_f, sin_f, centre_f, i_min - lo, i_min, i_max)
+    return KinematicTractrix(
+        i_min,
+        i_max,
+        lambda name: _point_array(_POINT_NAMES.index(name), *arguments),
+        Recursion(h, d, cos_f, sin_f, centre_f, lo),
     )
 
 

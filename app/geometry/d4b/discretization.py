@@ -32,16 +32,21 @@ from app.geometry.catalog.section4 import (
     D4B_THEOREM_6 as THEOREM_6,
     D4B_TWO_STEP as TWO_STEP,
 )
-from app.geometry.checks import (
-    Statement,
-)
+from app.geometry.checks import Check, Statement
 from app.geometry.curve import EVERYTHING, Curve, DiscretizationInfo, Selection, require_range
 from app.geometry.d4b import (
     closed_forms as kinematic_closed_forms,
     curvature as d4b_curvature,
 )
 from app.geometry.d4b.checks import conditioning, evaluate, tolerances
-from app.geometry.d4b.construction import KinematicTractrix, construct, validate
+from app.geometry.d4b.construction import (
+    KinematicTractrix,
+    construct,
+    from_sticks,
+    initial_direction,
+    stick_range,
+    validate,
+)
 from app.geometry.errors import NotRepresentableError
 from app.geometry.precision import Arithmetic, Array, Scalar, stack_points
 from app.geometry.tolerances import (
@@ -197,7 +202,7 @@ class D4bPolygons:
             )
         lo, built = self._hull
         u0 = built.directions[0 - lo]
-        return d4b_curvature.build(
+        images = d4b_curvature.build(
             ar,
             h,
             d,
@@ -210,33 +215,71 @@ class D4bPolygons:
             built.centres[self.i_min - 1 - lo : self.i_max + 3 - lo],
             built.directions,
         )
+        for name, points in self.__dict__.get("_images", {}).items():
+            images.__dict__.setdefault(name, points)  # kept by ``compile_companions``
+        return images
 
     def compile_companions(self) -> None:
         """Float64 construction: the six companions (tractrix, axis points, Darboux transform,
         the three Gauss images) in one compiled pass over the recursion
         (``companion_kernels.d4b_companions``), kept as if each had been built on its own (the
         same bits); those built already stay. Nothing is kept when an edge of p has no length:
-        the separate constructions then raise their domain error."""
-        if not self.constructed:
+        the separate constructions then raise their domain error.
+
+        Before the construction has run, it runs here too, with p, in the same compiled call
+        (``companion_kernels.d4b_construction``): one dispatch for everything a default small
+        request returns. The Gauss images are kept aside (``image``) until the checks read
+        ``gauss``: a request without checks never builds its closed forms' table."""
+        if not self.constructed or self.ar.mode != "float64":
             return
-        recursion = self._hull[1].recursion
-        if recursion is None:
-            return
-        h, d, cos_u, sin_u, centre_y, first = recursion
-        axis, tractrix, darboux_, inscribed, contact, y, x, positive = (
-            companion_kernels.d4b_companions(
-                h, d, cos_u, sin_u, centre_y, first, self.i_min, self.i_max
+        if "_hull" in self.__dict__:
+            recursion = self._hull[1].recursion
+            if recursion is None:
+                return
+            h, d, cos_u, sin_u, centre_y, first = recursion
+            axis, tractrix, darboux_, inscribed, contact, y, x, positive = (
+                companion_kernels.d4b_companions(
+                    h, d, cos_u, sin_u, centre_y, first, self.i_min, self.i_max
+                )
             )
-        )
+            p = None
+        else:
+            h, d = float(self.parameters[0]), float(self.parameters[1])
+            validate(h, d, self.beta0)
+            hull_lo, hull_hi = min(0, self.i_min - 1), max(0, self.i_max + 2)
+            lo, hi = stick_range(hull_lo, hull_hi)
+            c0, s0 = initial_direction(self.ar, self.beta0)
+            made = companion_kernels.d4b_construction(
+                h, d, float(c0), float(s0), lo, hi, self.i_min, self.i_max
+            )
+            self.ar.check_time()  # as ``construct``: once, after the recursion
+            sticks, points, contact, (y, x), positive = made
+            axis, tractrix, darboux_, inscribed, p = points
+            built = from_sticks(h, d, hull_lo, hull_hi, lo, (sticks[0], sticks[1], sticks[2]))
+            self.__dict__["_hull"] = (hull_lo, built)
         if not positive:
             return
+        kept = self.__dict__
+        if p is not None:
+            kept.setdefault("p", p)
         for name, points in (("axis", axis), ("tractrix", tractrix), ("darboux", darboux_)):
-            self.__dict__.setdefault(name, points)
-        images = self.gauss.__dict__
-        images.setdefault("tractrix_gauss", inscribed)
-        images.setdefault("contact", contact)
-        if "gauss" not in images:
-            images["gauss"] = gauss_image.circumscribed_from_arguments(y, x)
+            kept.setdefault(name, points)
+        images = {"tractrix_gauss": inscribed, "contact": contact}
+        images["gauss"] = gauss_image.circumscribed_from_arguments(y, x)
+        if "gauss" in kept:  # built already: those it has stay
+            for name, points in images.items():
+                kept["gauss"].__dict__.setdefault(name, points)
+        else:
+            kept.setdefault("_images", images)
+
+    def image(self, name: str) -> Array:
+        """The Gauss image ``name`` (``tractrix_gauss``, ``contact``, ``gauss``): the one
+        ``compile_companions`` kept aside while ``gauss`` is not built, else read off it."""
+        if "gauss" not in self.__dict__:
+            kept = self.__dict__.get("_images")
+            if kept is not None:
+                return kept[name]
+        return getattr(self.gauss, name)
 
     @cached_property
     def exponent(self) -> float:
@@ -296,7 +339,10 @@ def compute(
     wanted = [name for name in COMPANIONS if selection.wants_companion(name)]
     if ar.mode == "float64" and len(wanted) == len(COMPANIONS):
         data.compile_companions()  # all six in one compiled pass (the checks read them too)
-    constants, checks = evaluate(ar, h, d, data, detail, beta0, selection)
+    constants: dict[str, Scalar] = {}
+    checks: list[Check] = []
+    if not selection.no_checks:  # no check selected: no constant either (``evaluate``)
+        constants, checks = evaluate(ar, h, d, data, detail, beta0, selection)
     local, construction, _ = tolerances(ar, h, d, data)
     parameters: dict[str, Any] = {
         "h": h,
@@ -309,7 +355,10 @@ def compute(
     companions = {name: COMPANIONS[name](data) for name in wanted}
     gauss_tolerances = {}
     if any(name in companions for name in d4b_curvature.COMPANIONS):
-        gauss_tolerances = d4b_curvature.companion_tolerances(ar, data.gauss, construction)
+        # what the tolerances read of the images is their class's (``conditioning``): the
+        # images are not built for it when the companions were kept aside (``image``)
+        images = vars(data).get("gauss", _NO_IMAGES)
+        gauss_tolerances = d4b_curvature.companion_tolerances(ar, images, construction)
     return INFO.curve(
         ar,
         parameters,
@@ -323,14 +372,17 @@ def compute(
     )
 
 
+#: Gauss images with no polygon: ``companion_tolerances`` reads only their ``conditioning``.
+_NO_IMAGES = d4b_curvature.GaussImages(True, {})
+
 #: How each companion of ``INFO`` is read off the polygons (computed only when selected).
 COMPANIONS: dict[str, Callable[[D4bPolygons], Array]] = {
     "tractrix": lambda data: data.tractrix,
     "axis_points": lambda data: data.axis,
     "darboux": lambda data: data.darboux,
-    "tractrix_gauss_image": lambda data: data.gauss.tractrix_gauss,
-    "contact_points": lambda data: data.gauss.contact[1:],
-    "gauss_image": lambda data: data.gauss.gauss,
+    "tractrix_gauss_image": lambda data: data.image("tractrix_gauss"),
+    "contact_points": lambda data: data.image("contact")[1:],
+    "gauss_image": lambda data: data.image("gauss"),
 }
 
 

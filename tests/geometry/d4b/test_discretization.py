@@ -256,3 +256,43 @@ def _bits(per_index: object) -> bytes | None:
     if per_index is None:
         return None
     return np.asarray(per_index.indices).tobytes() + np.asarray(per_index.residuals).tobytes()  # type: ignore[attr-defined]
+
+
+@pytest.mark.parametrize(
+    ("beta0", "i_min", "i_max", "method"),
+    [(None, -50, 49, "construction"), (1.0, -5, 7, "construction"), (None, 3, 40, "closed-form")],
+)
+def test_no_check_is_every_check_without_them(
+    float64: Float64, beta0: float | None, i_min: int, i_max: int, method: str
+) -> None:
+    """``checks=none`` (the companions and the construction in one compiled call, no checks'
+    context): the polygon, every companion and the tolerances of the default answer, no check
+    and no constant."""
+    from app.geometry.curve import Selection
+
+    none = Selection(checks=frozenset())
+    arguments = (1.0, 0.1, beta0, i_min, i_max, method)
+    alone = d4b.compute(float64, *arguments, selection=none)
+    every = d4b.compute(float64, *arguments)
+    assert alone.checks == [] and alone.constants == {}
+    assert alone.polygon.vertices.tobytes() == every.polygon.vertices.tobytes()
+    assert list(alone.companions) == list(every.companions)
+    for name, polyline in every.companions.items():
+        assert alone.companions[name].vertices.tobytes() == polyline.vertices.tobytes(), name
+        assert alone.companions[name].indices.tolist() == polyline.indices.tolist()
+    assert alone.local_tolerance == every.local_tolerance
+    assert alone.companion_tolerances == every.companion_tolerances
+
+
+def test_no_check_builds_no_gauss_images(float64: Float64, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The Gauss image companions come from the compiled call; their closed forms' table (the
+    checks') is not built."""
+    from app.geometry.curve import Selection
+    from app.geometry.d4b import curvature
+
+    def refuse(*args: object, **kwargs: object) -> None:
+        raise AssertionError("built")
+
+    monkeypatch.setattr(curvature, "build", refuse)
+    curve = d4b.compute(float64, selection=Selection(checks=frozenset()))
+    assert set(curve.companions) == set(d4b.INFO.companions)
