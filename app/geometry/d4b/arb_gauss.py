@@ -38,6 +38,11 @@ AVAILABLE = ap.AVAILABLE
 Columns = list[np.ndarray[Any, Any]]
 
 
+def _out(reduce: bool) -> tuple[str, ...]:
+    """The single output ``out`` reduced (``arb_program.run``'s ``reduce``), or none."""
+    return ("out",) if reduce else ()
+
+
 def _hypot(program: Program, out: str, x: str, y: str, low: bool = False) -> None:
     """``Ball.hypot`` (``arb_loops._hypot``): √(part ≥ 0 of x·x + y·y)."""
     program.op(MUL, "hypot square", x, x, low)
@@ -67,18 +72,19 @@ _SCALED_DIFFERENCE.op(MUL, "out", "difference", "factor")
 
 
 def relative_difference(
-    computed: Any, expected: Any, tiny: Any, low: int, factor: Any = None
+    computed: Any, expected: Any, tiny: Any, low: int, factor: Any = None, reduce: bool = False
 ) -> Any:
     """``checks.relative_point_difference`` of two ``(n, 2)`` arrays of balls (``tiny`` and
     ``low`` as it makes them), times ``factor`` entry by entry if given (``_scaled`` on
-    balls): the same balls, no array in between."""
+    balls): the same balls, no array in between; ``reduce``: only the two balls a check without
+    per-index residuals reads (``arb_program.run``'s ``reduce``)."""
     inputs = {"cx": computed[:, 0], "cy": computed[:, 1]}
     inputs |= {"ex": expected[:, 0], "ey": expected[:, 1]}
     program = _DIFFERENCE
     if factor is not None:
         inputs["factor"] = factor
         program = _SCALED_DIFFERENCE
-    done = ap.run(program, inputs, {"tiny": tiny}, low)
+    done = ap.run(program, inputs, {"tiny": tiny}, low, _out(reduce))
     return None if done is None else done[0][0]
 
 
@@ -220,18 +226,22 @@ _SLOPE.op(SQRT, "vy", "c")
 _along(_SLOPE, "vx", "vy")
 
 
-def along(vectors: Any, edge_x: Any, edge_y: Any, size: Any) -> Any:
-    """``d4b.curvature._along`` of unit vectors on edges (coordinates and sizes given)."""
+def along(vectors: Any, edge_x: Any, edge_y: Any, size: Any, reduce: bool = False) -> Any:
+    """``d4b.curvature._along`` of unit vectors on edges (coordinates and sizes given);
+    ``reduce`` as in ``relative_difference``."""
     inputs = {"vx": vectors[:, 0], "vy": vectors[:, 1], "ex": edge_x, "ey": edge_y, "size": size}
-    done = ap.run(_ALONG, inputs, {"zero": flint.arb(0), "one": flint.arb(1)})
+    constants = {"zero": flint.arb(0), "one": flint.arb(1)}
+    done = ap.run(_ALONG, inputs, constants, reduce=_out(reduce))
     return None if done is None else done[0][0]
 
 
-def along_printed_slope(edge_x: Any, edge_y: Any, size: Any) -> Any:
+def along_printed_slope(edge_x: Any, edge_y: Any, size: Any, reduce: bool = False) -> Any:
     """``_along`` of the printed (18)'s first form from the edges' slopes k = e^y/e^x
-    (``closed_forms.normal_from_slope_printed``: (√(1/(1 + k²)), √(k²/(1 + k²))))."""
+    (``closed_forms.normal_from_slope_printed``: (√(1/(1 + k²)), √(k²/(1 + k²))));
+    ``reduce`` as in ``relative_difference``."""
     inputs = {"ex": edge_x, "ey": edge_y, "size": size}
-    done = ap.run(_SLOPE, inputs, {"zero": flint.arb(0), "one": flint.arb(1)})
+    constants = {"zero": flint.arb(0), "one": flint.arb(1)}
+    done = ap.run(_SLOPE, inputs, constants, reduce=_out(reduce))
     return None if done is None else done[0][0]
 
 
@@ -243,12 +253,12 @@ _hypot(_ROTATION, "distance", "dx", "dy")
 _ROTATION.op(MUL, "out", "distance", "scale")
 
 
-def rotation(contact: Any, normals: Any, scale: Any) -> Any:
+def rotation(contact: Any, normals: Any, scale: Any, reduce: bool = False) -> Any:
     """The rotation check's residuals: |ñ − (−n^y, n^x)| times the resolution
-    (``checks.point_distance``, then ``_scaled``)."""
+    (``checks.point_distance``, then ``_scaled``); ``reduce`` as in ``relative_difference``."""
     inputs = {"cx": contact[:, 0], "cy": contact[:, 1], "nx": normals[:, 0]}
     inputs |= {"ny": normals[:, 1], "scale": scale}
-    done = ap.run(_ROTATION, inputs, {})
+    done = ap.run(_ROTATION, inputs, {}, reduce=_out(reduce))
     return None if done is None else done[0][0]
 
 

@@ -183,12 +183,15 @@ def ring_checks(
     cos: Any,
     sin: Any,
     curvature: Any,
+    reduce: bool = False,
 ) -> tuple[np.ndarray[Any, Any], np.ndarray[Any, Any], int] | None:
     """On balls: Theorem 7's residuals (``curvature`` the ball K) or 8's (None: H = 0) and
     (17)'s larger residual per face (0 where (17) is 0/0, that many), the balls the numpy code
     makes (``ring_curvature.ring_curvatures`` and the residual functions; the caller runs inside
     the working precision); None where that code must run (not available, fewer than two
-    vertices, an entry not a ball, a face without certain area)."""
+    vertices, an entry not a ball, a face without certain area). ``reduce``: the theorem's
+    residuals as the two balls a check without per-index residuals reads
+    (``arb_program.run``'s ``reduce``)."""
     faces = len(meridian) - 1
     if not AVAILABLE or faces < 1 or len(gauss) != faces + 1:
         return None
@@ -212,7 +215,8 @@ def ring_checks(
             inputs[name + end] = points[rows, column]
         for name, points, column in (("u", gauss, 0), ("v", gauss, 1)):
             inputs[name + end] = points[rows, column]
-    done = arb_program.run(_THEOREM_7 if curvature is not None else _THEOREM_8, inputs, constants)
+    program = _THEOREM_7 if curvature is not None else _THEOREM_8
+    done = arb_program.run(program, inputs, constants, reduce=("theorem",) if reduce else ())
     if done is None or done[1] >= 0:
         return None
     (theorem, equation_17), _, defined = done

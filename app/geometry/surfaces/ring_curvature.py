@@ -140,15 +140,17 @@ def equation_17_check(
 
 
 def ring_checks(
-    ar: Arithmetic, meridian: Array, gauss: Array, curvature: Any
+    ar: Arithmetic, meridian: Array, gauss: Array, curvature: Any, reduce: bool = False
 ) -> tuple[Array, Array, int] | None:
     """Theorem 7's (``curvature`` K) or 8's (None: H = 0) residuals and (17)'s on one ring, in
     one compiled pass: in float64 ``ring_kernel.ring_checks``, on balls ``arb_rings.ring_checks``
-    (the balls the numpy code makes); None on mpmath numbers, or where the numpy path must name
-    a face without area."""
+    (the balls the numpy code makes; ``reduce``: the theorem's as the two balls a check without
+    per-index residuals reads); None on mpmath numbers, or where the numpy path must name a
+    face without area."""
     if ar.certified:
         theta = ar.pi / RING_M
-        return arb_rings.ring_checks(meridian, gauss, ar.cos(theta), ar.sin(theta), curvature)
+        cos, sin = ar.cos(theta), ar.sin(theta)
+        return arb_rings.ring_checks(meridian, gauss, cos, sin, curvature, reduce)
     if ar.mode != "float64":
         return None
     theta = ar.pi / RING_M
