@@ -207,11 +207,19 @@ class Program:
     """A straight-line formula on named registers: ``inputs`` (one ball per row each),
     ``constants`` (one ball for every row), ``outputs`` (written, fresh balls per row); any
     other name is a scratch ball. ``op`` appends one operation (``low``: at ``run``'s low
-    precision)."""
+    precision). ``counters``: scratch balls that may be read before they are written: each
+    holds 0 at the start of a run and keeps its value from row to row (as every scratch
+    ball)."""
 
-    def __init__(self, inputs: list[str], constants: list[str], outputs: list[str]) -> None:
+    def __init__(
+        self,
+        inputs: list[str],
+        constants: list[str],
+        outputs: list[str],
+        counters: tuple[str, ...] = (),
+    ) -> None:
         self.inputs, self.constants, self.outputs = inputs, constants, outputs
-        self.scratch: list[str] = []
+        self.scratch: list[str] = list(counters)
         self.steps: list[tuple[int, str, str, str, bool]] = []
         self._table: np.ndarray[Any, np.dtype[np.int64]] | None = None
 
@@ -246,6 +254,7 @@ def run(
     constants: dict[str, Any],
     low: int | None = None,
     reduce: Collection[str] = (),
+    rows: int = 0,
 ) -> tuple[list[np.ndarray[Any, Any]], int, np.ndarray[Any, np.dtype[np.bool_]]] | None:
     """``program`` on equal-length 1-d object arrays of balls (by input name) and constant
     balls: the outputs (in ``program.outputs`` order) as fresh balls, and −1 or the row where
@@ -257,11 +266,12 @@ def run(
     The outputs named in ``reduce`` are not kept per row: each is returned as the two balls a
     check without per-index residuals reduces it to (``reduced``), no ball made per row. Where
     one of them has an unbounded ball, every output is made per row instead (the checks' notes
-    count the residuals that are not finite)."""
+    count the residuals that are not finite). ``rows``: how many rows a program without
+    inputs runs (one reading a counter of its own)."""
     if not AVAILABLE:
         return None
     columns = [inputs[name] for name in program.inputs]
-    rows = len(columns[0])
+    rows = len(columns[0]) if columns else rows
     if not rows or any(c.ndim != 1 or len(c) != rows or c.dtype != object for c in columns):
         return None
     address_in = np.empty((rows, len(columns)), dtype=np.int64)
@@ -274,10 +284,15 @@ def run(
         return None
     reduced = [program.outputs.index(name) for name in reduce]
     outputs: list[Any] = [None] * len(program.outputs)
+    if columns:
+        negated = columns[0]
+    else:
+        negated = np.empty(rows, dtype=object)
+        negated[:] = [flint.arb()] * rows
     address_out = np.empty((rows, len(program.outputs)), dtype=np.int64)
     for j in range(len(program.outputs)):
         if j not in reduced:
-            outputs[j] = np.negative(columns[0])  # fresh balls, written over
+            outputs[j] = np.negative(negated)  # fresh balls, written over
             address_out[:, j] = arb_loops.addresses(outputs[j])
     kept = [flint.arb() for _ in range(2 * len(reduced))]
     prec = flint.ctx.prec
@@ -310,7 +325,7 @@ def run(
         )
     del fixed_balls  # the constants lived until here
     if stopped == -2:  # an unbounded reduced residual: every row's ball, for the checks' notes
-        return run(program, inputs, constants, low)
+        return run(program, inputs, constants, low, rows=rows)
     for r, j in enumerate(reduced):
         outputs[j] = reduced_pair(kept[2 * r], kept[2 * r + 1])
     return outputs, int(stopped), flags

@@ -100,8 +100,14 @@ def _tanh_sech(program: Program, e: str, tanh: str, sech: str) -> None:
 
 
 _HYPERBOLIC = Program(
-    ["i"], ["shift", "L", "ratio", "one", "two"], ["tanh t", "sech t", "tanh u", "sech u"]
+    [],
+    ["before", "shift", "L", "ratio", "one", "two"],
+    ["tanh t", "sech t", "tanh u", "sech u"],
+    counters=("count",),
 )
+# the index i = lo + row as a ball: the count (exact integers, as ``Ball.indices``' balls)
+_HYPERBOLIC.op(ADD, "count", "count", "one")  # row + 1 (the scratch ball starts at 0)
+_HYPERBOLIC.op(ADD, "i", "count", "before")
 _HYPERBOLIC.op(ADD, "t", "i", "shift")
 _HYPERBOLIC.op(MUL, "t", "t", "L")
 _HYPERBOLIC.op(EXP, "e", "t")
@@ -110,11 +116,15 @@ _HYPERBOLIC.op(MUL, "e", "e", "ratio")
 _tanh_sech(_HYPERBOLIC, "e", "tanh u", "sech u")
 
 
-def hyperbolic(indices: Any, shift: Any, log_ratio: Any, ratio: Any) -> Columns | None:
-    """``_BallHyperbolic``'s tanh t, sech t, tanh u, sech u (t = (i + τ)L, e^u = e^t·ratio)."""
-    constants = {"shift": shift, "L": log_ratio, "ratio": ratio}
+def hyperbolic(lo: int, hi: int, shift: Any, log_ratio: Any, ratio: Any) -> Columns | None:
+    """``_BallHyperbolic``'s tanh t, sech t, tanh u, sech u (t = (i + τ)L, e^u = e^t·ratio) for
+    i = lo .. hi, the indices' balls counted in the program (exact integers: no ball made per
+    index)."""
+    if hi < lo or max(abs(lo), abs(hi)) >= 2**53:
+        return None
+    constants = {"before": flint.arb(lo - 1), "shift": shift, "L": log_ratio, "ratio": ratio}
     constants |= {"one": flint.arb(1), "two": flint.arb(2)}
-    done = ap.run(_HYPERBOLIC, {"i": indices}, constants)
+    done = ap.run(_HYPERBOLIC, {}, constants, rows=hi - lo + 1)
     return None if done is None else done[0]
 
 

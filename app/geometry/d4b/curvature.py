@@ -196,28 +196,28 @@ def build(
     i_min − 1 .. i_max + 2, ``directions_hull`` the unit stick directions u on the same indices as
     ``tractrix_hull``. Without (method=closed-form) the closed forms are used.
     """
-    i = ar.indices(i_min, i_max + 1)
+    closed: dict[str, Callable[[GaussImages], Array]]
     if ar.certified:  # balls: from one exponential per index (``_BallHyperbolic``)
         table = _ball_hyperbolic(ar, h, d, shift, i_min - 1, i_max + 1)
-        closed_on_balls: dict[str, Callable[[GaussImages], Array]] = {
+        closed = {
             "closed_tractrix_gauss": lambda _: table.tractrix_gauss_image(i_min, i_max + 1),
             "closed_gauss": lambda _: table.circumscribed_gauss_image(i_min, i_max + 1),
             "closed_contact": lambda _: table.contact_points(i_min - 1, i_max + 1),
         }
-    closed: dict[str, Callable[[GaussImages], Array]] = {
-        "closed_tractrix_gauss": lambda _: kinematic_closed_forms.tractrix_gauss_image(
-            ar, h, d, i, shift
-        ),
-        "closed_gauss": lambda _: kinematic_closed_forms.circumscribed_gauss_image(
-            ar, h, d, i, shift
-        ),
-        "closed_contact": lambda _: kinematic_closed_forms.contact_points(
-            ar, h, d, ar.indices(i_min - 1, i_max + 1), shift
-        ),
-    }
-    if ar.certified:
-        closed = closed_on_balls
-    elif ar.mode == "float64" and _cosh_finite(ar, h, d, shift, i_min - 1, i_max + 1):
+    else:  # (on balls the indices' balls are not made: the table has its own)
+        i = ar.indices(i_min, i_max + 1)
+        closed = {
+            "closed_tractrix_gauss": lambda _: kinematic_closed_forms.tractrix_gauss_image(
+                ar, h, d, i, shift
+            ),
+            "closed_gauss": lambda _: kinematic_closed_forms.circumscribed_gauss_image(
+                ar, h, d, i, shift
+            ),
+            "closed_contact": lambda _: kinematic_closed_forms.contact_points(
+                ar, h, d, ar.indices(i_min - 1, i_max + 1), shift
+            ),
+        }
+    if ar.mode == "float64" and _cosh_finite(ar, h, d, shift, i_min - 1, i_max + 1):
         # n_i = (sech t, tanh t) and ñ_i = (−tanh t, sech t) at the same t = (i + τ)L: n read
         # off ñ on i_min .. i_max + 1 (the same numbers: the same t, and cosh finite on both, so
         # ``amplitude_sech`` takes its direct form on both), one tanh and cosh pass fewer
@@ -848,7 +848,7 @@ class _BallHyperbolic:
         self.amplitude = h / ar.sqrt((h - d) * (h + d))  # h/√(h² − d²): m_i^y = h / p_i^y
         log_ratio = kinematic_closed_forms.log_ratio(ar, h, d)
         ratio = ar.sqrt((h - d) / (h + d))
-        compiled = arb_gauss.hyperbolic(ar.indices(lo, hi), shift, log_ratio, ratio)
+        compiled = arb_gauss.hyperbolic(lo, hi, shift, log_ratio, ratio)
         if compiled is not None:  # the same balls in one compiled pass
             self.tanh_t, self.sech_t, self.tanh_u, self.sech_u = compiled
             return
