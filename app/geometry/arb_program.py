@@ -68,14 +68,19 @@ AVAILABLE = (
 
 # operation codes: (code, destination, a, b) on registers
 ADD, SUB, MUL, DIV, SQRT, EXP, ABS, NEG, MAX, MIN, SET, NONNEGATIVE = range(12)
-GT, LT, CHOOSE, REQUIRE_GT, NE, KEEP_FLAG = range(12, 18)
+GT, LT, CHOOSE, REQUIRE_GT, NE, KEEP_FLAG, SWAP = range(12, 19)
 """``GT``/``LT``/``NE`` set the flag to a > b / a < b / a ≠ b (certainly); ``CHOOSE`` sets d to
 a if the flag is set, else to b (an exact copy); ``KEEP_FLAG`` keeps the flag as the row's
 entry of ``run``'s flags; ``REQUIRE_GT`` stops the run at the first row where a > b is not
-certain (``run`` returns that row)."""
+certain (``run`` returns that row); ``SWAP`` exchanges two scratch registers' balls (no
+libflint call: a value of this row kept for the next, see ``Program.op``'s ``first``)."""
+
+#: Flags of an operation (``Program.compiled``'s last column): at the low precision; on the
+#: first row only.
+LOW, FIRST = 1, 2
 
 _ARITY = {ADD: 2, SUB: 2, MUL: 2, DIV: 2, MAX: 2, MIN: 2, GT: 2, LT: 2, NE: 2, CHOOSE: 2}
-_ARITY |= {KEEP_FLAG: 1}
+_ARITY |= {KEEP_FLAG: 1, SWAP: 1}
 _ARITY |= {REQUIRE_GT: 2, SQRT: 1, EXP: 1, ABS: 1, NEG: 1, SET: 1, NONNEGATIVE: 1}
 
 if AVAILABLE:
@@ -147,10 +152,17 @@ if AVAILABLE:
             for j in range(n_out):
                 registers[n_in + j] = outputs[row, j]
             for step in range(code.shape[0]):
-                op = code[step, 0]
+                op, flags_of = code[step, 0], code[step, 4]
+                if row and flags_of & FIRST:
+                    continue
+                if op == SWAP:
+                    kept_register = registers[code[step, 1]]
+                    registers[code[step, 1]] = registers[code[step, 2]]
+                    registers[code[step, 2]] = kept_register
+                    continue
                 d = registers[code[step, 1]]
                 a, b = registers[code[step, 2]], registers[code[step, 3]]
-                p = low if code[step, 4] else prec
+                p = low if flags_of & LOW else prec
                 if op == ADD:
                     _add(d, a, b, p)
                 elif op == SUB:
@@ -220,12 +232,24 @@ class Program:
     ) -> None:
         self.inputs, self.constants, self.outputs = inputs, constants, outputs
         self.scratch: list[str] = list(counters)
-        self.steps: list[tuple[int, str, str, str, bool]] = []
+        self.steps: list[tuple[int, str, str, str, int]] = []
         self._table: np.ndarray[Any, np.dtype[np.int64]] | None = None
 
-    def op(self, code: int, d: str, a: str, b: str | None = None, low: bool = False) -> None:
+    def op(
+        self,
+        code: int,
+        d: str,
+        a: str,
+        b: str | None = None,
+        low: bool = False,
+        first: bool = False,
+    ) -> None:
+        """``d`` = ``code``(a, b); ``first``: on the first row only (a value the rows then
+        carry, each row computing the next row's and ``SWAP``-ping it in at its end)."""
         if (b is None) != (_ARITY[code] == 1):
             raise TypeError("wrong number of operands")
+        if code == SWAP and not {d, a} <= {*self.scratch}:
+            raise NameError("only scratch registers are swapped")
         known = {*self.inputs, *self.constants, *self.outputs, *self.scratch}
         for name in (a, b):
             if name is not None and name not in known:
@@ -234,7 +258,7 @@ class Program:
             raise NameError(f"register {d!r} is read-only")
         if d not in known:
             self.scratch.append(d)
-        self.steps.append((code, d, a, a if b is None else b, low))
+        self.steps.append((code, d, a, a if b is None else b, LOW * low + FIRST * first))
         self._table = None
 
     def compiled(self) -> np.ndarray[Any, np.dtype[np.int64]]:
@@ -243,7 +267,7 @@ class Program:
             names = [*self.inputs, *self.outputs, *self.constants, *self.scratch]
             number = {name: k for k, name in enumerate(names)}
             steps = self.steps
-            table = [(c, number[d], number[a], number[b], int(low)) for c, d, a, b, low in steps]
+            table = [(c, number[d], number[a], number[b], f) for c, d, a, b, f in steps]
             self._table = np.array(table, dtype=np.int64).reshape(-1, 5)
         return self._table
 
