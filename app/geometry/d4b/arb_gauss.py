@@ -88,6 +88,60 @@ def relative_difference(
     return None if done is None else done[0][0]
 
 
+def _pair(printed_x: bool) -> Program:
+    """A constructed image (bx, by) against its corrected closed form and its printed one, in
+    one program: (18) against (sech, tanh) and (sech, −tanh) (``printed_x`` false), (19)
+    against (−tanh, sech) and (tanh, sech) (true; the corrected one's residuals times
+    ``factor``, as ``closed`` scales them). ``relative_difference``'s operations for each, where
+    the two share the difference of the common coordinate and the scale: the hypot of (sech,
+    ±tanh), whose squares are the same balls (a negation of a ball at the working precision is
+    exact, and a product of two negated balls is the product of the balls)."""
+    inputs = ["bx", "by", "tanh", "sech"] + (["factor"] if printed_x else [])
+    program = Program(inputs, ["tiny"], ["closed", "printed"])
+    op = program.op
+    op(NEG, "minus tanh", "tanh")  # the numpy code's negated column (python-flint's −x)
+    if printed_x:  # (19): corrected (−tanh, sech), printed (tanh, sech)
+        op(SUB, "dx", "bx", "minus tanh")
+        op(SUB, "dy", "by", "sech")
+        _hypot(program, "scale", "minus tanh", "sech", low=True)
+    else:  # (18): corrected (sech, tanh), printed (sech, −tanh)
+        op(SUB, "dx", "bx", "sech")
+        op(SUB, "dy", "by", "tanh")
+        _hypot(program, "scale", "sech", "tanh", low=True)
+    _hypot(program, "length", "dx", "dy", low=True)
+    op(GT, "scale", "scale", "tiny")
+    op(CHOOSE, "floor", "scale", "tiny")
+    if printed_x:
+        op(DIV, "difference", "length", "floor", low=True)
+        op(MUL, "closed", "difference", "factor")
+        op(SUB, "dx", "bx", "tanh")
+    else:
+        op(DIV, "closed", "length", "floor", low=True)
+        op(SUB, "dy", "by", "minus tanh")
+    _hypot(program, "length", "dx", "dy", low=True)
+    op(DIV, "printed", "length", "floor", low=True)
+    return program
+
+
+_PAIR_18, _PAIR_19 = _pair(False), _pair(True)
+
+
+def closed_and_printed(
+    key: str, built: Any, tanh: Any, sech: Any, tiny: Any, low: int, factor: Any, detail: bool
+) -> Columns | None:
+    """(18) (``key`` "18") or (19) (n or ñ, ``built``) against its corrected and printed closed
+    forms from the columns tanh t, sech t: ``relative_difference``'s balls of both (the
+    corrected (19)'s times ``factor``), the printed one reduced (its erratum's largest alone),
+    the corrected one too unless ``detail``."""
+    inputs = {"bx": built[:, 0], "by": built[:, 1], "tanh": tanh, "sech": sech}
+    if key == "19":
+        inputs["factor"] = factor
+    reduce = ("printed",) if detail else ("closed", "printed")
+    program = _PAIR_19 if key == "19" else _PAIR_18
+    done = ap.run(program, inputs, {"tiny": tiny}, low, reduce)
+    return None if done is None else done[0]
+
+
 def _tanh_sech(program: Program, e: str, tanh: str, sech: str) -> None:
     """``_BallHyperbolic._tanh_sech``: 1 − 2/(E² + 1), 2/(E + 1/E)."""
     program.op(MUL, "q", e, e)

@@ -121,6 +121,10 @@ class GaussImages:
     companion or a check computes the images and closed forms it uses and no others.
     """
 
+    ball_table: tuple[_BallHyperbolic, int] | None = None
+    """Balls, constructed images: the hyperbolic table the closed forms are read from and the
+    first index of n (i_min), for comparing n and ñ with their closed forms straight from it."""
+
     conditioning: float = 1.0
     """Step count of n's tolerance beyond the construction's: 1, since n is read from the stick
     directions (``build``) instead of accumulated from edge angles."""
@@ -142,6 +146,7 @@ class GaussImages:
         if unknown:
             raise TypeError(f"no polygon named {sorted(unknown)}")
         copy = GaussImages(self.constructed, self._parts, self.contact_edges_before)
+        copy.ball_table = self.ball_table
         copy.__dict__.update(polygons)
         return copy
 
@@ -248,7 +253,7 @@ def build(
         raise ValueError("a construction needs its stick directions")
     directions = directions_hull
     window = slice(i_min - hull_start, i_max + 1 - hull_start + 1)
-    return GaussImages(
+    constructed = GaussImages(
         True,
         {
             **closed,
@@ -263,6 +268,9 @@ def build(
         },
         p_extended[:2],
     )
+    if ar.certified:
+        constructed.ball_table = (table, i_min)
+    return constructed
 
 
 def _cosh_finite(ar: Arithmetic, h: Scalar, d: Scalar, shift: Scalar, lo: int, hi: int) -> bool:
@@ -420,6 +428,9 @@ def evaluate(
                 tolerance,
                 erratum,
             )
+        pair = ball_pair(statement.id.removeprefix("equation-"))
+        if pair is not None:  # balls: with the printed form, from the table (``ball_pair``)
+            return check(statement, pair[0], tolerance, erratum)
         formula = closed_form()
         residuals: Array | Largest
         if ar.mode == "float64" and not detail:  # the largest alone, in one pass, no array
@@ -442,6 +453,9 @@ def evaluate(
             return Erratum(*entry, printed_residual=found if math.isfinite(found) else None)
         if ar.mode == "float64" and isinstance(printed, PrintedForms):  # one pass, no arrays
             return Erratum(*entry, printed_residual=printed.largest(key, built[:n], images))
+        pair = ball_pair(key)
+        if pair is not None:  # balls: with the corrected form, from the table (``ball_pair``)
+            return Erratum(*entry, printed_residual=printed_residual(ar, pair[1]))
         formula = printed(key)
         if ar.mode == "float64":  # the largest alone, in one pass
             worst = residual_kernels.largest_relative_point_difference(built[:n], formula[:n])
@@ -552,6 +566,44 @@ def evaluate(
             )
 
         return shared("pole resolution", make)
+
+    def ball_pair(key: str) -> Any:
+        """Balls, constructed images: (18) (n) or (19) (ñ) against its corrected and printed
+        closed forms in one compiled program straight from the hyperbolic table (the closed
+        forms' arrays not made; ``arb_gauss.closed_and_printed``: the balls of ``closed`` and
+        ``printed_erratum``, the printed residuals reduced, the corrected ones too without
+        ``detail``); None where that does not apply (another key, the closed forms given or
+        made already, another table)."""
+
+        def make() -> Any:
+            found = images.ball_table
+            if key not in ("18", "19") or found is None or n < 1:
+                return None
+            if not isinstance(printed, PrintedForms) or CLOSED_IMAGES & vars(images).keys():
+                return None
+            table, first = found
+            same = _ball_hyperbolic(
+                ar, printed.h, printed.d, printed.shift, printed.i_min, printed.i_max
+            )
+            if printed.i_min != first or same is not table:
+                return None
+            rows = table._rows(first, first + n - 1)
+            low = min(flint.ctx.prec, RESIDUAL_BITS)
+            with ar.residual_precision():
+                tiny = ar.scalar(np.finfo(np.float64).tiny)
+            built, factor = (nt()[:n], None) if key == "18" else (c()[1 : n + 1], resolution())
+            return arb_gauss.closed_and_printed(
+                key,
+                built,
+                table.tanh_t[rows],
+                table.sech_t[rows],
+                tiny,
+                low,
+                None if factor is None else factor[:n],
+                detail,
+            )
+
+        return shared(f"pair {key}", make)
 
     def image_comparisons() -> list[float] | None:
         """Float64 without ``detail``, constructed images: the largest residuals of (18)–(20)

@@ -105,6 +105,50 @@ def test_the_gauss_image_passes_are_the_numpy_balls(digits: int) -> None:
         _same(arb_gauss.product(resolution, size), resolution * size)
 
 
+@pytest.mark.parametrize("digits", [50, 500])
+def test_the_closed_and_printed_pairs_are_the_numpy_balls(digits: int) -> None:
+    """(18) and (19) against their corrected and printed closed forms in one program: the
+    balls of ``_relative`` on the closed forms' arrays (per row, as with ``detail``), and the
+    reduced pairs' bounds those of the columns."""
+    ar = Ball(digits, 4, recursions_only=True)
+    with balls.working_precision(ar.bits):
+        h, d = ar.scalar(1.0), ar.scalar(0.1)
+        data = d4b.polygons(ar, 1.0, 0.1, None, -40, 39)
+        images = data.gauss
+        shift = tilt_shift(ar, h, d, None)
+        table = curvature._ball_hyperbolic(ar, h, d, shift, -41, 40)
+        n = 80
+        rows = table._rows(-40, -40 + n - 1)
+        tanh, sech = table.tanh_t[rows], table.sech_t[rows]
+        low = min(flint.ctx.prec, curvature.RESIDUAL_BITS)
+        with ar.residual_precision():
+            tiny = ar.scalar(np.finfo(np.float64).tiny)
+        resolution = curvature._edge_resolution(ar, data.p)[:n]
+        cases = (
+            ("18", images.tractrix_gauss[:n], None),
+            ("19", images.contact[1 : n + 1], resolution),
+        )
+        for key, built, factor in cases:
+            corrected = (
+                table.tractrix_gauss_image(-40, 40)
+                if key == "18"
+                else table.contact_points(-41, 40)[1:]
+            )[:n]
+            printed = table.printed(key, -40, 39)[:n]
+            want_closed = curvature._relative(ar, built, corrected, factor)
+            want_printed = curvature._relative(ar, built, printed)
+            got = arb_gauss.closed_and_printed(key, built, tanh, sech, tiny, low, factor, True)
+            assert got is not None
+            _same(got[0], want_closed)
+            assert len(got[1]) == 2  # reduced: the balls of the largest upper and lower bounds
+            for bound in (ar.largest_upper, ar.largest_lower):
+                _same(bound(got[1]), bound(want_printed))
+            got = arb_gauss.closed_and_printed(key, built, tanh, sech, tiny, low, factor, False)
+            assert got is not None and len(got[0]) == 2
+            for bound in (ar.largest_upper, ar.largest_lower):
+                _same(bound(got[0]), bound(want_closed))
+
+
 def test_a_zero_edge_and_other_entries() -> None:
     ar = Ball(30)
     with balls.working_precision(ar.bits):
