@@ -142,6 +142,74 @@ def closed_and_printed(
     return None if done is None else done[0]
 
 
+def _relative_to(program: Program, out: str, x: str, y: str, factor: str | None) -> None:
+    """``_relative_difference`` of (bx, by) against (x, y) into ``out``, times ``factor``."""
+    program.op(SUB, "dx", "bx", x)
+    program.op(SUB, "dy", "by", y)
+    _hypot(program, "scale", x, y, low=True)
+    _hypot(program, "length", "dx", "dy", low=True)
+    program.op(GT, "scale", "scale", "tiny")
+    program.op(CHOOSE, "floor", "scale", "tiny")
+    if factor is None:
+        program.op(DIV, out, "length", "floor", low=True)
+    else:
+        program.op(DIV, "difference", "length", "floor", low=True)
+        program.op(MUL, out, "difference", factor)
+
+
+_IMAGE_20 = Program(
+    ["bx", "by", "ax", "ay", "cx", "cy", "tanh t", "sech t", "tanh u", "sech u", "factor"],
+    ["h", "d", "amplitude", "two", "tiny"],
+    ["inversion", "closed", "printed"],
+)
+_IMAGE_20.op(ADD, "tx", "ax", "cx")  # the inversion: ``_INVERSION``
+_IMAGE_20.op(ADD, "ty", "ay", "cy")
+_IMAGE_20.op(MUL, "s", "tx", "tx")
+_IMAGE_20.op(MUL, "w", "ty", "ty")
+_IMAGE_20.op(ADD, "s", "s", "w")
+_IMAGE_20.op(MUL, "a", "tx", "two")
+_IMAGE_20.op(DIV, "ix", "a", "s")
+_IMAGE_20.op(MUL, "b", "ty", "two")
+_IMAGE_20.op(DIV, "iy", "b", "s")
+_relative_to(_IMAGE_20, "inversion", "ix", "iy", "factor")
+_IMAGE_20.op(NEG, "gx", "tanh u")  # (20) corrected: (−tanh u, h sech u/√(h² − d²))
+_IMAGE_20.op(MUL, "gy", "amplitude", "sech u")
+_relative_to(_IMAGE_20, "closed", "gx", "gy", "factor")
+_IMAGE_20.op(MUL, "a", "d", "tanh t")  # (20) printed: ``_PRINTED_20``
+_IMAGE_20.op(ADD, "denominator", "h", "a")
+_IMAGE_20.op(MUL, "b", "h", "tanh t")
+_IMAGE_20.op(SUB, "b", "b", "d")
+_IMAGE_20.op(DIV, "px", "b", "denominator")
+_IMAGE_20.op(MUL, "c", "h", "sech t")
+_IMAGE_20.op(DIV, "py", "c", "denominator")
+_relative_to(_IMAGE_20, "printed", "px", "py", None)
+
+
+def image_20(
+    gauss: Any,
+    before: Any,
+    after: Any,
+    table: tuple[Any, Any, Any, Any],
+    constants: dict[str, Any],
+    factor: Any,
+    detail: bool,
+) -> Columns | None:
+    """m (``gauss``, n rows) against the pole of ñ_{i−1} (``before``) and ñ_i (``after``) by
+    inversion, (20) corrected and (20) printed, from the table's columns tanh t, sech t, tanh u,
+    sech u (``table``; ``constants`` h, d, the amplitude h/√(h² − d²), 2 and ``tiny``; ``low``
+    among them): the balls of ``pole_by_inversion``, ``_relative`` and the printed forms'
+    (the inversion's and the corrected ones' times ``factor``), in one program, no
+    intermediate array; the printed ones reduced, the others too unless ``detail``."""
+    tanh_t, sech_t, tanh_u, sech_u = table
+    inputs = {"bx": gauss[:, 0], "by": gauss[:, 1], "ax": before[:, 0], "ay": before[:, 1]}
+    inputs |= {"cx": after[:, 0], "cy": after[:, 1], "tanh t": tanh_t, "sech t": sech_t}
+    inputs |= {"tanh u": tanh_u, "sech u": sech_u, "factor": factor}
+    fixed = {name: constants[name] for name in ("h", "d", "amplitude", "two", "tiny")}
+    reduce = ("printed",) if detail else ("inversion", "closed", "printed")
+    done = ap.run(_IMAGE_20, inputs, fixed, constants["low"], reduce)
+    return None if done is None else done[0]
+
+
 def _tanh_sech(program: Program, e: str, tanh: str, sech: str) -> None:
     """``_BallHyperbolic._tanh_sech``: 1 − 2/(E² + 1), 2/(E + 1/E)."""
     program.op(MUL, "q", e, e)

@@ -575,18 +575,17 @@ def evaluate(
         ``detail``); None where that does not apply (another key, the closed forms given or
         made already, another table)."""
 
+        if key == "20":
+            both = ball_image_20()
+            return None if both is None else (both[1], both[2])
+
         def make() -> Any:
             found = images.ball_table
             if key not in ("18", "19") or found is None or n < 1:
                 return None
-            if not isinstance(printed, PrintedForms) or CLOSED_IMAGES & vars(images).keys():
+            if ball_table() is None:
                 return None
             table, first = found
-            same = _ball_hyperbolic(
-                ar, printed.h, printed.d, printed.shift, printed.i_min, printed.i_max
-            )
-            if printed.i_min != first or same is not table:
-                return None
             rows = table._rows(first, first + n - 1)
             low = min(flint.ctx.prec, RESIDUAL_BITS)
             with ar.residual_precision():
@@ -604,6 +603,53 @@ def evaluate(
             )
 
         return shared(f"pair {key}", make)
+
+    def ball_table() -> Any:
+        """The hyperbolic table ``ball_pair`` reads and the first row of n in it, or None."""
+        found = images.ball_table
+        if found is None or n < 1 or not isinstance(printed, PrintedForms):
+            return None
+        if CLOSED_IMAGES & vars(images).keys():  # closed forms given (the tests perturb them)
+            return None
+        table, first = found
+        same = _ball_hyperbolic(
+            ar, printed.h, printed.d, printed.shift, printed.i_min, printed.i_max
+        )
+        return (table, first) if printed.i_min == first and same is table else None
+
+    def ball_image_20() -> Any:
+        """Balls, constructed images, (20) and its inversion both wanted: m against the poles by
+        inversion, (20) corrected and (20) printed in one compiled program from the hyperbolic
+        table (``arb_gauss.image_20``: the balls of ``inversion``, ``closed`` and
+        ``printed_erratum``, reduced as ``ball_pair``'s); None where that does not apply."""
+
+        def make() -> Any:
+            if not (wanted(EQUATION_20.id) and wanted(EQUATION_20_INVERSION.id)):
+                return None
+            found = ball_table()
+            if found is None:
+                return None
+            table, first = found
+            assert isinstance(printed, PrintedForms)  # (``ball_table``)
+            rows = table._rows(first, first + n - 1)
+            columns = (table.tanh_t[rows], table.sech_t[rows], table.tanh_u[rows])
+            with ar.residual_precision():
+                tiny = ar.scalar(np.finfo(np.float64).tiny)
+            constants = {"h": printed.h, "d": printed.d, "amplitude": table.amplitude}
+            constants |= {"two": flint.arb(2), "tiny": tiny}
+            constants["low"] = min(flint.ctx.prec, RESIDUAL_BITS)
+            contact = c()
+            return arb_gauss.image_20(
+                m()[:n],
+                contact[:n],
+                contact[1 : n + 1],
+                (*columns, table.sech_u[rows]),
+                constants,
+                pole_resolution()[:n],
+                detail,
+            )
+
+        return shared("image 20", make)
 
     def image_comparisons() -> list[float] | None:
         """Float64 without ``detail``, constructed images: the largest residuals of (18)–(20)
@@ -681,6 +727,8 @@ def evaluate(
                 residual_kernels.pole_inversion_largest(m(), c(), pole_resolution(), n),
                 local_tolerance,
             )
+        if ar.certified and (fused := ball_image_20()) is not None:  # with (20), one program
+            return check(EQUATION_20_INVERSION, fused[0], local_tolerance)
         inverted = _pole_by_inversion(ar, c()[:-1], c()[1:])  # i_min .. +1
         return check(
             EQUATION_20_INVERSION,

@@ -149,6 +149,48 @@ def test_the_closed_and_printed_pairs_are_the_numpy_balls(digits: int) -> None:
                 _same(bound(got[0]), bound(want_closed))
 
 
+@pytest.mark.parametrize("digits", [50, 500])
+def test_the_image_20_program_is_the_numpy_balls(digits: int) -> None:
+    """m against its poles by inversion, (20) corrected and (20) printed in one program: the
+    balls of ``_relative`` on the arrays the separate passes make (per row, as with
+    ``detail``; the printed ones reduced to the bounds of the column)."""
+    ar = Ball(digits, 4, recursions_only=True)
+    with balls.working_precision(ar.bits):
+        h, d = ar.scalar(1.0), ar.scalar(0.1)
+        data = d4b.polygons(ar, 1.0, 0.1, None, -40, 39)
+        images = data.gauss
+        shift = tilt_shift(ar, h, d, None)
+        table = curvature._ball_hyperbolic(ar, h, d, shift, -41, 40)
+        n = 80
+        rows = table._rows(-40, -40 + n - 1)
+        m, contact = images.gauss[:n], images.contact
+        scale = curvature._edge_resolution(ar, data.p)[:n]
+        with ar.residual_precision():
+            tiny = ar.scalar(np.finfo(np.float64).tiny)
+        constants = {"h": h, "d": d, "amplitude": table.amplitude, "two": flint.arb(2)}
+        constants |= {"tiny": tiny, "low": min(flint.ctx.prec, curvature.RESIDUAL_BITS)}
+        columns = (table.tanh_t[rows], table.sech_t[rows], table.tanh_u[rows], table.sech_u[rows])
+        before, after = contact[:n], contact[1 : n + 1]
+        inverted = curvature._pole_by_inversion(ar, before, after)
+        want = (
+            curvature._relative(ar, m, inverted, scale),
+            curvature._relative(ar, m, table.circumscribed_gauss_image(-40, 40)[:n], scale),
+            curvature._relative(ar, m, table.printed("20", -40, 39)[:n]),
+        )
+        got = arb_gauss.image_20(m, before, after, columns, constants, scale, True)
+        assert got is not None
+        _same(got[0], want[0])
+        _same(got[1], want[1])
+        for bound in (ar.largest_upper, ar.largest_lower):
+            _same(bound(got[2]), bound(want[2]))
+        got = arb_gauss.image_20(m, before, after, columns, constants, scale, False)
+        assert got is not None
+        for k in range(3):
+            assert len(got[k]) == 2
+            for bound in (ar.largest_upper, ar.largest_lower):
+                _same(bound(got[k]), bound(want[k]))
+
+
 def test_a_zero_edge_and_other_entries() -> None:
     ar = Ball(30)
     with balls.working_precision(ar.bits):
