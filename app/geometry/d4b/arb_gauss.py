@@ -28,8 +28,10 @@ from app.geometry.arb_program import (
     NEG,
     NONNEGATIVE,
     REQUIRE_GT,
+    SET,
     SQRT,
     SUB,
+    SWAP,
     Program,
 )
 
@@ -330,8 +332,8 @@ def edges(points: Any) -> Columns | None:
     return None if done is None else done[0]
 
 
-def _along(program: Program, vx: str, vy: str) -> None:
-    """``d4b.curvature._along``: |v × e|/size, or 1 where v · e < 0."""
+def _along(program: Program, vx: str, vy: str, out: str = "out") -> None:
+    """``d4b.curvature._along``: |v × e|/size, or 1 where v · e < 0 (into ``out``)."""
     program.op(MUL, "a", vx, "ey")
     program.op(MUL, "b", vy, "ex")
     program.op(SUB, "a", "a", "b")
@@ -341,7 +343,7 @@ def _along(program: Program, vx: str, vy: str) -> None:
     program.op(MUL, "b", vy, "ey")
     program.op(ADD, "a", "a", "b")
     program.op(LT, "a", "a", "zero")
-    program.op(CHOOSE, "out", "one", "along")
+    program.op(CHOOSE, out, "one", "along")
 
 
 _ALONG = Program(["vx", "vy", "ex", "ey", "size"], ["zero", "one"], ["out"])
@@ -431,3 +433,56 @@ def product(a: Any, b: Any) -> Any:
     """a·b entry by entry (``d4b.curvature._scaled`` on balls)."""
     done = ap.run(_SCALED, {"a": a, "b": b}, {})
     return None if done is None else done[0][0]
+
+
+_EDGE_CHECKS = Program(
+    ["x0", "y0", "x1", "y1", "vx", "vy", "cx", "cy"],
+    ["before", "zero", "one"],
+    ["resolution", "pole resolution", "along n", "slope", "rotation"],
+)
+_EDGE_CHECKS.op(SUB, "ex", "x1", "x0")  # ``_EDGES``, |x|, |y| of a vertex made once (``SWAP``)
+_EDGE_CHECKS.op(SUB, "ey", "y1", "y0")
+_EDGE_CHECKS.op(ABS, "|x0|", "x0", first=True)
+_EDGE_CHECKS.op(ABS, "|y0|", "y0", first=True)
+_EDGE_CHECKS.op(ADD, "size", "|x0|", "|y0|")
+_EDGE_CHECKS.op(ABS, "|x1|", "x1")
+_EDGE_CHECKS.op(ADD, "size", "size", "|x1|")
+_EDGE_CHECKS.op(ABS, "|y1|", "y1")
+_EDGE_CHECKS.op(ADD, "size", "size", "|y1|")
+_hypot(_EDGE_CHECKS, "length", "ex", "ey")
+_EDGE_CHECKS.op(DIV, "resolution", "length", "size")
+_EDGE_CHECKS.op(SET, "previous", "before", first=True)  # the smaller of consecutive resolutions
+_EDGE_CHECKS.op(MIN, "pole resolution", "previous", "resolution")
+_EDGE_CHECKS.op(SET, "previous", "resolution")
+_along(_EDGE_CHECKS, "vx", "vy", "along n")  # ``_ALONG``
+_EDGE_CHECKS.op(DIV, "k", "ey", "ex")  # ``_SLOPE``
+_EDGE_CHECKS.op(MUL, "kk", "k", "k")
+_EDGE_CHECKS.op(ADD, "denominator", "kk", "one")
+_EDGE_CHECKS.op(DIV, "c", "one", "denominator")
+_EDGE_CHECKS.op(SQRT, "sx", "c")
+_EDGE_CHECKS.op(DIV, "c", "kk", "denominator")
+_EDGE_CHECKS.op(SQRT, "sy", "c")
+_along(_EDGE_CHECKS, "sx", "sy", "slope")
+_EDGE_CHECKS.op(NEG, "r", "vy")  # ``_ROTATION``
+_EDGE_CHECKS.op(SUB, "dx", "cx", "r")
+_EDGE_CHECKS.op(SUB, "dy", "cy", "vx")
+_hypot(_EDGE_CHECKS, "distance", "dx", "dy")
+_EDGE_CHECKS.op(MUL, "rotation", "distance", "resolution")
+_EDGE_CHECKS.op(SWAP, "|x0|", "|x1|")
+_EDGE_CHECKS.op(SWAP, "|y0|", "|y1|")
+
+
+def edge_checks(points: Any, normals: Any, contact: Any, before: Any, detail: bool) -> Any:
+    """The checks on the edges p_i p_{i+1} of ``points`` in one program: their resolutions, the
+    smaller of consecutive ones (``before`` the resolution of the edge before the first),
+    ``_along`` of ``normals`` (n) and of the printed (18)'s slope form, and the rotation's
+    scaled distances of ``contact`` (ñ_{i+1}) from the turned n: the balls of ``edges``,
+    ``minimum``, ``along``, ``along_printed_slope`` and ``rotation`` (the resolutions per
+    row; the slope's reduced, the others' too unless ``detail``)."""
+    inputs = {"x0": points[:-1, 0], "y0": points[:-1, 1], "x1": points[1:, 0]}
+    inputs |= {"y1": points[1:, 1], "vx": normals[:, 0], "vy": normals[:, 1]}
+    inputs |= {"cx": contact[:, 0], "cy": contact[:, 1]}
+    constants = {"before": before, "zero": flint.arb(0), "one": flint.arb(1)}
+    reduce = ("slope",) if detail else ("along n", "slope", "rotation")
+    done = ap.run(_EDGE_CHECKS, inputs, constants, reduce=reduce)
+    return None if done is None else done[0]

@@ -550,9 +550,38 @@ def evaluate(
     p_edges = _Edges(p)  # mp: p's edges and their sizes, made once when first used
 
     def resolution() -> Array:  # edges i_min .. i_max (p_i p_{i+1})
+        if (fused := ball_edge_checks()) is not None:
+            return fused[0]
         return shared("resolution", lambda: _edge_resolution(ar, p, p_edges))
 
+    def along_normals() -> Array:  # (18)'s slope check: n along the edges of p
+        if (fused := ball_edge_checks()) is not None:
+            return fused[2]
+        return _along(ar, nt()[:n], p[: n + 1], p_edges, reduce=not detail)
+
+    def ball_edge_checks() -> Any:
+        """Balls, (18)'s slope form and ñ's rotation both wanted: every check on the edges of
+        p in one compiled program (``arb_gauss.edge_checks``: the resolutions and their
+        consecutive minima per edge, ``_along`` of n and of the printed slope form, the
+        rotation's residuals; no array of the edges or sizes); None where that does not
+        apply."""
+
+        def make() -> Any:
+            if not (ar.certified and wanted(EQUATION_18_SLOPE.id)):
+                return None
+            if not wanted(EQUATION_19_ROTATION.id) or n < 1 or len(p) != n + 1:
+                return None
+            if images.contact_edges_before is None or len(nt()) < n or len(c()) < n + 1:
+                return None
+            before = _edge_resolution(ar, images.contact_edges_before)
+            return arb_gauss.edge_checks(p, nt()[:n], c()[1 : n + 1], before[0], detail)
+
+        return shared("edge checks", make)
+
     def pole_resolution() -> Array:
+        if (fused := ball_edge_checks()) is not None:
+            return fused[1]
+
         def make() -> Array:
             assert images.contact_edges_before is not None
             before = _edge_resolution(ar, images.contact_edges_before)
@@ -686,6 +715,8 @@ def evaluate(
         if ar.mode == "float64":  # the same numbers in one pass, the largest alone
             worst = residual_kernels.largest_along_printed_slope(min(n, len(p) - 1), p)
             return Erratum(*ERRATUM_18_SLOPE, printed_residual=worst)
+        if (fused := ball_edge_checks()) is not None:  # balls: with the edges' other checks
+            return Erratum(*ERRATUM_18_SLOPE, printed_residual=printed_residual(ar, fused[3]))
         compiled = p_edges.compiled if ar.certified else None
         if compiled is not None and n <= len(compiled[0]):  # balls: one compiled pass
             ex, ey, size = (column[:n] for column in compiled[:3])
@@ -706,6 +737,8 @@ def evaluate(
                 residual_kernels.contact_rotation_largest(c(), nt(), resolution(), n),
                 n_tolerance,
             )
+        if ar.certified and (fused := ball_edge_checks()) is not None:  # with the edges' checks
+            return check(EQUATION_19_ROTATION, fused[4], n_tolerance)
         if ar.certified:  # balls: the distances and their scaling in one compiled pass
             compiled = arb_gauss.rotation(
                 c()[1 : n + 1], nt()[:n], resolution()[:n], reduce=not detail
@@ -752,7 +785,7 @@ def evaluate(
             EQUATION_18_SLOPE,
             lambda: check(
                 EQUATION_18_SLOPE,
-                _along(ar, nt()[:n], p[: n + 1], p_edges, reduce=not detail),
+                along_normals(),
                 n_tolerance,
                 slope_erratum(),
             ),

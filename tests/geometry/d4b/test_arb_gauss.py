@@ -191,6 +191,41 @@ def test_the_image_20_program_is_the_numpy_balls(digits: int) -> None:
                 _same(bound(got[k]), bound(want[k]))
 
 
+@pytest.mark.parametrize("digits", [50, 500])
+def test_the_edge_checks_program_is_the_separate_passes(digits: int) -> None:
+    """Every check on p's edges in one program: the balls of ``edges``, ``minimum``, ``along``,
+    ``along_printed_slope`` and ``rotation`` (per row; the reduced ones' bounds)."""
+    ar = Ball(digits, 4, recursions_only=True)
+    with balls.working_precision(ar.bits):
+        data = d4b.polygons(ar, 1.0, 0.1, None, -40, 39)
+        p, images = data.p, data.gauss
+        n = len(p) - 1
+        normals, contact = images.tractrix_gauss[:n], images.contact[1 : n + 1]
+        assert images.contact_edges_before is not None
+        before = curvature._edge_resolution(ar, images.contact_edges_before)
+        ex, ey, size, resolution = arb_gauss.edges(p)
+        previous = np.concatenate([before, resolution[:-1]])
+        want = (
+            resolution,
+            arb_gauss.minimum(previous, resolution),
+            arb_gauss.along(normals, ex, ey, size),
+            arb_gauss.along_printed_slope(ex, ey, size),
+            arb_gauss.rotation(contact, normals, resolution),
+        )
+        got = arb_gauss.edge_checks(p, normals, contact, before[0], True)
+        assert got is not None
+        for k in (0, 1, 2, 4):
+            _same(got[k], want[k])
+        got = arb_gauss.edge_checks(p, normals, contact, before[0], False)
+        assert got is not None
+        _same(got[0], want[0])
+        _same(got[1], want[1])
+        for k in (2, 3, 4):
+            assert len(got[k]) == 2
+            for bound in (ar.largest_upper, ar.largest_lower):
+                _same(bound(got[k]), bound(want[k]))
+
+
 def test_a_zero_edge_and_other_entries() -> None:
     ar = Ball(30)
     with balls.working_precision(ar.bits):
