@@ -230,3 +230,17 @@ def ring_checks(
         return None
     (theorem, equation_17), _, defined = done
     return theorem, equation_17, int(np.count_nonzero(~defined))
+
+
+_MAXIMUM = Program(["a", "b"], [], ["out"])
+_MAXIMUM.op(MAX, "out", "a", "b")
+
+
+def maximum(a: Any, b: Any, reduce: bool) -> Any:
+    """arb's max entry by entry (``Ball.maximum``: the same balls) in one compiled pass; with
+    ``reduce`` only the two balls a check without per-index residuals reads
+    (``arb_program.run``'s ``reduce``); None where the pass does not apply."""
+    if a.dtype != object or b.dtype != object or a.ndim != 1 or b.ndim != 1:
+        return None
+    done = arb_program.run(_MAXIMUM, {"a": a, "b": b}, {}, reduce=("out",) if reduce else ())
+    return None if done is None else done[0][0]
