@@ -153,12 +153,18 @@ def _instrument() -> None:
 def _instrument_section_5() -> None:
     """Section 5's compiled straight-line programs (``arb_program.run``: the ring pass of
     ``arb_rings`` and the Gauss images' formulas) counted as ``compiled`` too, each operation a
-    libflint call (an ``abs`` two, its rounding included)."""
+    libflint call (an ``abs`` two, its rounding included; a ``SWAP`` none; an operation on the
+    first row only once; a reduced output two bounds, two comparisons and the kept balls'
+    copies counted as two calls)."""
     run = arb_program.run
 
     def counted_run(program: Any, inputs: Any, *arguments: Any, **keywords: Any) -> Any:
-        calls = sum(2 if step[0] == arb_program.ABS else 1 for step in program.steps)
-        COUNTS["compiled"] += calls * len(next(iter(inputs.values())))
+        rows = len(next(iter(inputs.values()))) if inputs else keywords.get("rows", 0)
+        for code, _, _, _, flags in program.steps:
+            calls = 0 if code == arb_program.SWAP else 2 if code == arb_program.ABS else 1
+            COUNTS["compiled"] += calls * (1 if flags & arb_program.FIRST else rows)
+        reduced = keywords.get("reduce", arguments[2] if len(arguments) > 2 else ())
+        COUNTS["compiled"] += 2 * len(reduced) * rows
         start = time.process_time()
         try:
             return run(program, inputs, *arguments, **keywords)

@@ -108,3 +108,28 @@ def test_the_decimals_are_mpmaths() -> None:
             column = _column(values)
             expected = [_mpmath_text(v, digits) for v in values]
             assert ar.to_strings(column) == expected
+
+
+def test_a_reduced_output_keeps_the_bounds_a_check_reads() -> None:
+    """``reduce``: per reduced output the balls of the largest |v| upper and lower bounds, so
+    the check's residual (largest upper) and the erratum's (largest lower) are the column's;
+    an unbounded ball gives every row's balls again (the checks count the unbounded ones)."""
+    ar = ball_arithmetic.Ball(30)
+    rng = random.Random(7)
+    with balls.working_precision(ar.bits):
+        values = [flint.arb(rng.uniform(-5, 5), rng.uniform(0, 2)) for _ in range(200)]
+        x = _column(values)
+        program = ap.Program(["x"], ["one"], ["square", "shifted"])
+        program.op(ap.MUL, "square", "x", "x")
+        program.op(ap.SUB, "shifted", "x", "one")
+        one = flint.arb(1)
+        full = ap.run(program, {"x": x}, {"one": one})
+        reduced = ap.run(program, {"x": x}, {"one": one}, reduce=["shifted"])
+        assert full is not None and reduced is not None
+        assert len(reduced[0][1]) == 2
+        for want, got in ((full[0][0], reduced[0][0]), (full[0][1], reduced[0][1])):
+            for bound in (ar.largest_upper, ar.largest_lower):
+                assert bound(got).mid().man_exp() == bound(want).mid().man_exp()
+        x[17] = flint.arb(0, float("inf"))
+        unbounded = ap.run(program, {"x": x}, {"one": one}, reduce=["shifted", "square"])
+        assert unbounded is not None and [len(out) for out in unbounded[0]] == [200, 200]

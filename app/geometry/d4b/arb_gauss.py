@@ -28,14 +28,21 @@ from app.geometry.arb_program import (
     NEG,
     NONNEGATIVE,
     REQUIRE_GT,
+    SET,
     SQRT,
     SUB,
+    SWAP,
     Program,
 )
 
 AVAILABLE = ap.AVAILABLE
 
 Columns = list[np.ndarray[Any, Any]]
+
+
+def _out(reduce: bool) -> tuple[str, ...]:
+    """The single output ``out`` reduced (``arb_program.run``'s ``reduce``), or none."""
+    return ("out",) if reduce else ()
 
 
 def _hypot(program: Program, out: str, x: str, y: str, low: bool = False) -> None:
@@ -67,19 +74,142 @@ _SCALED_DIFFERENCE.op(MUL, "out", "difference", "factor")
 
 
 def relative_difference(
-    computed: Any, expected: Any, tiny: Any, low: int, factor: Any = None
+    computed: Any, expected: Any, tiny: Any, low: int, factor: Any = None, reduce: bool = False
 ) -> Any:
     """``checks.relative_point_difference`` of two ``(n, 2)`` arrays of balls (``tiny`` and
     ``low`` as it makes them), times ``factor`` entry by entry if given (``_scaled`` on
-    balls): the same balls, no array in between."""
+    balls): the same balls, no array in between; ``reduce``: only the two balls a check without
+    per-index residuals reads (``arb_program.run``'s ``reduce``)."""
     inputs = {"cx": computed[:, 0], "cy": computed[:, 1]}
     inputs |= {"ex": expected[:, 0], "ey": expected[:, 1]}
     program = _DIFFERENCE
     if factor is not None:
         inputs["factor"] = factor
         program = _SCALED_DIFFERENCE
-    done = ap.run(program, inputs, {"tiny": tiny}, low)
+    done = ap.run(program, inputs, {"tiny": tiny}, low, _out(reduce))
     return None if done is None else done[0][0]
+
+
+def _pair(printed_x: bool) -> Program:
+    """A constructed image (bx, by) against its corrected closed form and its printed one, in
+    one program: (18) against (sech, tanh) and (sech, −tanh) (``printed_x`` false), (19)
+    against (−tanh, sech) and (tanh, sech) (true; the corrected one's residuals times
+    ``factor``, as ``closed`` scales them). ``relative_difference``'s operations for each, where
+    the two share the difference of the common coordinate and the scale: the hypot of (sech,
+    ±tanh), whose squares are the same balls (a negation of a ball at the working precision is
+    exact, and a product of two negated balls is the product of the balls)."""
+    inputs = ["bx", "by", "tanh", "sech"] + (["factor"] if printed_x else [])
+    program = Program(inputs, ["tiny"], ["closed", "printed"])
+    op = program.op
+    op(NEG, "minus tanh", "tanh")  # the numpy code's negated column (python-flint's −x)
+    if printed_x:  # (19): corrected (−tanh, sech), printed (tanh, sech)
+        op(SUB, "dx", "bx", "minus tanh")
+        op(SUB, "dy", "by", "sech")
+        _hypot(program, "scale", "minus tanh", "sech", low=True)
+    else:  # (18): corrected (sech, tanh), printed (sech, −tanh)
+        op(SUB, "dx", "bx", "sech")
+        op(SUB, "dy", "by", "tanh")
+        _hypot(program, "scale", "sech", "tanh", low=True)
+    _hypot(program, "length", "dx", "dy", low=True)
+    op(GT, "scale", "scale", "tiny")
+    op(CHOOSE, "floor", "scale", "tiny")
+    if printed_x:
+        op(DIV, "difference", "length", "floor", low=True)
+        op(MUL, "closed", "difference", "factor")
+        op(SUB, "dx", "bx", "tanh")
+    else:
+        op(DIV, "closed", "length", "floor", low=True)
+        op(SUB, "dy", "by", "minus tanh")
+    _hypot(program, "length", "dx", "dy", low=True)
+    op(DIV, "printed", "length", "floor", low=True)
+    return program
+
+
+_PAIR_18, _PAIR_19 = _pair(False), _pair(True)
+
+
+def closed_and_printed(
+    key: str, built: Any, tanh: Any, sech: Any, tiny: Any, low: int, factor: Any, detail: bool
+) -> Columns | None:
+    """(18) (``key`` "18") or (19) (n or ñ, ``built``) against its corrected and printed closed
+    forms from the columns tanh t, sech t: ``relative_difference``'s balls of both (the
+    corrected (19)'s times ``factor``), the printed one reduced (its erratum's largest alone),
+    the corrected one too unless ``detail``."""
+    inputs = {"bx": built[:, 0], "by": built[:, 1], "tanh": tanh, "sech": sech}
+    if key == "19":
+        inputs["factor"] = factor
+    reduce = ("printed",) if detail else ("closed", "printed")
+    program = _PAIR_19 if key == "19" else _PAIR_18
+    done = ap.run(program, inputs, {"tiny": tiny}, low, reduce)
+    return None if done is None else done[0]
+
+
+def _relative_to(program: Program, out: str, x: str, y: str, factor: str | None) -> None:
+    """``_relative_difference`` of (bx, by) against (x, y) into ``out``, times ``factor``."""
+    program.op(SUB, "dx", "bx", x)
+    program.op(SUB, "dy", "by", y)
+    _hypot(program, "scale", x, y, low=True)
+    _hypot(program, "length", "dx", "dy", low=True)
+    program.op(GT, "scale", "scale", "tiny")
+    program.op(CHOOSE, "floor", "scale", "tiny")
+    if factor is None:
+        program.op(DIV, out, "length", "floor", low=True)
+    else:
+        program.op(DIV, "difference", "length", "floor", low=True)
+        program.op(MUL, out, "difference", factor)
+
+
+_IMAGE_20 = Program(
+    ["bx", "by", "ax", "ay", "cx", "cy", "tanh t", "sech t", "tanh u", "sech u", "factor"],
+    ["h", "d", "amplitude", "two", "tiny"],
+    ["inversion", "closed", "printed"],
+)
+_IMAGE_20.op(ADD, "tx", "ax", "cx")  # the inversion: ``_INVERSION``
+_IMAGE_20.op(ADD, "ty", "ay", "cy")
+_IMAGE_20.op(MUL, "s", "tx", "tx")
+_IMAGE_20.op(MUL, "w", "ty", "ty")
+_IMAGE_20.op(ADD, "s", "s", "w")
+_IMAGE_20.op(MUL, "a", "tx", "two")
+_IMAGE_20.op(DIV, "ix", "a", "s")
+_IMAGE_20.op(MUL, "b", "ty", "two")
+_IMAGE_20.op(DIV, "iy", "b", "s")
+_relative_to(_IMAGE_20, "inversion", "ix", "iy", "factor")
+_IMAGE_20.op(NEG, "gx", "tanh u")  # (20) corrected: (−tanh u, h sech u/√(h² − d²))
+_IMAGE_20.op(MUL, "gy", "amplitude", "sech u")
+_relative_to(_IMAGE_20, "closed", "gx", "gy", "factor")
+_IMAGE_20.op(MUL, "a", "d", "tanh t")  # (20) printed: ``_PRINTED_20``
+_IMAGE_20.op(ADD, "denominator", "h", "a")
+_IMAGE_20.op(MUL, "b", "h", "tanh t")
+_IMAGE_20.op(SUB, "b", "b", "d")
+_IMAGE_20.op(DIV, "px", "b", "denominator")
+_IMAGE_20.op(MUL, "c", "h", "sech t")
+_IMAGE_20.op(DIV, "py", "c", "denominator")
+_relative_to(_IMAGE_20, "printed", "px", "py", None)
+
+
+def image_20(
+    gauss: Any,
+    before: Any,
+    after: Any,
+    table: tuple[Any, Any, Any, Any],
+    constants: dict[str, Any],
+    factor: Any,
+    detail: bool,
+) -> Columns | None:
+    """m (``gauss``, n rows) against the pole of ñ_{i−1} (``before``) and ñ_i (``after``) by
+    inversion, (20) corrected and (20) printed, from the table's columns tanh t, sech t, tanh u,
+    sech u (``table``; ``constants`` h, d, the amplitude h/√(h² − d²), 2 and ``tiny``; ``low``
+    among them): the balls of ``pole_by_inversion``, ``_relative`` and the printed forms'
+    (the inversion's and the corrected ones' times ``factor``), in one program, no
+    intermediate array; the printed ones reduced, the others too unless ``detail``."""
+    tanh_t, sech_t, tanh_u, sech_u = table
+    inputs = {"bx": gauss[:, 0], "by": gauss[:, 1], "ax": before[:, 0], "ay": before[:, 1]}
+    inputs |= {"cx": after[:, 0], "cy": after[:, 1], "tanh t": tanh_t, "sech t": sech_t}
+    inputs |= {"tanh u": tanh_u, "sech u": sech_u, "factor": factor}
+    fixed = {name: constants[name] for name in ("h", "d", "amplitude", "two", "tiny")}
+    reduce = ("printed",) if detail else ("inversion", "closed", "printed")
+    done = ap.run(_IMAGE_20, inputs, fixed, constants["low"], reduce)
+    return None if done is None else done[0]
 
 
 def _tanh_sech(program: Program, e: str, tanh: str, sech: str) -> None:
@@ -94,8 +224,14 @@ def _tanh_sech(program: Program, e: str, tanh: str, sech: str) -> None:
 
 
 _HYPERBOLIC = Program(
-    ["i"], ["shift", "L", "ratio", "one", "two"], ["tanh t", "sech t", "tanh u", "sech u"]
+    [],
+    ["before", "shift", "L", "ratio", "one", "two"],
+    ["tanh t", "sech t", "tanh u", "sech u"],
+    counters=("count",),
 )
+# the index i = lo + row as a ball: the count (exact integers, as ``Ball.indices``' balls)
+_HYPERBOLIC.op(ADD, "count", "count", "one")  # row + 1 (the scratch ball starts at 0)
+_HYPERBOLIC.op(ADD, "i", "count", "before")
 _HYPERBOLIC.op(ADD, "t", "i", "shift")
 _HYPERBOLIC.op(MUL, "t", "t", "L")
 _HYPERBOLIC.op(EXP, "e", "t")
@@ -104,11 +240,15 @@ _HYPERBOLIC.op(MUL, "e", "e", "ratio")
 _tanh_sech(_HYPERBOLIC, "e", "tanh u", "sech u")
 
 
-def hyperbolic(indices: Any, shift: Any, log_ratio: Any, ratio: Any) -> Columns | None:
-    """``_BallHyperbolic``'s tanh t, sech t, tanh u, sech u (t = (i + τ)L, e^u = e^t·ratio)."""
-    constants = {"shift": shift, "L": log_ratio, "ratio": ratio}
+def hyperbolic(lo: int, hi: int, shift: Any, log_ratio: Any, ratio: Any) -> Columns | None:
+    """``_BallHyperbolic``'s tanh t, sech t, tanh u, sech u (t = (i + τ)L, e^u = e^t·ratio) for
+    i = lo .. hi, the indices' balls counted in the program (exact integers: no ball made per
+    index)."""
+    if hi < lo or max(abs(lo), abs(hi)) >= 2**53:
+        return None
+    constants = {"before": flint.arb(lo - 1), "shift": shift, "L": log_ratio, "ratio": ratio}
     constants |= {"one": flint.arb(1), "two": flint.arb(2)}
-    done = ap.run(_HYPERBOLIC, {"i": indices}, constants)
+    done = ap.run(_HYPERBOLIC, {}, constants, rows=hi - lo + 1)
     return None if done is None else done[0]
 
 
@@ -192,8 +332,8 @@ def edges(points: Any) -> Columns | None:
     return None if done is None else done[0]
 
 
-def _along(program: Program, vx: str, vy: str) -> None:
-    """``d4b.curvature._along``: |v × e|/size, or 1 where v · e < 0."""
+def _along(program: Program, vx: str, vy: str, out: str = "out") -> None:
+    """``d4b.curvature._along``: |v × e|/size, or 1 where v · e < 0 (into ``out``)."""
     program.op(MUL, "a", vx, "ey")
     program.op(MUL, "b", vy, "ex")
     program.op(SUB, "a", "a", "b")
@@ -203,7 +343,7 @@ def _along(program: Program, vx: str, vy: str) -> None:
     program.op(MUL, "b", vy, "ey")
     program.op(ADD, "a", "a", "b")
     program.op(LT, "a", "a", "zero")
-    program.op(CHOOSE, "out", "one", "along")
+    program.op(CHOOSE, out, "one", "along")
 
 
 _ALONG = Program(["vx", "vy", "ex", "ey", "size"], ["zero", "one"], ["out"])
@@ -220,18 +360,22 @@ _SLOPE.op(SQRT, "vy", "c")
 _along(_SLOPE, "vx", "vy")
 
 
-def along(vectors: Any, edge_x: Any, edge_y: Any, size: Any) -> Any:
-    """``d4b.curvature._along`` of unit vectors on edges (coordinates and sizes given)."""
+def along(vectors: Any, edge_x: Any, edge_y: Any, size: Any, reduce: bool = False) -> Any:
+    """``d4b.curvature._along`` of unit vectors on edges (coordinates and sizes given);
+    ``reduce`` as in ``relative_difference``."""
     inputs = {"vx": vectors[:, 0], "vy": vectors[:, 1], "ex": edge_x, "ey": edge_y, "size": size}
-    done = ap.run(_ALONG, inputs, {"zero": flint.arb(0), "one": flint.arb(1)})
+    constants = {"zero": flint.arb(0), "one": flint.arb(1)}
+    done = ap.run(_ALONG, inputs, constants, reduce=_out(reduce))
     return None if done is None else done[0][0]
 
 
-def along_printed_slope(edge_x: Any, edge_y: Any, size: Any) -> Any:
+def along_printed_slope(edge_x: Any, edge_y: Any, size: Any, reduce: bool = False) -> Any:
     """``_along`` of the printed (18)'s first form from the edges' slopes k = e^y/e^x
-    (``closed_forms.normal_from_slope_printed``: (√(1/(1 + k²)), √(k²/(1 + k²))))."""
+    (``closed_forms.normal_from_slope_printed``: (√(1/(1 + k²)), √(k²/(1 + k²))));
+    ``reduce`` as in ``relative_difference``."""
     inputs = {"ex": edge_x, "ey": edge_y, "size": size}
-    done = ap.run(_SLOPE, inputs, {"zero": flint.arb(0), "one": flint.arb(1)})
+    constants = {"zero": flint.arb(0), "one": flint.arb(1)}
+    done = ap.run(_SLOPE, inputs, constants, reduce=_out(reduce))
     return None if done is None else done[0][0]
 
 
@@ -243,12 +387,12 @@ _hypot(_ROTATION, "distance", "dx", "dy")
 _ROTATION.op(MUL, "out", "distance", "scale")
 
 
-def rotation(contact: Any, normals: Any, scale: Any) -> Any:
+def rotation(contact: Any, normals: Any, scale: Any, reduce: bool = False) -> Any:
     """The rotation check's residuals: |ñ − (−n^y, n^x)| times the resolution
-    (``checks.point_distance``, then ``_scaled``)."""
+    (``checks.point_distance``, then ``_scaled``); ``reduce`` as in ``relative_difference``."""
     inputs = {"cx": contact[:, 0], "cy": contact[:, 1], "nx": normals[:, 0]}
     inputs |= {"ny": normals[:, 1], "scale": scale}
-    done = ap.run(_ROTATION, inputs, {})
+    done = ap.run(_ROTATION, inputs, {}, reduce=_out(reduce))
     return None if done is None else done[0][0]
 
 
@@ -289,3 +433,56 @@ def product(a: Any, b: Any) -> Any:
     """a·b entry by entry (``d4b.curvature._scaled`` on balls)."""
     done = ap.run(_SCALED, {"a": a, "b": b}, {})
     return None if done is None else done[0][0]
+
+
+_EDGE_CHECKS = Program(
+    ["x0", "y0", "x1", "y1", "vx", "vy", "cx", "cy"],
+    ["before", "zero", "one"],
+    ["resolution", "pole resolution", "along n", "slope", "rotation"],
+)
+_EDGE_CHECKS.op(SUB, "ex", "x1", "x0")  # ``_EDGES``, |x|, |y| of a vertex made once (``SWAP``)
+_EDGE_CHECKS.op(SUB, "ey", "y1", "y0")
+_EDGE_CHECKS.op(ABS, "|x0|", "x0", first=True)
+_EDGE_CHECKS.op(ABS, "|y0|", "y0", first=True)
+_EDGE_CHECKS.op(ADD, "size", "|x0|", "|y0|")
+_EDGE_CHECKS.op(ABS, "|x1|", "x1")
+_EDGE_CHECKS.op(ADD, "size", "size", "|x1|")
+_EDGE_CHECKS.op(ABS, "|y1|", "y1")
+_EDGE_CHECKS.op(ADD, "size", "size", "|y1|")
+_hypot(_EDGE_CHECKS, "length", "ex", "ey")
+_EDGE_CHECKS.op(DIV, "resolution", "length", "size")
+_EDGE_CHECKS.op(SET, "previous", "before", first=True)  # the smaller of consecutive resolutions
+_EDGE_CHECKS.op(MIN, "pole resolution", "previous", "resolution")
+_EDGE_CHECKS.op(SET, "previous", "resolution")
+_along(_EDGE_CHECKS, "vx", "vy", "along n")  # ``_ALONG``
+_EDGE_CHECKS.op(DIV, "k", "ey", "ex")  # ``_SLOPE``
+_EDGE_CHECKS.op(MUL, "kk", "k", "k")
+_EDGE_CHECKS.op(ADD, "denominator", "kk", "one")
+_EDGE_CHECKS.op(DIV, "c", "one", "denominator")
+_EDGE_CHECKS.op(SQRT, "sx", "c")
+_EDGE_CHECKS.op(DIV, "c", "kk", "denominator")
+_EDGE_CHECKS.op(SQRT, "sy", "c")
+_along(_EDGE_CHECKS, "sx", "sy", "slope")
+_EDGE_CHECKS.op(NEG, "r", "vy")  # ``_ROTATION``
+_EDGE_CHECKS.op(SUB, "dx", "cx", "r")
+_EDGE_CHECKS.op(SUB, "dy", "cy", "vx")
+_hypot(_EDGE_CHECKS, "distance", "dx", "dy")
+_EDGE_CHECKS.op(MUL, "rotation", "distance", "resolution")
+_EDGE_CHECKS.op(SWAP, "|x0|", "|x1|")
+_EDGE_CHECKS.op(SWAP, "|y0|", "|y1|")
+
+
+def edge_checks(points: Any, normals: Any, contact: Any, before: Any, detail: bool) -> Any:
+    """The checks on the edges p_i p_{i+1} of ``points`` in one program: their resolutions, the
+    smaller of consecutive ones (``before`` the resolution of the edge before the first),
+    ``_along`` of ``normals`` (n) and of the printed (18)'s slope form, and the rotation's
+    scaled distances of ``contact`` (ñ_{i+1}) from the turned n: the balls of ``edges``,
+    ``minimum``, ``along``, ``along_printed_slope`` and ``rotation`` (the resolutions per
+    row; the slope's reduced, the others' too unless ``detail``)."""
+    inputs = {"x0": points[:-1, 0], "y0": points[:-1, 1], "x1": points[1:, 0]}
+    inputs |= {"y1": points[1:, 1], "vx": normals[:, 0], "vy": normals[:, 1]}
+    inputs |= {"cx": contact[:, 0], "cy": contact[:, 1]}
+    constants = {"before": before, "zero": flint.arb(0), "one": flint.arb(1)}
+    reduce = ("slope",) if detail else ("along n", "slope", "rotation")
+    done = ap.run(_EDGE_CHECKS, inputs, constants, reduce=reduce)
+    return None if done is None else done[0]

@@ -121,6 +121,10 @@ class GaussImages:
     companion or a check computes the images and closed forms it uses and no others.
     """
 
+    ball_table: tuple[_BallHyperbolic, int] | None = None
+    """Balls, constructed images: the hyperbolic table the closed forms are read from and the
+    first index of n (i_min), for comparing n and ñ with their closed forms straight from it."""
+
     conditioning: float = 1.0
     """Step count of n's tolerance beyond the construction's: 1, since n is read from the stick
     directions (``build``) instead of accumulated from edge angles."""
@@ -142,6 +146,7 @@ class GaussImages:
         if unknown:
             raise TypeError(f"no polygon named {sorted(unknown)}")
         copy = GaussImages(self.constructed, self._parts, self.contact_edges_before)
+        copy.ball_table = self.ball_table
         copy.__dict__.update(polygons)
         return copy
 
@@ -196,28 +201,28 @@ def build(
     i_min − 1 .. i_max + 2, ``directions_hull`` the unit stick directions u on the same indices as
     ``tractrix_hull``. Without (method=closed-form) the closed forms are used.
     """
-    i = ar.indices(i_min, i_max + 1)
+    closed: dict[str, Callable[[GaussImages], Array]]
     if ar.certified:  # balls: from one exponential per index (``_BallHyperbolic``)
         table = _ball_hyperbolic(ar, h, d, shift, i_min - 1, i_max + 1)
-        closed_on_balls: dict[str, Callable[[GaussImages], Array]] = {
+        closed = {
             "closed_tractrix_gauss": lambda _: table.tractrix_gauss_image(i_min, i_max + 1),
             "closed_gauss": lambda _: table.circumscribed_gauss_image(i_min, i_max + 1),
             "closed_contact": lambda _: table.contact_points(i_min - 1, i_max + 1),
         }
-    closed: dict[str, Callable[[GaussImages], Array]] = {
-        "closed_tractrix_gauss": lambda _: kinematic_closed_forms.tractrix_gauss_image(
-            ar, h, d, i, shift
-        ),
-        "closed_gauss": lambda _: kinematic_closed_forms.circumscribed_gauss_image(
-            ar, h, d, i, shift
-        ),
-        "closed_contact": lambda _: kinematic_closed_forms.contact_points(
-            ar, h, d, ar.indices(i_min - 1, i_max + 1), shift
-        ),
-    }
-    if ar.certified:
-        closed = closed_on_balls
-    elif ar.mode == "float64" and _cosh_finite(ar, h, d, shift, i_min - 1, i_max + 1):
+    else:  # (on balls the indices' balls are not made: the table has its own)
+        i = ar.indices(i_min, i_max + 1)
+        closed = {
+            "closed_tractrix_gauss": lambda _: kinematic_closed_forms.tractrix_gauss_image(
+                ar, h, d, i, shift
+            ),
+            "closed_gauss": lambda _: kinematic_closed_forms.circumscribed_gauss_image(
+                ar, h, d, i, shift
+            ),
+            "closed_contact": lambda _: kinematic_closed_forms.contact_points(
+                ar, h, d, ar.indices(i_min - 1, i_max + 1), shift
+            ),
+        }
+    if ar.mode == "float64" and _cosh_finite(ar, h, d, shift, i_min - 1, i_max + 1):
         # n_i = (sech t, tanh t) and ñ_i = (−tanh t, sech t) at the same t = (i + τ)L: n read
         # off ñ on i_min .. i_max + 1 (the same numbers: the same t, and cosh finite on both, so
         # ``amplitude_sech`` takes its direct form on both), one tanh and cosh pass fewer
@@ -248,7 +253,7 @@ def build(
         raise ValueError("a construction needs its stick directions")
     directions = directions_hull
     window = slice(i_min - hull_start, i_max + 1 - hull_start + 1)
-    return GaussImages(
+    constructed = GaussImages(
         True,
         {
             **closed,
@@ -263,6 +268,9 @@ def build(
         },
         p_extended[:2],
     )
+    if ar.certified:
+        constructed.ball_table = (table, i_min)
+    return constructed
 
 
 def _cosh_finite(ar: Arithmetic, h: Scalar, d: Scalar, shift: Scalar, lo: int, hi: int) -> bool:
@@ -422,6 +430,9 @@ def evaluate(
                 tolerance,
                 erratum,
             )
+        pair = ball_pair(statement.id.removeprefix("equation-"))
+        if pair is not None:  # balls: with the printed form, from the table (``ball_pair``)
+            return check(statement, pair[0], tolerance, erratum)
         formula = closed_form()
         residuals: Array | Largest
         if ar.mode == "float64" and not detail:  # the largest alone, in one pass, no array
@@ -433,7 +444,8 @@ def evaluate(
                 built[:n], formula[:n], scale[:n]
             )
         else:
-            residuals = _relative(ar, built[:n], formula[:n], None if scale is None else scale[:n])
+            factor = None if scale is None else scale[:n]
+            residuals = _relative(ar, built[:n], formula[:n], factor, reduce=not detail)
         return check(statement, residuals, tolerance, erratum)
 
     def printed_erratum(entry: tuple[str, str, str], built: Array, key: str) -> Erratum:
@@ -443,11 +455,14 @@ def evaluate(
             return Erratum(*entry, printed_residual=found if math.isfinite(found) else None)
         if ar.mode == "float64" and isinstance(printed, PrintedForms):  # one pass, no arrays
             return Erratum(*entry, printed_residual=printed.largest(key, built[:n], images))
+        pair = ball_pair(key)
+        if pair is not None:  # balls: with the corrected form, from the table (``ball_pair``)
+            return Erratum(*entry, printed_residual=printed_residual(ar, pair[1]))
         formula = printed(key)
         if ar.mode == "float64":  # the largest alone, in one pass
             worst = residual_kernels.largest_relative_point_difference(built[:n], formula[:n])
             return Erratum(*entry, printed_residual=worst)
-        residuals = _relative(ar, built[:n], formula[:n])
+        residuals = _relative(ar, built[:n], formula[:n], reduce=True)  # the largest alone
         return Erratum(*entry, printed_residual=printed_residual(ar, residuals))
 
     memo: dict[str, Any] = {}
@@ -463,8 +478,13 @@ def evaluate(
         balls); in float64 their largest values alone (``ring_largest``) when no residual is
         shown per index."""
         exact = not detail and len(tractrix) == len(p) == n + 1  # n faces each
-        # balls: the residual balls per face in one compiled pass (``arb_rings``)
-        fused = ring_largest if exact and not ar.certified else ring_checks
+        if ar.certified:  # the residual balls per face in one compiled pass (``arb_rings``)
+            # without detail the theorem's reduced to what its check reads, no ball per face
+            if pseudosphere:
+                k = -1 / (h * h)
+                return shared("pseudo", lambda: ring_checks(ar, tractrix, nt(), k, exact))
+            return shared("catenoid", lambda: ring_checks(ar, p, m(), None, exact))
+        fused = ring_largest if exact else ring_checks
         if pseudosphere:
             return shared("pseudo", lambda: fused(ar, tractrix, nt(), -1 / (h * h)))
         return shared("catenoid", lambda: fused(ar, p, m(), None))
@@ -532,9 +552,38 @@ def evaluate(
     p_edges = _Edges(p)  # mp: p's edges and their sizes, made once when first used
 
     def resolution() -> Array:  # edges i_min .. i_max (p_i p_{i+1})
+        if (fused := ball_edge_checks()) is not None:
+            return fused[0]
         return shared("resolution", lambda: _edge_resolution(ar, p, p_edges))
 
+    def along_normals() -> Array:  # (18)'s slope check: n along the edges of p
+        if (fused := ball_edge_checks()) is not None:
+            return fused[2]
+        return _along(ar, nt()[:n], p[: n + 1], p_edges, reduce=not detail)
+
+    def ball_edge_checks() -> Any:
+        """Balls, (18)'s slope form and ñ's rotation both wanted: every check on the edges of
+        p in one compiled program (``arb_gauss.edge_checks``: the resolutions and their
+        consecutive minima per edge, ``_along`` of n and of the printed slope form, the
+        rotation's residuals; no array of the edges or sizes); None where that does not
+        apply."""
+
+        def make() -> Any:
+            if not (ar.certified and wanted(EQUATION_18_SLOPE.id)):
+                return None
+            if not wanted(EQUATION_19_ROTATION.id) or n < 1 or len(p) != n + 1:
+                return None
+            if images.contact_edges_before is None or len(nt()) < n or len(c()) < n + 1:
+                return None
+            before = _edge_resolution(ar, images.contact_edges_before)
+            return arb_gauss.edge_checks(p, nt()[:n], c()[1 : n + 1], before[0], detail)
+
+        return shared("edge checks", make)
+
     def pole_resolution() -> Array:
+        if (fused := ball_edge_checks()) is not None:
+            return fused[1]
+
         def make() -> Array:
             assert images.contact_edges_before is not None
             before = _edge_resolution(ar, images.contact_edges_before)
@@ -548,6 +597,90 @@ def evaluate(
             )
 
         return shared("pole resolution", make)
+
+    def ball_pair(key: str) -> Any:
+        """Balls, constructed images: (18) (n) or (19) (ñ) against its corrected and printed
+        closed forms in one compiled program straight from the hyperbolic table (the closed
+        forms' arrays not made; ``arb_gauss.closed_and_printed``: the balls of ``closed`` and
+        ``printed_erratum``, the printed residuals reduced, the corrected ones too without
+        ``detail``); None where that does not apply (another key, the closed forms given or
+        made already, another table)."""
+
+        if key == "20":
+            both = ball_image_20()
+            return None if both is None else (both[1], both[2])
+
+        def make() -> Any:
+            found = images.ball_table
+            if key not in ("18", "19") or found is None or n < 1:
+                return None
+            if ball_table() is None:
+                return None
+            table, first = found
+            rows = table._rows(first, first + n - 1)
+            low = min(flint.ctx.prec, RESIDUAL_BITS)
+            with ar.residual_precision():
+                tiny = ar.scalar(np.finfo(np.float64).tiny)
+            built, factor = (nt()[:n], None) if key == "18" else (c()[1 : n + 1], resolution())
+            return arb_gauss.closed_and_printed(
+                key,
+                built,
+                table.tanh_t[rows],
+                table.sech_t[rows],
+                tiny,
+                low,
+                None if factor is None else factor[:n],
+                detail,
+            )
+
+        return shared(f"pair {key}", make)
+
+    def ball_table() -> Any:
+        """The hyperbolic table ``ball_pair`` reads and the first row of n in it, or None."""
+        found = images.ball_table
+        if found is None or n < 1 or not isinstance(printed, PrintedForms):
+            return None
+        if CLOSED_IMAGES & vars(images).keys():  # closed forms given (the tests perturb them)
+            return None
+        table, first = found
+        same = _ball_hyperbolic(
+            ar, printed.h, printed.d, printed.shift, printed.i_min, printed.i_max
+        )
+        return (table, first) if printed.i_min == first and same is table else None
+
+    def ball_image_20() -> Any:
+        """Balls, constructed images, (20) and its inversion both wanted: m against the poles by
+        inversion, (20) corrected and (20) printed in one compiled program from the hyperbolic
+        table (``arb_gauss.image_20``: the balls of ``inversion``, ``closed`` and
+        ``printed_erratum``, reduced as ``ball_pair``'s); None where that does not apply."""
+
+        def make() -> Any:
+            if not (wanted(EQUATION_20.id) and wanted(EQUATION_20_INVERSION.id)):
+                return None
+            found = ball_table()
+            if found is None:
+                return None
+            table, first = found
+            assert isinstance(printed, PrintedForms)  # (``ball_table``)
+            rows = table._rows(first, first + n - 1)
+            columns = (table.tanh_t[rows], table.sech_t[rows], table.tanh_u[rows])
+            with ar.residual_precision():
+                tiny = ar.scalar(np.finfo(np.float64).tiny)
+            constants = {"h": printed.h, "d": printed.d, "amplitude": table.amplitude}
+            constants |= {"two": flint.arb(2), "tiny": tiny}
+            constants["low"] = min(flint.ctx.prec, RESIDUAL_BITS)
+            contact = c()
+            return arb_gauss.image_20(
+                m()[:n],
+                contact[:n],
+                contact[1 : n + 1],
+                (*columns, table.sech_u[rows]),
+                constants,
+                pole_resolution()[:n],
+                detail,
+            )
+
+        return shared("image 20", make)
 
     def image_comparisons() -> list[float] | None:
         """Float64 without ``detail``, constructed images: the largest residuals of (18)–(20)
@@ -584,10 +717,12 @@ def evaluate(
         if ar.mode == "float64":  # the same numbers in one pass, the largest alone
             worst = residual_kernels.largest_along_printed_slope(min(n, len(p) - 1), p)
             return Erratum(*ERRATUM_18_SLOPE, printed_residual=worst)
+        if (fused := ball_edge_checks()) is not None:  # balls: with the edges' other checks
+            return Erratum(*ERRATUM_18_SLOPE, printed_residual=printed_residual(ar, fused[3]))
         compiled = p_edges.compiled if ar.certified else None
         if compiled is not None and n <= len(compiled[0]):  # balls: one compiled pass
             ex, ey, size = (column[:n] for column in compiled[:3])
-            along = arb_gauss.along_printed_slope(ex, ey, size)
+            along = arb_gauss.along_printed_slope(ex, ey, size, reduce=True)
             if along is not None:
                 return Erratum(*ERRATUM_18_SLOPE, printed_residual=printed_residual(ar, along))
         edges = p_edges.edges
@@ -602,12 +737,7 @@ def evaluate(
             largest, worst = residual_kernels.along_largest(nt()[:n], p[: n + 1])
             erratum = Erratum(*ERRATUM_18_SLOPE, printed_residual=worst)
             return check(EQUATION_18_SLOPE, largest, n_tolerance, erratum)
-        return check(
-            EQUATION_18_SLOPE,
-            _along(ar, nt()[:n], p[: n + 1], p_edges),
-            n_tolerance,
-            slope_erratum(),
-        )
+        return check(EQUATION_18_SLOPE, along_normals(), n_tolerance, slope_erratum())
 
     def one_pass() -> tuple[float, float] | None:
         """Float64 without ``detail``: (19) as a rotation and (20) by inversion, the largest
@@ -646,8 +776,12 @@ def evaluate(
                 residual_kernels.contact_rotation_largest(c(), nt(), resolution(), n),
                 n_tolerance,
             )
+        if ar.certified and (fused := ball_edge_checks()) is not None:  # with the edges' checks
+            return check(EQUATION_19_ROTATION, fused[4], n_tolerance)
         if ar.certified:  # balls: the distances and their scaling in one compiled pass
-            compiled = arb_gauss.rotation(c()[1 : n + 1], nt()[:n], resolution()[:n])
+            compiled = arb_gauss.rotation(
+                c()[1 : n + 1], nt()[:n], resolution()[:n], reduce=not detail
+            )
             if compiled is not None:
                 return check(EQUATION_19_ROTATION, compiled, n_tolerance)
         rotated = stack_points(-nt()[:, 1], nt()[:, 0])
@@ -671,10 +805,12 @@ def evaluate(
                 residual_kernels.pole_inversion_largest(m(), c(), pole_resolution(), n),
                 local_tolerance,
             )
+        if ar.certified and (fused := ball_image_20()) is not None:  # with (20), one program
+            return check(EQUATION_20_INVERSION, fused[0], local_tolerance)
         inverted = _pole_by_inversion(ar, c()[:-1], c()[1:])  # i_min .. +1
         return check(
             EQUATION_20_INVERSION,
-            _relative(ar, m()[:n], inverted[:n], pole_resolution()[:n]),
+            _relative(ar, m()[:n], inverted[:n], pole_resolution()[:n], reduce=not detail),
             local_tolerance,
         )
 
@@ -770,13 +906,20 @@ def _edge_resolution(ar: Arithmetic, points: Array, shared: _Edges | None = None
     return ar.hypot(edges[:, 0], edges[:, 1]) / made.size
 
 
-def _along(ar: Arithmetic, vectors: Array, points: Array, shared: _Edges | None = None) -> Array:
+def _along(
+    ar: Arithmetic,
+    vectors: Array,
+    points: Array,
+    shared: _Edges | None = None,
+    reduce: bool = False,
+) -> Array:
     """How far unit vectors v_i are from pointing along the edges p_i p_{i+1}.
 
     |v_i × e_i| / (|p_i| + |p_{i+1}|), or 1 where v_i points against the edge: 0 when v_i is
     the unit vector of the edge's direction (the line of slope k_{i+1} through the centre).
     ``shared``: the edges and sizes of a polygon whose first len(points) vertices are
-    ``points`` (mp).
+    ``points`` (mp). ``reduce`` (balls): only what a check without per-index residuals reads
+    (``arb_gauss.along``).
     """
     if ar.mode == "float64":  # the same operations in one compiled pass
         return residual_kernels.along(vectors, points)
@@ -784,7 +927,7 @@ def _along(ar: Arithmetic, vectors: Array, points: Array, shared: _Edges | None 
     made = shared if shared is not None else _Edges(points)
     if ar.certified and made.compiled is not None:  # balls: one compiled pass
         ex, ey, size = (column[:count] for column in made.compiled[:3])
-        compiled = arb_gauss.along(vectors, ex, ey, size)
+        compiled = arb_gauss.along(vectors, ex, ey, size, reduce)
         if compiled is not None:
             return compiled
     edges = made.edges[:count]
@@ -794,16 +937,18 @@ def _along(ar: Arithmetic, vectors: Array, points: Array, shared: _Edges | None 
     return np.where(backwards, ar.scalar(1), residual)
 
 
-def _relative(ar: Arithmetic, computed: Array, expected: Array, scale: Any = None) -> Array:
+def _relative(
+    ar: Arithmetic, computed: Array, expected: Array, scale: Any = None, reduce: bool = False
+) -> Array:
     """``relative_point_difference`` of two ``(n, 2)`` arrays, times ``scale`` if given
     (``_scaled``); on balls in one compiled program (``arb_gauss.relative_difference``: the
     same balls, ``tiny`` and the low precision made as ``checks.relative_point_difference``
-    makes them)."""
+    makes them; ``reduce``: only the two balls a check without per-index residuals reads)."""
     if ar.certified and len(computed):
         low = min(flint.ctx.prec, RESIDUAL_BITS)
         with ar.residual_precision():
             tiny = ar.scalar(np.finfo(np.float64).tiny)
-        found = arb_gauss.relative_difference(computed, expected, tiny, low, scale)
+        found = arb_gauss.relative_difference(computed, expected, tiny, low, scale, reduce)
         if found is not None:
             return found
     residuals = relative_point_difference(ar, computed, expected)
@@ -873,7 +1018,7 @@ class _BallHyperbolic:
         self.amplitude = h / ar.sqrt((h - d) * (h + d))  # h/√(h² − d²): m_i^y = h / p_i^y
         log_ratio = kinematic_closed_forms.log_ratio(ar, h, d)
         ratio = ar.sqrt((h - d) / (h + d))
-        compiled = arb_gauss.hyperbolic(ar.indices(lo, hi), shift, log_ratio, ratio)
+        compiled = arb_gauss.hyperbolic(lo, hi, shift, log_ratio, ratio)
         if compiled is not None:  # the same balls in one compiled pass
             self.tanh_t, self.sech_t, self.tanh_u, self.sech_u = compiled
             return

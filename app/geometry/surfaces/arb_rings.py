@@ -5,11 +5,12 @@ meridian coordinates (``_ring_curvatures_in_the_meridian_plane``), ``from_areas`
 parallel residual, and ``constant_curvature_residuals`` / ``minimal_residuals`` and
 ``revolution_formulas.face_residuals`` turn the areas into residuals: about a hundred operations
 a face, each a Python call on numpy's object loop that allocates a ball for its result. Here the
-same formulas are one straight-line program (``arb_program``): the same libflint functions in
-the same order at the same precision (the working precision), the intermediates in scratch
-balls reused face after face, so that the residual balls are the very ones the numpy code makes
-(the tests compare them bit for bit). A quantity the numpy code computes twice (p_{i+1}^y²,
-q Δy, p_i^y n_i^y) is computed once: the same call on the same balls gives the same ball.
+same formulas are one straight-line program (``arb_program``): the same libflint functions at
+the same precision (the working precision), the intermediates in scratch balls reused face after
+face, so that the residual balls are the very ones the numpy code makes (the tests compare them
+bit for bit). A quantity the numpy code computes twice (p_{i+1}^y², q Δy, p_i^y n_i^y, and a
+vertex's |x|, |y|, |u|, |v|, y², v², y v, which both faces of the vertex read) is computed once:
+the same call on the same balls gives the same ball.
 
 Where the numpy code would leave the planar form (a face whose area is not certainly positive)
 the program stops and the caller keeps the numpy code, which names the face; ``AVAILABLE``
@@ -37,6 +38,7 @@ from app.geometry.arb_program import (
     REQUIRE_GT,
     SQRT,
     SUB,
+    SWAP,
     Program,
 )
 
@@ -82,8 +84,11 @@ def _ring_program(constant_k: bool) -> Program:
     op(ADD, "t1", "t1", "t2")
     op(MUL, "t2", "four", "length")
     op(DIV, "mixed", "t1", "t2")
-    for name in ("x0", "y0", "x1", "y1", "u0", "v0", "u1", "v1"):
-        op(ABS, f"|{name}|", name)
+    # a vertex's |x|, |y|, |u|, |v|, y², v², y v: made for vertex 1 of each face and kept for
+    # the next face's vertex 0 (``SWAP`` at the end), vertex 0's made on the first face only
+    for name in ("x", "y", "u", "v"):
+        op(ABS, f"|{name}0|", f"{name}0", first=True)
+        op(ABS, f"|{name}1|", f"{name}1")
     for f1, f2, (a, b, c, d) in (
         ("f1", "f2", ("|x0|", "|y0|", "|x1|", "|y1|")),
         ("n1", "n2", ("|u0|", "|v0|", "|u1|", "|v1|")),
@@ -134,16 +139,16 @@ def _ring_program(constant_k: bool) -> Program:
     op(MAX, "theorem", "residual", "parallel")
     # revolution_formulas.face_residuals (balls: the radii unscaled)
     op(MUL, "p1²", "y1", "y1")
-    op(MUL, "p0²", "y0", "y0")
+    op(MUL, "p0²", "y0", "y0", first=True)
     op(SUB, "dp", "p1²", "p0²")
     op(ADD, "sp", "p1²", "p0²")
     op(MUL, "n1²", "v1", "v1")
-    op(MUL, "n0²", "v0", "v0")
+    op(MUL, "n0²", "v0", "v0", first=True)
     op(MUL, "t1", "mag n", "sp")  # k_scale
     op(ADD, "t2", "n1²", "n0²")
     op(MUL, "t2", "mag f", "t2")
     op(ADD, "k scale", "t1", "t2")
-    op(MUL, "p0 n0", "y0", "v0")
+    op(MUL, "p0 n0", "y0", "v0", first=True)
     op(MUL, "p1 n1", "y1", "v1")
     op(MUL, "t1", "mag fn", "sp")  # h_scale
     op(ABS, "t2", "p0 n0")
@@ -171,6 +176,10 @@ def _ring_program(constant_k: bool) -> Program:
     op(NE, "dp", "dp", "zero")  # (17) defined: the larger residual, else 0
     op(KEEP_FLAG, "dp", "dp")
     op(CHOOSE, "equation 17", "both", "zero")
+    for kept, made in (("p0²", "p1²"), ("n0²", "n1²"), ("p0 n0", "p1 n1")):
+        op(SWAP, kept, made)
+    for name in ("x", "y", "u", "v"):
+        op(SWAP, f"|{name}0|", f"|{name}1|")
     return program
 
 
@@ -183,12 +192,15 @@ def ring_checks(
     cos: Any,
     sin: Any,
     curvature: Any,
+    reduce: bool = False,
 ) -> tuple[np.ndarray[Any, Any], np.ndarray[Any, Any], int] | None:
     """On balls: Theorem 7's residuals (``curvature`` the ball K) or 8's (None: H = 0) and
     (17)'s larger residual per face (0 where (17) is 0/0, that many), the balls the numpy code
     makes (``ring_curvature.ring_curvatures`` and the residual functions; the caller runs inside
     the working precision); None where that code must run (not available, fewer than two
-    vertices, an entry not a ball, a face without certain area)."""
+    vertices, an entry not a ball, a face without certain area). ``reduce``: the theorem's
+    residuals as the two balls a check without per-index residuals reads
+    (``arb_program.run``'s ``reduce``)."""
     faces = len(meridian) - 1
     if not AVAILABLE or faces < 1 or len(gauss) != faces + 1:
         return None
@@ -212,8 +224,23 @@ def ring_checks(
             inputs[name + end] = points[rows, column]
         for name, points, column in (("u", gauss, 0), ("v", gauss, 1)):
             inputs[name + end] = points[rows, column]
-    done = arb_program.run(_THEOREM_7 if curvature is not None else _THEOREM_8, inputs, constants)
+    program = _THEOREM_7 if curvature is not None else _THEOREM_8
+    done = arb_program.run(program, inputs, constants, reduce=("theorem",) if reduce else ())
     if done is None or done[1] >= 0:
         return None
     (theorem, equation_17), _, defined = done
     return theorem, equation_17, int(np.count_nonzero(~defined))
+
+
+_MAXIMUM = Program(["a", "b"], [], ["out"])
+_MAXIMUM.op(MAX, "out", "a", "b")
+
+
+def maximum(a: Any, b: Any, reduce: bool) -> Any:
+    """arb's max entry by entry (``Ball.maximum``: the same balls) in one compiled pass; with
+    ``reduce`` only the two balls a check without per-index residuals reads
+    (``arb_program.run``'s ``reduce``); None where the pass does not apply."""
+    if a.dtype != object or b.dtype != object or a.ndim != 1 or b.ndim != 1:
+        return None
+    done = arb_program.run(_MAXIMUM, {"a": a, "b": b}, {}, reduce=("out",) if reduce else ())
+    return None if done is None else done[0][0]

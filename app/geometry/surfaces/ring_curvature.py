@@ -140,15 +140,17 @@ def equation_17_check(
 
 
 def ring_checks(
-    ar: Arithmetic, meridian: Array, gauss: Array, curvature: Any
+    ar: Arithmetic, meridian: Array, gauss: Array, curvature: Any, reduce: bool = False
 ) -> tuple[Array, Array, int] | None:
     """Theorem 7's (``curvature`` K) or 8's (None: H = 0) residuals and (17)'s on one ring, in
     one compiled pass: in float64 ``ring_kernel.ring_checks``, on balls ``arb_rings.ring_checks``
-    (the balls the numpy code makes); None on mpmath numbers, or where the numpy path must name
-    a face without area."""
+    (the balls the numpy code makes; ``reduce``: the theorem's as the two balls a check without
+    per-index residuals reads); None on mpmath numbers, or where the numpy path must name a
+    face without area."""
     if ar.certified:
         theta = ar.pi / RING_M
-        return arb_rings.ring_checks(meridian, gauss, ar.cos(theta), ar.sin(theta), curvature)
+        cos, sin = ar.cos(theta), ar.sin(theta)
+        return arb_rings.ring_checks(meridian, gauss, cos, sin, curvature, reduce)
     if ar.mode != "float64":
         return None
     theta = ar.pi / RING_M
@@ -211,9 +213,13 @@ def equation_17_result(
         )
     else:
         worst = per_pair[0]
-        for both in per_pair[1:]:
-            worst = ar.maximum(worst, both)  # on balls a ball holding each maximum
-    if skipped == len(worst) * len(per_pair):
+        for k, both in enumerate(per_pair[1:], 2):
+            # on balls a ball holding each maximum: in one compiled pass, the last one without
+            # ``detail`` reduced to what the check reads (``arb_rings.maximum``)
+            last = not detail and k == len(per_pair)
+            compiled = arb_rings.maximum(worst, both, last) if ar.certified else None
+            worst = compiled if compiled is not None else ar.maximum(worst, both)
+    if skipped == len(per_pair[0]) * len(per_pair):
         return not_applicable(EQUATION_17, tolerance, "(17) is 0/0 on every face of the range")
     note = (
         f"(17) is 0/0 on {skipped} face(s) with p_(i+1)^y = p_i^y (skipped; the mixed-area "

@@ -42,7 +42,8 @@ def test_the_gauss_image_passes_are_the_numpy_balls(digits: int) -> None:
         # the hyperbolic table and the printed (20)
         table = curvature._BallHyperbolic(ar, h, d, shift, -41, 40)
         got = arb_gauss.hyperbolic(
-            ar.indices(-41, 40),
+            -41,
+            40,
             shift,
             closed_forms.log_ratio(ar, h, d),
             ar.sqrt((h - d) / (h + d)),
@@ -102,6 +103,127 @@ def test_the_gauss_image_passes_are_the_numpy_balls(digits: int) -> None:
         want = checks.relative_point_difference(ar, poles, wide)
         _same(curvature._relative(ar, poles, wide), want)
         _same(arb_gauss.product(resolution, size), resolution * size)
+
+
+@pytest.mark.parametrize("digits", [50, 500])
+def test_the_closed_and_printed_pairs_are_the_numpy_balls(digits: int) -> None:
+    """(18) and (19) against their corrected and printed closed forms in one program: the
+    balls of ``_relative`` on the closed forms' arrays (per row, as with ``detail``), and the
+    reduced pairs' bounds those of the columns."""
+    ar = Ball(digits, 4, recursions_only=True)
+    with balls.working_precision(ar.bits):
+        h, d = ar.scalar(1.0), ar.scalar(0.1)
+        data = d4b.polygons(ar, 1.0, 0.1, None, -40, 39)
+        images = data.gauss
+        shift = tilt_shift(ar, h, d, None)
+        table = curvature._ball_hyperbolic(ar, h, d, shift, -41, 40)
+        n = 80
+        rows = table._rows(-40, -40 + n - 1)
+        tanh, sech = table.tanh_t[rows], table.sech_t[rows]
+        low = min(flint.ctx.prec, curvature.RESIDUAL_BITS)
+        with ar.residual_precision():
+            tiny = ar.scalar(np.finfo(np.float64).tiny)
+        resolution = curvature._edge_resolution(ar, data.p)[:n]
+        cases = (
+            ("18", images.tractrix_gauss[:n], None),
+            ("19", images.contact[1 : n + 1], resolution),
+        )
+        for key, built, factor in cases:
+            corrected = (
+                table.tractrix_gauss_image(-40, 40)
+                if key == "18"
+                else table.contact_points(-41, 40)[1:]
+            )[:n]
+            printed = table.printed(key, -40, 39)[:n]
+            want_closed = curvature._relative(ar, built, corrected, factor)
+            want_printed = curvature._relative(ar, built, printed)
+            got = arb_gauss.closed_and_printed(key, built, tanh, sech, tiny, low, factor, True)
+            assert got is not None
+            _same(got[0], want_closed)
+            assert len(got[1]) == 2  # reduced: the balls of the largest upper and lower bounds
+            for bound in (ar.largest_upper, ar.largest_lower):
+                _same(bound(got[1]), bound(want_printed))
+            got = arb_gauss.closed_and_printed(key, built, tanh, sech, tiny, low, factor, False)
+            assert got is not None and len(got[0]) == 2
+            for bound in (ar.largest_upper, ar.largest_lower):
+                _same(bound(got[0]), bound(want_closed))
+
+
+@pytest.mark.parametrize("digits", [50, 500])
+def test_the_image_20_program_is_the_numpy_balls(digits: int) -> None:
+    """m against its poles by inversion, (20) corrected and (20) printed in one program: the
+    balls of ``_relative`` on the arrays the separate passes make (per row, as with
+    ``detail``; the printed ones reduced to the bounds of the column)."""
+    ar = Ball(digits, 4, recursions_only=True)
+    with balls.working_precision(ar.bits):
+        h, d = ar.scalar(1.0), ar.scalar(0.1)
+        data = d4b.polygons(ar, 1.0, 0.1, None, -40, 39)
+        images = data.gauss
+        shift = tilt_shift(ar, h, d, None)
+        table = curvature._ball_hyperbolic(ar, h, d, shift, -41, 40)
+        n = 80
+        rows = table._rows(-40, -40 + n - 1)
+        m, contact = images.gauss[:n], images.contact
+        scale = curvature._edge_resolution(ar, data.p)[:n]
+        with ar.residual_precision():
+            tiny = ar.scalar(np.finfo(np.float64).tiny)
+        constants = {"h": h, "d": d, "amplitude": table.amplitude, "two": flint.arb(2)}
+        constants |= {"tiny": tiny, "low": min(flint.ctx.prec, curvature.RESIDUAL_BITS)}
+        columns = (table.tanh_t[rows], table.sech_t[rows], table.tanh_u[rows], table.sech_u[rows])
+        before, after = contact[:n], contact[1 : n + 1]
+        inverted = curvature._pole_by_inversion(ar, before, after)
+        want = (
+            curvature._relative(ar, m, inverted, scale),
+            curvature._relative(ar, m, table.circumscribed_gauss_image(-40, 40)[:n], scale),
+            curvature._relative(ar, m, table.printed("20", -40, 39)[:n]),
+        )
+        got = arb_gauss.image_20(m, before, after, columns, constants, scale, True)
+        assert got is not None
+        _same(got[0], want[0])
+        _same(got[1], want[1])
+        for bound in (ar.largest_upper, ar.largest_lower):
+            _same(bound(got[2]), bound(want[2]))
+        got = arb_gauss.image_20(m, before, after, columns, constants, scale, False)
+        assert got is not None
+        for k in range(3):
+            assert len(got[k]) == 2
+            for bound in (ar.largest_upper, ar.largest_lower):
+                _same(bound(got[k]), bound(want[k]))
+
+
+@pytest.mark.parametrize("digits", [50, 500])
+def test_the_edge_checks_program_is_the_separate_passes(digits: int) -> None:
+    """Every check on p's edges in one program: the balls of ``edges``, ``minimum``, ``along``,
+    ``along_printed_slope`` and ``rotation`` (per row; the reduced ones' bounds)."""
+    ar = Ball(digits, 4, recursions_only=True)
+    with balls.working_precision(ar.bits):
+        data = d4b.polygons(ar, 1.0, 0.1, None, -40, 39)
+        p, images = data.p, data.gauss
+        n = len(p) - 1
+        normals, contact = images.tractrix_gauss[:n], images.contact[1 : n + 1]
+        assert images.contact_edges_before is not None
+        before = curvature._edge_resolution(ar, images.contact_edges_before)
+        ex, ey, size, resolution = arb_gauss.edges(p)
+        previous = np.concatenate([before, resolution[:-1]])
+        want = (
+            resolution,
+            arb_gauss.minimum(previous, resolution),
+            arb_gauss.along(normals, ex, ey, size),
+            arb_gauss.along_printed_slope(ex, ey, size),
+            arb_gauss.rotation(contact, normals, resolution),
+        )
+        got = arb_gauss.edge_checks(p, normals, contact, before[0], True)
+        assert got is not None
+        for k in (0, 1, 2, 4):
+            _same(got[k], want[k])
+        got = arb_gauss.edge_checks(p, normals, contact, before[0], False)
+        assert got is not None
+        _same(got[0], want[0])
+        _same(got[1], want[1])
+        for k in (2, 3, 4):
+            assert len(got[k]) == 2
+            for bound in (ar.largest_upper, ar.largest_lower):
+                _same(bound(got[k]), bound(want[k]))
 
 
 def test_a_zero_edge_and_other_entries() -> None:

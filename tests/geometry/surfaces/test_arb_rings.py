@@ -98,3 +98,23 @@ def test_wide_balls_and_the_fallback() -> None:
         assert ring_curvature.ring_checks(ar, meridian, gauss, None) is None
         gauss[5, 0] = 3  # not a ball: the numpy code runs
         assert arb_rings.ring_checks(meridian, gauss, flint.arb(1), flint.arb(0), None) is None
+
+
+def test_the_compiled_maximum_is_the_balls_maximum() -> None:
+    """(17)'s larger residual of the two rings per face: ``Ball.maximum``'s balls, and reduced
+    the bounds of that column; a column with an entry not a ball is left to numpy."""
+    ar = Ball(30)
+    rng = random.Random(3)
+    with balls.working_precision(ar.bits):
+        a = _wide([rng.uniform(0, 2) for _ in range(300)], rng)
+        b = _wide([rng.uniform(0, 2) for _ in range(300)], rng)
+        want = ar.maximum(a, b)
+        got = arb_rings.maximum(a, b, False)
+        assert got is not None and all(_same(x, y) for x, y in zip(got, want, strict=True))
+        reduced = arb_rings.maximum(a, b, True)
+        assert reduced is not None and len(reduced) == 2
+        for bound in (ar.largest_upper, ar.largest_lower):
+            assert _same(bound(reduced), bound(want))
+        mixed = a.copy()
+        mixed[5] = 0.5
+        assert arb_rings.maximum(mixed, b, True) is None
