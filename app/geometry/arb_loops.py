@@ -40,6 +40,7 @@ import numpy as np
 from numba.core import caching, externals
 
 from app.geometry import compiled
+from app.geometry.precision import CLOCK_STEPS
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -68,6 +69,7 @@ _SIGNATURES: dict[str, tuple[Any, list[Any]]] = {
     "arb_sub": (None, [_P, _P, _P, _W]),
     "arb_add": (None, [_P, _P, _P, _W]),
     "arb_mul": (None, [_P, _P, _P, _W]),
+    "arb_set": (None, [_P, _P]),
     "arb_sqrt": (None, [_P, _P, _W]),
     "arb_nonnegative_part": (None, [_P, _P]),
     "arb_gt": (ctypes.c_int, [_P, _P]),
@@ -392,6 +394,76 @@ if AVAILABLE:
             _hypot(length, dx, dy, low, square)
             _div(out[k], length, scale if _gt(scale, tiny) else tiny, low)
 
+    _set = _EXTERN["arb_set"]
+
+    @loop
+    def _rotation(centre: int, d: int, one: int, two: int, prec: int, s: int) -> None:
+        """cos α and sin α of ``construction.rotation_about(centre, d)`` into the scratch balls
+        ``s + 5·ARB_BYTES`` and ``s + 7·ARB_BYTES``: r = d/p_y, q = 1 + r·r, cos α = (1 − r·r)/q,
+        sin α = 2r/q, the calls python-flint's operators make (``r * r`` multiplies r by a
+        copy of itself: the operator's second operand is never the first one's struct)."""
+        r, copy, square, q = s, s + ARB_BYTES, s + 2 * ARB_BYTES, s + 3 * ARB_BYTES
+        numerator, ca = s + 4 * ARB_BYTES, s + 5 * ARB_BYTES
+        twice, sa = s + 6 * ARB_BYTES, s + 7 * ARB_BYTES
+        _div(r, d, centre, prec)
+        _set(copy, r)
+        _mul(square, r, copy, prec)
+        _add(q, one, square, prec)
+        _mul(twice, two, r, prec)
+        _sub(numerator, one, square, prec)
+        _div(ca, numerator, q, prec)
+        _div(sa, twice, q, prec)
+
+    @loop
+    def _sticks(
+        cos_u: Any,
+        sin_u: Any,
+        centre_y: Any,
+        h: int,
+        d: int,
+        one: int,
+        two: int,
+        lo: int,
+        start: int,
+        stop: int,
+        prec: int,
+        s: int,
+    ) -> None:
+        """The mp loop of ``construction.construct`` for j = start .. stop − 1 (forwards, stop >
+        start: stick j−1 to stick j about p_j) or j = start down to stop + 1 (backwards: stick j
+        to stick j−1), on the balls at ``cos_u``, ``sin_u``, ``centre_y`` (entry j − lo), with
+        its calls on its operands in its order (``_rotation``); scratch ``s``: 12 balls."""
+        ca, sa = s + 5 * ARB_BYTES, s + 7 * ARB_BYTES
+        product, first, second = s + 8 * ARB_BYTES, s + 9 * ARB_BYTES, s + 10 * ARB_BYTES
+        forward = stop > start
+        step = 1 if forward else -1
+        for j in range(start, stop, step):
+            if forward:
+                c, sn = cos_u[j - 1 - lo], sin_u[j - 1 - lo]
+                _mul(product, d, c, prec)  # p_y = (h − d·c)/s
+                _sub(product, h, product, prec)
+            else:
+                c, sn = cos_u[j - lo], sin_u[j - lo]
+                _mul(product, d, c, prec)  # p_y = (h + d·c)/s
+                _add(product, h, product, prec)
+            p_y = centre_y[j - lo]
+            _div(p_y, product, sn, prec)
+            _rotation(p_y, d, one, two, prec, s)
+            if forward:  # (ca·c − sa·s, sa·c + ca·s)
+                _mul(first, ca, c, prec)
+                _mul(second, sa, sn, prec)
+                _sub(cos_u[j - lo], first, second, prec)
+                _mul(first, sa, c, prec)
+                _mul(second, ca, sn, prec)
+                _add(sin_u[j - lo], first, second, prec)
+            else:  # (ca·c + sa·s, ca·s − sa·c)
+                _mul(first, ca, c, prec)
+                _mul(second, sa, sn, prec)
+                _add(cos_u[j - 1 - lo], first, second, prec)
+                _mul(first, ca, sn, prec)
+                _mul(second, sa, c, prec)
+                _sub(sin_u[j - 1 - lo], first, second, prec)
+
     _vec_init = bind("_arb_vec_init", *_SIGNATURES["_arb_vec_init"])
     _vec_clear = bind("_arb_vec_clear", *_SIGNATURES["_arb_vec_clear"])
 
@@ -465,6 +537,37 @@ def hypot(x: np.ndarray[Any, Any], y: np.ndarray[Any, Any]) -> np.ndarray[Any, A
     return out
 
 
+def sticks(
+    h: Any, d: Any, c0: Any, s0: Any, lo: int, hi: int, clock: Callable[[], None]
+) -> tuple[np.ndarray[Any, Any], np.ndarray[Any, Any], np.ndarray[Any, Any]]:
+    """The mp recursion of ``construction.construct`` on balls: (cos β_j, sin β_j, p_j^y) for j
+    = lo .. hi as object arrays of fresh balls, stick 0 = (c0, s0) (balls), h and d balls, at
+    the working precision. The same libflint calls as that Python loop (``_sticks``), so the
+    same balls; run in chunks of ``CLOCK_STEPS`` sticks with ``clock()`` between them, where the
+    Python loop reads the clock. Entry 0 of p^y stays 0 when lo = 0, as there."""
+    n = hi - lo + 1
+    cos_u, sin_u, centre_y = (np.negative(np.full(n, _ZERO, dtype=object)) for _ in range(3))
+    cos_u[-lo], sin_u[-lo] = c0, s0
+    cos_a, sin_a, centre_a = addresses(cos_u), addresses(sin_u), addresses(centre_y)
+    one, two = flint.arb(1), flint.arb(2)
+    prec = flint.ctx.prec
+    constants = (id(h) + OFFSET, id(d) + OFFSET, id(one) + OFFSET, id(two) + OFFSET, lo)
+    with Scratch(12) as scratch:
+        for step, start, end in ((1, 1, hi + 1), (-1, 0, lo)):  # forwards, then backwards
+            while (end - start) * step > 0:
+                if not start % CLOCK_STEPS:  # where the Python loop reads it
+                    clock()
+                # to the next multiple of CLOCK_STEPS in the direction of the loop, or its end
+                stop = step * (abs(start) // CLOCK_STEPS + 1) * CLOCK_STEPS
+                stop = min(stop, end) if step > 0 else max(stop, end)
+                _sticks(cos_a, sin_a, centre_a, *constants, start, stop, prec, scratch)
+                start = stop
+    return cos_u, sin_u, centre_y
+
+
+_ZERO = flint.arb(0)
+
+
 def _warm() -> None:
     """Compile every loop now, at import (about a second), so that no request pays for it."""
     x = np.empty(2, dtype=object)
@@ -475,6 +578,7 @@ def _warm() -> None:
     largest_radii(x, x[::-1])
     hypot(x, x[::-1])
     relative_point_difference(points, points[::-1], flint.arb(1), 64)
+    sticks(flint.arb(1), flint.arb(1) / 10, flint.arb(0), flint.arb(1), -2, 2, lambda: None)
 
 
 if AVAILABLE:
