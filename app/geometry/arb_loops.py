@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import contextlib
 import ctypes
+import weakref
 from collections.abc import Callable
 from typing import Any, TypeVar, cast
 
@@ -239,9 +240,80 @@ def loop(function: F) -> F:
     return cast(F, dispatcher)
 
 
+#: id of a read-only array of balls made here (``fresh``, ``keep``) -> (a weak reference to
+#: it, its entries' ``arb_struct`` addresses in C order). Entries go when their array does.
+_KNOWN: dict[int, tuple[weakref.ref[Any], np.ndarray[Any, np.dtype[np.int64]]]] = {}
+
+
+def fresh(count: int) -> np.ndarray[Any, Any]:
+    """``count`` fresh balls (numpy's negation loop over zeros: one allocation each), which
+    nothing else references yet, for a loop to write into; read-only (``keep``)."""
+    return keep(np.negative(np.full(count, _ZERO, dtype=object)), checked=True)
+
+
+def keep(values: np.ndarray[Any, Any], checked: bool = False) -> np.ndarray[Any, Any]:
+    """Make a C-contiguous object array of balls that owns its entries read-only and remember
+    its addresses: ``addresses`` and ``known_balls`` of it, or of a view of it, then take no
+    pass over its entries (a read-only array's entries cannot be replaced, nor can its views
+    be written). Returns ``values``; an array that does not qualify is left as it is."""
+    if (
+        values.dtype == object
+        and values.base is None
+        and values.flags.c_contiguous
+        and values.size
+        and (checked or _checked_balls(values))
+    ):
+        found = _read_addresses(values)
+        values.flags.writeable = False
+        key = id(values)
+        _KNOWN[key] = (weakref.ref(values, lambda _, key=key: _KNOWN.pop(key, None)), found)
+    return values
+
+
+def _checked_balls(values: np.ndarray[Any, Any]) -> bool:
+    """Whether every entry is a ball: ``arb_program``'s compiled type check where it exists."""
+    from app.geometry import arb_program  # it builds on this module
+
+    if arb_program.AVAILABLE:
+        return arb_program.all_balls(_read_addresses(values))
+    return all_balls(values)
+
+
+def _known(values: np.ndarray[Any, Any]) -> np.ndarray[Any, np.dtype[np.int64]] | None:
+    """The addresses of an array of ``keep``, or of a view of one (the same byte offsets and
+    strides over its addresses, 8 bytes an entry in both), in C order; None otherwise."""
+    if values.flags.writeable:
+        return None
+    entry = _KNOWN.get(id(values))
+    if entry is not None and entry[0]() is values:
+        return entry[1]
+    base = values.base
+    entry = _KNOWN.get(id(base)) if type(base) is np.ndarray else None
+    if entry is None or entry[0]() is not base or min(values.strides, default=0) < 0:
+        return None
+    assert base is not None
+    start = values.__array_interface__["data"][0] - base.__array_interface__["data"][0]
+    view = np.lib.stride_tricks.as_strided(
+        entry[1][start // 8 :], shape=values.shape, strides=values.strides, writeable=False
+    )
+    return np.ascontiguousarray(view).reshape(-1)
+
+
+def known_balls(values: np.ndarray[Any, Any]) -> bool:
+    """Whether ``values`` is an array of ``keep`` or a view of one (every entry a ball)."""
+    return _known(values) is not None
+
+
 def addresses(values: np.ndarray[Any, Any]) -> np.ndarray[Any, np.dtype[np.int64]]:
     """The ``arb_struct`` address of every entry of an object array of ``arb`` (all of them
-    ``arb``: the caller checks). The array must stay alive while the addresses are used.
+    ``arb``: the caller checks), in C order. The array must stay alive while the addresses are
+    used. Those of an array of ``keep`` (or a view of one) are its remembered ones."""
+    found = _known(values)
+    return found if found is not None else _read_addresses(values)
+
+
+def _read_addresses(values: np.ndarray[Any, Any]) -> np.ndarray[Any, np.dtype[np.int64]]:
+    """``addresses`` read from the array.
 
     An object array stores its entries' object addresses (CPython's ``id``): they are read from
     its buffer (a C-ordered copy for a strided view, such as a column) in one copy, about 5 ns
@@ -548,6 +620,7 @@ def sticks(
     n = hi - lo + 1
     cos_u, sin_u, centre_y = (np.negative(np.full(n, _ZERO, dtype=object)) for _ in range(3))
     cos_u[-lo], sin_u[-lo] = c0, s0
+    cos_u, sin_u, centre_y = (keep(a, checked=True) for a in (cos_u, sin_u, centre_y))
     cos_a, sin_a, centre_a = addresses(cos_u), addresses(sin_u), addresses(centre_y)
     one, two = flint.arb(1), flint.arb(2)
     prec = flint.ctx.prec

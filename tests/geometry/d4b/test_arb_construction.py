@@ -46,7 +46,9 @@ def _both(
     calls: list[int] = []
     sticks = arb_loops.sticks
     monkeypatch.setattr(
-        arb_loops, "sticks", lambda *a: calls.append(1) or sticks(*a)  # type: ignore[func-returns-value]
+        arb_loops,
+        "sticks",
+        lambda *a: calls.append(1) or sticks(*a),  # type: ignore[func-returns-value]
     )
     with balls.working_precision(ar.bits), ar.recursion():
         arguments = (ExactReal(h), ExactReal(d), beta0, i_min, i_max)
@@ -91,7 +93,9 @@ def test_the_clock_is_read_where_the_python_loop_reads_it(
     monkeypatch.setattr(arb_loops, "CLOCK_STEPS", 4)
     with balls.working_precision(200):
         h, d = flint.arb(1), flint.arb(1) / 10
-        chunked = arb_loops.sticks(h, d, flint.arb(0), flint.arb(1), -9, 10, lambda: readings.append(1))
+        chunked = arb_loops.sticks(
+            h, d, flint.arb(0), flint.arb(1), -9, 10, lambda: readings.append(1)
+        )
         assert len(readings) == 5
         monkeypatch.setattr(arb_loops, "CLOCK_STEPS", 4096)
         whole = arb_loops.sticks(h, d, flint.arb(0), flint.arb(1), -9, 10, lambda: None)
