@@ -71,6 +71,7 @@ _SIGNATURES: dict[str, tuple[Any, list[Any]]] = {
     "arb_add": (None, [_P, _P, _P, _W]),
     "arb_mul": (None, [_P, _P, _P, _W]),
     "arb_set": (None, [_P, _P]),
+    "arb_set_si": (None, [_P, _W]),
     "arb_sqrt": (None, [_P, _P, _W]),
     "arb_nonnegative_part": (None, [_P, _P]),
     "arb_gt": (ctypes.c_int, [_P, _P]),
@@ -292,9 +293,14 @@ def _known(values: np.ndarray[Any, Any]) -> np.ndarray[Any, np.dtype[np.int64]] 
     if entry is None or entry[0]() is not base or min(values.strides, default=0) < 0:
         return None
     assert base is not None
-    start = values.__array_interface__["data"][0] - base.__array_interface__["data"][0]
+    start = (values.__array_interface__["data"][0] - base.__array_interface__["data"][0]) // 8
+    if values.flags.c_contiguous:  # rows of the base: a range of its addresses
+        return entry[1][start : start + values.size]
+    if values.ndim == 1:  # a column or a strided range (copied: the loops take C order)
+        step = values.strides[0] // 8
+        return np.ascontiguousarray(entry[1][start : start + (values.size - 1) * step + 1 : step])
     view = np.lib.stride_tricks.as_strided(
-        entry[1][start // 8 :], shape=values.shape, strides=values.strides, writeable=False
+        entry[1][start:], shape=values.shape, strides=values.strides, writeable=False
     )
     return np.ascontiguousarray(view).reshape(-1)
 
@@ -536,6 +542,44 @@ if AVAILABLE:
                 _mul(second, sa, c, prec)
                 _sub(sin_u[j - 1 - lo], first, second, prec)
 
+    _set_si = _EXTERN["arb_set_si"]
+
+    @loop
+    def _points(
+        cos_u: Any,
+        sin_u: Any,
+        i_min: int,
+        constants: Any,
+        axis_x: Any,
+        tractrix_x: Any,
+        tractrix_y: Any,
+        centre_x: Any,
+        prec: int,
+        s: int,
+    ) -> None:
+        """``construction._assemble``'s new balls for sticks i = i_min …: x_i^x = (2d)·i,
+        d_i = (x_i^x + h·cos, 0 + h·sin), p_i^x = (2·i − 1)·d, with the calls numpy's object
+        loops make through python-flint's operators (``constants``: h, d, 2d, 2, 1, 0)."""
+        h, d, two_d, two, one, zero = (
+            constants[0],
+            constants[1],
+            constants[2],
+            constants[3],
+            constants[4],
+            constants[5],
+        )
+        index, t = s, s + ARB_BYTES
+        for k in range(axis_x.shape[0]):
+            _set_si(index, i_min + k)  # flint.arb(i): exact
+            _mul(axis_x[k], two_d, index, prec)
+            _mul(t, h, cos_u[k], prec)
+            _add(tractrix_x[k], axis_x[k], t, prec)
+            _mul(t, h, sin_u[k], prec)
+            _add(tractrix_y[k], zero, t, prec)
+            _mul(t, two, index, prec)
+            _sub(t, t, one, prec)
+            _mul(centre_x[k], t, d, prec)
+
     _vec_init = bind("_arb_vec_init", *_SIGNATURES["_arb_vec_init"])
     _vec_clear = bind("_arb_vec_clear", *_SIGNATURES["_arb_vec_clear"])
 
@@ -638,6 +682,51 @@ def sticks(
     return cos_u, sin_u, centre_y
 
 
+def stick_points(
+    h: Any,
+    d: Any,
+    i_min: int,
+    cos_u: np.ndarray[Any, Any],
+    sin_u: np.ndarray[Any, Any],
+    centre_y: np.ndarray[Any, Any],
+) -> dict[str, np.ndarray[Any, Any]]:
+    """``construction._assemble``'s four ``(n, 2)`` arrays of sticks i_min … from the balls of
+    ``sticks`` (directions and centre heights: the same objects), the new ones made in one
+    compiled pass (``_points``: the same balls as its numpy operations); each read-only with
+    its addresses kept (``keep``)."""
+    n = len(cos_u)
+    axis_x, tractrix_x, tractrix_y, centre_x = (fresh(n) for _ in range(4))
+    zero = flint.arb(0)
+    constants = [h, d, 2 * d, flint.arb(2), flint.arb(1), zero]
+    with Scratch(2) as scratch:
+        _points(
+            addresses(cos_u),
+            addresses(sin_u),
+            i_min,
+            np.array([id(c) + OFFSET for c in constants], dtype=np.int64),
+            addresses(axis_x),
+            addresses(tractrix_x),
+            addresses(tractrix_y),
+            addresses(centre_x),
+            flint.ctx.prec,
+            scratch,
+        )
+    del constants
+    zeros = np.full(n, zero, dtype=object)
+    pairs = {
+        "axis_points": (axis_x, zeros),
+        "tractrix": (tractrix_x, tractrix_y),
+        "centres": (centre_x, centre_y),
+        "directions": (cos_u, sin_u),
+    }
+    out = {}
+    for name, (x, y) in pairs.items():
+        both = np.empty((n, 2), dtype=object)
+        both[:, 0], both[:, 1] = x, y
+        out[name] = keep(both, checked=True)
+    return out
+
+
 _ZERO = flint.arb(0)
 
 
@@ -651,7 +740,10 @@ def _warm() -> None:
     largest_radii(x, x[::-1])
     hypot(x, x[::-1])
     relative_point_difference(points, points[::-1], flint.arb(1), 64)
-    sticks(flint.arb(1), flint.arb(1) / 10, flint.arb(0), flint.arb(1), -2, 2, lambda: None)
+    cos_u, sin_u, centre_y = sticks(
+        flint.arb(1), flint.arb(1) / 10, flint.arb(0), flint.arb(1), -2, 2, lambda: None
+    )
+    stick_points(flint.arb(1), flint.arb(1) / 10, -2, cos_u, sin_u, centre_y)
 
 
 if AVAILABLE:

@@ -254,17 +254,11 @@ def construct(
     if arb_loops.AVAILABLE and all(type(x) is flint.arb for x in (hh, dd, c0, s0)):
         # on balls: the loop below compiled (the same libflint calls, the same balls)
         cos_b, sin_b, centre_b = arb_loops.sticks(hh, dd, c0, s0, lo, hi, ar.check_time)
-        return _assemble(
-            ar,
-            hh,
-            dd,
-            i_min,
-            i_max,
-            cos_b[window],
-            sin_b[window],
-            centre_b[window],
-            arb_loops.keep,  # read-only, addresses remembered: the checks read them often
+        # _assemble's operations compiled too (the same balls), each array kept read-only
+        arrays = arb_loops.stick_points(
+            hh, dd, i_min, cos_b[window], sin_b[window], centre_b[window]
         )
+        return KinematicTractrix(i_min, i_max, arrays.__getitem__)
     cos_u = [ar.scalar(0)] * (hi - lo + 1)  # mpmath (MultiPrecision)
     sin_u = list(cos_u)
     centre_y = list(cos_u)
@@ -306,17 +300,15 @@ def _assemble(
     cos_u: Array,
     sin_u: Array,
     centre_y: Array,
-    finish: Callable[[Array], Array] = lambda points: points,
 ) -> KinematicTractrix:
-    """The points of sticks i_min .. i_max from their directions and centre heights (each
-    array passed through ``finish``)."""
+    """The points of sticks i_min .. i_max from their directions and centre heights."""
     i = ar.indices(i_min, i_max)
     u = stack_points(cos_u, sin_u)
     axis = stack_points(2 * d * i, ar.zeros(len(i)))
     points: dict[PointName, Array] = {
-        "axis_points": finish(axis),
-        "tractrix": finish(axis + h * u),
-        "centres": finish(stack_points((2 * i - 1) * d, centre_y)),
-        "directions": finish(u),
+        "axis_points": axis,
+        "tractrix": axis + h * u,
+        "centres": stack_points((2 * i - 1) * d, centre_y),
+        "directions": u,
     }
     return KinematicTractrix(i_min, i_max, points.__getitem__)
