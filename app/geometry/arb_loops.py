@@ -32,6 +32,7 @@ import contextlib
 import ctypes
 import weakref
 from collections.abc import Callable
+from functools import partial
 from typing import Any, TypeVar, cast
 
 import flint
@@ -267,8 +268,13 @@ def keep(values: np.ndarray[Any, Any], checked: bool = False) -> np.ndarray[Any,
         found = _read_addresses(values)
         values.flags.writeable = False
         key = id(values)
-        _KNOWN[key] = (weakref.ref(values, lambda _, key=key: _KNOWN.pop(key, None)), found)
+        _KNOWN[key] = (weakref.ref(values, partial(_forget, key)), found)
     return values
+
+
+def _forget(key: int, _: object) -> None:
+    """Drop an array's entry of ``_KNOWN`` (its weak reference's callback, as it goes)."""
+    _KNOWN.pop(key, None)
 
 
 def _checked_balls(values: np.ndarray[Any, Any]) -> bool:
