@@ -30,7 +30,9 @@ from __future__ import annotations
 
 import contextlib
 import ctypes
+import weakref
 from collections.abc import Callable
+from functools import partial
 from typing import Any, TypeVar, cast
 
 import flint
@@ -40,6 +42,7 @@ import numpy as np
 from numba.core import caching, externals
 
 from app.geometry import compiled
+from app.geometry.precision import CLOCK_STEPS
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -68,6 +71,8 @@ _SIGNATURES: dict[str, tuple[Any, list[Any]]] = {
     "arb_sub": (None, [_P, _P, _P, _W]),
     "arb_add": (None, [_P, _P, _P, _W]),
     "arb_mul": (None, [_P, _P, _P, _W]),
+    "arb_set": (None, [_P, _P]),
+    "arb_set_si": (None, [_P, _W]),
     "arb_sqrt": (None, [_P, _P, _W]),
     "arb_nonnegative_part": (None, [_P, _P]),
     "arb_gt": (ctypes.c_int, [_P, _P]),
@@ -237,9 +242,90 @@ def loop(function: F) -> F:
     return cast(F, dispatcher)
 
 
+#: id of a read-only array of balls made here (``fresh``, ``keep``) -> (a weak reference to
+#: it, its entries' ``arb_struct`` addresses in C order). Entries go when their array does.
+_KNOWN: dict[int, tuple[weakref.ref[Any], np.ndarray[Any, np.dtype[np.int64]]]] = {}
+
+
+def fresh(count: int) -> np.ndarray[Any, Any]:
+    """``count`` fresh balls (numpy's negation loop over zeros: one allocation each), which
+    nothing else references yet, for a loop to write into; read-only (``keep``)."""
+    return keep(np.negative(np.full(count, _ZERO, dtype=object)), checked=True)
+
+
+def keep(values: np.ndarray[Any, Any], checked: bool = False) -> np.ndarray[Any, Any]:
+    """Make a C-contiguous object array of balls that owns its entries read-only and remember
+    its addresses: ``addresses`` and ``known_balls`` of it, or of a view of it, then take no
+    pass over its entries (a read-only array's entries cannot be replaced, nor can its views
+    be written). Returns ``values``; an array that does not qualify is left as it is."""
+    if (
+        values.dtype == object
+        and values.base is None
+        and values.flags.c_contiguous
+        and values.size
+        and (checked or _checked_balls(values))
+    ):
+        found = _read_addresses(values)
+        values.flags.writeable = False
+        key = id(values)
+        _KNOWN[key] = (weakref.ref(values, partial(_forget, key)), found)
+    return values
+
+
+def _forget(key: int, _: object) -> None:
+    """Drop an array's entry of ``_KNOWN`` (its weak reference's callback, as it goes)."""
+    _KNOWN.pop(key, None)
+
+
+def _checked_balls(values: np.ndarray[Any, Any]) -> bool:
+    """Whether every entry is a ball: ``arb_program``'s compiled type check where it exists."""
+    from app.geometry import arb_program  # it builds on this module
+
+    if arb_program.AVAILABLE:
+        return arb_program.all_balls(_read_addresses(values))
+    return all_balls(values)
+
+
+def _known(values: np.ndarray[Any, Any]) -> np.ndarray[Any, np.dtype[np.int64]] | None:
+    """The addresses of an array of ``keep``, or of a view of one (the same byte offsets and
+    strides over its addresses, 8 bytes an entry in both), in C order; None otherwise."""
+    if values.flags.writeable:
+        return None
+    entry = _KNOWN.get(id(values))
+    if entry is not None and entry[0]() is values:
+        return entry[1]
+    base = values.base
+    entry = _KNOWN.get(id(base)) if type(base) is np.ndarray else None
+    if entry is None or entry[0]() is not base or min(values.strides, default=0) < 0:
+        return None
+    assert base is not None
+    start = (values.__array_interface__["data"][0] - base.__array_interface__["data"][0]) // 8
+    if values.flags.c_contiguous:  # rows of the base: a range of its addresses
+        return entry[1][start : start + values.size]
+    if values.ndim == 1:  # a column or a strided range (copied: the loops take C order)
+        step = values.strides[0] // 8
+        return np.ascontiguousarray(entry[1][start : start + (values.size - 1) * step + 1 : step])
+    view = np.lib.stride_tricks.as_strided(
+        entry[1][start:], shape=values.shape, strides=values.strides, writeable=False
+    )
+    return np.ascontiguousarray(view).reshape(-1)
+
+
+def known_balls(values: np.ndarray[Any, Any]) -> bool:
+    """Whether ``values`` is an array of ``keep`` or a view of one (every entry a ball)."""
+    return _known(values) is not None
+
+
 def addresses(values: np.ndarray[Any, Any]) -> np.ndarray[Any, np.dtype[np.int64]]:
     """The ``arb_struct`` address of every entry of an object array of ``arb`` (all of them
-    ``arb``: the caller checks). The array must stay alive while the addresses are used.
+    ``arb``: the caller checks), in C order. The array must stay alive while the addresses are
+    used. Those of an array of ``keep`` (or a view of one) are its remembered ones."""
+    found = _known(values)
+    return found if found is not None else _read_addresses(values)
+
+
+def _read_addresses(values: np.ndarray[Any, Any]) -> np.ndarray[Any, np.dtype[np.int64]]:
+    """``addresses`` read from the array.
 
     An object array stores its entries' object addresses (CPython's ``id``): they are read from
     its buffer (a C-ordered copy for a strided view, such as a column) in one copy, about 5 ns
@@ -392,6 +478,114 @@ if AVAILABLE:
             _hypot(length, dx, dy, low, square)
             _div(out[k], length, scale if _gt(scale, tiny) else tiny, low)
 
+    _set = _EXTERN["arb_set"]
+
+    @loop
+    def _rotation(centre: int, d: int, one: int, two: int, prec: int, s: int) -> None:
+        """cos α and sin α of ``construction.rotation_about(centre, d)`` into the scratch balls
+        ``s + 5·ARB_BYTES`` and ``s + 7·ARB_BYTES``: r = d/p_y, q = 1 + r·r, cos α = (1 − r·r)/q,
+        sin α = 2r/q, the calls python-flint's operators make (``r * r`` multiplies r by a
+        copy of itself: the operator's second operand is never the first one's struct)."""
+        r, copy, square, q = s, s + ARB_BYTES, s + 2 * ARB_BYTES, s + 3 * ARB_BYTES
+        numerator, ca = s + 4 * ARB_BYTES, s + 5 * ARB_BYTES
+        twice, sa = s + 6 * ARB_BYTES, s + 7 * ARB_BYTES
+        _div(r, d, centre, prec)
+        _set(copy, r)
+        _mul(square, r, copy, prec)
+        _add(q, one, square, prec)
+        _mul(twice, two, r, prec)
+        _sub(numerator, one, square, prec)
+        _div(ca, numerator, q, prec)
+        _div(sa, twice, q, prec)
+
+    @loop
+    def _sticks(
+        cos_u: Any,
+        sin_u: Any,
+        centre_y: Any,
+        h: int,
+        d: int,
+        one: int,
+        two: int,
+        lo: int,
+        start: int,
+        stop: int,
+        prec: int,
+        s: int,
+    ) -> None:
+        """The mp loop of ``construction.construct`` for j = start .. stop − 1 (forwards, stop >
+        start: stick j−1 to stick j about p_j) or j = start down to stop + 1 (backwards: stick j
+        to stick j−1), on the balls at ``cos_u``, ``sin_u``, ``centre_y`` (entry j − lo), with
+        its calls on its operands in its order (``_rotation``); scratch ``s``: 12 balls."""
+        ca, sa = s + 5 * ARB_BYTES, s + 7 * ARB_BYTES
+        product, first, second = s + 8 * ARB_BYTES, s + 9 * ARB_BYTES, s + 10 * ARB_BYTES
+        forward = stop > start
+        step = 1 if forward else -1
+        for j in range(start, stop, step):
+            if forward:
+                c, sn = cos_u[j - 1 - lo], sin_u[j - 1 - lo]
+                _mul(product, d, c, prec)  # p_y = (h − d·c)/s
+                _sub(product, h, product, prec)
+            else:
+                c, sn = cos_u[j - lo], sin_u[j - lo]
+                _mul(product, d, c, prec)  # p_y = (h + d·c)/s
+                _add(product, h, product, prec)
+            p_y = centre_y[j - lo]
+            _div(p_y, product, sn, prec)
+            _rotation(p_y, d, one, two, prec, s)
+            if forward:  # (ca·c − sa·s, sa·c + ca·s)
+                _mul(first, ca, c, prec)
+                _mul(second, sa, sn, prec)
+                _sub(cos_u[j - lo], first, second, prec)
+                _mul(first, sa, c, prec)
+                _mul(second, ca, sn, prec)
+                _add(sin_u[j - lo], first, second, prec)
+            else:  # (ca·c + sa·s, ca·s − sa·c)
+                _mul(first, ca, c, prec)
+                _mul(second, sa, sn, prec)
+                _add(cos_u[j - 1 - lo], first, second, prec)
+                _mul(first, ca, sn, prec)
+                _mul(second, sa, c, prec)
+                _sub(sin_u[j - 1 - lo], first, second, prec)
+
+    _set_si = _EXTERN["arb_set_si"]
+
+    @loop
+    def _points(
+        cos_u: Any,
+        sin_u: Any,
+        i_min: int,
+        constants: Any,
+        axis_x: Any,
+        tractrix_x: Any,
+        tractrix_y: Any,
+        centre_x: Any,
+        prec: int,
+        s: int,
+    ) -> None:
+        """``construction._assemble``'s new balls for sticks i = i_min …: x_i^x = (2d)·i,
+        d_i = (x_i^x + h·cos, 0 + h·sin), p_i^x = (2·i − 1)·d, with the calls numpy's object
+        loops make through python-flint's operators (``constants``: h, d, 2d, 2, 1, 0)."""
+        h, d, two_d, two, one, zero = (
+            constants[0],
+            constants[1],
+            constants[2],
+            constants[3],
+            constants[4],
+            constants[5],
+        )
+        index, t = s, s + ARB_BYTES
+        for k in range(axis_x.shape[0]):
+            _set_si(index, i_min + k)  # flint.arb(i): exact
+            _mul(axis_x[k], two_d, index, prec)
+            _mul(t, h, cos_u[k], prec)
+            _add(tractrix_x[k], axis_x[k], t, prec)
+            _mul(t, h, sin_u[k], prec)
+            _add(tractrix_y[k], zero, t, prec)
+            _mul(t, two, index, prec)
+            _sub(t, t, one, prec)
+            _mul(centre_x[k], t, d, prec)
+
     _vec_init = bind("_arb_vec_init", *_SIGNATURES["_arb_vec_init"])
     _vec_clear = bind("_arb_vec_clear", *_SIGNATURES["_arb_vec_clear"])
 
@@ -465,6 +659,83 @@ def hypot(x: np.ndarray[Any, Any], y: np.ndarray[Any, Any]) -> np.ndarray[Any, A
     return out
 
 
+def sticks(
+    h: Any, d: Any, c0: Any, s0: Any, lo: int, hi: int, clock: Callable[[], None]
+) -> tuple[np.ndarray[Any, Any], np.ndarray[Any, Any], np.ndarray[Any, Any]]:
+    """The mp recursion of ``construction.construct`` on balls: (cos β_j, sin β_j, p_j^y) for j
+    = lo .. hi as object arrays of fresh balls, stick 0 = (c0, s0) (balls), h and d balls, at
+    the working precision. The same libflint calls as that Python loop (``_sticks``), so the
+    same balls; run in chunks of ``CLOCK_STEPS`` sticks with ``clock()`` between them, where the
+    Python loop reads the clock. Entry 0 of p^y stays 0 when lo = 0, as there."""
+    n = hi - lo + 1
+    cos_u, sin_u, centre_y = (np.negative(np.full(n, _ZERO, dtype=object)) for _ in range(3))
+    cos_u[-lo], sin_u[-lo] = c0, s0
+    cos_u, sin_u, centre_y = (keep(a, checked=True) for a in (cos_u, sin_u, centre_y))
+    cos_a, sin_a, centre_a = addresses(cos_u), addresses(sin_u), addresses(centre_y)
+    one, two = flint.arb(1), flint.arb(2)
+    prec = flint.ctx.prec
+    constants = (id(h) + OFFSET, id(d) + OFFSET, id(one) + OFFSET, id(two) + OFFSET, lo)
+    with Scratch(12) as scratch:
+        for step, start, end in ((1, 1, hi + 1), (-1, 0, lo)):  # forwards, then backwards
+            while (end - start) * step > 0:
+                if not start % CLOCK_STEPS:  # where the Python loop reads it
+                    clock()
+                # to the next multiple of CLOCK_STEPS in the direction of the loop, or its end
+                stop = step * (abs(start) // CLOCK_STEPS + 1) * CLOCK_STEPS
+                stop = min(stop, end) if step > 0 else max(stop, end)
+                _sticks(cos_a, sin_a, centre_a, *constants, start, stop, prec, scratch)
+                start = stop
+    return cos_u, sin_u, centre_y
+
+
+def stick_points(
+    h: Any,
+    d: Any,
+    i_min: int,
+    cos_u: np.ndarray[Any, Any],
+    sin_u: np.ndarray[Any, Any],
+    centre_y: np.ndarray[Any, Any],
+) -> dict[str, np.ndarray[Any, Any]]:
+    """``construction._assemble``'s four ``(n, 2)`` arrays of sticks i_min … from the balls of
+    ``sticks`` (directions and centre heights: the same objects), the new ones made in one
+    compiled pass (``_points``: the same balls as its numpy operations); each read-only with
+    its addresses kept (``keep``)."""
+    n = len(cos_u)
+    axis_x, tractrix_x, tractrix_y, centre_x = (fresh(n) for _ in range(4))
+    zero = flint.arb(0)
+    constants = [h, d, 2 * d, flint.arb(2), flint.arb(1), zero]
+    with Scratch(2) as scratch:
+        _points(
+            addresses(cos_u),
+            addresses(sin_u),
+            i_min,
+            np.array([id(c) + OFFSET for c in constants], dtype=np.int64),
+            addresses(axis_x),
+            addresses(tractrix_x),
+            addresses(tractrix_y),
+            addresses(centre_x),
+            flint.ctx.prec,
+            scratch,
+        )
+    del constants
+    zeros = np.full(n, zero, dtype=object)
+    pairs = {
+        "axis_points": (axis_x, zeros),
+        "tractrix": (tractrix_x, tractrix_y),
+        "centres": (centre_x, centre_y),
+        "directions": (cos_u, sin_u),
+    }
+    out = {}
+    for name, (x, y) in pairs.items():
+        both = np.empty((n, 2), dtype=object)
+        both[:, 0], both[:, 1] = x, y
+        out[name] = keep(both, checked=True)
+    return out
+
+
+_ZERO = flint.arb(0)
+
+
 def _warm() -> None:
     """Compile every loop now, at import (about a second), so that no request pays for it."""
     x = np.empty(2, dtype=object)
@@ -475,6 +746,10 @@ def _warm() -> None:
     largest_radii(x, x[::-1])
     hypot(x, x[::-1])
     relative_point_difference(points, points[::-1], flint.arb(1), 64)
+    cos_u, sin_u, centre_y = sticks(
+        flint.arb(1), flint.arb(1) / 10, flint.arb(0), flint.arb(1), -2, 2, lambda: None
+    )
+    stick_points(flint.arb(1), flint.arb(1) / 10, -2, cos_u, sin_u, centre_y)
 
 
 if AVAILABLE:

@@ -210,3 +210,33 @@ def test_a_cache_that_cannot_be_written_leaves_the_loop_in_memory(
 
     compiled = arb_loops.loop(doubled)
     assert compiled(21) == 42
+
+
+def test_kept_arrays_are_read_only_and_their_views_addresses_are_read_ones() -> None:
+    points = np.empty((7, 2), dtype=object)
+    points[:] = [[flint.arb(k) / 3, flint.arb(-k)] for k in range(7)]
+    kept = arb_loops.keep(points)
+    assert kept is points and not kept.flags.writeable
+    with pytest.raises(ValueError, match="read-only"):
+        kept[0, 0] = flint.arb(1)
+    views = (kept, kept[:5], kept[2:6], kept[:, 0], kept[:, 1], kept[1:, 1], kept[::2], kept.T)
+    for view in views:
+        assert arb_loops.known_balls(view)
+        found = arb_loops.addresses(view)
+        assert found.flags.c_contiguous
+        assert found.tolist() == arb_loops._read_addresses(view).tolist()
+    assert not arb_loops.known_balls(kept[::-1])  # read as before
+    assert not arb_loops.known_balls(kept.copy())
+    key = id(kept)
+    del kept, points, views, view
+    assert key not in arb_loops._KNOWN  # forgotten with its array
+
+
+def test_only_owning_arrays_of_balls_are_kept() -> None:
+    mixed = np.array([flint.arb(1), 2.0], dtype=object)
+    assert arb_loops.keep(mixed).flags.writeable and not arb_loops.known_balls(mixed)
+    balls_ = np.array([flint.arb(1), flint.arb(2), flint.arb(3)], dtype=object)
+    view = balls_[1:]
+    assert arb_loops.keep(view).flags.writeable  # not the owner: left as it is
+    fresh = arb_loops.fresh(3)
+    assert not fresh.flags.writeable and all(b == 0 for b in fresh)

@@ -68,17 +68,16 @@ AVAILABLE = arb_loops.AVAILABLE and all(
 
 _B = arb_loops.ARB_BYTES
 _hypot: Any = arb_loops._hypot if AVAILABLE else None
-_ZERO = flint.arb(0)
 
 
-def fresh(count: int) -> np.ndarray[Any, Any]:
-    """``count`` fresh balls (numpy's negation loop over zeros: one allocation each), which
-    nothing else references yet, for a loop to write into."""
-    return np.negative(np.full(count, _ZERO, dtype=object))
+#: ``count`` fresh balls for a loop to write into (``arb_loops.fresh``: read-only afterwards,
+#: their addresses remembered).
+fresh = arb_loops.fresh
 
 
 def balls(*arrays: Any) -> bool:
-    """Whether the compiled loops apply: available, and every entry of every array a ball."""
+    """Whether the compiled loops apply: available, and every entry of every array a ball
+    (known for the arrays of ``arb_loops.keep`` and their views)."""
     return AVAILABLE and all(
         isinstance(a, np.ndarray) and a.dtype == object and all_balls(a) for a in arrays
     )
@@ -117,7 +116,8 @@ if AVAILABLE:
             # (b * (b / a) + 2 * d * (d / a) + d * (d / b)) / (1 - (d / a) * (d / b))
             _div(ba, b, a, prec)
             _mul(num, b, ba, prec)
-            _div(da, d, a, prec)
+            if k == 0:  # else d / a is the previous entry's d / b
+                _div(da, d, a, prec)
             _mul(t, two_d, da, prec)
             _add(num, num, t, prec)
             _div(db, d, b, prec)
@@ -127,6 +127,7 @@ if AVAILABLE:
             _sub(den, one, t, prec)
             _div(num, num, den, prec)
             _relative(out[k], y[k + 2], num, tiny, scale, prec)
+            da, db = db, da
 
     @arb_loops.loop
     def _two_step(
@@ -148,10 +149,13 @@ if AVAILABLE:
         e, f, r, q = s, s + _B, s + 2 * _B, s + 3 * _B
         t, u, num, acc = s + 4 * _B, s + 5 * _B, s + 6 * _B, s + 7 * _B
         scale = s + 8 * _B
+        # a², a³ and b², b³ (a of entry k + 1 is b of entry k: its powers and d/a are kept)
+        a2, a3, b2, b3 = s + 9 * _B, s + 10 * _B, s + 11 * _B, s + 12 * _B
         for k in range(corrected.shape[0]):
             a, b, target = y[k], y[k + 1], y[k + 3]
             # e = d / a; f = d / b
-            _div(e, d, a, prec)
+            if k == 0:
+                _div(e, d, a, prec)
             _div(f, d, b, prec)
             # b * (b / a) * (b / a)
             _div(r, b, a, prec)
@@ -184,21 +188,22 @@ if AVAILABLE:
             # b**5 + d**2 * (a**3 + 2 * a**2 * b + 3 * a * b**2 + 4 * b**3)
             #   + d**4 * (2 * b**3 + 2 * a + 3 * b), over (d**2 - a * b) ** 2
             _pow(num, b, five, prec)
-            _pow(acc, a, three, prec)
-            _pow(t, a, two, prec)
-            _mul(t, two, t, prec)
+            if k == 0:
+                _pow(a3, a, three, prec)
+                _pow(a2, a, two, prec)
+            _mul(t, two, a2, prec)
             _mul(t, t, b, prec)
-            _add(acc, acc, t, prec)
+            _add(acc, a3, t, prec)
             _mul(t, three, a, prec)
-            _pow(u, b, two, prec)
-            _mul(t, t, u, prec)
+            _pow(b2, b, two, prec)
+            _mul(t, t, b2, prec)
             _add(acc, acc, t, prec)
-            _pow(u, b, three, prec)
-            _mul(t, four, u, prec)
+            _pow(b3, b, three, prec)
+            _mul(t, four, b3, prec)
             _add(acc, acc, t, prec)
             _mul(acc, d2, acc, prec)
             _add(num, num, acc, prec)
-            _mul(acc, two, u, prec)
+            _mul(acc, two, b3, prec)
             _mul(t, two, a, prec)
             _add(acc, acc, t, prec)
             _mul(t, three, b, prec)
@@ -210,6 +215,9 @@ if AVAILABLE:
             _pow(t, t, two, prec)
             _div(num, num, t, prec)
             _relative(printed[k], target, num, tiny, scale, prec)
+            e, f = f, e  # the next entry's d / a, and a scratch ball
+            a2, b2 = b2, a2
+            a3, b3 = b3, a3
 
     @arb_loops.loop
     def _magnitude_into(out: int, a: Any, i: int, v: Any, j: int, prec: int, t: int) -> None:
@@ -224,31 +232,33 @@ if AVAILABLE:
 
     @arb_loops.loop
     def _right_angle(
-        out: int, vertex: Any, i: int, a: Any, j: int, b: Any, m: int, prec: int, s: int
+        out: int, vertex: Any, i: int, ux: int, uy: int, ma: int, b: Any, m: int, prec: int, s: int
     ) -> None:
-        """``nikolaides.right_angle_residuals`` of one entry: vertex_i, a_j, b_m."""
-        ux, uy, wx, wy = s, s + _B, s + 2 * _B, s + 3 * _B
-        t, ma, mb = s + 4 * _B, s + 5 * _B, s + 6 * _B
-        _sub(ux, a[2 * j], vertex[2 * i], prec)
-        _sub(uy, a[2 * j + 1], vertex[2 * i + 1], prec)
+        """``nikolaides.right_angle_residuals`` of one entry: vertex_i, a_j, b_m, where ux, uy
+        hold a_j − vertex_i and ``ma`` the magnitude of (a_j, vertex_i), which both entries at
+        vertex_i share (``_nikolaides``)."""
+        wx, wy, dot, t, mb = s, s + _B, s + 2 * _B, s + 3 * _B, s + 4 * _B
         _sub(wx, b[2 * m], vertex[2 * i], prec)
         _sub(wy, b[2 * m + 1], vertex[2 * i + 1], prec)
-        _mul(ux, ux, wx, prec)
-        _mul(uy, uy, wy, prec)
-        _add(ux, ux, uy, prec)
-        _abs(ux, ux, prec)
-        _magnitude_into(ma, a, j, vertex, i, prec, t)
+        _mul(dot, ux, wx, prec)
+        _mul(t, uy, wy, prec)
+        _add(dot, dot, t, prec)
+        _abs(dot, dot, prec)
         _magnitude_into(mb, b, m, vertex, i, prec, t)
-        _mul(ma, ma, mb, prec)
-        _div(out, ux, ma, prec)
+        _mul(mb, ma, mb, prec)
+        _div(out, dot, mb, prec)
 
     @arb_loops.loop
     def _nikolaides(tractrix: Any, axis: Any, p: Any, out: Any, prec: int, s: int) -> None:
         """max(right angle at p_i, at p_{i+1}) (``arb_max``), as ``checks._nikolaides``."""
-        at_p, at_next, scratch = s, s + _B, s + 2 * _B
+        at_p, at_next, ux, uy, ma = s, s + _B, s + 2 * _B, s + 3 * _B, s + 4 * _B
+        t, scratch = s + 5 * _B, s + 6 * _B
         for k in range(out.shape[0]):
-            _right_angle(at_p, tractrix, k, axis, k, p, k, prec, scratch)
-            _right_angle(at_next, tractrix, k, axis, k, p, k + 1, prec, scratch)
+            _sub(ux, axis[2 * k], tractrix[2 * k], prec)
+            _sub(uy, axis[2 * k + 1], tractrix[2 * k + 1], prec)
+            _magnitude_into(ma, axis, k, tractrix, k, prec, t)
+            _right_angle(at_p, tractrix, k, ux, uy, ma, p, k, prec, scratch)
+            _right_angle(at_next, tractrix, k, ux, uy, ma, p, k + 1, prec, scratch)
             _max(out[k], at_p, at_next, prec)
 
     # --- the columns of (D1), (D3) and eq. (2), and their fits ---
@@ -262,9 +272,16 @@ if AVAILABLE:
         (column j, entry k at ball j·count + k), as ``edge_lengths`` (``arb_loops``' hypot),
         ``edge_magnitude``, ``signed_areas``, ``area_magnitude``, ``second_difference`` and
         ``second_difference_magnitude`` compute them."""
-        ex, ey, square, t, u = s, s + _B, s + 2 * _B, s + 3 * _B, s + 4 * _B
+        ex, ey, square, t = s, s + _B, s + 2 * _B, s + 3 * _B
+        # |x_k| and |y_k| (python-flint's abs) once a vertex: at 5 + 2k and 6 + 2k
+        sizes = s + 5 * _B
+        for k in range(count):
+            _abs(sizes + 2 * k * _B, p[2 * k], prec)
+            _abs(sizes + (2 * k + 1) * _B, p[2 * k + 1], prec)
         for k in range(count - 1):
             x0, y0, x1, y1 = p[2 * k], p[2 * k + 1], p[2 * k + 2], p[2 * k + 3]
+            ax0, ay0 = sizes + 2 * k * _B, sizes + (2 * k + 1) * _B
+            ax1, ay1 = sizes + (2 * k + 2) * _B, sizes + (2 * k + 3) * _B
             length = block + (LENGTHS * count + k) * _B
             size = block + (SIZES * count + k) * _B
             area = block + (AREAS * count + k) * _B
@@ -273,28 +290,22 @@ if AVAILABLE:
             _sub(ey, y1, y0, prec)
             _hypot(length, ex, ey, prec, square)
             # ((|x0| + |y0|) + |x1|) + |y1|
-            _abs(size, x0, prec)
-            _abs(t, y0, prec)
-            _add(size, size, t, prec)
-            _abs(t, x1, prec)
-            _add(size, size, t, prec)
-            _abs(t, y1, prec)
-            _add(size, size, t, prec)
+            _add(size, ax0, ay0, prec)
+            _add(size, size, ax1, prec)
+            _add(size, size, ay1, prec)
             # (y0 + y1) / 2 * (x1 − x0)
             _add(area, y0, y1, prec)
             _div(area, area, two, prec)
             _mul(area, area, ex, prec)
             # (|y0| + |y1|) / 2 * (|x0| + |x1|)
-            _abs(t, y0, prec)
-            _abs(u, y1, prec)
-            _add(area_size, t, u, prec)
+            _add(area_size, ay0, ay1, prec)
             _div(area_size, area_size, two, prec)
-            _abs(t, x0, prec)
-            _abs(u, x1, prec)
-            _add(t, t, u, prec)
+            _add(t, ax0, ax1, prec)
             _mul(area_size, area_size, t, prec)
         for k in range(count - 2):
             y0, y1, y2 = p[2 * k + 1], p[2 * k + 3], p[2 * k + 5]
+            ay0 = sizes + (2 * k + 1) * _B
+            ay1, ay2 = ay0 + 2 * _B, ay0 + 4 * _B
             second = block + (SECOND * count + k) * _B
             second_size = block + (SECOND_SIZES * count + k) * _B
             # y2 − 2·y1 + y0
@@ -302,12 +313,9 @@ if AVAILABLE:
             _sub(second, y2, t, prec)
             _add(second, second, y0, prec)
             # |y2| + 2·|y1| + |y0|
-            _abs(u, y1, prec)
-            _mul(t, two, u, prec)
-            _abs(u, y2, prec)
-            _add(second_size, u, t, prec)
-            _abs(u, y0, prec)
-            _add(second_size, second_size, u, prec)
+            _mul(t, two, ay1, prec)
+            _add(second_size, ay2, t, prec)
+            _add(second_size, second_size, ay0, prec)
 
     @arb_loops.loop
     def _entry(block: int, count: int, column: int, k: int) -> int:
@@ -472,15 +480,25 @@ if AVAILABLE:
         """``darboux.edge_length_residuals`` into ``edges`` and ``distance_residuals`` (to
         ``expected``) into ``distances``, on balls."""
         ex, ee, dx, dy, size, t = s, s + _B, s + 2 * _B, s + 3 * _B, s + 4 * _B, s + 5 * _B
+        # for the edges: |x_k^x|, |x_k^y|, |e_k^x|, |e_k^y| once a vertex, at 6 + 4k …
+        sizes = s + 6 * _B
+        for k in range(edges.shape[0] + 1 if edges.shape[0] else 0):
+            _abs(sizes + 4 * k * _B, x[2 * k], prec)
+            _abs(sizes + (4 * k + 1) * _B, x[2 * k + 1], prec)
+            _abs(sizes + (4 * k + 2) * _B, e[2 * k], prec)
+            _abs(sizes + (4 * k + 3) * _B, e[2 * k + 1], prec)
         for k in range(edges.shape[0]):
             _distance(ex, x, k + 1, x, k, prec, dx, dy)
             _distance(ee, e, k + 1, e, k, prec, dx, dy)
-            _abs(size, x[2 * k + 2], prec)
-            _abs(t, x[2 * k + 3], prec)
-            _add(size, size, t, prec)
-            _add_size(size, x, k, prec, t)
-            _add_size(size, e, k + 1, prec, t)
-            _add_size(size, e, k, prec, t)
+            here, after = sizes + 4 * k * _B, sizes + 4 * (k + 1) * _B
+            # |x_{k+1}| + |x_k| + |e_{k+1}| + |e_k|, each |·^x| + |·^y|, from the left
+            _add(size, after, after + _B, prec)
+            _add(size, size, here, prec)
+            _add(size, size, here + _B, prec)
+            _add(size, size, after + 2 * _B, prec)
+            _add(size, size, after + 3 * _B, prec)
+            _add(size, size, here + 2 * _B, prec)
+            _add(size, size, here + 3 * _B, prec)
             _sub(ee, ee, ex, prec)
             _abs(ee, ee, prec)
             _div(edges[k], ee, size, prec)
@@ -534,7 +552,7 @@ class Columns:
         self.block = self._scratch.__enter__()
         weakref.finalize(self, self._scratch.__exit__, None, None, None)
         if self.count >= 2:
-            with arb_loops.Scratch(5) as scratch:
+            with arb_loops.Scratch(5 + 2 * self.count) as scratch:
                 _columns(
                     arb_loops.addresses(p),
                     self.count,
@@ -655,7 +673,7 @@ def two_step(
     if m:
         small, addresses = _small()
         d2, d4 = d**2, d**4
-        with arb_loops.Scratch(9) as scratch:
+        with arb_loops.Scratch(13) as scratch:
             _two_step(
                 arb_loops.addresses(y),
                 _address(d),
@@ -679,7 +697,7 @@ def nikolaides(
     p_{i+1}, i < n; ``(n,)``."""
     out = fresh(n)
     if n:
-        with arb_loops.Scratch(9) as scratch:
+        with arb_loops.Scratch(11) as scratch:
             _nikolaides(
                 arb_loops.addresses(tractrix[:n]),
                 arb_loops.addresses(axis[:n]),
@@ -732,7 +750,7 @@ def _darboux_pass(
 ) -> tuple[np.ndarray[Any, Any], np.ndarray[Any, Any]]:
     out_edges, out_distances = fresh(edges), fresh(distances)
     if edges or distances:
-        with arb_loops.Scratch(6) as scratch:
+        with arb_loops.Scratch(6 + (4 * (edges + 1) if edges else 0)) as scratch:
             _darboux(
                 arb_loops.addresses(x),
                 arb_loops.addresses(e),

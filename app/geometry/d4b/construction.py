@@ -14,9 +14,11 @@ the backward steps use the inverse rotations.
 Nothing here uses the closed forms of Theorems 5 and 6: the checks compare the two.
 
 The recursion is sequential (each step needs where the previous stick points). In float64 it
-runs as one compiled kernel (``_sticks``, app/geometry/compiled.py, ≈ 20 ns per stick); in mp
-as the Python loop of ``construct`` over mpmath numbers. Both are the same steps: the centre on
-the bisector and the normal, then the rotation of ``rotation_about``.
+runs as one compiled kernel (``_sticks``, app/geometry/compiled.py, ≈ 20 ns per stick); on balls
+(precision=mp) as one compiled loop of libflint calls (``arb_loops.sticks``: the calls
+python-flint's operators make in the Python loop of ``construct``, so the same balls); on mpmath
+numbers as that Python loop. All are the same steps: the centre on the bisector and the normal,
+then the rotation of ``rotation_about``.
 """
 
 from __future__ import annotations
@@ -26,8 +28,10 @@ from collections.abc import Callable
 from functools import cached_property
 from typing import Any, Literal, NamedTuple
 
+import flint
 import numpy as np
 
+from app.geometry import arb_loops
 from app.geometry.compiled import kernel
 from app.geometry.errors import DomainError
 from app.geometry.precision import CLOCK_STEPS, Arithmetic, Array, Scalar, stack_points
@@ -241,10 +245,19 @@ def construct(
         sticks = _sticks(float(h), float(d), float(c0), float(s0), lo, hi)
         ar.check_time()  # once, after the kernel: ≈ 20 ns per stick
         return from_sticks(float(h), float(d), i_min, i_max, lo, sticks)
-    cos_u = [ar.scalar(0)] * (hi - lo + 1)
+    c0, s0 = initial_direction(ar, beta0)
+    if arb_loops.AVAILABLE and all(type(x) is flint.arb for x in (hh, dd, c0, s0)):
+        # on balls: the loop below compiled (the same libflint calls, the same balls)
+        cos_b, sin_b, centre_b = arb_loops.sticks(hh, dd, c0, s0, lo, hi, ar.check_time)
+        # _assemble's operations compiled too (the same balls), each array kept read-only
+        arrays = arb_loops.stick_points(
+            hh, dd, i_min, cos_b[window], sin_b[window], centre_b[window]
+        )
+        return KinematicTractrix(i_min, i_max, arrays.__getitem__)
+    cos_u = [ar.scalar(0)] * (hi - lo + 1)  # mpmath (MultiPrecision)
     sin_u = list(cos_u)
     centre_y = list(cos_u)
-    cos_u[-lo], sin_u[-lo] = initial_direction(ar, beta0)
+    cos_u[-lo], sin_u[-lo] = c0, s0
     for j in range(1, hi + 1):  # forward: stick j−1 -> stick j about p_j
         if not j % CLOCK_STEPS:
             ar.check_time()
