@@ -309,18 +309,27 @@ def poles(contact: Any) -> Columns | None:
     return None if done is None else done[0]
 
 
+def _edge_resolution(program: Program, carried: bool) -> None:
+    """``d4b.curvature._Edges`` and ``_edge_resolution`` of the edge x0 → x1: its coordinates
+    ex, ey, its size |x0| + |y0| + |x1| + |y1| (coordinates summed) and resolution |e|/size;
+    ``carried``: the absolute values kept in registers of their own, a vertex's made on the
+    first row only (the caller carries |x1|, |y1| to the next row's |x0|, |y0|)."""
+    x0, y0, x1, y1 = ("|x0|", "|y0|", "|x1|", "|y1|") if carried else ("a", "b", "a", "a")
+    program.op(SUB, "ex", "x1", "x0")
+    program.op(SUB, "ey", "y1", "y0")
+    program.op(ABS, x0, "x0", first=carried)
+    program.op(ABS, y0, "y0", first=carried)
+    program.op(ADD, "size", x0, y0)
+    program.op(ABS, x1, "x1")
+    program.op(ADD, "size", "size", x1)
+    program.op(ABS, y1, "y1")
+    program.op(ADD, "size", "size", y1)
+    _hypot(program, "length", "ex", "ey")
+    program.op(DIV, "resolution", "length", "size")
+
+
 _EDGES = Program(["x0", "y0", "x1", "y1"], [], ["ex", "ey", "size", "resolution"])
-_EDGES.op(SUB, "ex", "x1", "x0")
-_EDGES.op(SUB, "ey", "y1", "y0")
-_EDGES.op(ABS, "a", "x0")
-_EDGES.op(ABS, "b", "y0")
-_EDGES.op(ADD, "size", "a", "b")
-_EDGES.op(ABS, "a", "x1")
-_EDGES.op(ADD, "size", "size", "a")
-_EDGES.op(ABS, "a", "y1")
-_EDGES.op(ADD, "size", "size", "a")
-_hypot(_EDGES, "length", "ex", "ey")
-_EDGES.op(DIV, "resolution", "length", "size")
+_edge_resolution(_EDGES, carried=False)
 
 
 def edges(points: Any) -> Columns | None:
@@ -440,17 +449,7 @@ _EDGE_CHECKS = Program(
     ["before", "zero", "one"],
     ["resolution", "pole resolution", "along n", "slope", "rotation"],
 )
-_EDGE_CHECKS.op(SUB, "ex", "x1", "x0")  # ``_EDGES``, |x|, |y| of a vertex made once (``SWAP``)
-_EDGE_CHECKS.op(SUB, "ey", "y1", "y0")
-_EDGE_CHECKS.op(ABS, "|x0|", "x0", first=True)
-_EDGE_CHECKS.op(ABS, "|y0|", "y0", first=True)
-_EDGE_CHECKS.op(ADD, "size", "|x0|", "|y0|")
-_EDGE_CHECKS.op(ABS, "|x1|", "x1")
-_EDGE_CHECKS.op(ADD, "size", "size", "|x1|")
-_EDGE_CHECKS.op(ABS, "|y1|", "y1")
-_EDGE_CHECKS.op(ADD, "size", "size", "|y1|")
-_hypot(_EDGE_CHECKS, "length", "ex", "ey")
-_EDGE_CHECKS.op(DIV, "resolution", "length", "size")
+_edge_resolution(_EDGE_CHECKS, carried=True)  # ``_EDGES``, a vertex's |x|, |y| made once (``SWAP``)
 _EDGE_CHECKS.op(SET, "previous", "before", first=True)  # the smaller of consecutive resolutions
 _EDGE_CHECKS.op(MIN, "pole resolution", "previous", "resolution")
 _EDGE_CHECKS.op(SET, "previous", "resolution")
