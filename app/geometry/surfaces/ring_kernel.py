@@ -145,6 +145,70 @@ def _ring(meridian: Any, gauss: Any, cos: float, sin: float, tiny: float) -> Any
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
+def _corners(meridian: Any, gauss: Any, k: int, cos: float, sin: float) -> Any:
+    """Face k's corners (x, y·1, y·0), (x, y·cos, y·sin) of the meridian (f0 … f3) and of its
+    Gauss image (g0 … g3), as ``_face`` turns them; y·1 is y."""
+    sx, sy, ex, ey = meridian[k, 0], meridian[k, 1], meridian[k + 1, 0], meridian[k + 1, 1]
+    nsx, nsy, nex, ney = gauss[k, 0], gauss[k, 1], gauss[k + 1, 0], gauss[k + 1, 1]
+    return (
+        (sx, sy, sy * 0.0),
+        (sx, sy * cos, sy * sin),
+        (ex, ey * cos, ey * sin),
+        (ex, ey, ey * 0.0),
+        (nsx, nsy, nsy * 0.0),
+        (nsx, nsy * cos, nsy * sin),
+        (nex, ney * cos, ney * sin),
+        (nex, ney, ney * 0.0),
+    )
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _theorem_and_17(
+    f0: Any,
+    f3: Any,
+    g0: Any,
+    g3: Any,
+    area: float,
+    gauss_area: float,
+    mixed_area: float,
+    mag_f: float,
+    mag_n: float,
+    mag_fn: float,
+    parallel: float,
+    curvature: float,
+    minimal: bool,
+    tiny: float,
+) -> tuple[float, float, float, float]:
+    """A face's theorem residual (8 if ``minimal``, else 7 with K = ``curvature``; the larger
+    with the parallel residual), then (17)'s K and H residuals and Δ, from the face's areas and
+    magnitudes and the radii y of its corners f0, f3 and g0, g3."""
+    sy, ey, nsy, ney = f0[1], f3[1], g0[1], g3[1]
+    if minimal:
+        own = abs(mixed_area) / mag_fn
+    else:
+        own = abs(gauss_area - curvature * area) / (mag_n + abs(curvature) * mag_f)
+    theorem = own if (own >= parallel or own != own) else parallel  # np.maximum: NaN wins
+    # (17), as ``equation_17_kernel.one_face`` with one reciprocal of c
+    c = max(abs(sy), abs(ey))
+    if not c > tiny:
+        c = 1.0
+    rc = 1.0 / c
+    q0 = sy * rc
+    q1 = ey * rc
+    dp = q1 * q1 - q0 * q0
+    sp = q1 * q1 + q0 * q0
+    area_h = area * rc
+    mag_h = mag_f * rc
+    k_scale = mag_n * sp + mag_h * rc * (ney * ney + nsy * nsy)
+    h_scale = mag_fn * sp + mag_h * (abs(q0 * nsy) + abs(q1 * ney))
+    k_res = abs(gauss_area * dp - area_h * rc * (ney * ney - nsy * nsy))
+    h_res = abs(mixed_area * dp + area_h * (q0 * nsy - q1 * ney))
+    k_res = k_res / (k_scale if k_scale > tiny else tiny)
+    h_res = h_res / (h_scale if h_scale > tiny else tiny)
+    return theorem, k_res, h_res, dp
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
 def _face_residuals(
     meridian: Any,
     gauss: Any,
@@ -168,17 +232,7 @@ def _face_residuals(
     units of rounding of their scales, which only residuals at rounding level see
     (tests/geometry/surfaces/test_ring_kernel.py bounds the difference, tests/test_golden.py).
     """
-    sx, sy, ex, ey = meridian[k, 0], meridian[k, 1], meridian[k + 1, 0], meridian[k + 1, 1]
-    # corners (x, y·1, y·0) and (x, y·cos, y·sin) as ``_face``; y·1 is y
-    f0 = (sx, sy, sy * 0.0)
-    f1 = (sx, sy * cos, sy * sin)
-    f2 = (ex, ey * cos, ey * sin)
-    f3 = (ex, ey, ey * 0.0)
-    nsx, nsy, nex, ney = gauss[k, 0], gauss[k, 1], gauss[k + 1, 0], gauss[k + 1, 1]
-    g0 = (nsx, nsy, nsy * 0.0)
-    g1 = (nsx, nsy * cos, nsy * sin)
-    g2 = (nex, ney * cos, ney * sin)
-    g3 = (nex, ney, ney * 0.0)
+    f0, f1, f2, f3, g0, g1, g2, g3 = _corners(meridian, gauss, k, cos, sin)
     af, an, mixed = _areas(f0, f1, f2, f3, g0, g1, g2, g3)
     # |a(f)| for residuals only: √ of the sum of squares (within 2 ulp of the nested hypots
     # ``_face`` takes, which cost ≈ 9 ns a face here against ≈ 2), hypot where squares underflow
@@ -191,28 +245,22 @@ def _face_residuals(
     gauss_area = an[0] * unit[0] + an[1] * unit[1] + an[2] * unit[2]
     mixed_area = mixed[0] * unit[0] + mixed[1] * unit[1] + mixed[2] * unit[2]
     mag_f, mag_n, mag_fn, parallel = _magnitudes(f0, f1, f2, f3, g0, g1, g2, g3, af, an, tiny)
-    if minimal:
-        own = abs(mixed_area) / mag_fn
-    else:
-        own = abs(gauss_area - curvature * area) / (mag_n + abs(curvature) * mag_f)
-    theorem = own if (own >= parallel or own != own) else parallel  # np.maximum: NaN wins
-    # (17), as ``equation_17_kernel.one_face`` with one reciprocal of c
-    c = max(abs(sy), abs(ey))
-    if not c > tiny:
-        c = 1.0
-    rc = 1.0 / c
-    q0 = sy * rc
-    q1 = ey * rc
-    dp = q1 * q1 - q0 * q0
-    sp = q1 * q1 + q0 * q0
-    area_h = area * rc
-    mag_h = mag_f * rc
-    k_scale = mag_n * sp + mag_h * rc * (ney * ney + nsy * nsy)
-    h_scale = mag_fn * sp + mag_h * (abs(q0 * nsy) + abs(q1 * ney))
-    k_res = abs(gauss_area * dp - area_h * rc * (ney * ney - nsy * nsy))
-    h_res = abs(mixed_area * dp + area_h * (q0 * nsy - q1 * ney))
-    k_res = k_res / (k_scale if k_scale > tiny else tiny)
-    h_res = h_res / (h_scale if h_scale > tiny else tiny)
+    theorem, k_res, h_res, dp = _theorem_and_17(
+        f0,
+        f3,
+        g0,
+        g3,
+        area,
+        gauss_area,
+        mixed_area,
+        mag_f,
+        mag_n,
+        mag_fn,
+        parallel,
+        curvature,
+        minimal,
+        tiny,
+    )
     return area, theorem, k_res, h_res, dp
 
 
@@ -288,16 +336,7 @@ def _face_unbranched(
     once in the vector registers (the quotients and square roots are IEEE's, correctly rounded
     in each lane, and numba contracts no product into an FMA): the same bits.
     """
-    sx, sy, ex, ey = meridian[k, 0], meridian[k, 1], meridian[k + 1, 0], meridian[k + 1, 1]
-    f0 = (sx, sy, sy * 0.0)
-    f1 = (sx, sy * cos, sy * sin)
-    f2 = (ex, ey * cos, ey * sin)
-    f3 = (ex, ey, ey * 0.0)
-    nsx, nsy, nex, ney = gauss[k, 0], gauss[k, 1], gauss[k + 1, 0], gauss[k + 1, 1]
-    g0 = (nsx, nsy, nsy * 0.0)
-    g1 = (nsx, nsy * cos, nsy * sin)
-    g2 = (nex, ney * cos, ney * sin)
-    g3 = (nex, ney, ney * 0.0)
+    f0, f1, f2, f3, g0, g1, g2, g3 = _corners(meridian, gauss, k, cos, sin)
     af, an, mixed = _areas(f0, f1, f2, f3, g0, g1, g2, g3)
     big = max(abs(af[0]), abs(af[1]), abs(af[2]))
     area = math.sqrt(af[0] * af[0] + af[1] * af[1] + af[2] * af[2])
@@ -325,27 +364,22 @@ def _face_unbranched(
         and (SQUARES_LOW < crossed_big < SQUARES_HIGH)
         and area > RECIPROCAL_FROM
     )
-    if minimal:
-        own = abs(mixed_area) / mag_fn
-    else:
-        own = abs(gauss_area - curvature * area) / (mag_n + abs(curvature) * mag_f)
-    theorem = own if (own >= parallel or own != own) else parallel
-    c = max(abs(sy), abs(ey))
-    if not c > tiny:
-        c = 1.0
-    rc = 1.0 / c
-    q0 = sy * rc
-    q1 = ey * rc
-    dp = q1 * q1 - q0 * q0
-    sp = q1 * q1 + q0 * q0
-    area_h = area * rc
-    mag_h = mag_f * rc
-    k_scale = mag_n * sp + mag_h * rc * (ney * ney + nsy * nsy)
-    h_scale = mag_fn * sp + mag_h * (abs(q0 * nsy) + abs(q1 * ney))
-    k_res = abs(gauss_area * dp - area_h * rc * (ney * ney - nsy * nsy))
-    h_res = abs(mixed_area * dp + area_h * (q0 * nsy - q1 * ney))
-    k_res = k_res / (k_scale if k_scale > tiny else tiny)
-    h_res = h_res / (h_scale if h_scale > tiny else tiny)
+    theorem, k_res, h_res, dp = _theorem_and_17(
+        f0,
+        f3,
+        g0,
+        g3,
+        area,
+        gauss_area,
+        mixed_area,
+        mag_f,
+        mag_n,
+        mag_fn,
+        parallel,
+        curvature,
+        minimal,
+        tiny,
+    )
     equation_17 = k_res if (k_res >= h_res or k_res != k_res) else h_res
     return area, theorem, (equation_17 if dp != 0 else 0.0), dp, usual
 
