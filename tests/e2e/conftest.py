@@ -126,8 +126,16 @@ def page(context: BrowserContext) -> Iterator[Page]:
     assert not unexpected, unexpected
 
 
+# The tallest explorer page is ~13,000 px on a phone; ReDoc lays out every operation on one page
+# (~137,000 px, a 20 MB PNG whose capture took > 30 s on a loaded CI host), so a page taller than
+# this is captured as its first viewport only.
+SCREENSHOT_MAX_HEIGHT = 16_000
+
+
 def screenshot(page: Page, name: str) -> Path:
+    """Save a PNG for a human to look at: the whole page, or its first viewport if very tall."""
     SCREENSHOTS.mkdir(parents=True, exist_ok=True)
     path = SCREENSHOTS / f"{name}.png"
-    page.screenshot(path=str(path), full_page=True)
+    height = page.evaluate("document.documentElement.scrollHeight")
+    page.screenshot(path=str(path), full_page=height <= SCREENSHOT_MAX_HEIGHT)
     return path
