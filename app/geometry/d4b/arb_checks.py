@@ -47,6 +47,7 @@ _arb_abs = arb_loops.extern("arb_abs", *_COPY)
 _set_round = arb_loops.extern("arb_set_round", *_UNARY)
 _set = arb_loops.extern("arb_set", *_COPY)
 _gt = arb_loops.extern("arb_gt", *_TEST)
+_exp = arb_loops.extern("arb_exp", *_UNARY)
 
 #: Whether the compiled residuals can be used (else the callers' numpy code runs).
 AVAILABLE = arb_loops.AVAILABLE and all(
@@ -63,6 +64,7 @@ AVAILABLE = arb_loops.AVAILABLE and all(
         _set_round,
         _set,
         _gt,
+        _exp,
     )
 )
 
@@ -538,6 +540,52 @@ if AVAILABLE:
             _div(violation[k], t, d2, prec)
             _div(ratios[k], product, d2, prec)
 
+    @arb_loops.loop
+    def _closed_kinematics(
+        i: Any, constants: Any, p_x: Any, p_y: Any, d_x: Any, d_y: Any, prec: int, s: int
+    ) -> None:
+        """Theorems 5 and 6 from one exponential per index (``closed_forms.kinematic_balls``):
+        E = e^t, t = i·L + τL; e^u = E·e^{−L/2} (u = t − L/2); p_i = (i·2d − d,
+        a·(e^u + 1/e^u)·½), d_i = (i·2d − h·tanh t, h·sech t) with tanh t = 1 − 2/(E² + 1)
+        and sech t = 2/(E + 1/E) (``constants``: L, τL, e^{−L/2}, 2d, d, h, a = √(h² − d²), 1,
+        2, ½)."""
+        length, offset, ratio, step, d, h, amplitude, one, two, half = (
+            constants[0],
+            constants[1],
+            constants[2],
+            constants[3],
+            constants[4],
+            constants[5],
+            constants[6],
+            constants[7],
+            constants[8],
+            constants[9],
+        )
+        t, e, w, x = s, s + _B, s + 2 * _B, s + 3 * _B
+        for k in range(p_x.shape[0]):
+            _mul(t, i[k], length, prec)
+            _add(t, t, offset, prec)
+            _exp(e, t, prec)
+            _mul(x, i[k], step, prec)
+            # p_i = (x − d, a·(e^u + 1/e^u)·½)
+            _sub(p_x[k], x, d, prec)
+            _mul(t, e, ratio, prec)
+            _div(w, one, t, prec)
+            _add(t, t, w, prec)
+            _mul(t, t, half, prec)
+            _mul(p_y[k], amplitude, t, prec)
+            # d_i = (x − h·tanh t, h·sech t)
+            _mul(t, e, e, prec)
+            _add(t, t, one, prec)
+            _div(t, two, t, prec)
+            _sub(t, one, t, prec)
+            _mul(t, h, t, prec)
+            _sub(d_x[k], x, t, prec)
+            _div(w, one, e, prec)
+            _add(t, e, w, prec)
+            _div(t, two, t, prec)
+            _mul(d_y[k], h, t, prec)
+
 
 class Columns:
     """The columns of (D1), (D3) and eq. (2) of a polygon of balls (``_columns``) in a block of
@@ -805,6 +853,31 @@ def hypothesis(
     return violation, ratios
 
 
+def closed_kinematics(
+    i: np.ndarray[Any, Any], constants: list[Any]
+) -> tuple[np.ndarray[Any, Any], np.ndarray[Any, Any]]:
+    """(p_i, d_i) of Theorems 5 and 6 at the indices ``i`` (balls) in one compiled pass
+    (``_closed_kinematics``, whose docstring lists ``constants``), each ``(n, 2)``: fresh balls,
+    read-only with their addresses kept (``arb_loops.keep``)."""
+    n = len(i)
+    columns = [fresh(n) for _ in range(4)]
+    if n:
+        with arb_loops.Scratch(4) as scratch:
+            _closed_kinematics(
+                arb_loops.addresses(i),
+                np.array([_address(c) for c in constants], dtype=np.int64),
+                *(arb_loops.addresses(c) for c in columns),
+                flint.ctx.prec,
+                scratch,
+            )
+    pairs = []
+    for x, y in (columns[:2], columns[2:]):
+        points = np.empty((n, 2), dtype=object)
+        points[:, 0], points[:, 1] = x, y
+        pairs.append(arb_loops.keep(points, checked=True))
+    return pairs[0], pairs[1]
+
+
 def _warm() -> None:
     """Compile every loop now, at import, so that no request pays for it."""
     points = np.empty((6, 2), dtype=object)
@@ -824,6 +897,7 @@ def _warm() -> None:
     relative_distances(points, points[::-1].copy(), y, tiny)
     hypothesis(d, y)
     darboux_distances(points, points[::-1].copy(), d)
+    closed_kinematics(y, [d, tiny, d, d, d, d, d, tiny, d, tiny])
 
 
 if AVAILABLE:

@@ -160,14 +160,26 @@ class D4bPolygons:
         return points[self.i_min - lo : self.i_max + 2 - lo]
 
     @cached_property
+    def _closed_balls(self) -> tuple[Array, Array] | None:
+        """Theorems 5 and 6 together on balls, for the checks of a constructed polygon
+        (``kinematic_balls``: one exponential per index); None otherwise."""
+        if not self.constructed:
+            return None  # served as the polygon: the two functions' balls
+        return kinematic_closed_forms.kinematic_balls(self.ar, self.h, self.d, self._i, self.shift)
+
+    @cached_property
     def closed_p(self) -> Array:
         """Theorem 5, eq. (14), at i_min .. i_max + 1."""
+        if self._closed_balls is not None:
+            return self._closed_balls[0]
         ar = self.ar
         return kinematic_closed_forms.hyperbolic_cosine(ar, self.h, self.d, self._i, self.shift)
 
     @cached_property
     def closed_tractrix(self) -> Array:
         """Theorem 6, eq. (16), at i_min .. i_max + 1."""
+        if self._closed_balls is not None:
+            return self._closed_balls[1]
         return kinematic_closed_forms.tractrix(self.ar, self.h, self.d, self._i, self.shift)
 
     @cached_property

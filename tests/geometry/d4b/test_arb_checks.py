@@ -197,3 +197,44 @@ def test_hypothesis_and_theorem_6_are_the_numpy_balls(case: tuple[Any, ...], per
         tiny = ar.scalar(np.finfo(np.float64).tiny)
         expected = relative_to(ar, point_distance(ar, tractrix[:n], closed[:n]), scale)
         _same(arb_checks.relative_distances(tractrix[:n], closed[:n], scale, tiny), expected)
+
+
+@pytest.mark.parametrize("digits", [15, 50, 500])
+@pytest.mark.parametrize("beta0", [None, 0.3, 2.9])
+@pytest.mark.parametrize(("h", "d", "i_min", "i_max"), [(1.0, 0.1, -60, 59), (2.0, 1.7, -5, 30)])
+def test_theorems_5_and_6_from_one_exponential_hold_the_closed_forms(
+    digits: int, beta0: float | None, h: float, d: float, i_min: int, i_max: int
+) -> None:
+    """Eqs. (14) and (16) from one exponential per index (``kinematic_balls``) overlap the
+    balls of the two closed forms, with radii of the same order (at most 4 times theirs, plus
+    64 units of the precision of the values' size)."""
+    ar = Ball(digits, 3, recursions_only=True)
+    with balls.working_precision(ar.bits):
+        hh, dd = ar.scalar(h), ar.scalar(d)
+        shift = closed_forms.tilt_shift(ar, hh, dd, beta0)
+        i = ar.indices(i_min, i_max)
+        pair = closed_forms.kinematic_balls(ar, hh, dd, i, shift)
+        assert pair is not None
+        expected = (
+            closed_forms.hyperbolic_cosine(ar, hh, dd, i, shift),
+            closed_forms.tractrix(ar, hh, dd, i, shift),
+        )
+        ulp = flint.arb(2) ** (-ar.bits)
+        for got, want in zip(pair, expected, strict=True):
+            assert got.shape == want.shape == (i_max - i_min + 1, 2)
+            assert arb_checks.balls(got)
+            for a, b in zip(got.reshape(-1), want.reshape(-1), strict=True):
+                assert a.overlaps(b)
+                size = abs(b).upper() + flint.arb(h)
+                assert a.rad() <= 4 * b.rad() + 64 * ulp * size
+
+
+def test_theorems_5_and_6_from_one_exponential_on_balls_only() -> None:
+    """Off balls (an index that is not a ball, or float64), the two functions run apart."""
+    ar = Ball(30)
+    with balls.working_precision(ar.bits):
+        h, d = ar.scalar(1.0), ar.scalar(0.25)
+        i = np.array([flint.arb(1), 2, flint.arb(3)], dtype=object)
+        assert closed_forms.kinematic_balls(ar, h, d, i, ar.scalar(0)) is None
+        assert closed_forms.kinematic_balls(ar, h, 0.25, ar.indices(0, 2), ar.scalar(0)) is None
+        assert closed_forms.kinematic_balls(ar, h, d, ar.indices(0, 2), ar.scalar(0)) is not None
