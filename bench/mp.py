@@ -11,6 +11,16 @@ bench/common.py), the construction and all 21 checks of (D4b) with every compani
 - on balls with ``checks=none`` (the polygon and companions alone).
 
 Target (issue 15): every check on balls within 5× of the script at 50 digits.
+
+What a ratio measures (``bench.common.compare``): CPU time of this process, the script and the
+subject alternating (script, subject, script, subject, …), each subject sample one call from
+the parameters to the returned ``Curve`` (no response encoding: the decimal strings of the
+coordinates are not in it), each script sample as many runs as fill 20 ms (one or two), and
+the figure the median over the pairs of subject / the script sample just before it. Each side
+runs right after the other, so each finds the processor's caches filled by the other (what that
+costs is measured in docs/performance.md, issue 15, session 20). The served
+computation is sampled over ``SERVED_PAIRS`` pairs (15: one run of the 50-digit row's 5 pairs
+moved by ±0.3× from run to run), the other rows over fewer (they have no target).
 """
 
 from __future__ import annotations
@@ -33,6 +43,8 @@ from bench.common import compare, ratio_row
 H, D = 1.0, 0.1
 LO, HI = -500, 499
 TARGET = 5.0
+#: Pairs of the served row (the one with the target); the others take ``PAIRS``.
+SERVED_PAIRS, PAIRS = 15, 5
 
 
 def plain_script(digits: int) -> list[object]:
@@ -72,9 +84,11 @@ def main(digits: tuple[int, ...] = (50, 500)) -> None:
             1,
             warm=False,
         )
-        served = compare(lambda n=n_digits: plain_script(n), lambda n=n_digits: on_balls(n), 5)
+        served = compare(
+            lambda n=n_digits: plain_script(n), lambda n=n_digits: on_balls(n), SERVED_PAIRS
+        )
         polygon = compare(
-            lambda n=n_digits: plain_script(n), lambda n=n_digits: on_balls(n, NOTHING), 5
+            lambda n=n_digits: plain_script(n), lambda n=n_digits: on_balls(n, NOTHING), PAIRS
         )
         print(ratio_row(f"digits={n_digits}: mpmath, every check", mpmath_path, "script"))
         print(

@@ -607,14 +607,20 @@ class Scratch:
         self.address = 0
 
 
-def argmax_abs(values: np.ndarray[Any, Any], upward: bool) -> int:
+def argmax_abs(
+    values: np.ndarray[Any, Any],
+    upward: bool,
+    read: np.ndarray[Any, np.dtype[np.int64]] | None = None,
+) -> int:
     """Index of the entry whose |v| upper (``upward``) or lower bound is the largest (flint's
     ``abs_upper``/``abs_lower`` at the working precision, compared exactly; the first of equal
-    ones); −1 for an empty array, −2 when some bound is not finite."""
+    ones); −1 for an empty array, −2 when some bound is not finite. ``read``: the entries'
+    ``addresses`` if the caller has them already (else they are read here)."""
     if not values.size:
         return -1
+    found = addresses(values) if read is None else read
     with Scratch(2) as scratch:
-        return int(_argmax_abs(addresses(values), upward, flint.ctx.prec, scratch))
+        return int(_argmax_abs(found, upward, flint.ctx.prec, scratch))
 
 
 def largest_radii(x: np.ndarray[Any, Any], y: np.ndarray[Any, Any]) -> tuple[int, int, bool, bool]:

@@ -483,10 +483,16 @@ def _largest_abs(values: Array, upward: bool) -> Any:
     """The largest ``abs_upper`` (``upward``) or ``abs_lower`` of an object array of balls,
     the entry found in a compiled loop (``arb_loops.argmax_abs``, the same bounds compared),
     its bound computed here; None where the loop does not apply (then Python's ``max``)."""
-    if not arb_loops.AVAILABLE or not all_balls(values):
+    if not arb_loops.AVAILABLE:
+        return None
+    # the addresses read once, for the type check and the loop (``all_balls`` reads them too)
+    read = arb_loops.addresses(values)
+    if not arb_loops.known_balls(values) and not (
+        arb_program.all_balls(read) if arb_program.AVAILABLE else arb_loops.all_balls(values)
+    ):
         return None
     flat = values.reshape(-1)
-    found = arb_loops.argmax_abs(flat, upward)
+    found = arb_loops.argmax_abs(flat, upward, read)
     if found == -1:
         return flint.arb(0)
     if found < 0:
