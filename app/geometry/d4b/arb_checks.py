@@ -866,7 +866,10 @@ def closed_kinematics(
             _closed_kinematics(
                 arb_loops.addresses(i),
                 np.array([_address(c) for c in constants], dtype=np.int64),
-                *(arb_loops.addresses(c) for c in columns),
+                arb_loops.addresses(columns[0]),
+                arb_loops.addresses(columns[1]),
+                arb_loops.addresses(columns[2]),
+                arb_loops.addresses(columns[3]),
                 flint.ctx.prec,
                 scratch,
             )
