@@ -20,7 +20,8 @@ the figure the median over the pairs of subject / the script sample just before 
 runs right after the other, so each finds the processor's caches filled by the other (what that
 costs is measured in docs/performance.md, issue 15, session 20). The served
 computation is sampled over ``SERVED_PAIRS`` pairs (15: one run of the 50-digit row's 5 pairs
-moved by ±0.3× from run to run), the other rows over fewer (they have no target).
+moved by ±0.3× from run to run), the other rows over fewer (they have no target). The rows on
+balls run before the mpmath ones (see ``main``).
 """
 
 from __future__ import annotations
@@ -76,6 +77,20 @@ def main(digits: tuple[int, ...] = (50, 500)) -> None:
         f"precision=mp, D4b h = {H:g}, d = {D:g}, {HI - LO + 1} vertices, against a plain mpmath "
         f"script of recursion (13) (median of paired ratios; load average {os.getloadavg()[0]:.2f})"
     )
+    # the balls first, at every digits: after the mpmath path (seconds of mpmath numbers) this
+    # process runs both the script and the served computation about 45 % slower (heap and
+    # caches; a gc.collect() does not undo it), which made the ratio jump from run to run
+    for n_digits in digits:
+        served = compare(
+            lambda n=n_digits: plain_script(n), lambda n=n_digits: on_balls(n), SERVED_PAIRS
+        )
+        polygon = compare(
+            lambda n=n_digits: plain_script(n), lambda n=n_digits: on_balls(n, NOTHING), PAIRS
+        )
+        print(
+            ratio_row(f"digits={n_digits}: balls (served), every check", served, "script", TARGET)
+        )
+        print(ratio_row(f"digits={n_digits}: balls, checks=none", polygon, "script"))
     for n_digits in digits:
         mp = MultiPrecision(n_digits)
         mpmath_path = compare(
@@ -84,17 +99,7 @@ def main(digits: tuple[int, ...] = (50, 500)) -> None:
             1,
             warm=False,
         )
-        served = compare(
-            lambda n=n_digits: plain_script(n), lambda n=n_digits: on_balls(n), SERVED_PAIRS
-        )
-        polygon = compare(
-            lambda n=n_digits: plain_script(n), lambda n=n_digits: on_balls(n, NOTHING), PAIRS
-        )
         print(ratio_row(f"digits={n_digits}: mpmath, every check", mpmath_path, "script"))
-        print(
-            ratio_row(f"digits={n_digits}: balls (served), every check", served, "script", TARGET)
-        )
-        print(ratio_row(f"digits={n_digits}: balls, checks=none", polygon, "script"))
 
 
 if __name__ == "__main__":
