@@ -16,12 +16,12 @@ What a ratio measures (``bench.common.compare``): CPU time of this process, the 
 subject alternating (script, subject, script, subject, …), each subject sample one call from
 the parameters to the returned ``Curve`` (no response encoding: the decimal strings of the
 coordinates are not in it), each script sample as many runs as fill 20 ms (one or two), and
-the figure the median over the pairs of subject / the script sample just before it. Each side
-runs right after the other, so each finds the processor's caches filled by the other (what that
-costs is measured in docs/performance.md, issue 15, session 20). The served
-computation is sampled over ``SERVED_PAIRS`` pairs (15: one run of the 50-digit row's 5 pairs
-moved by ±0.3× from run to run), the other rows over fewer (they have no target). The rows on
-balls run before the mpmath ones (see ``main``).
+the figure the median over the pairs of subject / the script sample just before it. The
+served row takes ``SERVED_PAIRS`` pairs (15; one run of the 5 pairs it took before moved by
+±0.3× from run to run), the other rows fewer (they have no target). The rows on balls run
+before the mpmath ones: after the mpmath path this process ran both sides about 45 % slower
+(docs/performance.md, issue 15, session 20), while alternating itself costs neither side
+measurable time.
 """
 
 from __future__ import annotations
