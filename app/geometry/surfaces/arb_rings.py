@@ -25,6 +25,7 @@ import flint
 import numpy as np
 
 from app.geometry import arb_program
+from app.geometry.ball_arithmetic import RESIDUAL_BITS
 from app.geometry.arb_program import (
     ABS,
     ADD,
@@ -49,12 +50,31 @@ _INPUTS = ["x0", "y0", "u0", "v0", "x1", "y1", "u1", "v1"]
 _CONSTANTS = ["q", "r", "cs", "sin", "sqrt r", "K", "|K|", "tiny", "zero", "two", "four"]
 
 
-def _ring_program(constant_k: bool) -> Program:
+def _ring_program(constant_k: bool, exact_scales: bool = False) -> Program:
     """The face of vertices 0, 1 of the meridian (x, y) and its Gauss image (u, v): the
     theorem's residual (7 with ``constant_k``: K given, else 8: H = 0) and (17)'s larger
-    residual (0 where 0/0, the flag kept: whether (17) is defined)."""
+    residual (0 where 0/0, the flag kept: whether (17) is defined).
+
+    Every quantity that only scales a residual runs at ``run``'s low precision (``LOW``
+    below): the magnitudes |a(f)|, |a(n)|, |a(f, n)| and their factors, (17)'s scales, the
+    parallel residual's turn after its cross product, and each quotient. Each residual is a
+    quotient a / s of a numerator a (a difference that cancels: computed at the working
+    precision, as before) by a scale s; arb encloses the exact value at any precision, so s
+    at 64 bits is a ball holding the exact s, and arb's division of a by that ball holds
+    a / s for every s in it, its upper bound dividing by s's lower bound: the residual's
+    upper bound stays rigorous, larger by about 2^-64 relative (and a lower bound smaller by
+    as much), far below the 10 digits shown. With ``exact_scales`` every operation runs at
+    the working precision: the balls of the numpy code (the tests compare them bit for
+    bit)."""
     program = Program(_INPUTS, _CONSTANTS, ["theorem", "equation 17"])
-    op = program.op
+    low = not exact_scales
+
+    def op(code: int, d: str, a: str, b: str | None = None, first: bool = False) -> None:
+        program.op(code, d, a, b, first=first)
+
+    def scale(code: int, d: str, a: str, b: str | None = None, first: bool = False) -> None:
+        program.op(code, d, a, b, low=low, first=first)
+
     # ring_curvature._ring_curvatures_in_the_meridian_plane
     op(ADD, "s_f", "y0", "y1")
     op(REQUIRE_GT, "s_f", "s_f", "zero")
@@ -87,92 +107,92 @@ def _ring_program(constant_k: bool) -> Program:
     # a vertex's |x|, |y|, |u|, |v|, y², v², y v: made for vertex 1 of each face and kept for
     # the next face's vertex 0 (``SWAP`` at the end), vertex 0's made on the first face only
     for name in ("x", "y", "u", "v"):
-        op(ABS, f"|{name}0|", f"{name}0", first=True)
-        op(ABS, f"|{name}1|", f"{name}1")
+        scale(ABS, f"|{name}0|", f"{name}0", first=True)
+        scale(ABS, f"|{name}1|", f"{name}1")
     for f1, f2, (a, b, c, d) in (
         ("f1", "f2", ("|x0|", "|y0|", "|x1|", "|y1|")),
         ("n1", "n2", ("|u0|", "|v0|", "|u1|", "|v1|")),
     ):
-        op(ADD, "t1", a, b)  # a + b + c + d cs
-        op(ADD, "t1", "t1", c)
-        op(MUL, "t2", d, "cs")
-        op(ADD, f1, "t1", "t2")
-        op(MUL, "t2", b, "cs")  # a + b cs + c + d
-        op(ADD, "t1", a, "t2")
-        op(ADD, "t1", "t1", c)
-        op(ADD, f2, "t1", d)
-    op(MUL, "t1", "f1", "f2")
-    op(DIV, "mag f", "t1", "two")
-    op(MUL, "t1", "n1", "n2")
-    op(DIV, "mag n", "t1", "two")
-    op(MUL, "t1", "f1", "n2")
-    op(MUL, "t2", "n1", "f2")
-    op(ADD, "t1", "t1", "t2")
-    op(DIV, "mag fn", "t1", "four")
+        scale(ADD, "t1", a, b)  # a + b + c + d cs
+        scale(ADD, "t1", "t1", c)
+        scale(MUL, "t2", d, "cs")
+        scale(ADD, f1, "t1", "t2")
+        scale(MUL, "t2", b, "cs")  # a + b cs + c + d
+        scale(ADD, "t1", a, "t2")
+        scale(ADD, "t1", "t1", c)
+        scale(ADD, f2, "t1", d)
+    scale(MUL, "t1", "f1", "f2")
+    scale(DIV, "mag f", "t1", "two")
+    scale(MUL, "t1", "n1", "n2")
+    scale(DIV, "mag n", "t1", "two")
+    scale(MUL, "t1", "f1", "n2")
+    scale(MUL, "t2", "n1", "f2")
+    scale(ADD, "t1", "t1", "t2")
+    scale(DIV, "mag fn", "t1", "four")
     op(MUL, "t1", "dy", "du")  # turn = |Δy Δu − Δx Δv| sin √r
     op(MUL, "t2", "dx", "dv")
     op(SUB, "t1", "t1", "t2")
-    op(ABS, "t1", "t1")
-    op(MUL, "t1", "t1", "sin")
-    op(MUL, "turn", "t1", "sqrt r")
-    op(MUL, "t1", "s_f", "s_n")  # turned = |S_f S_n| turn / 4
-    op(ABS, "t1", "t1")
-    op(MUL, "t1", "t1", "turn")
-    op(DIV, "turned", "t1", "four")
+    scale(ABS, "t1", "t1")
+    scale(MUL, "t1", "t1", "sin")
+    scale(MUL, "turn", "t1", "sqrt r")
+    scale(MUL, "t1", "s_f", "s_n")  # turned = |S_f S_n| turn / 4
+    scale(ABS, "t1", "t1")
+    scale(MUL, "t1", "t1", "turn")
+    scale(DIV, "turned", "t1", "four")
     # curvature.from_areas: the parallel residual
-    op(MUL, "t1", "mag f", "mag n")
+    scale(MUL, "t1", "mag f", "mag n")
     op(GT, "t1", "t1", "tiny")
     op(CHOOSE, "t1", "t1", "tiny")
-    op(DIV, "parallel", "turned", "t1")
+    scale(DIV, "parallel", "turned", "t1")
     # the theorem: constant_curvature_residuals or minimal_residuals, then the larger of it
     # and the parallel residual
     if constant_k:
-        op(MUL, "t1", "|K|", "mag f")
-        op(ADD, "t2", "mag n", "t1")
+        scale(MUL, "t1", "|K|", "mag f")
+        scale(ADD, "t2", "mag n", "t1")
         op(MUL, "t1", "K", "area")
         op(SUB, "t1", "gauss area", "t1")
-        op(ABS, "t1", "t1")
-        op(DIV, "residual", "t1", "t2")
+        scale(ABS, "t1", "t1")
+        scale(DIV, "residual", "t1", "t2")
     else:
-        op(ABS, "t1", "mixed")
-        op(DIV, "residual", "t1", "mag fn")
-    op(MAX, "theorem", "residual", "parallel")
+        scale(ABS, "t1", "mixed")
+        scale(DIV, "residual", "t1", "mag fn")
+    scale(MAX, "theorem", "residual", "parallel")
     # revolution_formulas.face_residuals (balls: the radii unscaled)
     op(MUL, "p1²", "y1", "y1")
     op(MUL, "p0²", "y0", "y0", first=True)
     op(SUB, "dp", "p1²", "p0²")
-    op(ADD, "sp", "p1²", "p0²")
+    scale(ADD, "sp", "p1²", "p0²")
     op(MUL, "n1²", "v1", "v1")
     op(MUL, "n0²", "v0", "v0", first=True)
-    op(MUL, "t1", "mag n", "sp")  # k_scale
-    op(ADD, "t2", "n1²", "n0²")
-    op(MUL, "t2", "mag f", "t2")
-    op(ADD, "k scale", "t1", "t2")
+    scale(MUL, "t1", "mag n", "sp")  # k_scale
+    scale(ADD, "t2", "n1²", "n0²")
+    scale(MUL, "t2", "mag f", "t2")
+    scale(ADD, "k scale", "t1", "t2")
     op(MUL, "p0 n0", "y0", "v0", first=True)
     op(MUL, "p1 n1", "y1", "v1")
-    op(MUL, "t1", "mag fn", "sp")  # h_scale
-    op(ABS, "t2", "p0 n0")
-    op(ABS, "t3", "p1 n1")
-    op(ADD, "t2", "t2", "t3")
-    op(MUL, "t2", "mag f", "t2")
-    op(ADD, "h scale", "t1", "t2")
+    scale(MUL, "t1", "mag fn", "sp")  # h_scale
+    scale(ABS, "t2", "p0 n0")
+    scale(ABS, "t3", "p1 n1")
+    scale(ADD, "t2", "t2", "t3")
+    scale(MUL, "t2", "mag f", "t2")
+    scale(ADD, "h scale", "t1", "t2")
     op(MUL, "t1", "gauss area", "dp")  # k_res
     op(SUB, "t2", "n1²", "n0²")
     op(MUL, "t2", "area", "t2")
     op(SUB, "t1", "t1", "t2")
-    op(ABS, "t1", "t1")
+    scale(ABS, "t1", "t1")
     op(GT, "k scale", "k scale", "tiny")
     op(CHOOSE, "t3", "k scale", "tiny")
-    op(DIV, "k res", "t1", "t3")
+    scale(DIV, "k res", "t1", "t3")
     op(MUL, "t1", "mixed", "dp")  # h_res
     op(SUB, "t2", "p0 n0", "p1 n1")
     op(MUL, "t2", "area", "t2")
     op(ADD, "t1", "t1", "t2")
-    op(ABS, "t1", "t1")
+    scale(ABS, "t1", "t1")
     op(GT, "h scale", "h scale", "tiny")
     op(CHOOSE, "t3", "h scale", "tiny")
-    op(DIV, "h res", "t1", "t3")
-    op(MAX, "both", "k res", "h res")
+    scale(DIV, "h res", "t1", "t3")
+    scale(MAX, "both", "k res", "h res")
     op(NE, "dp", "dp", "zero")  # (17) defined: the larger residual, else 0
     op(KEEP_FLAG, "dp", "dp")
     op(CHOOSE, "equation 17", "both", "zero")
@@ -184,6 +204,7 @@ def _ring_program(constant_k: bool) -> Program:
 
 
 _THEOREM_7, _THEOREM_8 = _ring_program(True), _ring_program(False)
+_EXACT_7, _EXACT_8 = _ring_program(True, True), _ring_program(False, True)
 
 
 def ring_checks(
@@ -193,14 +214,17 @@ def ring_checks(
     sin: Any,
     curvature: Any,
     reduce: bool = False,
+    exact_scales: bool = False,
 ) -> tuple[np.ndarray[Any, Any], np.ndarray[Any, Any], int] | None:
     """On balls: Theorem 7's residuals (``curvature`` the ball K) or 8's (None: H = 0) and
-    (17)'s larger residual per face (0 where (17) is 0/0, that many), the balls the numpy code
-    makes (``ring_curvature.ring_curvatures`` and the residual functions; the caller runs inside
-    the working precision); None where that code must run (not available, fewer than two
-    vertices, an entry not a ball, a face without certain area). ``reduce``: the theorem's
-    residuals as the two balls a check without per-index residuals reads
-    (``arb_program.run``'s ``reduce``)."""
+    (17)'s larger residual per face (0 where (17) is 0/0, that many): the numpy code's
+    formulas (``ring_curvature.ring_curvatures`` and the residual functions; the caller runs
+    inside the working precision), their scales at ``RESIDUAL_BITS`` (``_ring_program``: each
+    residual's upper bound rigorous, within about 2^-64 relative of the numpy code's), or with
+    ``exact_scales`` the very balls of the numpy code; None where that code must run (not
+    available, fewer than two vertices, an entry not a ball, a face without certain area).
+    ``reduce``: the theorem's residuals as the two balls a check without per-index residuals
+    reads (``arb_program.run``'s ``reduce``)."""
     faces = len(meridian) - 1
     if not AVAILABLE or faces < 1 or len(gauss) != faces + 1:
         return None
@@ -224,8 +248,12 @@ def ring_checks(
             inputs[name + end] = points[rows, column]
         for name, points, column in (("u", gauss, 0), ("v", gauss, 1)):
             inputs[name + end] = points[rows, column]
-    program = _THEOREM_7 if curvature is not None else _THEOREM_8
-    done = arb_program.run(program, inputs, constants, reduce=("theorem",) if reduce else ())
+    if exact_scales:
+        program = _EXACT_7 if curvature is not None else _EXACT_8
+    else:
+        program = _THEOREM_7 if curvature is not None else _THEOREM_8
+    low = min(flint.ctx.prec, RESIDUAL_BITS)
+    done = arb_program.run(program, inputs, constants, low, ("theorem",) if reduce else ())
     if done is None or done[1] >= 0:
         return None
     (theorem, equation_17), _, defined = done
