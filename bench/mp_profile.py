@@ -47,6 +47,7 @@ from app.geometry import arb_loops, arb_program, balls
 from app.geometry.ball_arithmetic import Ball
 from app.geometry.curve import EVERYTHING
 from app.geometry.d4b import (
+    arb_gauss,
     certified,
     checks as d4b_checks,
     construction,
@@ -54,6 +55,7 @@ from app.geometry.d4b import (
     discretization as d4b,
 )
 from app.geometry.d4b.closed_forms import tilt_shift
+from app.geometry.surfaces import arb_rings
 from bench.mp import HI, LO, D, H, on_balls, plain_script
 
 DIGITS = int(os.environ.get("MP_PROFILE_DIGITS", "50"))  # 500: the same at 500 digits
@@ -98,6 +100,11 @@ def _counted(value: Any) -> Any:
 
 #: CPU seconds spent inside the compiled loops (the counted run).
 COMPILED_SECONDS: list[float] = []
+
+#: Section 5's straight-line programs in the counted run, by name: runs, rows, libflint calls
+#: (counted as ``compiled``) and CPU seconds (``_instrument_section_5``).
+PROGRAMS: dict[str, list[float]] = {}
+_IN_SECTION_5 = [False]
 
 #: libflint calls per entry of each compiled loop of ``arb_loops`` (counted as "compiled").
 COMPILED = {
@@ -157,9 +164,16 @@ def _instrument_section_5() -> None:
     first row only once; a reduced output two bounds, two comparisons and the kept balls'
     copies counted as two calls)."""
     run = arb_program.run
+    names = {
+        id(value): f"{module.__name__.rsplit('.', 1)[-1]}.{name}"
+        for module in (arb_gauss, arb_rings)
+        for name, value in vars(module).items()
+        if isinstance(value, arb_program.Program)
+    }
 
     def counted_run(program: Any, inputs: Any, *arguments: Any, **keywords: Any) -> Any:
         rows = len(next(iter(inputs.values()))) if inputs else keywords.get("rows", 0)
+        before = COUNTS["compiled"]
         for code, _, _, _, flags in program.steps:
             calls = 0 if code == arb_program.SWAP else 2 if code == arb_program.ABS else 1
             COUNTS["compiled"] += calls * (1 if flags & arb_program.FIRST else rows)
@@ -170,6 +184,12 @@ def _instrument_section_5() -> None:
             return run(program, inputs, *arguments, **keywords)
         finally:
             COMPILED_SECONDS.append(time.process_time() - start)
+            if _IN_SECTION_5[0]:
+                entry = PROGRAMS.setdefault(names.get(id(program), "other"), [0, 0, 0, 0.0])
+                entry[0] += 1
+                entry[1] += rows
+                entry[2] += COUNTS["compiled"] - before
+                entry[3] += COMPILED_SECONDS[-1]
 
     arb_program.run = counted_run  # type: ignore[assignment]
 
@@ -242,7 +262,11 @@ def _parts(ar: Ball) -> list[tuple[str, float, dict[str, int]]]:
                 False,
             )
 
-        rows.append(("Section 5 (9 statements, Gauss images)", *_timed(section_5)))
+        _IN_SECTION_5[0] = True
+        try:
+            rows.append(("Section 5 (9 statements, Gauss images)", *_timed(section_5)))
+        finally:
+            _IN_SECTION_5[0] = False
         mark = len(COMPILED_SECONDS)
         curve = d4b.compute(ar, H, D, None, LO, HI, selection=EVERYTHING)
         del COMPILED_SECONDS[mark:]  # the checks again, only for the curve: not counted twice
@@ -362,6 +386,13 @@ def main() -> None:
         f"  {'total':<42} {total_time * 1e3:7.1f} {total_ops:11.0f}   ({total_time / script:.1f}× "
         "the script)"
     )
+    header = f"{'runs':>5} {'rows':>6} {'calls/row':>9} {'ms':>6}"
+    print(f"  Section 5's programs (the counted run): {header}")
+    for name, (runs_of, rows_of, calls, seconds) in PROGRAMS.items():
+        print(
+            f"    {name:<38} {runs_of:5d} {rows_of:6d} {calls / max(rows_of, 1):9.1f} "
+            f"{seconds * 1e3:6.2f}"
+        )
     for label, seconds in served:
         shown = "" if math.isnan(seconds) else f"{seconds * 1e3:7.1f}"
         print(f"  {label:<42} {shown}")

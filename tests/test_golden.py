@@ -74,6 +74,20 @@ TEXT_CHANGES: dict[tuple[str, str], str] = {
 #: companion, tolerance or verdict moved (137 checks compared with main, D4b n up to 100,000,
 #: d = 0.5h, 0.99h, 1e-3, 1e-4, tilted starts, and D4a). Residuals below 1e-9 and printed
 #: residuals to 1e-6 compare equal (RESIDUAL_KEYS), so no entry below is needed.
+#: Issue 15 (session 20, mprings): on balls (precision=mp) the scales of Section 5's residuals
+#: run at RESIDUAL_BITS (64) while their numerators stay at the working precision: the rings'
+#: magnitudes and (17)'s scales and quotients (Theorems 7, 8, (17) of D4b), the edges' sizes and
+#: resolutions, _along's quotient, the rotation's distance and E61's printed slope form. Every
+#: residual stays a rigorous upper bound and every printed residual a rigorous lower bound. Where
+#: a residual is rounding noise (its ball mostly radius, kept by arb in 30-bit ``mag``s) its
+#: 10-digit upper bound moves in the last digit or two. At digits=30 of /discretizations/d4b:
+#: equation-17 1.985470364E-41 -> 1.985470363E-41, equation-19 1.611967797E-40 -> ...796E-40,
+#: equation-19-rotation 1.193635091E-40 -> ...090E-40, equation-20-inversion 4.577847193E-40
+#: -> ...189E-40, equation-20 2.657662832E-40 -> ...830E-40 (likewise at 50 and 500 digits,
+#: at most 1.2e-9 relative, either way). No tolerance, verdict, note or printed residual moved
+#: (the 21 checks compared with main at 30, 50 and 500 digits). These strings compare as
+#: numbers (STRING_CHANGES) and residuals below 1e-9 compare equal (RESIDUAL_KEYS), so no entry
+#: below is needed.
 VALUE_CHANGES = re.compile(
     r"\.companions\.tractrix_gauss_image\."
     r"|^/surfaces/pseudosphere(-gauss-image)?\.face_values\.(H|K|planarity)\["

@@ -34,6 +34,7 @@ from app.geometry.arb_program import (
     SWAP,
     Program,
 )
+from app.geometry.ball_arithmetic import RESIDUAL_BITS
 
 AVAILABLE = ap.AVAILABLE
 
@@ -313,41 +314,58 @@ def _edge_resolution(program: Program, carried: bool) -> None:
     """``d4b.curvature._Edges`` and ``_edge_resolution`` of the edge x0 → x1: its coordinates
     ex, ey, its size |x0| + |y0| + |x1| + |y1| (coordinates summed) and resolution |e|/size;
     ``carried``: the absolute values kept in registers of their own, a vertex's made on the
-    first row only (the caller carries |x1|, |y1| to the next row's |x0|, |y0|)."""
+    first row only (the caller carries |x1|, |y1| to the next row's |x0|, |y0|).
+
+    The size and the resolution only scale residuals (a resolution ≤ 1 multiplies one, a size
+    divides one): they run at ``run``'s low precision (``RESIDUAL_BITS``), as the lengths and
+    quotients of ``_relative_difference`` do. arb encloses the exact value at any precision,
+    so each is a ball holding the exact size or resolution, and a residual scaled by it holds
+    the exact residual: its upper bound stays rigorous, within about 2^-64 relative of the
+    same formula at the working precision (up to about 2^-29 where the residual is rounding
+    noise and its ball mostly radius). ex and ey, which numerators read, stay at the working
+    precision."""
     x0, y0, x1, y1 = ("|x0|", "|y0|", "|x1|", "|y1|") if carried else ("a", "b", "a", "a")
     program.op(SUB, "ex", "x1", "x0")
     program.op(SUB, "ey", "y1", "y0")
-    program.op(ABS, x0, "x0", first=carried)
-    program.op(ABS, y0, "y0", first=carried)
-    program.op(ADD, "size", x0, y0)
-    program.op(ABS, x1, "x1")
-    program.op(ADD, "size", "size", x1)
-    program.op(ABS, y1, "y1")
-    program.op(ADD, "size", "size", y1)
-    _hypot(program, "length", "ex", "ey")
-    program.op(DIV, "resolution", "length", "size")
+    program.op(ABS, x0, "x0", low=True, first=carried)
+    program.op(ABS, y0, "y0", low=True, first=carried)
+    program.op(ADD, "size", x0, y0, low=True)
+    program.op(ABS, x1, "x1", low=True)
+    program.op(ADD, "size", "size", x1, low=True)
+    program.op(ABS, y1, "y1", low=True)
+    program.op(ADD, "size", "size", y1, low=True)
+    _hypot(program, "length", "ex", "ey", low=True)
+    program.op(DIV, "resolution", "length", "size", low=True)
 
 
 _EDGES = Program(["x0", "y0", "x1", "y1"], [], ["ex", "ey", "size", "resolution"])
 _edge_resolution(_EDGES, carried=False)
 
 
+def _low() -> int:
+    """The precision of the operations that only scale a residual (``RESIDUAL_BITS``)."""
+    return min(flint.ctx.prec, RESIDUAL_BITS)
+
+
 def edges(points: Any) -> Columns | None:
     """``d4b.curvature._Edges`` and ``_edge_resolution`` on balls: the edges' coordinates, their
-    sizes |p_i| + |p_{i+1}| (coordinates summed) and |e_i| over that."""
+    sizes |p_i| + |p_{i+1}| (coordinates summed) and |e_i| over that (these two at
+    ``RESIDUAL_BITS``: ``_edge_resolution``)."""
     inputs = {"x0": points[:-1, 0], "y0": points[:-1, 1]}
     inputs |= {"x1": points[1:, 0], "y1": points[1:, 1]}
-    done = ap.run(_EDGES, inputs, {})
+    done = ap.run(_EDGES, inputs, {}, _low())
     return None if done is None else done[0]
 
 
 def _along(program: Program, vx: str, vy: str, out: str = "out") -> None:
-    """``d4b.curvature._along``: |v × e|/size, or 1 where v · e < 0 (into ``out``)."""
+    """``d4b.curvature._along``: |v × e|/size, or 1 where v · e < 0 (into ``out``); the cross
+    product (a difference that cancels) and the sign test at the working precision, its
+    absolute value and the quotient by the size at the low one (``_edge_resolution``)."""
     program.op(MUL, "a", vx, "ey")
     program.op(MUL, "b", vy, "ex")
     program.op(SUB, "a", "a", "b")
-    program.op(ABS, "a", "a")
-    program.op(DIV, "along", "a", "size")
+    program.op(ABS, "|a|", "a", low=True)
+    program.op(DIV, "along", "|a|", "size", low=True)
     program.op(MUL, "a", vx, "ex")
     program.op(MUL, "b", vy, "ey")
     program.op(ADD, "a", "a", "b")
@@ -355,17 +373,37 @@ def _along(program: Program, vx: str, vy: str, out: str = "out") -> None:
     program.op(CHOOSE, out, "one", "along")
 
 
+def _printed_slope(program: Program, x: str, y: str) -> None:
+    """The printed (18)'s first form (√(1/(1 + k²)), √(k²/(1 + k²))) from k = e^y/e^x into
+    (x, y), at the low precision: it is read only by its erratum's printed residual, a lower
+    bound, and where the form is wrong (k < 0) that residual is of order 1, so a form good to
+    about 2^-64 moves the bound by as much (where the form is right the bound is 0 either
+    way)."""
+    program.op(DIV, "k", "ey", "ex", low=True)
+    program.op(MUL, "kk", "k", "k", low=True)
+    program.op(ADD, "denominator", "kk", "one", low=True)
+    program.op(DIV, "c", "one", "denominator", low=True)
+    program.op(SQRT, x, "c", low=True)
+    program.op(DIV, "c", "kk", "denominator", low=True)
+    program.op(SQRT, y, "c", low=True)
+
+
+def _rotation(program: Program, vx: str, vy: str, scale: str, out: str) -> None:
+    """The rotation check's residual: |ñ − (−n^y, n^x)| (``checks.point_distance``) times
+    ``scale``, the differences at the working precision, their length and the product at the
+    low one (as ``_relative_difference``'s lengths)."""
+    program.op(NEG, "r", vy)
+    program.op(SUB, "dx", "cx", "r")
+    program.op(SUB, "dy", "cy", vx)
+    _hypot(program, "distance", "dx", "dy", low=True)
+    program.op(MUL, out, "distance", scale, low=True)
+
+
 _ALONG = Program(["vx", "vy", "ex", "ey", "size"], ["zero", "one"], ["out"])
 _along(_ALONG, "vx", "vy")
 
 _SLOPE = Program(["ex", "ey", "size"], ["zero", "one"], ["out"])
-_SLOPE.op(DIV, "k", "ey", "ex")
-_SLOPE.op(MUL, "kk", "k", "k")
-_SLOPE.op(ADD, "denominator", "kk", "one")
-_SLOPE.op(DIV, "c", "one", "denominator")
-_SLOPE.op(SQRT, "vx", "c")
-_SLOPE.op(DIV, "c", "kk", "denominator")
-_SLOPE.op(SQRT, "vy", "c")
+_printed_slope(_SLOPE, "vx", "vy")
 _along(_SLOPE, "vx", "vy")
 
 
@@ -374,7 +412,7 @@ def along(vectors: Any, edge_x: Any, edge_y: Any, size: Any, reduce: bool = Fals
     ``reduce`` as in ``relative_difference``."""
     inputs = {"vx": vectors[:, 0], "vy": vectors[:, 1], "ex": edge_x, "ey": edge_y, "size": size}
     constants = {"zero": flint.arb(0), "one": flint.arb(1)}
-    done = ap.run(_ALONG, inputs, constants, reduce=_out(reduce))
+    done = ap.run(_ALONG, inputs, constants, _low(), _out(reduce))
     return None if done is None else done[0][0]
 
 
@@ -384,16 +422,12 @@ def along_printed_slope(edge_x: Any, edge_y: Any, size: Any, reduce: bool = Fals
     ``reduce`` as in ``relative_difference``."""
     inputs = {"ex": edge_x, "ey": edge_y, "size": size}
     constants = {"zero": flint.arb(0), "one": flint.arb(1)}
-    done = ap.run(_SLOPE, inputs, constants, reduce=_out(reduce))
+    done = ap.run(_SLOPE, inputs, constants, _low(), _out(reduce))
     return None if done is None else done[0][0]
 
 
 _ROTATION = Program(["cx", "cy", "nx", "ny", "scale"], [], ["out"])
-_ROTATION.op(NEG, "r", "ny")
-_ROTATION.op(SUB, "dx", "cx", "r")
-_ROTATION.op(SUB, "dy", "cy", "nx")
-_hypot(_ROTATION, "distance", "dx", "dy")
-_ROTATION.op(MUL, "out", "distance", "scale")
+_rotation(_ROTATION, "nx", "ny", "scale", "out")
 
 
 def rotation(contact: Any, normals: Any, scale: Any, reduce: bool = False) -> Any:
@@ -401,7 +435,7 @@ def rotation(contact: Any, normals: Any, scale: Any, reduce: bool = False) -> An
     (``checks.point_distance``, then ``_scaled``); ``reduce`` as in ``relative_difference``."""
     inputs = {"cx": contact[:, 0], "cy": contact[:, 1], "nx": normals[:, 0]}
     inputs |= {"ny": normals[:, 1], "scale": scale}
-    done = ap.run(_ROTATION, inputs, {}, reduce=_out(reduce))
+    done = ap.run(_ROTATION, inputs, {}, _low(), _out(reduce))
     return None if done is None else done[0][0]
 
 
@@ -454,19 +488,9 @@ _EDGE_CHECKS.op(SET, "previous", "before", first=True)  # the smaller of consecu
 _EDGE_CHECKS.op(MIN, "pole resolution", "previous", "resolution")
 _EDGE_CHECKS.op(SET, "previous", "resolution")
 _along(_EDGE_CHECKS, "vx", "vy", "along n")  # ``_ALONG``
-_EDGE_CHECKS.op(DIV, "k", "ey", "ex")  # ``_SLOPE``
-_EDGE_CHECKS.op(MUL, "kk", "k", "k")
-_EDGE_CHECKS.op(ADD, "denominator", "kk", "one")
-_EDGE_CHECKS.op(DIV, "c", "one", "denominator")
-_EDGE_CHECKS.op(SQRT, "sx", "c")
-_EDGE_CHECKS.op(DIV, "c", "kk", "denominator")
-_EDGE_CHECKS.op(SQRT, "sy", "c")
+_printed_slope(_EDGE_CHECKS, "sx", "sy")  # ``_SLOPE``
 _along(_EDGE_CHECKS, "sx", "sy", "slope")
-_EDGE_CHECKS.op(NEG, "r", "vy")  # ``_ROTATION``
-_EDGE_CHECKS.op(SUB, "dx", "cx", "r")
-_EDGE_CHECKS.op(SUB, "dy", "cy", "vx")
-_hypot(_EDGE_CHECKS, "distance", "dx", "dy")
-_EDGE_CHECKS.op(MUL, "rotation", "distance", "resolution")
+_rotation(_EDGE_CHECKS, "vx", "vy", "resolution", "rotation")  # ``_ROTATION``
 _EDGE_CHECKS.op(SWAP, "|x0|", "|x1|")
 _EDGE_CHECKS.op(SWAP, "|y0|", "|y1|")
 
@@ -483,5 +507,5 @@ def edge_checks(points: Any, normals: Any, contact: Any, before: Any, detail: bo
     inputs |= {"cx": contact[:, 0], "cy": contact[:, 1]}
     constants = {"before": before, "zero": flint.arb(0), "one": flint.arb(1)}
     reduce = ("slope",) if detail else ("along n", "slope", "rotation")
-    done = ap.run(_EDGE_CHECKS, inputs, constants, reduce=reduce)
+    done = ap.run(_EDGE_CHECKS, inputs, constants, _low(), reduce)
     return None if done is None else done[0]

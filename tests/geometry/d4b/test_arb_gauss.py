@@ -1,4 +1,7 @@
-"""Section 5's compiled passes on balls give the very balls of the numpy formulas they replace."""
+"""Section 5's compiled passes on balls give the very balls of the numpy formulas they replace, or,
+where a pass runs the scales of its residuals at ``RESIDUAL_BITS`` (the edges' sizes and
+resolutions, ``_along``'s quotient, the printed slope form, the rotation's distance), balls
+holding the same exact values whose bounds agree to 2^-26 relative."""
 
 from __future__ import annotations
 
@@ -8,7 +11,7 @@ import flint
 import numpy as np
 import pytest
 
-from app.geometry import balls, checks, gauss_image
+from app.geometry import arb_program as ap, balls, checks, gauss_image
 from app.geometry.ball_arithmetic import Ball
 from app.geometry.d4b import arb_gauss, closed_forms, curvature, discretization as d4b
 from app.geometry.d4b.closed_forms import tilt_shift
@@ -26,9 +29,33 @@ def _same(got: Any, want: Any) -> None:
         assert a.rad().man_exp() == b.rad().man_exp()
 
 
+def _close(got: Any, want: Any) -> None:
+    """Balls of the same exact values (they overlap), their upper and lower bounds within
+    2^-26 of the larger |upper bound| (scales at 64 bits; arb's 30-bit radii where a ball is
+    mostly radius)."""
+    got, want = np.asarray(got).reshape(-1), np.asarray(want).reshape(-1)
+    assert len(got) == len(want) > 0
+    for a, b in zip(got, want, strict=True):
+        assert a.overlaps(b)
+        ua, ub = float(a.mid() + a.rad()), float(b.mid() + b.rad())
+        la, lb = float(a.mid() - a.rad()), float(b.mid() - b.rad())
+        size = 2.0**-26 * max(abs(ua), abs(ub)) + 1e-300
+        assert abs(ua - ub) <= size and abs(la - lb) <= size
+
+
 def _points(columns: Any) -> Any:
     assert columns is not None
     return stack_points(columns[0], columns[1])
+
+
+def _numpy_only(compute: Any) -> Any:
+    """``compute`` with the compiled programs off (``arb_program.AVAILABLE``): the numpy code."""
+    saved = ap.AVAILABLE
+    ap.AVAILABLE = False
+    try:
+        return compute()
+    finally:
+        ap.AVAILABLE = saved
 
 
 @pytest.mark.parametrize("digits", [50, 500])
@@ -75,20 +102,30 @@ def test_the_gauss_image_passes_are_the_numpy_balls(digits: int) -> None:
         edges = p[1:] - p[:-1]
         _same(ex, edges[:, 0])
         _same(ey, edges[:, 1])
-        _same(size, magnitude(p[:-1], p[1:]))
-        _same(resolution, curvature._edge_resolution(ar, p))
+        _close(size, magnitude(p[:-1], p[1:]))
+        _same(resolution, curvature._edge_resolution(ar, p))  # the same pass
+        with_numpy = _numpy_only(lambda: curvature._edge_resolution(ar, p))
+        _close(resolution, with_numpy)
         n = len(p) - 1
         normals = images.tractrix_gauss[:n]
-        _same(arb_gauss.along(normals, ex, ey, size), curvature._along(ar, normals, p))
+        numpy_along = _numpy_only(lambda: curvature._along(ar, normals, p))
+        _close(arb_gauss.along(normals, ex, ey, size), numpy_along)
         backwards = -normals  # v · e < 0: the residual 1
-        _same(arb_gauss.along(backwards, ex, ey, size), curvature._along(ar, backwards, p))
+        numpy_along = _numpy_only(lambda: curvature._along(ar, backwards, p))
+        _same(arb_gauss.along(backwards, ex, ey, size), numpy_along)
         slope = closed_forms.normal_from_slope_printed(ar, edges[:, 1] / edges[:, 0])
-        _same(arb_gauss.along_printed_slope(ex, ey, size), curvature._along(ar, slope, p))
+        numpy_along = _numpy_only(lambda: curvature._along(ar, slope, p))
+        printed = arb_gauss.along_printed_slope(ex, ey, size)
+        # read only as erratum E61's printed residual, the largest lower bound (its form at
+        # 64 bits: where it is right, k > 0, the balls are ~2^-64 wide and the bound 0 there)
+        assert all(a.overlaps(b) for a, b in zip(printed, numpy_along, strict=True))
+        lower, expected = float(ar.largest_lower(printed)), float(ar.largest_lower(numpy_along))
+        assert expected > 0.1 and abs(lower - expected) <= 2.0**-26 * expected
         # the rotation's scaled distances, minima and products
         c, normals = contact[1:n], normals[: n - 1]
         rotated = stack_points(-normals[:, 1], normals[:, 0])
         want = checks.point_distance(ar, c, rotated) * resolution[: n - 1]
-        _same(arb_gauss.rotation(c, normals, resolution[: n - 1]), want)
+        _close(arb_gauss.rotation(c, normals, resolution[: n - 1]), want)
         _same(arb_gauss.minimum(resolution, size), curvature._ball_minimum(resolution, size))
         # relative point differences, alone and scaled (closed forms, errata, the inversion)
         poles = curvature._poles(contact)[: n - 1]
@@ -237,3 +274,37 @@ def test_a_zero_edge_and_other_entries() -> None:
         points[0, 0] = 0.5  # not a ball: the numpy code runs
         assert arb_gauss.contact_points(points, 1) is None
         assert arb_gauss.edges(points[:1]) is None  # no edge
+
+
+@pytest.mark.parametrize("digits", [15, 50, 500])
+def test_the_edge_checks_hold_the_exact_values(digits: int) -> None:
+    """On exact vertices (the midpoints of D4b's p, n and ñ) the numpy code at four times the
+    precision pins each resolution, ``_along`` residual and rotation residual to a narrow
+    ball; the compiled program's balls (scales at 64 bits) hold them."""
+    ar = Ball(digits, 4, recursions_only=True)
+    with balls.working_precision(ar.bits):
+        data = d4b.polygons(ar, 1.0, 0.1, None, -40, 39)
+        n = len(data.p) - 1
+        exact = [_midpoints(a) for a in (data.p, data.gauss.tractrix_gauss[:n])]
+        exact.append(_midpoints(data.gauss.contact[1 : n + 1]))
+        p, normals, contact = exact
+        got = arb_gauss.edge_checks(p, normals, contact, flint.arb(1), True)
+        assert got is not None
+    with balls.working_precision(Ball(4 * digits).bits):
+        high = Ball(4 * digits)
+
+        def numpy() -> Any:
+            resolution = curvature._edge_resolution(high, p)
+            rotated = stack_points(-normals[:, 1], normals[:, 0])
+            distance = checks.point_distance(high, contact, rotated)
+            return resolution, curvature._along(high, normals, p), distance * resolution
+
+        want = _numpy_only(numpy)
+    for k, narrow in zip((0, 2, 4), want, strict=True):
+        assert all(a.contains(b) for a, b in zip(got[k], narrow, strict=True))
+
+
+def _midpoints(points: Any) -> Any:
+    out = np.empty(points.shape, dtype=object)
+    out.flat[:] = [flint.arb(b.mid()) for b in points.flat]
+    return out
