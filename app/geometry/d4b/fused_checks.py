@@ -174,7 +174,7 @@ def _block_columns(p: Any, k0: int, buffers: Any, level: int) -> tuple[int, int]
         for j in range(edges):
             a, b = abs(dx[j]), abs(dy[j])
             big, small = (a, b) if a >= b else (b, a)
-            if not (big <= HYPOT_LARGE and small >= HYPOT_TINY and small > big * HYPOT_EPS):
+            if not (big <= HYPOT_LARGE and small >= HYPOT_TINY):
                 edge[j] = hypot(dx[j], dy[j])
     for j in range(inner):
         second[j] = y[j + 2] - 2 * y[j + 1] + y[j]
@@ -191,7 +191,8 @@ def _block_columns(p: Any, k0: int, buffers: Any, level: int) -> tuple[int, int]
 
 @numba.njit(cache=True, error_model="numpy")
 def _edge_columns(x: Any, y: Any, dx: Any, dy: Any, area: Any, edge: Any, count: int) -> bool:
-    """A_k and the unscaled hypot of the edges 0 .. count − 1 of (x, y); whether an edge is
+    """A_k and the unscaled hypot of the edges 0 .. count − 1 of (x, y) (a + b where b ≤ 2^-54
+    a, as ``hypot`` has it: on a long polygon's steep ends most edges); whether an edge is
     outside hypot's unscaled range (or not finite)."""
     outside = 0
     for j in range(count):
@@ -200,8 +201,8 @@ def _edge_columns(x: Any, y: Any, dx: Any, dy: Any, area: Any, edge: Any, count:
         dx[j], dy[j] = x1 - x0, y1 - y0
         a, b = abs(x1 - x0), abs(y1 - y0)
         big, small = (a, b) if a >= b else (b, a)
-        edge[j] = _hypot_kernel(big, small)
-        inside = big <= HYPOT_LARGE and small >= HYPOT_TINY and small > big * HYPOT_EPS
+        edge[j] = big + small if small <= big * HYPOT_EPS else _hypot_kernel(big, small)
+        inside = big <= HYPOT_LARGE and small >= HYPOT_TINY
         outside += 0 if inside else 1
     return outside > 0
 
