@@ -87,6 +87,9 @@ def _polygons() -> list[np.ndarray]:
     out.append(rng.standard_normal((300, 2)) * np.exp(rng.uniform(-700, 700, (300, 1))))
     flat = np.stack([np.arange(400.0), 1e-20 * rng.standard_normal(400)], axis=1)
     out.append(flat)
+    out.append(np.ascontiguousarray(flat[:, ::-1]))  # steep: hypot's a + b, the other way
+    x = np.linspace(-50.0, 50.0, 3001)  # a long cosh's ends: |Δy| > 2^54 |Δx| (a + b again)
+    out.append(np.stack([x, np.cosh(x)], axis=1))
     broken = rng.standard_normal((3000, 2))
     broken[2500, 1] = np.nan  # a NaN in the third block only
     out.append(broken)

@@ -153,12 +153,13 @@ FIT_BLOCK = 1024
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _block_columns(p: Any, k0: int, buffers: Any) -> tuple[int, int]:
+def _block_columns(p: Any, k0: int, buffers: Any, level: int) -> tuple[int, int]:
     """The six columns of ``conditions._shared_columns`` on the edges and inner vertices k0, k0
     + 1, … (up to FIT_BLOCK + 1 edges, FIT_BLOCK inner vertices) into ``buffers`` (``_buffers``),
     each entry computed as there; returns (edges, inner vertices) filled. Edge lengths: glibc's
     hypot in its unscaled range for every edge (``compiled._hypot_kernel``, the same
-    operations), then libm's whole ``hypot`` for those outside that range."""
+    operations), then libm's whole ``hypot`` for those outside that range. The columns a pass
+    reads: A, l and Δ²y (level 1), their magnitudes |A|~ and |Δ²y|~ too (2), and |l|~ (3)."""
     x, y, dx, dy = buffers[0], buffers[1], buffers[2], buffers[3]
     area, edge, area_size, size = buffers[4], buffers[5], buffers[6], buffers[7]
     second, second_size = buffers[8], buffers[9]
@@ -169,35 +170,39 @@ def _block_columns(p: Any, k0: int, buffers: Any) -> tuple[int, int]:
     for j in range(points):
         x[j] = p[k0 + j, 0]
         y[j] = p[k0 + j, 1]
-    if _edge_columns(x, y, dx, dy, area, edge, area_size, size, edges):
+    if _edge_columns(x, y, dx, dy, area, edge, edges):
         for j in range(edges):
             a, b = abs(dx[j]), abs(dy[j])
             big, small = (a, b) if a >= b else (b, a)
-            if not (big <= HYPOT_LARGE and small >= HYPOT_TINY and small > big * HYPOT_EPS):
+            if not (big <= HYPOT_LARGE and small >= HYPOT_TINY):
                 edge[j] = hypot(dx[j], dy[j])
     for j in range(inner):
         second[j] = y[j + 2] - 2 * y[j + 1] + y[j]
-        second_size[j] = abs(y[j + 2]) + 2 * abs(y[j + 1]) + abs(y[j])
+    if level >= 2:
+        for j in range(edges):
+            area_size[j] = (abs(y[j]) + abs(y[j + 1])) / 2 * (abs(x[j]) + abs(x[j + 1]))
+        for j in range(inner):
+            second_size[j] = abs(y[j + 2]) + 2 * abs(y[j + 1]) + abs(y[j])
+    if level >= 3:
+        for j in range(edges):
+            size[j] = abs(x[j]) + abs(y[j]) + abs(x[j + 1]) + abs(y[j + 1])
     return edges, inner
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _edge_columns(
-    x: Any, y: Any, dx: Any, dy: Any, area: Any, edge: Any, area_size: Any, size: Any, count: int
-) -> bool:
-    """A_k, |A|~_k, |l|~_k and the unscaled hypot of the edges 0 .. count − 1 of (x, y); whether
-    an edge is outside hypot's unscaled range (or not finite)."""
+def _edge_columns(x: Any, y: Any, dx: Any, dy: Any, area: Any, edge: Any, count: int) -> bool:
+    """A_k and the unscaled hypot of the edges 0 .. count − 1 of (x, y) (a + b where b ≤ 2^-54
+    a, as ``hypot`` has it: on a long polygon's steep ends most edges); whether an edge is
+    outside hypot's unscaled range (or not finite)."""
     outside = 0
     for j in range(count):
         x0, y0, x1, y1 = x[j], y[j], x[j + 1], y[j + 1]
         area[j] = (y0 + y1) / 2 * (x1 - x0)
-        area_size[j] = (abs(y0) + abs(y1)) / 2 * (abs(x0) + abs(x1))
-        size[j] = abs(x0) + abs(y0) + abs(x1) + abs(y1)
         dx[j], dy[j] = x1 - x0, y1 - y0
         a, b = abs(x1 - x0), abs(y1 - y0)
         big, small = (a, b) if a >= b else (b, a)
-        edge[j] = _hypot_kernel(big, small)
-        inside = big <= HYPOT_LARGE and small >= HYPOT_TINY and small > big * HYPOT_EPS
+        edge[j] = big + small if small <= big * HYPOT_EPS else _hypot_kernel(big, small)
+        inside = big <= HYPOT_LARGE and small >= HYPOT_TINY
         outside += 0 if inside else 1
     return outside > 0
 
@@ -215,17 +220,18 @@ def _weight(size: float) -> float:
     return size if size > TINY else TINY
 
 
-@numba.njit(cache=True, inline="always", error_model="numpy")
-def _bigger(value: float, big: float) -> float:
-    """One step of max |value| ignoring NaN (``_largest`` without its flag)."""
-    magnitude = abs(value)
-    return magnitude if magnitude > big else big
+#: A float64's bits as an int64 without its sign bit, and those of +inf: the bits of
+#: non-negative floats order as the floats do (+inf's the largest; above them, only NaN's), so a
+#: largest magnitude is an integer maximum, which the compiler vectorizes (a float one it does
+#: not: ``max`` is not associative once NaN is involved).
+_MAGNITUDE, _INF_BITS = 0x7FFFFFFFFFFFFFFF, 0x7FF0000000000000
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
-def _scale_of(big: float, nan: bool) -> float:
-    """``_column_scale`` of the largest magnitude and whether a NaN was seen."""
-    return _column_scale(big, nan)
+def _scale_of(big: Any, nan: Any, at: int) -> float:
+    """``_column_scale`` of the largest magnitude whose bits are big[at], and of whether a NaN
+    was seen (nan[at])."""
+    return _column_scale(big.view(np.float64)[at], nan[at])
 
 
 #: Positions in ``_summary_passes``'s scale vector: the column scales of the first pass (Δ²y
@@ -236,14 +242,27 @@ _S_U, _S_V1, _S_U3, _S_V3, _S_V2 = 5, 6, 7, 8, 9
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
 def _scan(values: Any, count: int, big: Any, nan: Any, at: int) -> None:
-    """Fold max |v| (``_bigger``) and whether a v is NaN of values[:count] into big[at], nan[at]."""
-    largest, seen = big[at], False
+    """Fold max |v| of the non-NaN v of values[:count] (as bits: ``_MAGNITUDE``) into big[at],
+    and whether a v is NaN into nan[at]: ``_largest``'s result, found as integers."""
+    bits = values.view(np.int64)
+    largest, seen = big[at], 0
     for j in range(count):
-        value = values[j]
-        seen |= value != value
-        largest = _bigger(value, largest)
+        magnitude = bits[j] & _MAGNITUDE
+        seen = max(seen, magnitude)
+        largest = max(largest, magnitude if magnitude <= _INF_BITS else 0)
     big[at] = largest
-    nan[at] |= seen
+    nan[at] |= seen > _INF_BITS
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _fold(values: Any, count: int, worst: Any, at: int) -> None:
+    """``running_largest`` over values[:count] from worst[at], as bits (``_MAGNITUDE``): the
+    largest magnitude, or bits above ``_INF_BITS`` (a NaN) once a value is NaN."""
+    bits = values.view(np.int64)
+    largest = worst[at]
+    for j in range(count):
+        largest = max(largest, bits[j] & _MAGNITUDE)
+    worst[at] = largest
 
 
 @numba.njit(cache=True, error_model="numpy")
@@ -294,7 +313,7 @@ def _fill_terms(p: Any, k0: int, scales: Any, buffers: Any) -> tuple[int, int]:
     ``_fit_scales`` and ``_fit_terms`` compute it) on the equations k0, k0 + 1, … of a block:
     (D1)'s and eq. (2)'s into ``buffers[10:14]``, (D3)'s into ``buffers[14:16]``; returns how
     many of each ((D1) and eq. (2), (D3))."""
-    edges, inner = _block_columns(p, k0, buffers)
+    edges, inner = _block_columns(p, k0, buffers, 2)
     edges = min(edges, FIT_BLOCK)
     area, edge, area_size = buffers[4], buffers[5], buffers[6]
     second, second_size = buffers[8], buffers[9]
@@ -404,8 +423,8 @@ def _leaf_tree(count: int, sums: Any, at: Any) -> tuple[float, float]:
 def _fourth_pass(buffers: Any, edges: int, inner: int, c: Any, worst: Any) -> None:
     """Pass 4 on a block: the largest residual of (D1), (D3) and eq. (2) (with its misfit at
     c_(D1)/c_(D3) when c[3] is 1) into ``worst`` (``_misfit_into``, then ``largest_of_
-    magnitudes`` of eq. (2)'s maximum with its misfit, NaN winning); the residuals first into
-    buffers (a loop the compiler vectorizes), then their largest."""
+    magnitudes`` of eq. (2)'s maximum with its misfit, NaN winning), as bits (``_fold``); the
+    residuals first into buffers (a loop the compiler vectorizes), then their largest."""
     area, edge, area_size, size = buffers[4], buffers[5], buffers[6], buffers[7]
     second, second_size = buffers[8], buffers[9]
     r3, r1, r2, misfit = buffers[10], buffers[11], buffers[12], buffers[13]
@@ -419,24 +438,16 @@ def _fourth_pass(buffers: Any, edges: int, inner: int, c: Any, worst: Any) -> No
         paired_size = area_size[j] + area_size[j + 1]
         scale = second_size[j] + abs(c2) * paired_size
         r2[j] = abs(second[j] - c2 * (area[j] + area[j + 1])) / (scale if scale > TINY else TINY)
-    worst3, worst1, worst2 = worst[1], worst[0], worst[2]
-    for j in range(edges):
-        worst3 = running_largest(r3[j], worst3)
-    for j in range(inner):
-        worst1 = running_largest(r1[j], worst1)
-    if ratio:
+    _fold(r3, edges, worst, 1)
+    _fold(r1, inner, worst, 0)
+    _fold(r2, inner, worst, 2)
+    if ratio:  # np.maximum of eq. (2)'s residual and its misfit, NaN winning: both folded
         for j in range(inner):
             paired_size = area_size[j] + area_size[j + 1]
             scale = second_size[j] + abs(c_ratio) * paired_size
             paired = area[j] + area[j + 1]
             misfit[j] = abs(second[j] - c_ratio * paired) / (scale if scale > TINY else TINY)
-        for j in range(inner):
-            a, b = r2[j], misfit[j]
-            worst2 = running_largest(a if (a != a or a >= b) else b, worst2)
-    else:
-        for j in range(inner):
-            worst2 = running_largest(r2[j], worst2)
-    worst[0], worst[1], worst[2] = worst1, worst3, worst2
+        _fold(misfit, inner, worst, 2)
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
@@ -449,8 +460,8 @@ def _constant(uv: float, vv: float, scales: Any, lhs: int, rhs: int, u: int, v: 
     return 0.0, False
 
 
-@kernel("float64[::1](float64[:, :])")
-def _summary_passes(p: Any) -> Any:
+@numba.njit(cache=True, error_model="numpy")
+def _summary_body(p: Any) -> Any:
     """``_fits``'s summary (its first array) without its columns and residuals: four passes
     over p in blocks of FIT_BLOCK edges, each computing the columns it reads from the
     coordinates (``_block_columns``) with the same operations on each entry as ``_fit_scales``,
@@ -459,17 +470,18 @@ def _summary_passes(p: Any) -> Any:
     n = p.shape[0]
     edges, inner = max(n - 1, 0), max(n - 2, 0)
     buffers = _buffers()
-    big, nan, scales = np.zeros(10), np.zeros(10, dtype=np.bool_), np.empty(10)
+    big, nan = np.zeros(10, dtype=np.int64), np.zeros(10, dtype=np.bool_)
+    scales = np.empty(10)
     for k0 in range(0, edges, FIT_BLOCK):  # pass 1: the columns' scales
-        block, block_inner = _block_columns(p, k0, buffers)
+        block, block_inner = _block_columns(p, k0, buffers, 1)
         _first_pass(buffers, min(block, FIT_BLOCK), block_inner, big, nan)
     for k in range(5):
-        scales[k] = _scale_of(big[k], nan[k])
+        scales[k] = _scale_of(big, nan, k)
     for k0 in range(0, edges, FIT_BLOCK):  # pass 2: the scales of u and v
-        block, block_inner = _block_columns(p, k0, buffers)
+        block, block_inner = _block_columns(p, k0, buffers, 2)
         _second_pass(buffers, min(block, FIT_BLOCK), block_inner, scales, big, nan)
     for k in range(5, 10):
-        scales[k] = _scale_of(big[k], nan[k])
+        scales[k] = _scale_of(big, nan, k)
     # pass 3: the sums, in numpy's order; (D3)'s leaves from the same blocks as the others'
     leaves = np.empty((edges // 64 + 2, 2), dtype=np.int64)
     leaves = leaves[: _leaves(0, edges, leaves, 0) if edges else 0]
@@ -484,23 +496,39 @@ def _summary_passes(p: Any) -> Any:
     c2, has2 = _constant(uv2, vv2, scales, _S_SECOND, _S_PAIRED_A, _S_U, _S_V2)
     ratio = has1 and has3 and c3 != 0 and inner > 0
     constants = np.array([c1, c3, c2, 1.0 if ratio else 0.0, c1 / c3 if ratio else 0.0])
-    worst = np.zeros(3)
+    worst = np.zeros(3, dtype=np.int64)  # the bits of the largest residuals (``_fold``)
     for k0 in range(0, edges, FIT_BLOCK):  # pass 4: the largest residuals
-        block, block_inner = _block_columns(p, k0, buffers)
+        block, block_inner = _block_columns(p, k0, buffers, 3)
         _fourth_pass(buffers, min(block, FIT_BLOCK), block_inner, constants, worst)
     summary = np.empty(9)
     summary[0], summary[1], summary[2] = c1, c3, c2
     summary[3] = 1.0 if has1 else 0.0
     summary[4] = 1.0 if has3 else 0.0
     summary[5] = 1.0 if has2 else 0.0
-    summary[6], summary[7], summary[8] = worst[0], worst[1], worst[2]
+    largest = worst.view(np.float64)
+    summary[6], summary[7], summary[8] = largest[0], largest[1], largest[2]
     return summary
+
+
+@kernel("float64[::1](float64[:, :])")
+def _summary_passes(p: Any) -> Any:
+    """``_summary_body`` of a polygon of any layout."""
+    return _summary_body(p)
+
+
+@kernel("float64[::1](float64[:, ::1])")
+def _summary_passes_contiguous(p: Any) -> Any:
+    """``_summary_body`` of a C-contiguous polygon (its coordinates read with fixed strides:
+    the blocks' copies ≈ 2 ns a vertex faster than through p's strides)."""
+    return _summary_body(p)
 
 
 def fits_summary(p: Array) -> Any:
     """The fits' summary of the float64 polygon ``p`` ((m, 2)): ``_fits``'s first array, bit
     for bit, without an array of size m (``_summary_passes``). A pure function of ``p`` that
     releases the GIL: ``d4b.checks`` runs it on a second thread at large m."""
+    if p.flags.c_contiguous:
+        return _summary_passes_contiguous(p)
     return _summary_passes(p)
 
 
