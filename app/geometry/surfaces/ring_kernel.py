@@ -163,6 +163,23 @@ def _corners(meridian: Any, gauss: Any, k: int, cos: float, sin: float) -> Any:
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
+def _split_corners(x: Any, y: Any, u: Any, v: Any, k: int, cos: float, sin: float) -> Any:
+    """``_corners`` from the meridian's and the Gauss image's columns x, y and u, v."""
+    sx, sy, ex, ey = x[k], y[k], x[k + 1], y[k + 1]
+    nsx, nsy, nex, ney = u[k], v[k], u[k + 1], v[k + 1]
+    return (
+        (sx, sy, sy * 0.0),
+        (sx, sy * cos, sy * sin),
+        (ex, ey * cos, ey * sin),
+        (ex, ey, ey * 0.0),
+        (nsx, nsy, nsy * 0.0),
+        (nsx, nsy * cos, nsy * sin),
+        (nex, ney * cos, ney * sin),
+        (nex, ney, ney * 0.0),
+    )
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
 def _theorem_and_17(
     f0: Any,
     f3: Any,
@@ -316,8 +333,10 @@ RING_BLOCK = 512
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
 def _face_unbranched(
-    meridian: Any,
-    gauss: Any,
+    x: Any,
+    y: Any,
+    u: Any,
+    v: Any,
     k: int,
     cos: float,
     sin: float,
@@ -336,7 +355,7 @@ def _face_unbranched(
     once in the vector registers (the quotients and square roots are IEEE's, correctly rounded
     in each lane, and numba contracts no product into an FMA): the same bits.
     """
-    f0, f1, f2, f3, g0, g1, g2, g3 = _corners(meridian, gauss, k, cos, sin)
+    f0, f1, f2, f3, g0, g1, g2, g3 = _split_corners(x, y, u, v, k, cos, sin)
     af, an, mixed = _areas(f0, f1, f2, f3, g0, g1, g2, g3)
     big = max(abs(af[0]), abs(af[1]), abs(af[2]))
     area = math.sqrt(af[0] * af[0] + af[1] * af[1] + af[2] * af[2])
@@ -361,7 +380,7 @@ def _face_unbranched(
     parallel = crossed / (both if both > tiny else tiny)
     usual = (
         (SQUARES_LOW < big < SQUARES_HIGH)
-        and (SQUARES_LOW < crossed_big < SQUARES_HIGH)
+        and (SQUARES_LOW < crossed_big < SQUARES_HIGH or crossed_big == 0)
         and area > RECIPROCAL_FROM
     )
     theorem, k_res, h_res, dp = _theorem_and_17(
@@ -386,8 +405,11 @@ def _face_unbranched(
 
 @numba.njit(cache=True, error_model="numpy")
 def _faces_unbranched(
-    meridian: Any,
-    gauss: Any,
+    x: Any,
+    y: Any,
+    u: Any,
+    v: Any,
+    count: int,
     cos: float,
     sin: float,
     curvature: float,
@@ -401,8 +423,8 @@ def _faces_unbranched(
 ) -> None:
     """``_face_unbranched`` on faces 0 .. len(meridian) − 2 into the rows given (a function of
     its own: the compiler vectorizes this loop alone)."""
-    for j in range(meridian.shape[0] - 1):
-        found = _face_unbranched(meridian, gauss, j, cos, sin, curvature, minimal, tiny)
+    for j in range(count):
+        found = _face_unbranched(x, y, u, v, j, cos, sin, curvature, minimal, tiny)
         areas[j], theorems[j], equations[j], differences[j], usual[j] = found
 
 
@@ -426,6 +448,8 @@ def _ring_largest(
     them: the same (skipped, valid, largest, largest (17)). ``meridian`` and ``gauss`` are
     C-contiguous (the compiler reads their rows as pairs)."""
     faces = meridian.shape[0] - 1
+    x, y = np.empty(RING_BLOCK + 1), np.empty(RING_BLOCK + 1)
+    u, v = np.empty(RING_BLOCK + 1), np.empty(RING_BLOCK + 1)
     areas = np.empty(RING_BLOCK)
     theorems = np.empty(RING_BLOCK)
     equations = np.empty(RING_BLOCK)
@@ -435,9 +459,15 @@ def _ring_largest(
     largest, largest_17 = 0.0, 0.0
     for start in range(0, faces, RING_BLOCK):
         count = min(RING_BLOCK, faces - start)
+        for j in range(count + 1):  # the block's columns, contiguous
+            x[j], y[j] = meridian[start + j, 0], meridian[start + j, 1]
+            u[j], v[j] = gauss[start + j, 0], gauss[start + j, 1]
         _faces_unbranched(
-            meridian[start : start + count + 1],
-            gauss[start : start + count + 1],
+            x,
+            y,
+            u,
+            v,
+            count,
             cos,
             sin,
             curvature,
