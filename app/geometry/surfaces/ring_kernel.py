@@ -163,6 +163,23 @@ def _corners(meridian: Any, gauss: Any, k: int, cos: float, sin: float) -> Any:
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
+def _split_corners(x: Any, y: Any, u: Any, v: Any, k: int, cos: float, sin: float) -> Any:
+    """``_corners`` from the meridian's and the Gauss image's columns x, y and u, v."""
+    sx, sy, ex, ey = x[k], y[k], x[k + 1], y[k + 1]
+    nsx, nsy, nex, ney = u[k], v[k], u[k + 1], v[k + 1]
+    return (
+        (sx, sy, sy * 0.0),
+        (sx, sy * cos, sy * sin),
+        (ex, ey * cos, ey * sin),
+        (ex, ey, ey * 0.0),
+        (nsx, nsy, nsy * 0.0),
+        (nsx, nsy * cos, nsy * sin),
+        (nex, ney * cos, ney * sin),
+        (nex, ney, ney * 0.0),
+    )
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
 def _theorem_and_17(
     f0: Any,
     f3: Any,
@@ -316,8 +333,10 @@ RING_BLOCK = 512
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
 def _face_unbranched(
-    meridian: Any,
-    gauss: Any,
+    x: Any,
+    y: Any,
+    u: Any,
+    v: Any,
     k: int,
     cos: float,
     sin: float,
@@ -336,7 +355,7 @@ def _face_unbranched(
     once in the vector registers (the quotients and square roots are IEEE's, correctly rounded
     in each lane, and numba contracts no product into an FMA): the same bits.
     """
-    f0, f1, f2, f3, g0, g1, g2, g3 = _corners(meridian, gauss, k, cos, sin)
+    f0, f1, f2, f3, g0, g1, g2, g3 = _split_corners(x, y, u, v, k, cos, sin)
     af, an, mixed = _areas(f0, f1, f2, f3, g0, g1, g2, g3)
     big = max(abs(af[0]), abs(af[1]), abs(af[2]))
     area = math.sqrt(af[0] * af[0] + af[1] * af[1] + af[2] * af[2])
@@ -361,7 +380,7 @@ def _face_unbranched(
     parallel = crossed / (both if both > tiny else tiny)
     usual = (
         (SQUARES_LOW < big < SQUARES_HIGH)
-        and (SQUARES_LOW < crossed_big < SQUARES_HIGH)
+        and (SQUARES_LOW < crossed_big < SQUARES_HIGH or crossed_big == 0)
         and area > RECIPROCAL_FROM
     )
     theorem, k_res, h_res, dp = _theorem_and_17(
@@ -386,8 +405,11 @@ def _face_unbranched(
 
 @numba.njit(cache=True, error_model="numpy")
 def _faces_unbranched(
-    meridian: Any,
-    gauss: Any,
+    x: Any,
+    y: Any,
+    u: Any,
+    v: Any,
+    count: int,
     cos: float,
     sin: float,
     curvature: float,
@@ -401,9 +423,43 @@ def _faces_unbranched(
 ) -> None:
     """``_face_unbranched`` on faces 0 .. len(meridian) − 2 into the rows given (a function of
     its own: the compiler vectorizes this loop alone)."""
-    for j in range(meridian.shape[0] - 1):
-        found = _face_unbranched(meridian, gauss, j, cos, sin, curvature, minimal, tiny)
+    for j in range(count):
+        found = _face_unbranched(x, y, u, v, j, cos, sin, curvature, minimal, tiny)
         areas[j], theorems[j], equations[j], differences[j], usual[j] = found
+
+
+#: All bits of a float64 but its sign.
+_MAGNITUDE_BITS = 0x7FFF_FFFF_FFFF_FFFF
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _block_largest(
+    count: int, areas: Any, theorems: Any, equations: Any, differences: Any, usual: Any
+) -> tuple[bool, int, float, float]:
+    """A block's faces reduced without branches (the compiler vectorizes it): whether every
+    face is on the usual branch with a positive area and no residual is NaN (if not, the caller
+    takes the block face by face), the faces where Δ = 0 and the largest |residual| of each row.
+
+    The largest is taken on the bit patterns of the magnitudes: for floats without NaN and
+    sign, the order of their patterns as integers is the order of the numbers, so the largest
+    pattern is that of the largest number (the same value as the running ``np.maximum``; a
+    maximum of integers needs no fast-math flags to become vector instructions)."""
+    theorem_bits, equation_bits = theorems.view(np.int64), equations.view(np.int64)
+    plain = True
+    zeros = 0
+    top, top_17 = 0, 0
+    for j in range(count):
+        theorem, equation_17 = theorems[j], equations[j]
+        plain &= usual[j] & (areas[j] > 0) & (theorem == theorem) & (equation_17 == equation_17)
+        zeros += differences[j] == 0
+        bits = theorem_bits[j] & _MAGNITUDE_BITS
+        top = bits if bits > top else top
+        bits = equation_bits[j] & _MAGNITUDE_BITS
+        top_17 = bits if bits > top_17 else top_17
+    found = np.empty(2, dtype=np.int64)
+    found[0], found[1] = top, top_17
+    values = found.view(np.float64)
+    return plain, zeros, values[0], values[1]
 
 
 @kernel(
@@ -426,6 +482,8 @@ def _ring_largest(
     them: the same (skipped, valid, largest, largest (17)). ``meridian`` and ``gauss`` are
     C-contiguous (the compiler reads their rows as pairs)."""
     faces = meridian.shape[0] - 1
+    x, y = np.empty(RING_BLOCK + 1), np.empty(RING_BLOCK + 1)
+    u, v = np.empty(RING_BLOCK + 1), np.empty(RING_BLOCK + 1)
     areas = np.empty(RING_BLOCK)
     theorems = np.empty(RING_BLOCK)
     equations = np.empty(RING_BLOCK)
@@ -435,9 +493,15 @@ def _ring_largest(
     largest, largest_17 = 0.0, 0.0
     for start in range(0, faces, RING_BLOCK):
         count = min(RING_BLOCK, faces - start)
+        for j in range(count + 1):  # the block's columns, contiguous
+            x[j], y[j] = meridian[start + j, 0], meridian[start + j, 1]
+            u[j], v[j] = gauss[start + j, 0], gauss[start + j, 1]
         _faces_unbranched(
-            meridian[start : start + count + 1],
-            gauss[start : start + count + 1],
+            x,
+            y,
+            u,
+            v,
+            count,
             cos,
             sin,
             curvature,
@@ -449,6 +513,14 @@ def _ring_largest(
             differences,
             usual,
         )
+        plain, zeros, top, top_17 = _block_largest(
+            count, areas, theorems, equations, differences, usual
+        )
+        if plain:  # every face on the usual branch, with area, no NaN: the block at once
+            skipped += zeros
+            largest = running_largest(top, largest)
+            largest_17 = running_largest(top_17, largest_17)
+            continue
         for j in range(count):
             area, theorem, equation_17, dp = areas[j], theorems[j], equations[j], differences[j]
             if not usual[j]:  # a length or 1/|a(f)| off the usual branch: the scalar face

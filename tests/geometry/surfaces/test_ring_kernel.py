@@ -278,3 +278,112 @@ def test_ring_largest_of_strided_meridians_takes_the_face_by_face_pass() -> None
         _blocked_largest(strided, data.gauss.gauss, None),
         _scalar_largest(np.ascontiguousarray(strided), data.gauss.gauss, None),
     )
+
+
+def _unbranched_rows(
+    meridian: np.ndarray, gauss: np.ndarray, curvature: float | None
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The branch-free pass over every face (the blocks' loop, on whole columns): the theorem
+    and (17) rows and which faces are on its branch."""
+    ar = Float64()
+    theta = ar.pi / ring_curvature.RING_M
+    faces = len(meridian) - 1
+    areas, theorem, equation_17, differences = (np.empty(faces) for _ in range(4))
+    usual = np.empty(faces, dtype=np.bool_)
+    x, y, u, v = (np.ascontiguousarray(a[:, k]) for a in (meridian, gauss) for k in (0, 1))
+    ring_kernel._faces_unbranched(
+        x,
+        y,
+        u,
+        v,
+        faces,
+        ar.cos(theta),
+        ar.sin(theta),
+        0.0 if curvature is None else curvature,
+        curvature is None,
+        ring_kernel.TINY,
+        areas,
+        theorem,
+        equation_17,
+        differences,
+        usual,
+    )
+    return theorem, equation_17, usual
+
+
+@pytest.mark.parametrize("curvature", [-1.0, None])
+def test_the_branch_free_faces_have_the_bits_of_the_face_by_face_pass(
+    curvature: float | None,
+) -> None:
+    """Face by face, on the faces the branch-free loop keeps (a D4b over 1e-135 .. 1e266, a
+    Gauss image equal to its meridian: every parallel cross product exactly 0, which stays on
+    the branch), the theorem's and (17)'s residuals of the scalar face, bit for bit."""
+    ar = Float64()
+    data = d4b.polygons(ar, 1.0, 0.5, None, -200, 300)
+    rng = np.random.default_rng(5)
+    x = np.cumsum(rng.uniform(0.1, 1.0, 700))
+    same = np.column_stack([x, rng.uniform(0.5, 2.0, 700)])
+    cases = [(data.tractrix, data.gauss.tractrix_gauss), (data.p, data.gauss.gauss), (same, same)]
+    for meridian, gauss in cases:
+        m, g = np.ascontiguousarray(meridian), np.ascontiguousarray(gauss)
+        fused = ring_kernel.ring_checks(m, g, *_angle(), curvature)
+        assert fused is not None
+        theorem, equation_17, usual = _unbranched_rows(m, g, curvature)
+        assert usual.sum() > 200  # faces compared (at d = h/2 about half leave the branch)
+        np.testing.assert_array_equal(theorem[usual], fused[0][usual])
+        np.testing.assert_array_equal(equation_17[usual], fused[1][usual])
+    _, _, usual = _unbranched_rows(same, same, curvature)
+    assert usual.all()
+
+
+def _angle() -> tuple[float, float]:
+    ar = Float64()
+    theta = ar.pi / ring_curvature.RING_M
+    return ar.cos(theta), ar.sin(theta)
+
+
+def test_a_block_is_reduced_at_once_only_without_nan_or_an_unusual_face() -> None:
+    """The largest magnitude of a block by the bit patterns: the value of ``np.max`` of the
+    magnitudes (zeros of either sign, subnormals, infinities); a NaN, a face off the branch or
+    without area sends the block face by face."""
+    rng = np.random.default_rng(23)
+    count = 300
+    theorems = rng.uniform(0, 1, count) * 10.0 ** rng.integers(-300, 300, count)
+    equations = rng.uniform(0, 1, count) * 10.0 ** rng.integers(-300, 300, count)
+    theorems[:3] = [5e-324, -0.0, 0.0]
+    equations[7] = np.inf
+    differences = rng.uniform(-1, 1, count)
+    differences[[4, 40, 299]] = 0.0
+    areas = rng.uniform(0.5, 1.0, count)
+    usual = np.ones(count, dtype=np.bool_)
+    block = ring_kernel._block_largest
+    plain, zeros, top, top_17 = block(count, areas, theorems, equations, differences, usual)
+    assert plain and zeros == 3
+    assert top == np.abs(theorems).max() and top_17 == np.inf
+    assert block(0, areas, theorems, equations, differences, usual) == (True, 0, 0.0, 0.0)
+    for row, index, value in [(1, 10, np.nan), (2, 11, np.nan), (0, 12, 0.0), (0, 13, np.nan)]:
+        rows = [a.copy() for a in (areas, theorems, equations)]
+        rows[row][index] = value
+        assert not block(count, rows[0], rows[1], rows[2], differences, usual)[0]
+    off = usual.copy()
+    off[20] = False
+    assert not block(count, areas, theorems, equations, differences, off)[0]
+
+
+@pytest.mark.parametrize("curvature", [-1.0, None])
+def test_blocked_ring_largest_of_parallel_faces_and_nan_residuals(curvature: float | None) -> None:
+    """Every cross product 0 (the Gauss image equal to the meridian), residuals rising over
+    the blocks, and a residual NaN in the last block but no coordinate NaN: the same as the
+    face-by-face pass."""
+    rng = np.random.default_rng(31)
+    count = 4 * ring_kernel.RING_BLOCK + 3
+    x = np.cumsum(rng.uniform(0.1, 1.0, count))
+    meridian = np.column_stack([x, np.linspace(0.5, 40.0, count)])
+    _same(
+        _blocked_largest(meridian, meridian.copy(), curvature),
+        _scalar_largest(meridian, meridian.copy(), curvature),
+    )
+    gauss = np.column_stack([rng.uniform(-1, 1, count), rng.uniform(0.5, 2.0, count)])
+    gauss[-5, 1] = np.inf  # inf − inf: residuals NaN, areas finite
+    found = _blocked_largest(meridian, gauss, curvature)
+    _same(found, _scalar_largest(meridian, gauss, curvature))
