@@ -875,7 +875,8 @@ class _Edges:
     @cached_property
     def compiled(self) -> list[Array] | None:
         """Balls: the edges' coordinates, sizes and resolutions in one compiled pass
-        (``arb_gauss.edges``: the same balls); None where it does not apply."""
+        (``arb_gauss.edges``: the sizes and resolutions at ``RESIDUAL_BITS``); None where it
+        does not apply."""
         return arb_gauss.edges(self.points) if len(self.points) >= 2 else None
 
     @cached_property

@@ -144,9 +144,9 @@ def ring_checks(
 ) -> tuple[Array, Array, int] | None:
     """Theorem 7's (``curvature`` K) or 8's (None: H = 0) residuals and (17)'s on one ring, in
     one compiled pass: in float64 ``ring_kernel.ring_checks``, on balls ``arb_rings.ring_checks``
-    (the balls the numpy code makes; ``reduce``: the theorem's as the two balls a check without
-    per-index residuals reads); None on mpmath numbers, or where the numpy path must name a
-    face without area."""
+    (the numpy code's residuals, their scales at 64 bits; ``reduce``: the theorem's as the two
+    balls a check without per-index residuals reads); None on mpmath numbers, or where the
+    numpy path must name a face without area."""
     if ar.certified:
         theta = ar.pi / RING_M
         cos, sin = ar.cos(theta), ar.sin(theta)
