@@ -21,7 +21,9 @@ its own cache on its first run); part 2 runs once with glibc's default malloc an
 server's environment (the Makefile's ``SERVER_ENV``). ``--checks-only`` skips part 1.
 
 ``--statements`` (with or without ``--base DIR``): the checks of a 10^6 D4b one statement at a
-time (``BREAKDOWN``, method=closed-form), each tree in its own process, glibc and server env.
+time (``BREAKDOWN``, method=closed-form unless ``--method construction``), each tree in its own
+process, glibc and server env; ``--group NAME`` (a name of ``GROUPS``, e.g. "Gauss images") times
+that group's statements and the group alone.
 """
 
 from __future__ import annotations
@@ -466,6 +468,9 @@ ar = Float64()
 n, rounds, method = 10**6, int(sys.argv[2]), sys.argv[3]
 lo, hi = -(n // 2), n - n // 2 - 1
 ids = [s.id for s, _ in section4._EVALUATORS] + [s.id for s in section5.STATEMENTS]
+if len(sys.argv) > 4:  # one group's statements alone (``--group``)
+    GROUPS = [g for g in GROUPS if g[0] == sys.argv[4]]
+    ids = [i for i in ids if i in GROUPS[0][1]]
 def run(selection):
     start = time.process_time()
     full.compute(ar, 1.0, 1e-4, None, lo, hi, method, selection=selection)
@@ -532,9 +537,12 @@ GROUPS = (
 )
 
 
-def breakdown(trees: list[tuple[str, str]], rounds: int, method: str) -> None:
+def breakdown(
+    trees: list[tuple[str, str]], rounds: int, method: str, group: str | None = None
+) -> None:
     """Part 2b for each (name, root) of ``trees``, each in its own process, with glibc's
-    default malloc and with the server's (``SERVER_ENV``); one column per tree and setting."""
+    default malloc and with the server's (``SERVER_ENV``); one column per tree and setting;
+    ``group``: that group of ``GROUPS`` only."""
     import os
     import subprocess
 
@@ -548,8 +556,9 @@ def breakdown(trees: list[tuple[str, str]], rounds: int, method: str) -> None:
         for name, root in trees:
             column = f"{name}, {setting}"
             columns.append(column)
+            chosen = [] if group is None else [group]
             out = subprocess.run(
-                [sys.executable, "-c", script, root, str(rounds), method],
+                [sys.executable, "-c", script, root, str(rounds), method, *chosen],
                 capture_output=True,
                 text=True,
                 check=True,
@@ -626,7 +635,9 @@ def main() -> None:
         trees = [("here", str(ROOT))]
         if "--base" in sys.argv:
             trees.insert(0, ("base", sys.argv[sys.argv.index("--base") + 1]))
-        breakdown(trees, rounds, "closed-form")
+        method = sys.argv[sys.argv.index("--method") + 1] if "--method" in sys.argv else None
+        group = sys.argv[sys.argv.index("--group") + 1] if "--group" in sys.argv else None
+        breakdown(trees, rounds, method or "closed-form", group)
         return
     if "--base" in sys.argv:
         rounds = int(sys.argv[sys.argv.index("--rounds") + 1]) if "--rounds" in sys.argv else 2
