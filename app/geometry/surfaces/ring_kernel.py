@@ -145,11 +145,20 @@ def _ring(meridian: Any, gauss: Any, cos: float, sin: float, tiny: float) -> Any
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
-def _corners(meridian: Any, gauss: Any, k: int, cos: float, sin: float) -> Any:
-    """Face k's corners (x, y·1, y·0), (x, y·cos, y·sin) of the meridian (f0 … f3) and of its
-    Gauss image (g0 … g3), as ``_face`` turns them; y·1 is y."""
-    sx, sy, ex, ey = meridian[k, 0], meridian[k, 1], meridian[k + 1, 0], meridian[k + 1, 1]
-    nsx, nsy, nex, ney = gauss[k, 0], gauss[k, 1], gauss[k + 1, 0], gauss[k + 1, 1]
+def _turned_corners(
+    sx: float,
+    sy: float,
+    ex: float,
+    ey: float,
+    nsx: float,
+    nsy: float,
+    nex: float,
+    ney: float,
+    cos: float,
+    sin: float,
+) -> Any:
+    """A face's corners (x, y·1, y·0), (x, y·cos, y·sin) of the meridian's edge (s, e) (f0 … f3)
+    and of its Gauss image's edge (ns, ne) (g0 … g3), as ``_face`` turns them; y·1 is y."""
     return (
         (sx, sy, sy * 0.0),
         (sx, sy * cos, sy * sin),
@@ -163,20 +172,27 @@ def _corners(meridian: Any, gauss: Any, k: int, cos: float, sin: float) -> Any:
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
-def _split_corners(x: Any, y: Any, u: Any, v: Any, k: int, cos: float, sin: float) -> Any:
-    """``_corners`` from the meridian's and the Gauss image's columns x, y and u, v."""
-    sx, sy, ex, ey = x[k], y[k], x[k + 1], y[k + 1]
-    nsx, nsy, nex, ney = u[k], v[k], u[k + 1], v[k + 1]
-    return (
-        (sx, sy, sy * 0.0),
-        (sx, sy * cos, sy * sin),
-        (ex, ey * cos, ey * sin),
-        (ex, ey, ey * 0.0),
-        (nsx, nsy, nsy * 0.0),
-        (nsx, nsy * cos, nsy * sin),
-        (nex, ney * cos, ney * sin),
-        (nex, ney, ney * 0.0),
+def _corners(meridian: Any, gauss: Any, k: int, cos: float, sin: float) -> Any:
+    """Face k's corners (``_turned_corners``) from the (n, 2) meridian and Gauss image."""
+    return _turned_corners(
+        meridian[k, 0],
+        meridian[k, 1],
+        meridian[k + 1, 0],
+        meridian[k + 1, 1],
+        gauss[k, 0],
+        gauss[k, 1],
+        gauss[k + 1, 0],
+        gauss[k + 1, 1],
+        cos,
+        sin,
     )
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _split_corners(x: Any, y: Any, u: Any, v: Any, k: int, cos: float, sin: float) -> Any:
+    """Face k's corners (``_turned_corners``) from the columns x, y (meridian) and u, v (Gauss
+    image)."""
+    return _turned_corners(x[k], y[k], x[k + 1], y[k + 1], u[k], v[k], u[k + 1], v[k + 1], cos, sin)
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
