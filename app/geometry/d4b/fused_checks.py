@@ -13,6 +13,7 @@ where ``conditions.Columns`` and the check took 13 calls and 6 numpy sums.
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING, Any
 
 import numba
@@ -22,6 +23,8 @@ from app.geometry.compiled import (
     HYPOT_EPS,
     HYPOT_LARGE,
     HYPOT_TINY,
+    SQUARES_HIGH,
+    SQUARES_LOW,
     _hypot_kernel,
     all_finite_vector,
     hypot,
@@ -772,16 +775,124 @@ def _closed_comparisons(
 
 
 _NO_POINTS = np.empty((0, 2))
+_NO_ENTRIES = np.empty(0)
+
+#: The magnitude bits of a float64 (its sign cleared) and, above them, the patterns of NaN.
+_MAGNITUDE_BITS = 0x7FFF_FFFF_FFFF_FFFF
+_INFINITY_BITS = 0x7FF0_0000_0000_0000
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _on_fast_path(x: float, y: float) -> bool:
+    """Whether ``length(x, y)`` is √(x² + y²): max(|x|, |y|) inside its moderate range, or
+    both zero (then both give +0); false for a NaN. Without branches."""
+    ax, ay = abs(x), abs(y)
+    below = (ax < SQUARES_HIGH) & (ay < SQUARES_HIGH)
+    return below & ((ax > SQUARES_LOW) | (ay > SQUARES_LOW) | ((ax == 0.0) & (ay == 0.0)))
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _all_finite(values: Any, start: int, stop: int) -> bool:
+    """``all_finite_vector(values[start:stop])`` without branches (the compiler vectorizes it)."""
+    finite = True
+    for k in range(start, stop):
+        finite &= abs(values[k]) < np.inf
+    return finite
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _largest_bits(values: Any, count: int) -> int:
+    """The largest magnitude's bit pattern of ``values[:count]`` (float64 ≥ 0 without NaN order
+    as their patterns do; a NaN's pattern is above ``_INFINITY_BITS``), as an integer maximum
+    the compiler vectorizes."""
+    bits = values.view(np.int64)
+    top = 0
+    for k in range(count):
+        b = bits[k] & _MAGNITUDE_BITS
+        top = b if b > top else top
+    return top
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _bits_value(bits: int) -> float:
+    """The float64 of a bit pattern."""
+    found = np.empty(1, dtype=np.int64)
+    found[0] = bits
+    return found.view(np.float64)[0]
+
+
+@kernel("void(int64, int64, float64, float64, float64[::1])")
+def _kinematic_arguments(first: int, count: int, L: float, shift: float, out: Any) -> None:
+    """(14)'s i·L + (τ − ½)L into ``out[:count]`` and (16)'s i·L + τL into ``out[count:2count]``
+    for i = first .. first + count − 1, as ``_closed_arguments`` computes them."""
+    offset_p, offset_t = (shift - 0.5) * L, shift * L
+    for k in range(count):
+        u = float(first + k) * L
+        out[k] = u + offset_p
+        out[count + k] = u + offset_t
+
+
+@kernel("void(int64, int64, float64, float64, float64[::1])")
+def _image_arguments(first: int, count: int, L: float, shift: float, out: Any) -> None:
+    """(19)'s (i + τ)L for i = first − 1 .. first + count − 1 into ``out[:count + 1]`` and (20)'s
+    (i − ½ + τ)L for i = first .. first + count − 1 into ``out[count + 1:2count + 1]``, as
+    ``_closed_arguments`` computes them."""
+    for k in range(count + 1):
+        out[k] = (float(first - 1 + k) + shift) * L
+    for k in range(count):
+        out[count + 1 + k] = (float(first + k) - 0.5 + shift) * L
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _kinematic_rows(
+    first: int,
+    count: int,
+    rows: int,
+    cosh: Any,
+    sinh: Any,
+    h: float,
+    d: float,
+    amplitude: float,
+    p: Any,
+    tractrix: Any,
+    axis: Any,
+    offset: int,
+    tiny: float,
+    theorem_5_wanted: bool,
+    theorem_6_wanted: bool,
+    theorem_5: float,
+    theorem_6: float,
+) -> tuple[float, float]:
+    """The old row loop of ``_closed_kinematic_block`` on ``rows`` rows of a block (cosh of (14)
+    at ``[:count]``, of (16) at ``[count:]``): lengths with hypot's branch, NaN first."""
+    step = 2 * d
+    for k in range(rows):
+        at = offset + k
+        x = float(first + k) * step
+        if theorem_5_wanted:
+            ex, ey = x - d, amplitude * cosh[k]
+            size = length(ex, ey)
+            size = size if size > tiny else tiny
+            residual = length(p[2 * at] - ex, p[2 * at + 1] - ey) / size
+            theorem_5 = running_largest(residual, theorem_5)
+        if theorem_6_wanted:
+            sech = 1 / cosh[count + k]
+            tx, ty = x - h * (sinh[k] * sech), h * sech
+            distance = length(tractrix[2 * at] - tx, tractrix[2 * at + 1] - ty)
+            scale = abs(axis[2 * at]) + h
+            scale = scale if scale > tiny else tiny
+            theorem_6 = running_largest(abs(distance) / scale, theorem_6)
+    return theorem_5, theorem_6
 
 
 @kernel(
-    "UniTuple(float64, 2)(int64, int64, float64[::1], float64[::1], float64, float64, float64, "
-    "float64[:, :], float64[:, :], float64[:, :], int64, int64, float64, boolean, boolean, "
-    "float64, float64)"
+    "Tuple((boolean, float64, float64))(int64, int64, float64[::1], float64[::1], float64, "
+    "float64, float64, float64[::1], float64[::1], float64[::1], int64, int64, "
+    "float64, boolean, boolean, float64, float64, float64[:, ::1])"
 )
 def _closed_kinematic_block(
-    i_min: int,
-    i_max: int,
+    first: int,
+    count: int,
     cosh: Any,
     sinh: Any,
     h: float,
@@ -797,62 +908,117 @@ def _closed_kinematic_block(
     theorem_6_wanted: bool,
     theorem_5: float,
     theorem_6: float,
-) -> tuple[float, float]:
-    """``_closed_comparisons`` on the rows ``offset`` .. of one block of ``fill_closed_forms``
-    (indices i_min .. i_max + 1, rows below ``n``), each closed point made as ``_closed_points``
-    makes it and compared at once, not stored; the running largest of each theorem."""
-    rows = i_max - i_min + 2
+    scratch: Any,
+) -> tuple[bool, float, float]:
+    """One block of Theorems 5 and 6's comparisons (indices first .. first + count − 1, rows
+    ``offset`` .., those below ``n``; cosh of (14)'s arguments at ``[:count]``, of (16)'s at
+    ``[count:2count]``, sinh of (16)'s): each closed point made as ``_closed_points`` makes it
+    and compared at once, as ``_closed_comparisons`` compares the stored ones, folded into the
+    running largest of each theorem. False (and nothing compared) when a cosh read is not
+    finite. The rows go through a loop without branches (the compiler vectorizes it, the
+    largest as an integer maximum of bit patterns); a block with a NaN or a length off its fast
+    path is redone by the scalar loop, so the numbers are the old loop's, bit for bit."""
+    lo, hi = (0 if theorem_5_wanted else count), (2 * count if theorem_6_wanted else count)
+    if not _all_finite(cosh, lo, hi):
+        return False, theorem_5, theorem_6
+    rows = min(count, n - offset)
+    if rows <= 0:
+        return True, theorem_5, theorem_6
     step = 2 * d
-    for k in range(min(rows, n - offset)):
-        at = offset + k
-        x = float(i_min + k) * step
-        if theorem_5_wanted:
-            ex, ey = x - d, amplitude * cosh[k]
-            size = length(ex, ey)
+    plain = True
+    values_5, values_6 = scratch[0], scratch[1]
+    # the block's rows as slices from its first (the compiler vectorizes loops over these)
+    block_cosh, block_sech = cosh[:rows], cosh[count : count + rows]
+    if theorem_5_wanted:
+        block_p = p[2 * offset : 2 * (offset + rows)]
+        for k in range(rows):
+            ex, ey = float(first + k) * step - d, amplitude * block_cosh[k]
+            size = math.sqrt(ex * ex + ey * ey)
             size = size if size > tiny else tiny
-            residual = length(p[at, 0] - ex, p[at, 1] - ey) / size
-            theorem_5 = running_largest(residual, theorem_5)
-        if theorem_6_wanted:
-            sech = 1 / cosh[rows + k]
-            tx, ty = x - h * (sinh[k] * sech), h * sech
-            distance = length(tractrix[at, 0] - tx, tractrix[at, 1] - ty)
-            scale = abs(axis[at, 0]) + h
+            dx, dy = block_p[2 * k] - ex, block_p[2 * k + 1] - ey
+            values_5[k] = math.sqrt(dx * dx + dy * dy) / size
+            plain &= _on_fast_path(ex, ey) & _on_fast_path(dx, dy)
+    if theorem_6_wanted:
+        block_t = tractrix[2 * offset : 2 * (offset + rows)]
+        block_axis = axis[2 * offset : 2 * (offset + rows)]
+        block_sinh = sinh[:rows]
+        for k in range(rows):
+            sech = 1 / block_sech[k]
+            tx, ty = float(first + k) * step - h * (block_sinh[k] * sech), h * sech
+            dx, dy = block_t[2 * k] - tx, block_t[2 * k + 1] - ty
+            scale = abs(block_axis[2 * k]) + h
             scale = scale if scale > tiny else tiny
-            theorem_6 = running_largest(abs(distance) / scale, theorem_6)
-    return theorem_5, theorem_6
+            values_6[k] = math.sqrt(dx * dx + dy * dy) / scale
+            plain &= _on_fast_path(dx, dy)
+    top_5 = _largest_bits(values_5, rows) if theorem_5_wanted else 0
+    top_6 = _largest_bits(values_6, rows) if theorem_6_wanted else 0
+    if plain and top_5 <= _INFINITY_BITS and top_6 <= _INFINITY_BITS:
+        if theorem_5_wanted:
+            theorem_5 = running_largest(_bits_value(top_5), theorem_5)
+        if theorem_6_wanted:
+            theorem_6 = running_largest(_bits_value(top_6), theorem_6)
+        return True, theorem_5, theorem_6
+    theorem_5, theorem_6 = _kinematic_rows(
+        first,
+        count,
+        rows,
+        cosh,
+        sinh,
+        h,
+        d,
+        amplitude,
+        p,
+        tractrix,
+        axis,
+        offset,
+        tiny,
+        theorem_5_wanted,
+        theorem_6_wanted,
+        theorem_5,
+        theorem_6,
+    )
+    return True, theorem_5, theorem_6
+
+
+def _flat(points: Any) -> Any:
+    """A float64 (rows, 2) array's entries x_0, y_0, x_1, .. as one vector (a view of it when it
+    is C-contiguous)."""
+    return np.ascontiguousarray(points, dtype=np.float64).reshape(-1)
 
 
 def closed_kinematic_comparisons(
     data: D4bPolygons, n: int, theorem_5: bool = True, theorem_6: bool = True
 ) -> tuple[float, float] | None:
-    """Float64: ``closed_comparisons`` with the closed forms (14), (16) made a block at a time
-    and compared at once (``fill_closed_forms``' arguments and numpy calls, so the same closed
-    points and the same largest residuals), none stored: two (n, 2) arrays fewer to write. None
-    when a cosh overflows (the separate closed forms have their other branch for those)."""
+    """Float64: ``closed_comparisons`` (Theorems 5 and 6's largest residuals, a pair of floats)
+    with the closed forms (14), (16) made a block at a time and compared at once
+    (``fill_closed_forms``' arguments and numpy calls, so the same closed points and the same
+    largest residuals), none stored: two (n, 2) arrays fewer to write. None when a cosh
+    overflows (the separate closed forms have their other branch for those)."""
     rows = data.vertices
     ar, h, d = data.ar, float(data.h), float(data.d)
     L = float(closed_forms.log_ratio(ar, data.h, data.d))
     shift = float(data.shift)
     amplitude = float(ar.sqrt((data.h - data.d) * (data.h + data.d)))
     block = min(rows, BLOCK_SIZE)
-    cosh, sinh = np.empty(2 * block), np.empty(block)
+    arguments, cosh, sinh = np.empty(2 * block), np.empty(2 * block), np.empty(block)
+    scratch = np.empty((2, block))
     largest_5 = largest_6 = 0.0
-    p = data.p if theorem_5 else _NO_POINTS
-    tractrix, axis = (data.tractrix, data.axis) if theorem_6 else (_NO_POINTS, _NO_POINTS)
+    p = _flat(data.p) if theorem_5 else _NO_ENTRIES
+    tractrix, axis = (
+        (_flat(data.tractrix), _flat(data.axis)) if theorem_6 else (_NO_ENTRIES, _NO_ENTRIES)
+    )
     for start in range(0, min(rows, n), block):
         count = min(block, rows - start)
         first = data.i_min + start
-        arguments = _closed_arguments(first, first + count - 2, L, shift)
+        _kinematic_arguments(first, count, L, shift, arguments)
         lo, hi = (0 if theorem_5 else count), (2 * count if theorem_6 else count)
         with np.errstate(over="ignore"):
             np.cosh(arguments[lo:hi], out=cosh[lo:hi])
-        if not all_finite_vector(cosh[lo:hi]):
-            return None
-        if theorem_6:
-            np.sinh(arguments[count : 2 * count], out=sinh[:count])
-        largest_5, largest_6 = _closed_kinematic_block(
+            if theorem_6:  # (an overflow here is a cosh's too: the block returns None)
+                np.sinh(arguments[count : 2 * count], out=sinh[:count])
+        finite, largest_5, largest_6 = _closed_kinematic_block(
             first,
-            first + count - 2,
+            count,
             cosh,
             sinh,
             h,
@@ -868,7 +1034,10 @@ def closed_kinematic_comparisons(
             theorem_6,
             largest_5,
             largest_6,
+            scratch,
         )
+        if not finite:
+            return None
     return largest_5, largest_6
 
 
@@ -897,14 +1066,77 @@ def closed_comparisons(
 IMAGE_COMPARISONS = ("18", "19", "20", "18 printed", "19 printed", "20 printed")
 
 
+@numba.njit(cache=True, error_model="numpy")
+def _image_rows(
+    count: int,
+    rows: int,
+    cosh: Any,
+    tanh: Any,
+    h: float,
+    d: float,
+    gauss_amplitude: float,
+    normals: Any,
+    contact: Any,
+    gauss: Any,
+    contact_scale: Any,
+    gauss_scale: Any,
+    offset: int,
+    tiny: float,
+    wanted: Any,
+    largest: Any,
+) -> None:
+    """The old row loop of ``_closed_image_block`` on ``rows`` rows of a block (cosh and tanh of
+    (19)'s arguments at ``[:count + 1]``, of (20)'s at ``[count + 1:]``): lengths with hypot's
+    branch, NaN first."""
+    for k in range(rows):
+        at = offset + k
+        # n_i = (sech t, tanh t) and ñ_i = (−tanh t, sech t), t = (i + τ)L; m_i
+        sech, th = 1.0 / cosh[1 + k], tanh[1 + k]
+        if wanted[0]:
+            size = length(sech, th)
+            size = size if size > tiny else tiny
+            value = length(normals[2 * at] - sech, normals[2 * at + 1] - th) / size
+            largest[0] = running_largest(value, largest[0])
+        if wanted[3]:  # (18) printed: (sech t, −tanh t)
+            size = length(sech, -th)
+            size = size if size > tiny else tiny
+            value = length(normals[2 * at] - sech, normals[2 * at + 1] - -th) / size
+            largest[3] = running_largest(value, largest[3])
+        if wanted[1] or wanted[4]:
+            cx, cy = -th, sech  # ñ_i at row k + 1 of the contact points (from i_min − 1)
+            if wanted[1]:
+                size = length(cx, cy)
+                size = size if size > tiny else tiny
+                value = length(contact[2 * at + 2] - cx, contact[2 * at + 3] - cy) / size
+                largest[1] = running_largest(value * contact_scale[at], largest[1])
+            if wanted[4]:  # (19) printed: (tanh t, sech t)
+                x, y = -cx, cy
+                size = length(x, y)
+                size = size if size > tiny else tiny
+                value = length(contact[2 * at + 2] - x, contact[2 * at + 3] - y) / size
+                largest[4] = running_largest(value, largest[4])
+        if wanted[2]:
+            mx, my = -tanh[count + 1 + k], gauss_amplitude / cosh[count + 1 + k]
+            size = length(mx, my)
+            size = size if size > tiny else tiny
+            value = length(gauss[2 * at] - mx, gauss[2 * at + 1] - my) / size
+            largest[2] = running_largest(value * gauss_scale[at], largest[2])
+        if wanted[5]:  # (20) printed, from n_i: ((h tanh t − d), h sech t)/(h + d tanh t)
+            denominator = h + d * th
+            x, y = (h * th - d) / denominator, h * sech / denominator
+            size = length(x, y)
+            size = size if size > tiny else tiny
+            value = length(gauss[2 * at] - x, gauss[2 * at + 1] - y) / size
+            largest[5] = running_largest(value, largest[5])
+
+
 @kernel(
-    "void(int64, int64, float64[::1], float64[::1], float64, float64, float64, float64[:, :], "
-    "float64[:, :], float64[:, :], float64[:], float64[:], int64, int64, float64, boolean[:], "
-    "float64[::1])"
+    "boolean(int64, float64[::1], float64[::1], float64, float64, float64, float64[::1], "
+    "float64[::1], float64[::1], float64[::1], float64[::1], int64, int64, float64, "
+    "boolean[::1], float64[::1], float64[:, ::1])"
 )
 def _closed_image_block(
-    i_min: int,
-    i_max: int,
+    count: int,
     cosh: Any,
     tanh: Any,
     h: float,
@@ -920,54 +1152,118 @@ def _closed_image_block(
     tiny: float,
     wanted: Any,
     largest: Any,
-) -> None:
-    """One block of ``fill_closed_forms`` (indices i_min .. i_max + 1, rows ``offset`` .., those
-    below ``n``): n_i, ñ_i and m_i's closed forms made as ``_closed_points`` makes them and
-    compared at once, as ``curvature.evaluate`` compares the stored ones (``closed``: the
-    relative point difference, times the resolution for (19) and (20); ``PrintedForms.largest``:
-    ``residual_kernels._largest_printed_gauss``), into the running ``largest`` of each
-    ``wanted`` entry of ``IMAGE_COMPARISONS``."""
-    rows = i_max - i_min + 2
-    for k in range(min(rows, n - offset)):
-        at = offset + k
-        # n_i = (sech t, tanh t) and ñ_i = (−tanh t, sech t), t = (i + τ)L; m_i
-        sech, th = 1.0 / cosh[2 * rows + 1 + k], tanh[1 + k]
-        if wanted[0]:
-            size = length(sech, th)
+    scratch: Any,
+) -> bool:
+    """One block of (18)–(20)'s comparisons (``count`` indices, rows ``offset`` .., those below
+    ``n``; cosh and tanh of (19)'s arguments from one index before at ``[:count + 1]``, of
+    (20)'s at ``[count + 1:2count + 1]``): n_i, ñ_i and m_i's closed forms made as
+    ``_closed_points`` makes them and compared at once, as ``curvature.evaluate`` compares the
+    stored ones (``closed``: the relative point difference, times the resolution for (19) and
+    (20); ``PrintedForms.largest``: ``residual_kernels._largest_printed_gauss``), into the
+    running ``largest`` of each ``wanted`` entry of ``IMAGE_COMPARISONS``. False (and nothing
+    compared) when a cosh is not finite.
+
+    The rows go through loops without branches (the compiler vectorizes them; the largest as
+    an integer maximum of bit patterns). The four corrected and printed forms of n_i and ñ_i
+    have one length, |(sech t, ±tanh t)| (the same squares, added in either order), taken once.
+    A block with a NaN or a length off its fast path is redone by the scalar loop
+    (``_image_rows``), so the numbers are the old loop's, bit for bit."""
+    if not _all_finite(cosh, 0, 2 * count + 1):
+        return False
+    rows = min(count, n - offset)
+    if rows <= 0:
+        return True
+    sechs, sizes = scratch[6], scratch[7]
+    plain = True
+    # the block's rows as slices from its first (the compiler vectorizes loops over these)
+    cosh_19, tanh_19 = cosh[1 : rows + 1], tanh[1 : rows + 1]
+    if wanted[0] or wanted[1] or wanted[3] or wanted[4] or wanted[5]:
+        for k in range(rows):
+            sech, th = 1.0 / cosh_19[k], tanh_19[k]
+            size = math.sqrt(sech * sech + th * th)
+            sechs[k] = sech
+            sizes[k] = size if size > tiny else tiny
+            plain &= _on_fast_path(sech, th)
+    if wanted[0] or wanted[3]:
+        block_n = normals[2 * offset : 2 * (offset + rows)]
+    if wanted[0]:
+        values = scratch[0]
+        for k in range(rows):
+            dx, dy = block_n[2 * k] - sechs[k], block_n[2 * k + 1] - tanh_19[k]
+            values[k] = math.sqrt(dx * dx + dy * dy) / sizes[k]
+            plain &= _on_fast_path(dx, dy)
+    if wanted[3]:  # (18) printed: (sech t, −tanh t)
+        values = scratch[3]
+        for k in range(rows):
+            dx, dy = block_n[2 * k] - sechs[k], block_n[2 * k + 1] - -tanh_19[k]
+            values[k] = math.sqrt(dx * dx + dy * dy) / sizes[k]
+            plain &= _on_fast_path(dx, dy)
+    if wanted[1] or wanted[4]:  # ñ_i at row k + 1 of the contact points (from i_min − 1)
+        block_c = contact[2 * offset + 2 : 2 * (offset + rows) + 2]
+    if wanted[1]:
+        values, block_scale = scratch[1], contact_scale[offset : offset + rows]
+        for k in range(rows):
+            dx, dy = block_c[2 * k] - -tanh_19[k], block_c[2 * k + 1] - sechs[k]
+            values[k] = math.sqrt(dx * dx + dy * dy) / sizes[k] * block_scale[k]
+            plain &= _on_fast_path(dx, dy)
+    if wanted[4]:  # (19) printed: (tanh t, sech t)
+        values = scratch[4]
+        for k in range(rows):
+            dx, dy = block_c[2 * k] - tanh_19[k], block_c[2 * k + 1] - sechs[k]
+            values[k] = math.sqrt(dx * dx + dy * dy) / sizes[k]
+            plain &= _on_fast_path(dx, dy)
+    if wanted[2] or wanted[5]:
+        block_m = gauss[2 * offset : 2 * (offset + rows)]
+    if wanted[2]:
+        values, block_scale = scratch[2], gauss_scale[offset : offset + rows]
+        cosh_20, tanh_20 = cosh[count + 1 : count + 1 + rows], tanh[count + 1 : count + 1 + rows]
+        for k in range(rows):
+            mx, my = -tanh_20[k], gauss_amplitude / cosh_20[k]
+            size = math.sqrt(mx * mx + my * my)
             size = size if size > tiny else tiny
-            value = length(normals[at, 0] - sech, normals[at, 1] - th) / size
-            largest[0] = running_largest(value, largest[0])
-        if wanted[3]:  # (18) printed: (sech t, −tanh t)
-            size = length(sech, -th)
-            size = size if size > tiny else tiny
-            value = length(normals[at, 0] - sech, normals[at, 1] - -th) / size
-            largest[3] = running_largest(value, largest[3])
-        if wanted[1] or wanted[4]:
-            cx, cy = -th, sech  # ñ_i at row k + 1 of the contact points (from i_min − 1)
-            if wanted[1]:
-                size = length(cx, cy)
-                size = size if size > tiny else tiny
-                value = length(contact[at + 1, 0] - cx, contact[at + 1, 1] - cy) / size
-                largest[1] = running_largest(value * contact_scale[at], largest[1])
-            if wanted[4]:  # (19) printed: (tanh t, sech t)
-                x, y = -cx, cy
-                size = length(x, y)
-                size = size if size > tiny else tiny
-                value = length(contact[at + 1, 0] - x, contact[at + 1, 1] - y) / size
-                largest[4] = running_largest(value, largest[4])
-        if wanted[2]:
-            mx, my = -tanh[rows + 1 + k], gauss_amplitude / cosh[3 * rows + 1 + k]
-            size = length(mx, my)
-            size = size if size > tiny else tiny
-            value = length(gauss[at, 0] - mx, gauss[at, 1] - my) / size
-            largest[2] = running_largest(value * gauss_scale[at], largest[2])
-        if wanted[5]:  # (20) printed, from n_i: ((h tanh t − d), h sech t)/(h + d tanh t)
+            dx, dy = block_m[2 * k] - mx, block_m[2 * k + 1] - my
+            values[k] = math.sqrt(dx * dx + dy * dy) / size * block_scale[k]
+            plain &= _on_fast_path(mx, my) & _on_fast_path(dx, dy)
+    if wanted[5]:  # (20) printed, from n_i: ((h tanh t − d), h sech t)/(h + d tanh t)
+        values = scratch[5]
+        for k in range(rows):
+            th = tanh_19[k]
             denominator = h + d * th
-            x, y = (h * th - d) / denominator, h * sech / denominator
-            size = length(x, y)
+            x, y = (h * th - d) / denominator, h * sechs[k] / denominator
+            size = math.sqrt(x * x + y * y)
             size = size if size > tiny else tiny
-            value = length(gauss[at, 0] - x, gauss[at, 1] - y) / size
-            largest[5] = running_largest(value, largest[5])
+            dx, dy = block_m[2 * k] - x, block_m[2 * k + 1] - y
+            values[k] = math.sqrt(dx * dx + dy * dy) / size
+            plain &= _on_fast_path(x, y) & _on_fast_path(dx, dy)
+    tops = np.zeros(6, dtype=np.int64)
+    for j in range(6):
+        if wanted[j]:
+            tops[j] = _largest_bits(scratch[j], rows)
+            plain &= tops[j] <= _INFINITY_BITS
+    if plain:
+        for j in range(6):
+            if wanted[j]:
+                largest[j] = running_largest(_bits_value(tops[j]), largest[j])
+        return True
+    _image_rows(
+        count,
+        rows,
+        cosh,
+        tanh,
+        h,
+        d,
+        gauss_amplitude,
+        normals,
+        contact,
+        gauss,
+        contact_scale,
+        gauss_scale,
+        offset,
+        tiny,
+        wanted,
+        largest,
+    )
+    return True
 
 
 def closed_image_comparisons(
@@ -984,35 +1280,40 @@ def closed_image_comparisons(
     contact_scale: Array | None,
     gauss_scale: Array | None,
 ) -> list[float] | None:
-    """Float64: the largest residuals of ``IMAGE_COMPARISONS`` (those ``wanted``; 0.0 for the
-    others) of the Gauss images n, ñ (from i_min − 1) and m against their closed forms, made a
-    block at a time with ``fill_closed_forms``' arguments and numpy calls and compared at once,
-    none stored (three (n, 2) arrays fewer to write); the polygon's h, d, τ and i_min given, its
-    rows i_min .. i_min + n. None when a cosh overflows."""
+    """Float64: the largest residuals of ``IMAGE_COMPARISONS`` (six floats, those ``wanted``;
+    0.0 for the others) of the Gauss images n, ñ (from i_min − 1) and m ((n, 2), (n + 1, 2),
+    (n, 2)) against their closed forms, made a block at a time with ``fill_closed_forms``'
+    arguments and numpy calls and compared at once, none stored (three (n, 2) arrays fewer to
+    write); the polygon's h, d, τ and i_min given, its rows i_min .. i_min + n. None when a
+    cosh overflows."""
     rows = n + 1
     h, d = float(h_scalar), float(d_scalar)
     L = float(closed_forms.log_ratio(ar, h_scalar, d_scalar))
     shift = float(shift_scalar)
     gauss_amplitude = float(h_scalar / ar.sqrt((h_scalar - d_scalar) * (h_scalar + d_scalar)))
     block = min(rows, BLOCK_SIZE)
-    cosh, tanh = np.empty(4 * block + 1), np.empty(2 * block + 1)
+    arguments, cosh, tanh = (
+        np.empty(2 * block + 1),
+        np.empty(2 * block + 1),
+        np.empty(2 * block + 1),
+    )
+    scratch = np.empty((8, block))
     largest = np.zeros(len(IMAGE_COMPARISONS))
     flags = np.array(wanted, dtype=np.bool_)
     none = np.empty(0)
-    scale_19 = none if contact_scale is None else np.asarray(contact_scale, dtype=np.float64)
-    scale_20 = none if gauss_scale is None else np.asarray(gauss_scale, dtype=np.float64)
+    scale_19 = none if contact_scale is None else np.ascontiguousarray(contact_scale, np.float64)
+    scale_20 = none if gauss_scale is None else np.ascontiguousarray(gauss_scale, np.float64)
+    normals, contact, gauss = _flat(normals), _flat(contact), _flat(gauss)
     for start in range(0, min(rows, n), block):
         count = min(block, rows - start)
-        first = i_min + start
-        arguments = _closed_arguments(first, first + count - 2, L, shift)
+        _image_arguments(i_min + start, count, L, shift, arguments)
+        # tanh of (20)'s arguments only where (20) itself is compared
+        tanhs = 2 * count + 1 if flags[2] else count + 1
         with np.errstate(over="ignore"):
-            np.cosh(arguments[2 * count :], out=cosh[2 * count : 4 * count + 1])
-        if not all_finite_vector(cosh[2 * count : 4 * count + 1]):
-            return None
-        np.tanh(arguments[2 * count :], out=tanh[: 2 * count + 1])
-        _closed_image_block(
-            first,
-            first + count - 2,
+            np.cosh(arguments[: 2 * count + 1], out=cosh[: 2 * count + 1])
+        np.tanh(arguments[:tanhs], out=tanh[:tanhs])
+        finite = _closed_image_block(
+            count,
             cosh,
             tanh,
             h,
@@ -1028,5 +1329,8 @@ def closed_image_comparisons(
             TINY,
             flags,
             largest,
+            scratch,
         )
+        if not finite:
+            return None
     return [float(v) for v in largest]
