@@ -27,7 +27,7 @@ import numpy as np
 
 from app.geometry import checks
 from app.geometry.checks import Largest
-from app.geometry.compiled import kernel, length, running_largest
+from app.geometry.compiled import SQUARES_HIGH, SQUARES_LOW, kernel, length, running_largest
 from app.geometry.precision import Arithmetic, Array
 
 TINY = float(np.finfo(np.float64).tiny)
@@ -179,7 +179,7 @@ def recursion_residuals(d: float, y: Any) -> tuple[Any, Any]:
 def recursion_largest(d: float, y: Any) -> tuple[Largest, Largest]:
     """``recursion_residuals`` as their largest values (``checks.Largest``), not stored."""
     heights = np.asarray(y, dtype=np.float64)
-    _, _, one, two = _recursions(float(d), heights, TINY, False)
+    one, two = _largest_recursions(float(d), heights, TINY)
     count = len(heights)
     return (
         Largest(float(one), max(count - 2, 0), lambda: recursion_residuals(d, heights)[0]),
@@ -199,7 +199,8 @@ def largest_two_step_printed_residual(d: float, y: Any) -> float | None:
     if len(y) < 4:
         return None
     d = float(d)
-    worst = float(_largest_two_step_printed(d**2, d**4, np.asarray(y, dtype=np.float64), TINY))
+    heights = np.asarray(y, dtype=np.float64)
+    worst = float(_largest_two_step_printed_blocked(d**2, d**4, heights, TINY))
     return worst if math.isfinite(worst) else None
 
 
@@ -214,7 +215,7 @@ def right_angle_residuals(tractrix: Any, axis: Any, p: Any, n: int) -> Any:
 
 def right_angle_largest(tractrix: Any, axis: Any, p: Any, n: int) -> Largest:
     """``right_angle_residuals`` as their largest value (``checks.Largest``), not stored."""
-    _, largest = _right_angles(_points(tractrix), _points(axis), _points(p), n, False)
+    largest = _largest_right_angle(_points(tractrix), _points(axis), _points(p), n)
     return Largest(float(largest), max(n, 0), lambda: right_angle_residuals(tractrix, axis, p, n))
 
 
@@ -242,7 +243,7 @@ def hypothesis_largest(p: Any, n: int, d: float) -> tuple[Largest, float]:
     and the smallest p_{k−1}^y p_k^y / d²."""
     d2 = float(d) * float(d)
     points = _points(p)
-    largest, smallest = _hypothesis(points, n, d2)
+    largest, smallest = _hypothesis_blocked(points, n, d2)
 
     def violations() -> Any:
         products = points[: n - 1, 1] * points[1:n, 1]
@@ -272,7 +273,7 @@ def contact_rotation_largest(contact: Any, normals: Any, scale: Any, count: int)
     """Float64: the largest of ``_contact_rotation``'s residuals (``checks.Largest``, the
     array on demand); ``contact`` needs count + 1 rows, ``normals`` and ``scale`` count."""
     arrays = _points(contact), _points(normals), np.asarray(scale, dtype=np.float64)
-    _, largest = _contact_rotation(*arrays, count, False)
+    largest = _largest_contact_rotation(*arrays, count)
     return Largest(float(largest), count, lambda: _contact_rotation(*arrays, count, True)[0])
 
 
@@ -307,7 +308,7 @@ def pole_inversion_largest(gauss: Any, contact: Any, scale: Any, count: int) -> 
     """Float64: the largest of ``_pole_inversion``'s residuals (``checks.Largest``, the array
     on demand); ``contact`` needs count + 1 rows, ``gauss`` and ``scale`` count."""
     arrays = _points(gauss), _points(contact), np.asarray(scale, dtype=np.float64)
-    _, largest = _pole_inversion(*arrays, count, TINY, False)
+    largest = _largest_pole_inversion(*arrays, count, TINY)
     return Largest(float(largest), count, lambda: _pole_inversion(*arrays, count, TINY, True)[0])
 
 
@@ -569,7 +570,7 @@ def along(vectors: Any, points: Any) -> Any:
 
 def edge_resolution(points: Any) -> Any:
     """|e_i| / (|p_i| + |p_{i+1}|) per edge (``curvature._edge_resolution``), float64."""
-    return _edge_resolution(_points(points))
+    return _edge_resolution_blocked(_points(points))
 
 
 def _points(points: Any) -> Any:
@@ -745,7 +746,7 @@ def along_largest(vectors: Any, points: Any) -> tuple[Largest, float | None]:
     more."""
     v, q = _points(vectors), _points(points)
     count = len(v)
-    largest, printed = _largest_along_both(v, q)
+    largest, printed = _largest_along_both_blocked(v, q)
     worst = float(printed) if count > 0 and math.isfinite(printed) else None
     return Largest(float(largest), count, lambda: along(v, q[: count + 1])), worst
 
@@ -793,7 +794,7 @@ def _largest_spread(values: Any, mean: float, tiny: float) -> float:
 def ratio_spread(p: Any) -> float | None:
     """Float64: the printed residual of erratum E2 (the spread of the proof's ratio about its
     mean, ``checks._ratio_erratum``): None for fewer than two ratios, or one not finite."""
-    ratio = _printed_ratios(_points(p))
+    ratio = _printed_ratios_blocked(_points(p))
     if len(ratio) < 2:
         return None
     mean = float(np.sum(ratio) / len(ratio))
@@ -805,3 +806,606 @@ def ratio_spread(p: Any) -> float | None:
     low, high = float(np.min(ratio)), float(np.max(ratio))  # NaN if one is NaN
     worst = max(abs(high - mean) / scale, abs(low - mean) / scale)
     return worst if math.isfinite(worst) else None
+
+
+# --- the passes above a block at a time (issue 13, session 21): each block's inputs copied into
+# contiguous columns, its residuals computed in a loop without branches (the compiler runs four
+# or eight rows at once in the vector registers: IEEE quotients and square roots are correctly
+# rounded in each lane and nothing is contracted, so every residual has the bits of the scalar
+# pass), the block reduced at once (the largest magnitude as the largest bit pattern); a block
+# with a NaN or a length off ``compiled.length``'s square-root branch is taken again row by row
+# by the scalar pass, so that edge cases keep exactly the old behaviour ---
+
+#: Rows a block of the blocked passes (their scratch columns, a few 8 KB rows, stay in the cache).
+EDGE_BLOCK = 1024
+
+#: All bits of a float64 but its sign, and the pattern of +inf: a magnitude's pattern above it is
+#: a NaN's.
+_MAGNITUDE_BITS = 0x7FFF_FFFF_FFFF_FFFF
+_INF_BITS = 0x7FF0_0000_0000_0000
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _fast_length(x: float, y: float) -> tuple[float, bool]:
+    """``compiled.length`` on its square-root branch without a branch: (√(x² + y²), whether
+    ``length`` takes that branch or gives the same number: both squares in range, or both
+    arguments zero, where hypot is 0 too). A NaN argument makes a NaN length."""
+    ax, ay = abs(x), abs(y)
+    big = ax if ax > ay else ay
+    usual = ((big > SQUARES_LOW) & (big < SQUARES_HIGH)) | (big == 0.0)
+    return math.sqrt(x * x + y * y), usual
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _top(values: Any, count: int) -> int:
+    """The largest bit pattern of |values[j]|, j < count (0 for none): that of the largest
+    magnitude, or of a NaN if one is NaN (its pattern exceeds every number's). Integers, so
+    the compiler vectorizes the maximum without fast-math."""
+    bits = values.view(np.int64)
+    top = 0
+    for j in range(count):
+        pattern = bits[j] & _MAGNITUDE_BITS
+        top = pattern if pattern > top else top
+    return top
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _all(flags: Any, count: int) -> bool:
+    """Whether flags[j] for every j < count."""
+    every = True
+    for j in range(count):
+        every &= flags[j]
+    return every
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _fold(top: int, largest: float, cell: Any) -> float:
+    """``running_largest`` of the magnitude whose bit pattern is ``top`` (no NaN), through the
+    one-entry integer array ``cell``."""
+    cell[0] = top
+    return running_largest(cell.view(np.float64)[0], largest)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _copy_columns(points: Any, start: int, count: int, x: Any, y: Any) -> None:
+    """Rows start .. start + count − 1 of an (m, 2) array into the columns x and y."""
+    for j in range(count):
+        x[j] = points[start + j, 0]
+        y[j] = points[start + j, 1]
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _copy_vector(values: Any, start: int, count: int, out: Any) -> None:
+    """values[start .. start + count − 1] into out."""
+    for j in range(count):
+        out[j] = values[start + j]
+
+
+# (18) by slopes and erratum E61 (``_largest_along_both``)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _along_both_rows(
+    vectors: Any, points: Any, start: int, stop: int, largest: float, printed: float
+) -> tuple[float, float]:
+    """``_largest_along_both`` on rows start .. stop − 1, from the running largest given."""
+    for k in range(start, stop):
+        ex = points[k + 1, 0] - points[k, 0]
+        ey = points[k + 1, 1] - points[k, 1]
+        size = abs(points[k, 0]) + abs(points[k, 1]) + abs(points[k + 1, 0]) + abs(points[k + 1, 1])
+        vx, vy = vectors[k, 0], vectors[k, 1]
+        residual = abs(vx * ey - vy * ex) / size
+        largest = running_largest(1.0 if vx * ex + vy * ey < 0 else residual, largest)
+        slope = ey / ex
+        wx = math.sqrt(1 / (1 + slope * slope))
+        wy = math.sqrt(slope * slope / (1 + slope * slope))
+        residual = abs(wx * ey - wy * ex) / size
+        printed = running_largest(1.0 if wx * ex + wy * ey < 0 else residual, printed)
+    return largest, printed
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _along_both_block(
+    vx: Any, vy: Any, px: Any, py: Any, count: int, along: Any, printed: Any
+) -> None:
+    """One block of ``_largest_along_both``'s rows, without branches (the same operations)."""
+    for j in range(count):
+        ex = px[j + 1] - px[j]
+        ey = py[j + 1] - py[j]
+        size = abs(px[j]) + abs(py[j]) + abs(px[j + 1]) + abs(py[j + 1])
+        residual = abs(vx[j] * ey - vy[j] * ex) / size
+        along[j] = 1.0 if vx[j] * ex + vy[j] * ey < 0 else residual
+        slope = ey / ex
+        wx = math.sqrt(1 / (1 + slope * slope))
+        wy = math.sqrt(slope * slope / (1 + slope * slope))
+        residual = abs(wx * ey - wy * ex) / size
+        printed[j] = 1.0 if wx * ex + wy * ey < 0 else residual
+
+
+@kernel("UniTuple(float64, 2)(float64[:, :], float64[:, :])")
+def _largest_along_both_blocked(vectors: Any, points: Any) -> tuple[float, float]:
+    """``_largest_along_both`` a block at a time: the same two largest values."""
+    count = vectors.shape[0]
+    vx, vy = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
+    px, py = np.empty(EDGE_BLOCK + 1), np.empty(EDGE_BLOCK + 1)
+    along, printed_rows = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
+    cell = np.empty(1, dtype=np.int64)
+    largest, printed = 0.0, 0.0
+    for start in range(0, count, EDGE_BLOCK):
+        m = min(EDGE_BLOCK, count - start)
+        _copy_columns(vectors, start, m, vx, vy)
+        _copy_columns(points, start, m + 1, px, py)
+        _along_both_block(vx, vy, px, py, m, along, printed_rows)
+        top, top_printed = _top(along, m), _top(printed_rows, m)
+        if top > _INF_BITS or top_printed > _INF_BITS:  # a NaN: the block row by row
+            largest, printed = _along_both_rows(vectors, points, start, start + m, largest, printed)
+        else:
+            largest = _fold(top, largest, cell)
+            printed = _fold(top_printed, printed, cell)
+    return largest, printed
+
+
+# (20) by inversion (``_pole_inversion``) and (19) as a rotation (``_contact_rotation``)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _pole_inversion_rows(
+    gauss: Any, contact: Any, scale: Any, start: int, stop: int, tiny: float, largest: float
+) -> float:
+    """``_pole_inversion``'s largest on rows start .. stop − 1, from the running largest."""
+    for k in range(start, stop):
+        tx = contact[k, 0] + contact[k + 1, 0]
+        ty = contact[k, 1] + contact[k + 1, 1]
+        squared = tx * tx + ty * ty
+        ex, ey = 2 * tx / squared, 2 * ty / squared
+        size = length(ex, ey)
+        size = size if size > tiny else tiny
+        value = length(gauss[k, 0] - ex, gauss[k, 1] - ey) / size * scale[k]
+        largest = running_largest(value, largest)
+    return largest
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _pole_inversion_block(
+    gx: Any, gy: Any, cx: Any, cy: Any, s: Any, count: int, tiny: float, out: Any, usual: Any
+) -> None:
+    """One block of ``_pole_inversion``'s residuals, both lengths on the square-root branch
+    (``usual`` says where ``length`` takes it)."""
+    for j in range(count):
+        tx = cx[j] + cx[j + 1]
+        ty = cy[j] + cy[j + 1]
+        squared = tx * tx + ty * ty
+        ex, ey = 2 * tx / squared, 2 * ty / squared
+        size, plain = _fast_length(ex, ey)
+        size = size if size > tiny else tiny
+        distance, plain_distance = _fast_length(gx[j] - ex, gy[j] - ey)
+        out[j] = distance / size * s[j]
+        usual[j] = plain & plain_distance
+
+
+@kernel("float64(float64[:, :], float64[:, :], float64[:], int64, float64)")
+def _largest_pole_inversion(gauss: Any, contact: Any, scale: Any, count: int, tiny: float) -> float:
+    """``_pole_inversion``'s largest (``store`` false) a block at a time: the same number."""
+    gx, gy = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
+    cx, cy = np.empty(EDGE_BLOCK + 1), np.empty(EDGE_BLOCK + 1)
+    s, out = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
+    usual = np.empty(EDGE_BLOCK, dtype=np.bool_)
+    cell = np.empty(1, dtype=np.int64)
+    largest = 0.0
+    for start in range(0, count, EDGE_BLOCK):
+        m = min(EDGE_BLOCK, count - start)
+        _copy_columns(gauss, start, m, gx, gy)
+        _copy_columns(contact, start, m + 1, cx, cy)
+        _copy_vector(scale, start, m, s)
+        _pole_inversion_block(gx, gy, cx, cy, s, m, tiny, out, usual)
+        top = _top(out, m)
+        if top > _INF_BITS or not _all(usual, m):
+            largest = _pole_inversion_rows(gauss, contact, scale, start, start + m, tiny, largest)
+        else:
+            largest = _fold(top, largest, cell)
+    return largest
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _contact_rotation_rows(
+    contact: Any, normals: Any, scale: Any, start: int, stop: int, largest: float
+) -> float:
+    """``_contact_rotation``'s largest on rows start .. stop − 1, from the running largest."""
+    for k in range(start, stop):
+        distance = length(contact[k + 1, 0] - (-normals[k, 1]), contact[k + 1, 1] - normals[k, 0])
+        largest = running_largest(distance * scale[k], largest)
+    return largest
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _contact_rotation_block(
+    cx: Any, cy: Any, nx: Any, ny: Any, s: Any, count: int, out: Any, usual: Any
+) -> None:
+    """One block of ``_contact_rotation``'s residuals (``cx``, ``cy``: ñ_{k+1}), the length
+    on the square-root branch (``usual`` says where ``length`` takes it)."""
+    for j in range(count):
+        distance, plain = _fast_length(cx[j] - (-ny[j]), cy[j] - nx[j])
+        out[j] = distance * s[j]
+        usual[j] = plain
+
+
+@kernel("float64(float64[:, :], float64[:, :], float64[:], int64)")
+def _largest_contact_rotation(contact: Any, normals: Any, scale: Any, count: int) -> float:
+    """``_contact_rotation``'s largest (``store`` false) a block at a time: the same number."""
+    cx, cy = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
+    nx, ny = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
+    s, out = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
+    usual = np.empty(EDGE_BLOCK, dtype=np.bool_)
+    cell = np.empty(1, dtype=np.int64)
+    largest = 0.0
+    for start in range(0, count, EDGE_BLOCK):
+        m = min(EDGE_BLOCK, count - start)
+        _copy_columns(contact, start + 1, m, cx, cy)
+        _copy_columns(normals, start, m, nx, ny)
+        _copy_vector(scale, start, m, s)
+        _contact_rotation_block(cx, cy, nx, ny, s, m, out, usual)
+        top = _top(out, m)
+        if top > _INF_BITS or not _all(usual, m):
+            largest = _contact_rotation_rows(contact, normals, scale, start, start + m, largest)
+        else:
+            largest = _fold(top, largest, cell)
+    return largest
+
+
+# the edge resolution |e_i| / (|p_i| + |p_{i+1}|) and the pole's (the smaller of consecutive ones)
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _edge_resolution_block(px: Any, py: Any, count: int, out: Any, usual: Any) -> None:
+    """One block of ``_edge_resolution`` into ``out``, the length on the square-root branch
+    (``usual`` says where ``length`` takes it and the quotient is a number)."""
+    for j in range(count):
+        ex = px[j + 1] - px[j]
+        ey = py[j + 1] - py[j]
+        size = abs(px[j]) + abs(py[j]) + abs(px[j + 1]) + abs(py[j + 1])
+        edge, plain = _fast_length(ex, ey)
+        value = edge / size
+        out[j] = value
+        usual[j] = plain & (value == value)
+
+
+@kernel("float64[:](float64[:, :])")
+def _edge_resolution_blocked(points: Any) -> Any:
+    """``_edge_resolution`` a block at a time: the same array (the rows off the square-root
+    branch, or NaN, made again by the scalar formula)."""
+    count = max(points.shape[0] - 1, 0)
+    out = np.empty(count)
+    px, py = np.empty(EDGE_BLOCK + 1), np.empty(EDGE_BLOCK + 1)
+    usual = np.empty(EDGE_BLOCK, dtype=np.bool_)
+    for start in range(0, count, EDGE_BLOCK):
+        m = min(EDGE_BLOCK, count - start)
+        _copy_columns(points, start, m + 1, px, py)
+        _edge_resolution_block(px, py, m, out[start : start + m], usual)
+        if _all(usual, m):
+            continue
+        for j in range(m):
+            if not usual[j]:
+                k = start + j
+                ex = points[k + 1, 0] - points[k, 0]
+                ey = points[k + 1, 1] - points[k, 1]
+                size = (
+                    abs(points[k, 0])
+                    + abs(points[k, 1])
+                    + abs(points[k + 1, 0])
+                    + abs(points[k + 1, 1])
+                )
+                out[k] = length(ex, ey) / size
+    return out
+
+
+@kernel("float64[:](float64, float64[:])")
+def _pole_resolution(before: float, resolution: Any) -> Any:
+    """min(r_{k−1}, r_k) per edge, r_{−1} = ``before``: ``np.minimum`` of the resolutions
+    shifted by one (``before`` first) and the resolutions, NaN where either is NaN (the first
+    of them if both are), in one pass."""
+    out = np.empty(resolution.shape[0])
+    previous = before
+    for k in range(resolution.shape[0]):
+        current = resolution[k]
+        keep = (previous < current) | (previous != previous)
+        out[k] = previous if keep else current
+        previous = current
+    return out
+
+
+def pole_resolution(before: Any, resolution: Any) -> Any:
+    """Float64: ``np.minimum(np.concatenate([before, resolution[:-1]]), resolution)`` (the pole
+    resolution of (20): the smaller resolution of the two edges at ñ_i), for one ``before`` and
+    at least one resolution in one compiled pass, the numpy evaluation otherwise."""
+    first, rows = np.asarray(before, dtype=np.float64), np.asarray(resolution, dtype=np.float64)
+    if first.shape == (1,) and rows.ndim == 1 and len(rows) > 0:
+        return _pole_resolution(float(first[0]), rows)
+    return np.minimum(np.concatenate([first, rows[:-1]]), rows)
+
+
+# (13) and its two-step form (``_recursions``), the printed two-step form (erratum E3)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _recursion_rows(
+    d: float, y: Any, start: int, stop: int, tiny: float, largest_one: float, largest_two: float
+) -> tuple[float, float]:
+    """``_recursions``' largest values (``store`` false) on k = start .. stop − 1, from the
+    running largest of each."""
+    n = y.shape[0]
+    for k in range(start, stop):
+        a, b = y[k], y[k + 1]
+        predicted = (b * (b / a) + 2 * d * (d / a) + d * (d / b)) / (1 - (d / a) * (d / b))
+        scale = abs(predicted)
+        residual = abs(y[k + 2] - predicted) / (scale if scale > tiny else tiny)
+        largest_one = running_largest(residual, largest_one)
+        if k < n - 3:
+            e = d / a
+            f = d / b
+            numerator = b * (b / a) * (b / a) + (d * f) * (
+                a / b + 2 + 3 * (b / a) + 4 * (b / a) * (b / a)
+            )
+            numerator = numerator + (d * e) * (e * f) * (2 * (a / b) + 3)
+            predicted = numerator / ((1 - e * f) * (1 - e * f))
+            scale = abs(predicted)
+            residual = abs(y[k + 3] - predicted) / (scale if scale > tiny else tiny)
+            largest_two = running_largest(residual, largest_two)
+    return largest_one, largest_two
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _recursion_block(d: float, y: Any, count: int, tiny: float, one: Any, two: Any) -> None:
+    """One block of ``_recursions``' residuals from contiguous heights y (count + 3 of them:
+    the two-step residual of the last row reads y[count + 2])."""
+    for k in range(count):
+        a, b = y[k], y[k + 1]
+        predicted = (b * (b / a) + 2 * d * (d / a) + d * (d / b)) / (1 - (d / a) * (d / b))
+        scale = abs(predicted)
+        one[k] = abs(y[k + 2] - predicted) / (scale if scale > tiny else tiny)
+        e = d / a
+        f = d / b
+        numerator = b * (b / a) * (b / a) + (d * f) * (
+            a / b + 2 + 3 * (b / a) + 4 * (b / a) * (b / a)
+        )
+        numerator = numerator + (d * e) * (e * f) * (2 * (a / b) + 3)
+        predicted = numerator / ((1 - e * f) * (1 - e * f))
+        scale = abs(predicted)
+        two[k] = abs(y[k + 3] - predicted) / (scale if scale > tiny else tiny)
+
+
+@kernel("UniTuple(float64, 2)(float64, float64[:], float64)")
+def _largest_recursions(d: float, y: Any, tiny: float) -> tuple[float, float]:
+    """``_recursions``' two largest values (``store`` false) a block at a time: the same
+    numbers. Past the last height the block's copy holds 1.0 (the two-step residual of the
+    last row of (13) is computed there and left out)."""
+    n = y.shape[0]
+    count = max(n - 2, 0)
+    heights = np.ones(EDGE_BLOCK + 3)
+    one, two = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
+    cell = np.empty(1, dtype=np.int64)
+    largest_one, largest_two = 0.0, 0.0
+    for start in range(0, count, EDGE_BLOCK):
+        m = min(EDGE_BLOCK, count - start)
+        rows = min(m + 3, n - start)
+        _copy_vector(y, start, rows, heights)
+        heights[rows:] = 1.0
+        _recursion_block(d, heights, m, tiny, one, two)
+        m_two = min(m, max(n - 3 - start, 0))
+        top_one, top_two = _top(one, m), _top(two, m_two)
+        if top_one > _INF_BITS or top_two > _INF_BITS:
+            largest_one, largest_two = _recursion_rows(
+                d, y, start, start + m, tiny, largest_one, largest_two
+            )
+        else:
+            largest_one = _fold(top_one, largest_one, cell)
+            largest_two = _fold(top_two, largest_two, cell)
+    return largest_one, largest_two
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _two_step_printed_block(
+    d2: float, d4: float, y: Any, count: int, tiny: float, out: Any
+) -> None:
+    """One block of ``_two_step_printed_at`` from contiguous heights (count + 3 of them)."""
+    for k in range(count):
+        out[k] = _two_step_printed_at(d2, d4, y, k, tiny)
+
+
+@kernel("float64(float64, float64, float64[:], float64)")
+def _largest_two_step_printed_blocked(d2: float, d4: float, y: Any, tiny: float) -> float:
+    """``_largest_two_step_printed`` a block at a time: the same number."""
+    count = max(y.shape[0] - 3, 0)
+    heights = np.empty(EDGE_BLOCK + 3)
+    out = np.empty(EDGE_BLOCK)
+    cell = np.empty(1, dtype=np.int64)
+    largest = 0.0
+    for start in range(0, count, EDGE_BLOCK):
+        m = min(EDGE_BLOCK, count - start)
+        _copy_vector(y, start, m + 3, heights)
+        _two_step_printed_block(d2, d4, heights, m, tiny, out)
+        top = _top(out, m)
+        if top > _INF_BITS:
+            for k in range(start, start + m):
+                largest = running_largest(_two_step_printed_at(d2, d4, y, k, tiny), largest)
+        else:
+            largest = _fold(top, largest, cell)
+    return largest
+
+
+# Nikolaides' right angles (``_right_angles``)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _right_angle_rows(
+    tractrix: Any, axis: Any, p: Any, start: int, stop: int, largest: float
+) -> float:
+    """``_right_angles``' largest on rows start .. stop − 1, from the running largest."""
+    for k in range(start, stop):
+        vx, vy = tractrix[k, 0], tractrix[k, 1]
+        ux, uy = axis[k, 0] - vx, axis[k, 1] - vy
+        size_a = abs(axis[k, 0]) + abs(axis[k, 1]) + abs(vx) + abs(vy)
+        wx, wy = p[k, 0] - vx, p[k, 1] - vy
+        size_b = abs(p[k, 0]) + abs(p[k, 1]) + abs(vx) + abs(vy)
+        at_p = abs(ux * wx + uy * wy) / (size_a * size_b)
+        wx, wy = p[k + 1, 0] - vx, p[k + 1, 1] - vy
+        size_b = abs(p[k + 1, 0]) + abs(p[k + 1, 1]) + abs(vx) + abs(vy)
+        at_next = abs(ux * wx + uy * wy) / (size_a * size_b)
+        residual = at_p if (at_p >= at_next or at_p != at_p) else at_next
+        largest = running_largest(residual, largest)
+    return largest
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _right_angle_block(
+    tx: Any, ty: Any, ax: Any, ay: Any, px: Any, py: Any, count: int, out: Any
+) -> None:
+    """One block of ``_right_angles``' residuals (p has count + 1 rows), without branches."""
+    for k in range(count):
+        vx, vy = tx[k], ty[k]
+        ux, uy = ax[k] - vx, ay[k] - vy
+        size_a = abs(ax[k]) + abs(ay[k]) + abs(vx) + abs(vy)
+        wx, wy = px[k] - vx, py[k] - vy
+        size_b = abs(px[k]) + abs(py[k]) + abs(vx) + abs(vy)
+        at_p = abs(ux * wx + uy * wy) / (size_a * size_b)
+        wx, wy = px[k + 1] - vx, py[k + 1] - vy
+        size_b = abs(px[k + 1]) + abs(py[k + 1]) + abs(vx) + abs(vy)
+        at_next = abs(ux * wx + uy * wy) / (size_a * size_b)
+        out[k] = at_p if ((at_p >= at_next) | (at_p != at_p)) else at_next
+
+
+@kernel("float64(float64[:, :], float64[:, :], float64[:, :], int64)")
+def _largest_right_angle(tractrix: Any, axis: Any, p: Any, n: int) -> float:
+    """``_right_angles``' largest (``store`` false) a block at a time: the same number."""
+    tx, ty = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
+    ax, ay = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
+    px, py = np.empty(EDGE_BLOCK + 1), np.empty(EDGE_BLOCK + 1)
+    out = np.empty(EDGE_BLOCK)
+    cell = np.empty(1, dtype=np.int64)
+    largest = 0.0
+    for start in range(0, n, EDGE_BLOCK):
+        m = min(EDGE_BLOCK, n - start)
+        _copy_columns(tractrix, start, m, tx, ty)
+        _copy_columns(axis, start, m, ax, ay)
+        _copy_columns(p, start, m + 1, px, py)
+        _right_angle_block(tx, ty, ax, ay, px, py, m, out)
+        top = _top(out, m)
+        if top > _INF_BITS:
+            largest = _right_angle_rows(tractrix, axis, p, start, start + m, largest)
+        else:
+            largest = _fold(top, largest, cell)
+    return largest
+
+
+# the proof's ratio (erratum E2, ``_printed_ratios``)
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _edge_lengths_block(px: Any, py: Any, count: int, out: Any, usual: Any) -> None:
+    """|p_{j+1} − p_j| for j < count into ``out``, on the square-root branch (``usual``)."""
+    for j in range(count):
+        out[j], usual[j] = _fast_length(px[j + 1] - px[j], py[j + 1] - py[j])
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _ratios_block(py: Any, lengths: Any, count: int, out: Any) -> None:
+    """The ratios Δ²p^y / (l'_j + l'_{j+1}) of one block into ``out`` (heights p_j^y, edge
+    lengths l'_j = |p_{j+1} − p_j| of the block)."""
+    for j in range(count):
+        second = py[j + 3] - 2 * py[j + 2] + py[j + 1]
+        out[j] = second / (lengths[j] + lengths[j + 1])
+
+
+@kernel("float64[:](float64[:, :])")
+def _printed_ratios_blocked(p: Any) -> Any:
+    """``_printed_ratios`` a block at a time: the same array (each edge's length made once, by
+    the square-root branch or, off it, ``compiled.length``)."""
+    count = max(p.shape[0] - 3, 0)
+    out = np.empty(count)
+    px, py = np.empty(EDGE_BLOCK + 3), np.empty(EDGE_BLOCK + 3)
+    lengths = np.empty(EDGE_BLOCK + 1)
+    usual = np.empty(EDGE_BLOCK + 1, dtype=np.bool_)
+    for start in range(0, count, EDGE_BLOCK):
+        m = min(EDGE_BLOCK, count - start)
+        _copy_columns(p, start, m + 3, px, py)
+        # the lengths of edges start .. start + m (edge k is p_k p_{k+1})
+        _edge_lengths_block(px, py, m + 1, lengths, usual)
+        if not _all(usual, m + 1):
+            for j in range(m + 1):
+                if not usual[j]:
+                    lengths[j] = length(px[j + 1] - px[j], py[j + 1] - py[j])
+        _ratios_block(py, lengths, m, out[start : start + m])
+    return out
+
+
+# Theorem 4's hypothesis (``_hypothesis``)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _hypothesis_rows(
+    p: Any, start: int, stop: int, d2: float, largest: float, smallest: float
+) -> tuple[float, float]:
+    """``_hypothesis`` on k = start .. stop − 1, from the running largest and smallest."""
+    for k in range(start, stop):
+        product = p[k - 1, 1] * p[k, 1]
+        excess = d2 - product
+        violation = excess if (excess >= 0.0 or excess != excess) else 0.0
+        largest = running_largest(violation / d2, largest)
+        ratio = product / d2
+        if smallest == smallest and (ratio != ratio or ratio < smallest):
+            smallest = ratio
+    return largest, smallest
+
+
+#: The bits below the sign: xor'ed into a negative float's pattern, they make the patterns of
+#: all floats ordered as the numbers (``_hypothesis_block``).
+_ORDER_BITS = 0x7FFF_FFFF_FFFF_FFFF
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _hypothesis_block(
+    y: Any, count: int, d2: float, violations: Any, ratios: Any
+) -> tuple[int, int, bool]:
+    """One block of ``_hypothesis`` from contiguous heights (count + 1 of them): the largest
+    bit pattern of the violations (``_top``), the smallest ratio as an ordered integer (a
+    float's pattern, its lower bits flipped if negative: ordered as the numbers, −0 below +0)
+    and whether the block is plain (no NaN ratio, no ratio ±0, whose order the integers
+    would decide differently from ``<``)."""
+    for k in range(count):
+        product = y[k] * y[k + 1]
+        excess = d2 - product
+        violation = excess if ((excess >= 0.0) | (excess != excess)) else 0.0
+        violations[k] = violation / d2
+        ratios[k] = product / d2
+    bits = ratios.view(np.int64)
+    low = np.int64(0x7FFF_FFFF_FFFF_FFFF)
+    plain = True
+    for k in range(count):
+        pattern = bits[k]
+        key = pattern ^ ((pattern >> 63) & _ORDER_BITS)
+        low = key if key < low else low
+        ratio = ratios[k]
+        plain &= (ratio == ratio) & (ratio != 0.0)
+    return _top(violations, count), low, plain
+
+
+@kernel("UniTuple(float64, 2)(float64[:, :], int64, float64)")
+def _hypothesis_blocked(p: Any, n: int, d2: float) -> tuple[float, float]:
+    """``_hypothesis`` a block at a time: the same two numbers."""
+    heights = np.empty(EDGE_BLOCK + 1)
+    violations, ratios = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
+    cell = np.empty(1, dtype=np.int64)
+    largest, smallest = 0.0, math.inf
+    for start in range(1, n, EDGE_BLOCK):
+        m = min(EDGE_BLOCK, n - start)
+        for j in range(m + 1):
+            heights[j] = p[start - 1 + j, 1]
+        top, low, plain = _hypothesis_block(heights, m, d2, violations, ratios)
+        if top > _INF_BITS or not plain:
+            largest, smallest = _hypothesis_rows(p, start, start + m, d2, largest, smallest)
+            continue
+        largest = _fold(top, largest, cell)
+        cell[0] = low ^ ((low >> 63) & _ORDER_BITS)
+        ratio = cell.view(np.float64)[0]
+        if smallest == smallest and ratio < smallest:
+            smallest = ratio
+    return largest, smallest
