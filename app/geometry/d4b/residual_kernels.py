@@ -215,7 +215,7 @@ def right_angle_residuals(tractrix: Any, axis: Any, p: Any, n: int) -> Any:
 
 def right_angle_largest(tractrix: Any, axis: Any, p: Any, n: int) -> Largest:
     """``right_angle_residuals`` as their largest value (``checks.Largest``), not stored."""
-    largest = _largest_right_angle(_points(tractrix), _points(axis), _points(p), n)
+    largest = _largest_right_angle(_contiguous(tractrix), _contiguous(axis), _contiguous(p), n)
     return Largest(float(largest), max(n, 0), lambda: right_angle_residuals(tractrix, axis, p, n))
 
 
@@ -242,7 +242,7 @@ def hypothesis_largest(p: Any, n: int, d: float) -> tuple[Largest, float]:
     violation (``checks.Largest``; the array, as ``checks._hypothesis`` builds it, on demand)
     and the smallest p_{k−1}^y p_k^y / d²."""
     d2 = float(d) * float(d)
-    points = _points(p)
+    points = _contiguous(p)
     largest, smallest = _hypothesis_blocked(points, n, d2)
 
     def violations() -> Any:
@@ -272,7 +272,11 @@ def _contact_rotation(contact: Any, normals: Any, scale: Any, count: int, store:
 def contact_rotation_largest(contact: Any, normals: Any, scale: Any, count: int) -> Largest:
     """Float64: the largest of ``_contact_rotation``'s residuals (``checks.Largest``, the
     array on demand); ``contact`` needs count + 1 rows, ``normals`` and ``scale`` count."""
-    arrays = _points(contact), _points(normals), np.asarray(scale, dtype=np.float64)
+    arrays = (
+        _contiguous(contact),
+        _contiguous(normals),
+        np.ascontiguousarray(scale, dtype=np.float64),
+    )
     largest = _largest_contact_rotation(*arrays, count)
     return Largest(float(largest), count, lambda: _contact_rotation(*arrays, count, True)[0])
 
@@ -307,7 +311,7 @@ def _pole_inversion(
 def pole_inversion_largest(gauss: Any, contact: Any, scale: Any, count: int) -> Largest:
     """Float64: the largest of ``_pole_inversion``'s residuals (``checks.Largest``, the array
     on demand); ``contact`` needs count + 1 rows, ``gauss`` and ``scale`` count."""
-    arrays = _points(gauss), _points(contact), np.asarray(scale, dtype=np.float64)
+    arrays = _contiguous(gauss), _contiguous(contact), np.ascontiguousarray(scale, dtype=np.float64)
     largest = _largest_pole_inversion(*arrays, count, TINY)
     return Largest(float(largest), count, lambda: _pole_inversion(*arrays, count, TINY, True)[0])
 
@@ -570,7 +574,7 @@ def along(vectors: Any, points: Any) -> Any:
 
 def edge_resolution(points: Any) -> Any:
     """|e_i| / (|p_i| + |p_{i+1}|) per edge (``curvature._edge_resolution``), float64."""
-    return _edge_resolution_blocked(_points(points))
+    return _edge_resolution_blocked(_contiguous(points))
 
 
 def _points(points: Any) -> Any:
@@ -744,7 +748,7 @@ def along_largest(vectors: Any, points: Any) -> tuple[Largest, float | None]:
     if asked) and ``largest_along_printed_slope(len(vectors), points)``, from one pass (the
     check of (18) by slopes and its erratum E61); ``points`` has len(vectors) + 1 rows or
     more."""
-    v, q = _points(vectors), _points(points)
+    v, q = _contiguous(vectors), _contiguous(points)
     count = len(v)
     largest, printed = _largest_along_both_blocked(v, q)
     worst = float(printed) if count > 0 and math.isfinite(printed) else None
@@ -794,7 +798,7 @@ def _largest_spread(values: Any, mean: float, tiny: float) -> float:
 def ratio_spread(p: Any) -> float | None:
     """Float64: the printed residual of erratum E2 (the spread of the proof's ratio about its
     mean, ``checks._ratio_erratum``): None for fewer than two ratios, or one not finite."""
-    ratio = _printed_ratios_blocked(_points(p))
+    ratio = _printed_ratios_blocked(_contiguous(p))
     if len(ratio) < 2:
         return None
     mean = float(np.sum(ratio) / len(ratio))
@@ -808,15 +812,17 @@ def ratio_spread(p: Any) -> float | None:
     return worst if math.isfinite(worst) else None
 
 
-# --- the passes above a block at a time (issue 13, session 21): each block's inputs copied into
-# contiguous columns, its residuals computed in a loop without branches (the compiler runs four
-# or eight rows at once in the vector registers: IEEE quotients and square roots are correctly
-# rounded in each lane and nothing is contracted, so every residual has the bits of the scalar
-# pass), the block reduced at once (the largest magnitude as the largest bit pattern); a block
-# with a NaN or a length off ``compiled.length``'s square-root branch is taken again row by row
-# by the scalar pass, so that edge cases keep exactly the old behaviour ---
+# --- the passes above a block at a time (issue 13, session 21). Each block's residuals are
+# computed in a loop without branches that reads the (m, 2) arrays as flat contiguous rows (x_k at
+# 2k, y_k at 2k + 1 of a slice starting at the block) or, for the heights of a strided column, a
+# contiguous copy of the block; the compiler runs four rows at once in the vector registers (IEEE
+# quotients and square roots are correctly rounded in each lane and nothing is contracted, so
+# every residual has the bits of the scalar pass). The block is reduced at once: its largest
+# magnitude as the largest bit pattern. A block with a NaN or a length off ``compiled.length``'s
+# square-root branch is taken again row by row by the scalar pass, so that edge cases keep exactly
+# the old behaviour. The scalar kernels above stay the reference (``store`` and the tests). ---
 
-#: Rows a block of the blocked passes (their scratch columns, a few 8 KB rows, stay in the cache).
+#: Rows a block of the blocked passes (their scratch rows, 8 KB each, stay in the cache).
 EDGE_BLOCK = 1024
 
 #: All bits of a float64 but its sign, and the pattern of +inf: a magnitude's pattern above it is
@@ -867,18 +873,14 @@ def _fold(top: int, largest: float, cell: Any) -> float:
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
-def _copy_columns(points: Any, start: int, count: int, x: Any, y: Any) -> None:
-    """Rows start .. start + count − 1 of an (m, 2) array into the columns x and y."""
-    for j in range(count):
-        x[j] = points[start + j, 0]
-        y[j] = points[start + j, 1]
+def _rows(flat: Any, start: int, count: int) -> Any:
+    """Rows start .. start + count − 1 of a C-contiguous (m, 2) array as its flat entries."""
+    return flat[2 * start : 2 * (start + count)]
 
 
-@numba.njit(cache=True, inline="always", error_model="numpy")
-def _copy_vector(values: Any, start: int, count: int, out: Any) -> None:
-    """values[start .. start + count − 1] into out."""
-    for j in range(count):
-        out[j] = values[start + j]
+def _contiguous(points: Any) -> Any:
+    """A float64 array, C-contiguous (the blocked passes read its rows as flat entries)."""
+    return np.ascontiguousarray(points, dtype=np.float64)
 
 
 # (18) by slopes and erratum E61 (``_largest_along_both``)
@@ -905,16 +907,17 @@ def _along_both_rows(
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _along_both_block(
-    vx: Any, vy: Any, px: Any, py: Any, count: int, along: Any, printed: Any
-) -> None:
-    """One block of ``_largest_along_both``'s rows, without branches (the same operations)."""
+def _along_both_block(v: Any, q: Any, count: int, along: Any, printed: Any) -> None:
+    """One block of ``_largest_along_both``'s rows (flat vectors v, flat points q with one row
+    more), without branches: the same operations."""
     for j in range(count):
-        ex = px[j + 1] - px[j]
-        ey = py[j + 1] - py[j]
-        size = abs(px[j]) + abs(py[j]) + abs(px[j + 1]) + abs(py[j + 1])
-        residual = abs(vx[j] * ey - vy[j] * ex) / size
-        along[j] = 1.0 if vx[j] * ex + vy[j] * ey < 0 else residual
+        x0, y0, x1, y1 = q[2 * j], q[2 * j + 1], q[2 * j + 2], q[2 * j + 3]
+        ex = x1 - x0
+        ey = y1 - y0
+        size = abs(x0) + abs(y0) + abs(x1) + abs(y1)
+        vx, vy = v[2 * j], v[2 * j + 1]
+        residual = abs(vx * ey - vy * ex) / size
+        along[j] = 1.0 if vx * ex + vy * ey < 0 else residual
         slope = ey / ex
         wx = math.sqrt(1 / (1 + slope * slope))
         wy = math.sqrt(slope * slope / (1 + slope * slope))
@@ -922,20 +925,17 @@ def _along_both_block(
         printed[j] = 1.0 if wx * ex + wy * ey < 0 else residual
 
 
-@kernel("UniTuple(float64, 2)(float64[:, :], float64[:, :])")
+@kernel("UniTuple(float64, 2)(float64[:, ::1], float64[:, ::1])")
 def _largest_along_both_blocked(vectors: Any, points: Any) -> tuple[float, float]:
     """``_largest_along_both`` a block at a time: the same two largest values."""
     count = vectors.shape[0]
-    vx, vy = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
-    px, py = np.empty(EDGE_BLOCK + 1), np.empty(EDGE_BLOCK + 1)
+    v, q = vectors.reshape(-1), points.reshape(-1)
     along, printed_rows = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
     cell = np.empty(1, dtype=np.int64)
     largest, printed = 0.0, 0.0
     for start in range(0, count, EDGE_BLOCK):
         m = min(EDGE_BLOCK, count - start)
-        _copy_columns(vectors, start, m, vx, vy)
-        _copy_columns(points, start, m + 1, px, py)
-        _along_both_block(vx, vy, px, py, m, along, printed_rows)
+        _along_both_block(_rows(v, start, m), _rows(q, start, m + 1), m, along, printed_rows)
         top, top_printed = _top(along, m), _top(printed_rows, m)
         if top > _INF_BITS or top_printed > _INF_BITS:  # a NaN: the block row by row
             largest, printed = _along_both_rows(vectors, points, start, start + m, largest, printed)
@@ -967,37 +967,34 @@ def _pole_inversion_rows(
 
 @numba.njit(cache=True, error_model="numpy")
 def _pole_inversion_block(
-    gx: Any, gy: Any, cx: Any, cy: Any, s: Any, count: int, tiny: float, out: Any, usual: Any
+    g: Any, c: Any, s: Any, count: int, tiny: float, out: Any, usual: Any
 ) -> None:
-    """One block of ``_pole_inversion``'s residuals, both lengths on the square-root branch
-    (``usual`` says where ``length`` takes it)."""
+    """One block of ``_pole_inversion``'s residuals (flat m, flat ñ with one row more, the
+    scales), both lengths on the square-root branch (``usual`` says where ``length`` takes it)."""
     for j in range(count):
-        tx = cx[j] + cx[j + 1]
-        ty = cy[j] + cy[j + 1]
+        tx = c[2 * j] + c[2 * j + 2]
+        ty = c[2 * j + 1] + c[2 * j + 3]
         squared = tx * tx + ty * ty
         ex, ey = 2 * tx / squared, 2 * ty / squared
         size, plain = _fast_length(ex, ey)
         size = size if size > tiny else tiny
-        distance, plain_distance = _fast_length(gx[j] - ex, gy[j] - ey)
+        distance, plain_distance = _fast_length(g[2 * j] - ex, g[2 * j + 1] - ey)
         out[j] = distance / size * s[j]
         usual[j] = plain & plain_distance
 
 
-@kernel("float64(float64[:, :], float64[:, :], float64[:], int64, float64)")
+@kernel("float64(float64[:, ::1], float64[:, ::1], float64[::1], int64, float64)")
 def _largest_pole_inversion(gauss: Any, contact: Any, scale: Any, count: int, tiny: float) -> float:
     """``_pole_inversion``'s largest (``store`` false) a block at a time: the same number."""
-    gx, gy = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
-    cx, cy = np.empty(EDGE_BLOCK + 1), np.empty(EDGE_BLOCK + 1)
-    s, out = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
+    g, c = gauss.reshape(-1), contact.reshape(-1)
+    out = np.empty(EDGE_BLOCK)
     usual = np.empty(EDGE_BLOCK, dtype=np.bool_)
     cell = np.empty(1, dtype=np.int64)
     largest = 0.0
     for start in range(0, count, EDGE_BLOCK):
         m = min(EDGE_BLOCK, count - start)
-        _copy_columns(gauss, start, m, gx, gy)
-        _copy_columns(contact, start, m + 1, cx, cy)
-        _copy_vector(scale, start, m, s)
-        _pole_inversion_block(gx, gy, cx, cy, s, m, tiny, out, usual)
+        s = scale[start : start + m]
+        _pole_inversion_block(_rows(g, start, m), _rows(c, start, m + 1), s, m, tiny, out, usual)
         top = _top(out, m)
         if top > _INF_BITS or not _all(usual, m):
             largest = _pole_inversion_rows(gauss, contact, scale, start, start + m, tiny, largest)
@@ -1018,32 +1015,27 @@ def _contact_rotation_rows(
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _contact_rotation_block(
-    cx: Any, cy: Any, nx: Any, ny: Any, s: Any, count: int, out: Any, usual: Any
-) -> None:
-    """One block of ``_contact_rotation``'s residuals (``cx``, ``cy``: ñ_{k+1}), the length
-    on the square-root branch (``usual`` says where ``length`` takes it)."""
+def _contact_rotation_block(c: Any, nrm: Any, s: Any, count: int, out: Any, usual: Any) -> None:
+    """One block of ``_contact_rotation``'s residuals (flat ñ_{k+1}, flat n_k, the scales), the
+    length on the square-root branch (``usual`` says where ``length`` takes it)."""
     for j in range(count):
-        distance, plain = _fast_length(cx[j] - (-ny[j]), cy[j] - nx[j])
+        distance, plain = _fast_length(c[2 * j] - (-nrm[2 * j + 1]), c[2 * j + 1] - nrm[2 * j])
         out[j] = distance * s[j]
         usual[j] = plain
 
 
-@kernel("float64(float64[:, :], float64[:, :], float64[:], int64)")
+@kernel("float64(float64[:, ::1], float64[:, ::1], float64[::1], int64)")
 def _largest_contact_rotation(contact: Any, normals: Any, scale: Any, count: int) -> float:
     """``_contact_rotation``'s largest (``store`` false) a block at a time: the same number."""
-    cx, cy = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
-    nx, ny = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
-    s, out = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
+    c, nrm = contact.reshape(-1), normals.reshape(-1)
+    out = np.empty(EDGE_BLOCK)
     usual = np.empty(EDGE_BLOCK, dtype=np.bool_)
     cell = np.empty(1, dtype=np.int64)
     largest = 0.0
     for start in range(0, count, EDGE_BLOCK):
         m = min(EDGE_BLOCK, count - start)
-        _copy_columns(contact, start + 1, m, cx, cy)
-        _copy_columns(normals, start, m, nx, ny)
-        _copy_vector(scale, start, m, s)
-        _contact_rotation_block(cx, cy, nx, ny, s, m, out, usual)
+        s = scale[start : start + m]
+        _contact_rotation_block(_rows(c, start + 1, m), _rows(nrm, start, m), s, m, out, usual)
         top = _top(out, m)
         if top > _INF_BITS or not _all(usual, m):
             largest = _contact_rotation_rows(contact, normals, scale, start, start + m, largest)
@@ -1056,71 +1048,72 @@ def _largest_contact_rotation(contact: Any, normals: Any, scale: Any, count: int
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _edge_resolution_block(px: Any, py: Any, count: int, out: Any, usual: Any) -> None:
-    """One block of ``_edge_resolution`` into ``out``, the length on the square-root branch
-    (``usual`` says where ``length`` takes it and the quotient is a number)."""
+def _edge_resolution_block(q: Any, count: int, out: Any, usual: Any) -> None:
+    """One block of ``_edge_resolution`` (flat points, one row more) into ``out``, the length on
+    the square-root branch (``usual``: where ``length`` takes it and the quotient is a number)."""
     for j in range(count):
-        ex = px[j + 1] - px[j]
-        ey = py[j + 1] - py[j]
-        size = abs(px[j]) + abs(py[j]) + abs(px[j + 1]) + abs(py[j + 1])
-        edge, plain = _fast_length(ex, ey)
+        x0, y0, x1, y1 = q[2 * j], q[2 * j + 1], q[2 * j + 2], q[2 * j + 3]
+        size = abs(x0) + abs(y0) + abs(x1) + abs(y1)
+        edge, plain = _fast_length(x1 - x0, y1 - y0)
         value = edge / size
         out[j] = value
         usual[j] = plain & (value == value)
 
 
-@kernel("float64[:](float64[:, :])")
+@kernel("float64[:](float64[:, ::1])")
 def _edge_resolution_blocked(points: Any) -> Any:
     """``_edge_resolution`` a block at a time: the same array (the rows off the square-root
     branch, or NaN, made again by the scalar formula)."""
     count = max(points.shape[0] - 1, 0)
+    q = points.reshape(-1)
     out = np.empty(count)
-    px, py = np.empty(EDGE_BLOCK + 1), np.empty(EDGE_BLOCK + 1)
     usual = np.empty(EDGE_BLOCK, dtype=np.bool_)
     for start in range(0, count, EDGE_BLOCK):
         m = min(EDGE_BLOCK, count - start)
-        _copy_columns(points, start, m + 1, px, py)
-        _edge_resolution_block(px, py, m, out[start : start + m], usual)
+        _edge_resolution_block(_rows(q, start, m + 1), m, out[start : start + m], usual)
         if _all(usual, m):
             continue
-        for j in range(m):
-            if not usual[j]:
-                k = start + j
+        for k in range(start, start + m):
+            if not usual[k - start]:
                 ex = points[k + 1, 0] - points[k, 0]
                 ey = points[k + 1, 1] - points[k, 1]
-                size = (
-                    abs(points[k, 0])
-                    + abs(points[k, 1])
-                    + abs(points[k + 1, 0])
-                    + abs(points[k + 1, 1])
-                )
+                size = abs(points[k, 0]) + abs(points[k, 1])
+                size = size + abs(points[k + 1, 0]) + abs(points[k + 1, 1])
                 out[k] = length(ex, ey) / size
     return out
 
 
-@kernel("float64[:](float64, float64[:])")
+@kernel("float64[:](float64, float64[::1])")
 def _pole_resolution(before: float, resolution: Any) -> Any:
     """min(r_{k−1}, r_k) per edge, r_{−1} = ``before``: ``np.minimum`` of the resolutions
-    shifted by one (``before`` first) and the resolutions, NaN where either is NaN (the first
-    of them if both are), in one pass."""
-    out = np.empty(resolution.shape[0])
-    previous = before
-    for k in range(resolution.shape[0]):
-        current = resolution[k]
-        keep = (previous < current) | (previous != previous)
-        out[k] = previous if keep else current
-        previous = current
+    shifted by one (``before`` first) and the resolutions, NaN where either is NaN, in one
+    pass."""
+    count = resolution.shape[0]
+    out = np.empty(count)
+    if count == 0:
+        return out
+    out[0] = before if ((before < resolution[0]) | (before != before)) else resolution[0]
+    for k in range(1, count):
+        previous, current = resolution[k - 1], resolution[k]
+        out[k] = previous if ((previous < current) | (previous != previous)) else current
     return out
 
 
 def pole_resolution(before: Any, resolution: Any) -> Any:
     """Float64: ``np.minimum(np.concatenate([before, resolution[:-1]]), resolution)`` (the pole
     resolution of (20): the smaller resolution of the two edges at ñ_i), for one ``before`` and
-    at least one resolution in one compiled pass, the numpy evaluation otherwise."""
+    at least one resolution in one compiled pass, the numpy evaluation otherwise; (r,) → (r,)."""
     first, rows = np.asarray(before, dtype=np.float64), np.asarray(resolution, dtype=np.float64)
     if first.shape == (1,) and rows.ndim == 1 and len(rows) > 0:
-        return _pole_resolution(float(first[0]), rows)
+        return _pole_resolution(float(first[0]), np.ascontiguousarray(rows))
     return np.minimum(np.concatenate([first, rows[:-1]]), rows)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _copy_vector(values: Any, start: int, count: int, out: Any) -> None:
+    """values[start .. start + count − 1] into out (a strided column made contiguous)."""
+    for j in range(count):
+        out[j] = values[start + j]
 
 
 # (13) and its two-step form (``_recursions``), the printed two-step form (erratum E3)
@@ -1256,38 +1249,35 @@ def _right_angle_rows(
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _right_angle_block(
-    tx: Any, ty: Any, ax: Any, ay: Any, px: Any, py: Any, count: int, out: Any
-) -> None:
-    """One block of ``_right_angles``' residuals (p has count + 1 rows), without branches."""
+def _right_angle_block(t: Any, a: Any, q: Any, count: int, out: Any) -> None:
+    """One block of ``_right_angles``' residuals (flat d_i, x_i, and p_i with one row more),
+    without branches."""
     for k in range(count):
-        vx, vy = tx[k], ty[k]
-        ux, uy = ax[k] - vx, ay[k] - vy
-        size_a = abs(ax[k]) + abs(ay[k]) + abs(vx) + abs(vy)
-        wx, wy = px[k] - vx, py[k] - vy
-        size_b = abs(px[k]) + abs(py[k]) + abs(vx) + abs(vy)
+        vx, vy = t[2 * k], t[2 * k + 1]
+        ax, ay = a[2 * k], a[2 * k + 1]
+        ux, uy = ax - vx, ay - vy
+        size_a = abs(ax) + abs(ay) + abs(vx) + abs(vy)
+        px, py = q[2 * k], q[2 * k + 1]
+        wx, wy = px - vx, py - vy
+        size_b = abs(px) + abs(py) + abs(vx) + abs(vy)
         at_p = abs(ux * wx + uy * wy) / (size_a * size_b)
-        wx, wy = px[k + 1] - vx, py[k + 1] - vy
-        size_b = abs(px[k + 1]) + abs(py[k + 1]) + abs(vx) + abs(vy)
+        px, py = q[2 * k + 2], q[2 * k + 3]
+        wx, wy = px - vx, py - vy
+        size_b = abs(px) + abs(py) + abs(vx) + abs(vy)
         at_next = abs(ux * wx + uy * wy) / (size_a * size_b)
         out[k] = at_p if ((at_p >= at_next) | (at_p != at_p)) else at_next
 
 
-@kernel("float64(float64[:, :], float64[:, :], float64[:, :], int64)")
+@kernel("float64(float64[:, ::1], float64[:, ::1], float64[:, ::1], int64)")
 def _largest_right_angle(tractrix: Any, axis: Any, p: Any, n: int) -> float:
     """``_right_angles``' largest (``store`` false) a block at a time: the same number."""
-    tx, ty = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
-    ax, ay = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
-    px, py = np.empty(EDGE_BLOCK + 1), np.empty(EDGE_BLOCK + 1)
+    t, a, q = tractrix.reshape(-1), axis.reshape(-1), p.reshape(-1)
     out = np.empty(EDGE_BLOCK)
     cell = np.empty(1, dtype=np.int64)
     largest = 0.0
     for start in range(0, n, EDGE_BLOCK):
         m = min(EDGE_BLOCK, n - start)
-        _copy_columns(tractrix, start, m, tx, ty)
-        _copy_columns(axis, start, m, ax, ay)
-        _copy_columns(p, start, m + 1, px, py)
-        _right_angle_block(tx, ty, ax, ay, px, py, m, out)
+        _right_angle_block(_rows(t, start, m), _rows(a, start, m), _rows(q, start, m + 1), m, out)
         top = _top(out, m)
         if top > _INF_BITS:
             largest = _right_angle_rows(tractrix, axis, p, start, start + m, largest)
@@ -1300,40 +1290,41 @@ def _largest_right_angle(tractrix: Any, axis: Any, p: Any, n: int) -> float:
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _edge_lengths_block(px: Any, py: Any, count: int, out: Any, usual: Any) -> None:
-    """|p_{j+1} − p_j| for j < count into ``out``, on the square-root branch (``usual``)."""
+def _edge_lengths_block(q: Any, count: int, out: Any, usual: Any) -> None:
+    """|p_{j+1} − p_j| for j < count (flat points) into ``out``, on the square-root branch
+    (``usual``)."""
     for j in range(count):
-        out[j], usual[j] = _fast_length(px[j + 1] - px[j], py[j + 1] - py[j])
+        out[j], usual[j] = _fast_length(q[2 * j + 2] - q[2 * j], q[2 * j + 3] - q[2 * j + 1])
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _ratios_block(py: Any, lengths: Any, count: int, out: Any) -> None:
-    """The ratios Δ²p^y / (l'_j + l'_{j+1}) of one block into ``out`` (heights p_j^y, edge
-    lengths l'_j = |p_{j+1} − p_j| of the block)."""
+def _ratios_block(q: Any, lengths: Any, count: int, out: Any) -> None:
+    """The ratios Δ²p^y / (l'_j + l'_{j+1}) of one block into ``out`` (flat points p_j, edge
+    lengths l'_j = |p_{j+1} − p_j|)."""
     for j in range(count):
-        second = py[j + 3] - 2 * py[j + 2] + py[j + 1]
+        second = q[2 * j + 7] - 2 * q[2 * j + 5] + q[2 * j + 3]
         out[j] = second / (lengths[j] + lengths[j + 1])
 
 
-@kernel("float64[:](float64[:, :])")
+@kernel("float64[:](float64[:, ::1])")
 def _printed_ratios_blocked(p: Any) -> Any:
     """``_printed_ratios`` a block at a time: the same array (each edge's length made once, by
     the square-root branch or, off it, ``compiled.length``)."""
     count = max(p.shape[0] - 3, 0)
+    q = p.reshape(-1)
     out = np.empty(count)
-    px, py = np.empty(EDGE_BLOCK + 3), np.empty(EDGE_BLOCK + 3)
     lengths = np.empty(EDGE_BLOCK + 1)
     usual = np.empty(EDGE_BLOCK + 1, dtype=np.bool_)
     for start in range(0, count, EDGE_BLOCK):
         m = min(EDGE_BLOCK, count - start)
-        _copy_columns(p, start, m + 3, px, py)
         # the lengths of edges start .. start + m (edge k is p_k p_{k+1})
-        _edge_lengths_block(px, py, m + 1, lengths, usual)
+        _edge_lengths_block(_rows(q, start, m + 2), m + 1, lengths, usual)
         if not _all(usual, m + 1):
             for j in range(m + 1):
                 if not usual[j]:
-                    lengths[j] = length(px[j + 1] - px[j], py[j + 1] - py[j])
-        _ratios_block(py, lengths, m, out[start : start + m])
+                    k = start + j
+                    lengths[j] = length(p[k + 1, 0] - p[k, 0], p[k + 1, 1] - p[k, 1])
+        _ratios_block(_rows(q, start, m + 3), lengths, m, out[start : start + m])
     return out
 
 
@@ -1363,15 +1354,15 @@ _ORDER_BITS = 0x7FFF_FFFF_FFFF_FFFF
 
 @numba.njit(cache=True, error_model="numpy")
 def _hypothesis_block(
-    y: Any, count: int, d2: float, violations: Any, ratios: Any
+    q: Any, count: int, d2: float, violations: Any, ratios: Any
 ) -> tuple[int, int, bool]:
-    """One block of ``_hypothesis`` from contiguous heights (count + 1 of them): the largest
-    bit pattern of the violations (``_top``), the smallest ratio as an ordered integer (a
-    float's pattern, its lower bits flipped if negative: ordered as the numbers, −0 below +0)
-    and whether the block is plain (no NaN ratio, no ratio ±0, whose order the integers
-    would decide differently from ``<``)."""
+    """One block of ``_hypothesis`` from flat points (count + 1 rows, the first p_{k−1}): the
+    largest bit pattern of the violations (``_top``), the smallest ratio as an ordered integer
+    (a float's pattern, its lower bits flipped if negative: ordered as the numbers, −0 below
+    +0) and whether the block is plain (no NaN ratio, no ratio ±0, which ``<`` does not tell
+    apart as the integers do)."""
     for k in range(count):
-        product = y[k] * y[k + 1]
+        product = q[2 * k + 1] * q[2 * k + 3]
         excess = d2 - product
         violation = excess if ((excess >= 0.0) | (excess != excess)) else 0.0
         violations[k] = violation / d2
@@ -1388,18 +1379,16 @@ def _hypothesis_block(
     return _top(violations, count), low, plain
 
 
-@kernel("UniTuple(float64, 2)(float64[:, :], int64, float64)")
+@kernel("UniTuple(float64, 2)(float64[:, ::1], int64, float64)")
 def _hypothesis_blocked(p: Any, n: int, d2: float) -> tuple[float, float]:
     """``_hypothesis`` a block at a time: the same two numbers."""
-    heights = np.empty(EDGE_BLOCK + 1)
+    q = p.reshape(-1)
     violations, ratios = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
     cell = np.empty(1, dtype=np.int64)
     largest, smallest = 0.0, math.inf
     for start in range(1, n, EDGE_BLOCK):
         m = min(EDGE_BLOCK, n - start)
-        for j in range(m + 1):
-            heights[j] = p[start - 1 + j, 1]
-        top, low, plain = _hypothesis_block(heights, m, d2, violations, ratios)
+        top, low, plain = _hypothesis_block(_rows(q, start - 1, m + 1), m, d2, violations, ratios)
         if top > _INF_BITS or not plain:
             largest, smallest = _hypothesis_rows(p, start, start + m, d2, largest, smallest)
             continue
