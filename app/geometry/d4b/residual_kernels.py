@@ -15,6 +15,12 @@ The distances between two polygons (``point_distance``, ``relative_point_differe
 √(x² + y²) where neither square can overflow or lose its bits to underflow, instead of libm's
 hypot (50–90 ns an entry here, most of the checks' time at 10^6 vertices): within 2 units in the
 last place of hypot, which only residuals at rounding level see; the mp path keeps ``ar.hypot``.
+
+The largest values the checks read without ``detail`` (and the edge resolutions and the proof's
+ratios) are taken a block of rows at a time (the end of this module): the same operations in a
+loop without branches, which the compiler runs four rows at once, and the scalar pass again for
+a block with a NaN or a length off the square-root branch; the same bits as the scalar passes
+(tests/geometry/d4b/test_residual_blocks.py).
 """
 
 from __future__ import annotations
@@ -1111,9 +1117,11 @@ def pole_resolution(before: Any, resolution: Any) -> Any:
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
 def _copy_vector(values: Any, start: int, count: int, out: Any) -> None:
-    """values[start .. start + count − 1] into out (a strided column made contiguous)."""
+    """values[start .. start + count − 1] into out (a strided column made contiguous; read
+    through a slice, whose indices the compiler knows are not negative)."""
+    segment = values[start : start + count]
     for j in range(count):
-        out[j] = values[start + j]
+        out[j] = segment[j]
 
 
 # (13) and its two-step form (``_recursions``), the printed two-step form (erratum E3)
@@ -1368,7 +1376,7 @@ def _hypothesis_block(
         violations[k] = violation / d2
         ratios[k] = product / d2
     bits = ratios.view(np.int64)
-    low = np.int64(0x7FFF_FFFF_FFFF_FFFF)
+    low = _ORDER_BITS  # the largest int64: above every key
     plain = True
     for k in range(count):
         pattern = bits[k]
