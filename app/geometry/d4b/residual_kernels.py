@@ -185,7 +185,11 @@ def recursion_residuals(d: float, y: Any) -> tuple[Any, Any]:
 def recursion_largest(d: float, y: Any) -> tuple[Largest, Largest]:
     """``recursion_residuals`` as their largest values (``checks.Largest``), not stored."""
     heights = np.asarray(y, dtype=np.float64)
-    one, two = _largest_recursions(float(d), heights, TINY)
+    pairs = _paired(heights)
+    if pairs is not None:  # the heights read in place from their rows
+        one, two = _largest_recursions_pairs(float(d), pairs, TINY)
+    else:
+        one, two = _largest_recursions(float(d), heights, TINY)
     count = len(heights)
     return (
         Largest(float(one), max(count - 2, 0), lambda: recursion_residuals(d, heights)[0]),
@@ -206,7 +210,11 @@ def largest_two_step_printed_residual(d: float, y: Any) -> float | None:
         return None
     d = float(d)
     heights = np.asarray(y, dtype=np.float64)
-    worst = float(_largest_two_step_printed_blocked(d**2, d**4, heights, TINY))
+    pairs = _paired(heights)
+    if pairs is not None:  # the heights read in place from their rows
+        worst = float(_largest_two_step_printed_pairs(d**2, d**4, pairs, TINY))
+    else:
+        worst = float(_largest_two_step_printed_blocked(d**2, d**4, heights, TINY))
     return worst if math.isfinite(worst) else None
 
 
@@ -1154,31 +1162,48 @@ def _recursion_rows(
     return largest_one, largest_two
 
 
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _recursion_pair(
+    d: float, a: float, b: float, after: float, later: float, tiny: float
+) -> tuple[float, float]:
+    """``_recursions``' two residuals at k from a = y_k, b = y_{k+1}, after = y_{k+2} and
+    later = y_{k+3}: the same operations."""
+    predicted = (b * (b / a) + 2 * d * (d / a) + d * (d / b)) / (1 - (d / a) * (d / b))
+    scale = abs(predicted)
+    one = abs(after - predicted) / (scale if scale > tiny else tiny)
+    e = d / a
+    f = d / b
+    numerator = b * (b / a) * (b / a) + (d * f) * (a / b + 2 + 3 * (b / a) + 4 * (b / a) * (b / a))
+    numerator = numerator + (d * e) * (e * f) * (2 * (a / b) + 3)
+    predicted = numerator / ((1 - e * f) * (1 - e * f))
+    scale = abs(predicted)
+    return one, abs(later - predicted) / (scale if scale > tiny else tiny)
+
+
 @numba.njit(cache=True, error_model="numpy")
 def _recursion_block(d: float, y: Any, count: int, tiny: float, one: Any, two: Any) -> None:
     """One block of ``_recursions``' residuals from contiguous heights y (count + 3 of them:
     the two-step residual of the last row reads y[count + 2])."""
     for k in range(count):
-        a, b = y[k], y[k + 1]
-        predicted = (b * (b / a) + 2 * d * (d / a) + d * (d / b)) / (1 - (d / a) * (d / b))
-        scale = abs(predicted)
-        one[k] = abs(y[k + 2] - predicted) / (scale if scale > tiny else tiny)
-        e = d / a
-        f = d / b
-        numerator = b * (b / a) * (b / a) + (d * f) * (
-            a / b + 2 + 3 * (b / a) + 4 * (b / a) * (b / a)
+        one[k], two[k] = _recursion_pair(d, y[k], y[k + 1], y[k + 2], y[k + 3], tiny)
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _recursion_block_pairs(d: float, q: Any, count: int, tiny: float, one: Any, two: Any) -> None:
+    """``_recursion_block`` on the heights of flat points (y_k at 2k + 1, count + 3 rows)."""
+    for k in range(count):
+        one[k], two[k] = _recursion_pair(
+            d, q[2 * k + 1], q[2 * k + 3], q[2 * k + 5], q[2 * k + 7], tiny
         )
-        numerator = numerator + (d * e) * (e * f) * (2 * (a / b) + 3)
-        predicted = numerator / ((1 - e * f) * (1 - e * f))
-        scale = abs(predicted)
-        two[k] = abs(y[k + 3] - predicted) / (scale if scale > tiny else tiny)
 
 
-@kernel("UniTuple(float64, 2)(float64, float64[:], float64)")
-def _largest_recursions(d: float, y: Any, tiny: float) -> tuple[float, float]:
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _recursions_blocked(d: float, y: Any, q: Any, paired: bool, tiny: float) -> tuple[float, float]:
     """``_recursions``' two largest values (``store`` false) a block at a time: the same
-    numbers. Past the last height the block's copy holds 1.0 (the two-step residual of the
-    last row of (13) is computed there and left out)."""
+    numbers. The heights y are read as the odd entries of the flat rows q if ``paired`` (y the
+    second column of C-contiguous (n, 2) rows), else, and for the last block, from a
+    contiguous copy, which holds 1.0 past the last height (the two-step residual of the last
+    row of (13) is computed there and left out)."""
     n = y.shape[0]
     count = max(n - 2, 0)
     heights = np.ones(EDGE_BLOCK + 3)
@@ -1187,10 +1212,13 @@ def _largest_recursions(d: float, y: Any, tiny: float) -> tuple[float, float]:
     largest_one, largest_two = 0.0, 0.0
     for start in range(0, count, EDGE_BLOCK):
         m = min(EDGE_BLOCK, count - start)
-        rows = min(m + 3, n - start)
-        _copy_vector(y, start, rows, heights)
-        heights[rows:] = 1.0
-        _recursion_block(d, heights, m, tiny, one, two)
+        if paired and start + m + 3 <= n:
+            _recursion_block_pairs(d, _rows(q, start, m + 3), m, tiny, one, two)
+        else:
+            rows = min(m + 3, n - start)
+            _copy_vector(y, start, rows, heights)
+            heights[rows:] = 1.0
+            _recursion_block(d, heights, m, tiny, one, two)
         m_two = min(m, max(n - 3 - start, 0))
         top_one, top_two = _top(one, m), _top(two, m_two)
         if top_one > _INF_BITS or top_two > _INF_BITS:
@@ -1203,18 +1231,61 @@ def _largest_recursions(d: float, y: Any, tiny: float) -> tuple[float, float]:
     return largest_one, largest_two
 
 
+@kernel("UniTuple(float64, 2)(float64, float64[:], float64)")
+def _largest_recursions(d: float, y: Any, tiny: float) -> tuple[float, float]:
+    """``_recursions``' two largest values (``store`` false) a block at a time (any heights)."""
+    return _recursions_blocked(d, y, np.empty(0), False, tiny)
+
+
+@kernel("UniTuple(float64, 2)(float64, float64[:, ::1], float64)")
+def _largest_recursions_pairs(d: float, points: Any, tiny: float) -> tuple[float, float]:
+    """``_largest_recursions`` on the heights of C-contiguous (n, 2) rows, read in place."""
+    return _recursions_blocked(d, points[:, 1], points.reshape(-1), True, tiny)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _two_step_printed_pair(
+    d2: float, d4: float, a: float, b: float, later: float, tiny: float
+) -> float:
+    """``_two_step_printed_at`` from a = y_k, b = y_{k+1}, later = y_{k+3}: the same
+    operations."""
+    aa, bb = a * a, b * b
+    b3 = bb * b
+    numerator = (
+        bb * bb * b
+        + d2 * (aa * a + 2 * aa * b + 3 * a * bb + 4 * b3)
+        + d4 * (2 * b3 + 2 * a + 3 * b)
+    )
+    denominator = d2 - a * b
+    predicted = numerator / (denominator * denominator)
+    scale = abs(predicted)
+    return abs(later - predicted) / (scale if scale > tiny else tiny)
+
+
 @numba.njit(cache=True, error_model="numpy")
 def _two_step_printed_block(
     d2: float, d4: float, y: Any, count: int, tiny: float, out: Any
 ) -> None:
     """One block of ``_two_step_printed_at`` from contiguous heights (count + 3 of them)."""
     for k in range(count):
-        out[k] = _two_step_printed_at(d2, d4, y, k, tiny)
+        out[k] = _two_step_printed_pair(d2, d4, y[k], y[k + 1], y[k + 3], tiny)
 
 
-@kernel("float64(float64, float64, float64[:], float64)")
-def _largest_two_step_printed_blocked(d2: float, d4: float, y: Any, tiny: float) -> float:
-    """``_largest_two_step_printed`` a block at a time: the same number."""
+@numba.njit(cache=True, error_model="numpy")
+def _two_step_printed_block_pairs(
+    d2: float, d4: float, q: Any, count: int, tiny: float, out: Any
+) -> None:
+    """``_two_step_printed_block`` on the heights of flat points (y_k at 2k + 1)."""
+    for k in range(count):
+        out[k] = _two_step_printed_pair(d2, d4, q[2 * k + 1], q[2 * k + 3], q[2 * k + 7], tiny)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _two_step_printed_largest(
+    d2: float, d4: float, y: Any, q: Any, paired: bool, tiny: float
+) -> float:
+    """``_largest_two_step_printed`` a block at a time: the same number (the heights read as
+    ``_recursions_blocked`` reads them)."""
     count = max(y.shape[0] - 3, 0)
     heights = np.empty(EDGE_BLOCK + 3)
     out = np.empty(EDGE_BLOCK)
@@ -1222,8 +1293,11 @@ def _largest_two_step_printed_blocked(d2: float, d4: float, y: Any, tiny: float)
     largest = 0.0
     for start in range(0, count, EDGE_BLOCK):
         m = min(EDGE_BLOCK, count - start)
-        _copy_vector(y, start, m + 3, heights)
-        _two_step_printed_block(d2, d4, heights, m, tiny, out)
+        if paired:
+            _two_step_printed_block_pairs(d2, d4, _rows(q, start, m + 3), m, tiny, out)
+        else:
+            _copy_vector(y, start, m + 3, heights)
+            _two_step_printed_block(d2, d4, heights, m, tiny, out)
         top = _top(out, m)
         if top > _INF_BITS:
             for k in range(start, start + m):
@@ -1231,6 +1305,41 @@ def _largest_two_step_printed_blocked(d2: float, d4: float, y: Any, tiny: float)
         else:
             largest = _fold(top, largest, cell)
     return largest
+
+
+@kernel("float64(float64, float64, float64[:], float64)")
+def _largest_two_step_printed_blocked(d2: float, d4: float, y: Any, tiny: float) -> float:
+    """``_largest_two_step_printed`` a block at a time (any heights): the same number."""
+    return _two_step_printed_largest(d2, d4, y, np.empty(0), False, tiny)
+
+
+@kernel("float64(float64, float64, float64[:, ::1], float64)")
+def _largest_two_step_printed_pairs(d2: float, d4: float, points: Any, tiny: float) -> float:
+    """``_largest_two_step_printed_blocked`` on the heights of C-contiguous (n, 2) rows, read
+    in place."""
+    return _two_step_printed_largest(d2, d4, points[:, 1], points.reshape(-1), True, tiny)
+
+
+def _paired(y: Any) -> Any:
+    """C-contiguous float64 (len(y), 2) rows over y's memory whose second column is the vector
+    y, when y has a stride of two entries inside one writable contiguous buffer (a column view
+    of such rows, as the checks pass the heights p[:, 1]), else None. Only the second column
+    is read."""
+    owner = y.base if isinstance(y, np.ndarray) else None
+    if not (
+        isinstance(owner, np.ndarray)
+        and owner.flags.c_contiguous
+        and owner.flags.writeable
+        and y.ndim == 1
+        and y.dtype == np.float64
+        and y.strides == (16,)
+        and len(y) > 0
+    ):
+        return None
+    start = y.__array_interface__["data"][0] - 8 - owner.__array_interface__["data"][0]
+    if start < 0 or start % 8 or start + 16 * len(y) > owner.nbytes:
+        return None
+    return np.ndarray((len(y), 2), dtype=np.float64, buffer=owner, offset=start, strides=(16, 8))
 
 
 # Nikolaides' right angles (``_right_angles``)

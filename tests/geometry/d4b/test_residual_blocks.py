@@ -123,6 +123,36 @@ def test_blocked_height_passes_equal_the_scalar_ones(count: int, mode: str, seed
             assert same(got[0], expected[2]) and same(got[1], expected[3])
             got_one = rk._largest_two_step_printed_blocked(d * d, d**4, y, rk.TINY)
             assert same(got_one, rk._largest_two_step_printed(d * d, d**4, y, rk.TINY))
+            # the heights read in place from their rows (the checks' p[:, 1])
+            got = rk._largest_recursions_pairs(d, points, rk.TINY)
+            assert same(got[0], expected[2]) and same(got[1], expected[3])
+            got_one = rk._largest_two_step_printed_pairs(d * d, d**4, points, rk.TINY)
+            assert same(got_one, rk._largest_two_step_printed(d * d, d**4, y, rk.TINY))
+    for d in (1e-3, 0.7):  # the public functions, on the column and on a copy of it
+        for y in (points[:, 1], np.ascontiguousarray(points[:, 1]), points[1:, 1]):
+            one, two = rk.recursion_largest(d, y)
+            expected = rk._recursions(d, np.ascontiguousarray(y), rk.TINY, False)
+            assert same(one.value, expected[2]) and same(two.value, expected[3])
+            if len(y) >= 4:
+                worst = rk._largest_two_step_printed(d * d, d**4, y, rk.TINY)
+                printed = rk.largest_two_step_printed_residual(d, y)
+                assert printed == (worst if math.isfinite(worst) else None)
+
+
+def test_paired_heights_are_the_rows_they_are_a_column_of() -> None:
+    rows = np.arange(40.0).reshape(20, 2)
+    assert rk._paired(rows[:, 1]) is not None
+    np.testing.assert_array_equal(rk._paired(rows[:, 1])[:, 1], rows[:, 1])
+    np.testing.assert_array_equal(rk._paired(rows[3:9, 1]), rows[3:9])
+    np.testing.assert_array_equal(rk._paired(rows[1:, 0])[:, 1], rows[1:, 0])
+    assert rk._paired(rows[:, 0]) is None  # the first column: no entry before it
+    assert rk._paired(rows[::2, 1]) is None  # every other row
+    assert rk._paired(np.ascontiguousarray(rows[:, 1])) is None
+    assert rk._paired(np.arange(60.0).reshape(20, 3)[:, 1]) is None
+    assert rk._paired(np.asfortranarray(rows)[:, 1]) is None
+    fixed = rows.copy()
+    fixed.flags.writeable = False
+    assert rk._paired(fixed[:, 1]) is None
 
 
 def test_hypothesis_smallest_keeps_the_first_of_two_zeros() -> None:
