@@ -238,6 +238,7 @@ def test_the_public_largest_functions_take_the_blocked_passes() -> None:
         "_largest_along_both_blocked",
         "_largest_pole_inversion",
         "_largest_recursions",
+        "_largest_two_step_printed_pairs",
         "_edge_resolution_blocked",
     ],
 )
