@@ -591,9 +591,9 @@ def evaluate(
                 previous = np.concatenate([before, resolution()[:-1]])
                 compiled = arb_gauss.minimum(previous, resolution())
                 return compiled if compiled is not None else _ball_minimum(previous, resolution())
-            return np.minimum(
-                ar.to_floats(np.concatenate([before, resolution()[:-1]])),
-                ar.to_floats(resolution()),
+            # np.minimum of the shifted resolutions and the resolutions, in one compiled pass
+            return residual_kernels.pole_resolution(
+                ar.to_floats(before), ar.to_floats(resolution())
             )
 
         return shared("pole resolution", make)

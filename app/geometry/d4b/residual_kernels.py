@@ -15,6 +15,12 @@ The distances between two polygons (``point_distance``, ``relative_point_differe
 √(x² + y²) where neither square can overflow or lose its bits to underflow, instead of libm's
 hypot (50–90 ns an entry here, most of the checks' time at 10^6 vertices): within 2 units in the
 last place of hypot, which only residuals at rounding level see; the mp path keeps ``ar.hypot``.
+
+The largest values the checks read without ``detail`` (and the edge resolutions and the proof's
+ratios) are taken a block of rows at a time (the end of this module): the same operations in a
+loop without branches, which the compiler runs four rows at once, and the scalar pass again for
+a block with a NaN or a length off the square-root branch; the same bits as the scalar passes
+(tests/geometry/d4b/test_residual_blocks.py).
 """
 
 from __future__ import annotations
@@ -27,7 +33,7 @@ import numpy as np
 
 from app.geometry import checks
 from app.geometry.checks import Largest
-from app.geometry.compiled import kernel, length, running_largest
+from app.geometry.compiled import SQUARES_HIGH, SQUARES_LOW, kernel, length, running_largest
 from app.geometry.precision import Arithmetic, Array
 
 TINY = float(np.finfo(np.float64).tiny)
@@ -179,7 +185,11 @@ def recursion_residuals(d: float, y: Any) -> tuple[Any, Any]:
 def recursion_largest(d: float, y: Any) -> tuple[Largest, Largest]:
     """``recursion_residuals`` as their largest values (``checks.Largest``), not stored."""
     heights = np.asarray(y, dtype=np.float64)
-    _, _, one, two = _recursions(float(d), heights, TINY, False)
+    pairs = _paired(heights)
+    if pairs is not None:  # the heights read in place from their rows
+        one, two = _largest_recursions_pairs(float(d), pairs, TINY)
+    else:
+        one, two = _largest_recursions(float(d), heights, TINY)
     count = len(heights)
     return (
         Largest(float(one), max(count - 2, 0), lambda: recursion_residuals(d, heights)[0]),
@@ -199,7 +209,12 @@ def largest_two_step_printed_residual(d: float, y: Any) -> float | None:
     if len(y) < 4:
         return None
     d = float(d)
-    worst = float(_largest_two_step_printed(d**2, d**4, np.asarray(y, dtype=np.float64), TINY))
+    heights = np.asarray(y, dtype=np.float64)
+    pairs = _paired(heights)
+    if pairs is not None:  # the heights read in place from their rows
+        worst = float(_largest_two_step_printed_pairs(d**2, d**4, pairs, TINY))
+    else:
+        worst = float(_largest_two_step_printed_blocked(d**2, d**4, heights, TINY))
     return worst if math.isfinite(worst) else None
 
 
@@ -214,7 +229,7 @@ def right_angle_residuals(tractrix: Any, axis: Any, p: Any, n: int) -> Any:
 
 def right_angle_largest(tractrix: Any, axis: Any, p: Any, n: int) -> Largest:
     """``right_angle_residuals`` as their largest value (``checks.Largest``), not stored."""
-    _, largest = _right_angles(_points(tractrix), _points(axis), _points(p), n, False)
+    largest = _largest_right_angle(_contiguous(tractrix), _contiguous(axis), _contiguous(p), n)
     return Largest(float(largest), max(n, 0), lambda: right_angle_residuals(tractrix, axis, p, n))
 
 
@@ -241,8 +256,8 @@ def hypothesis_largest(p: Any, n: int, d: float) -> tuple[Largest, float]:
     violation (``checks.Largest``; the array, as ``checks._hypothesis`` builds it, on demand)
     and the smallest p_{k−1}^y p_k^y / d²."""
     d2 = float(d) * float(d)
-    points = _points(p)
-    largest, smallest = _hypothesis(points, n, d2)
+    points = _contiguous(p)
+    largest, smallest = _hypothesis_blocked(points, n, d2)
 
     def violations() -> Any:
         products = points[: n - 1, 1] * points[1:n, 1]
@@ -271,8 +286,12 @@ def _contact_rotation(contact: Any, normals: Any, scale: Any, count: int, store:
 def contact_rotation_largest(contact: Any, normals: Any, scale: Any, count: int) -> Largest:
     """Float64: the largest of ``_contact_rotation``'s residuals (``checks.Largest``, the
     array on demand); ``contact`` needs count + 1 rows, ``normals`` and ``scale`` count."""
-    arrays = _points(contact), _points(normals), np.asarray(scale, dtype=np.float64)
-    _, largest = _contact_rotation(*arrays, count, False)
+    arrays = (
+        _contiguous(contact),
+        _contiguous(normals),
+        np.ascontiguousarray(scale, dtype=np.float64),
+    )
+    largest = _largest_contact_rotation(*arrays, count)
     return Largest(float(largest), count, lambda: _contact_rotation(*arrays, count, True)[0])
 
 
@@ -306,8 +325,8 @@ def _pole_inversion(
 def pole_inversion_largest(gauss: Any, contact: Any, scale: Any, count: int) -> Largest:
     """Float64: the largest of ``_pole_inversion``'s residuals (``checks.Largest``, the array
     on demand); ``contact`` needs count + 1 rows, ``gauss`` and ``scale`` count."""
-    arrays = _points(gauss), _points(contact), np.asarray(scale, dtype=np.float64)
-    _, largest = _pole_inversion(*arrays, count, TINY, False)
+    arrays = _contiguous(gauss), _contiguous(contact), np.ascontiguousarray(scale, dtype=np.float64)
+    largest = _largest_pole_inversion(*arrays, count, TINY)
     return Largest(float(largest), count, lambda: _pole_inversion(*arrays, count, TINY, True)[0])
 
 
@@ -569,7 +588,7 @@ def along(vectors: Any, points: Any) -> Any:
 
 def edge_resolution(points: Any) -> Any:
     """|e_i| / (|p_i| + |p_{i+1}|) per edge (``curvature._edge_resolution``), float64."""
-    return _edge_resolution(_points(points))
+    return _edge_resolution_blocked(_contiguous(points))
 
 
 def _points(points: Any) -> Any:
@@ -743,9 +762,9 @@ def along_largest(vectors: Any, points: Any) -> tuple[Largest, float | None]:
     if asked) and ``largest_along_printed_slope(len(vectors), points)``, from one pass (the
     check of (18) by slopes and its erratum E61); ``points`` has len(vectors) + 1 rows or
     more."""
-    v, q = _points(vectors), _points(points)
+    v, q = _contiguous(vectors), _contiguous(points)
     count = len(v)
-    largest, printed = _largest_along_both(v, q)
+    largest, printed = _largest_along_both_blocked(v, q)
     worst = float(printed) if count > 0 and math.isfinite(printed) else None
     return Largest(float(largest), count, lambda: along(v, q[: count + 1])), worst
 
@@ -793,7 +812,7 @@ def _largest_spread(values: Any, mean: float, tiny: float) -> float:
 def ratio_spread(p: Any) -> float | None:
     """Float64: the printed residual of erratum E2 (the spread of the proof's ratio about its
     mean, ``checks._ratio_erratum``): None for fewer than two ratios, or one not finite."""
-    ratio = _printed_ratios(_points(p))
+    ratio = _printed_ratios_blocked(_contiguous(p))
     if len(ratio) < 2:
         return None
     mean = float(np.sum(ratio) / len(ratio))
@@ -805,3 +824,694 @@ def ratio_spread(p: Any) -> float | None:
     low, high = float(np.min(ratio)), float(np.max(ratio))  # NaN if one is NaN
     worst = max(abs(high - mean) / scale, abs(low - mean) / scale)
     return worst if math.isfinite(worst) else None
+
+
+# --- the passes above a block at a time (issue 13, session 21). Each block's residuals are
+# computed in a loop without branches that reads the (m, 2) arrays as flat contiguous rows (x_k at
+# 2k, y_k at 2k + 1 of a slice starting at the block) or, for the heights of a strided column, a
+# contiguous copy of the block; the compiler runs four rows at once in the vector registers (IEEE
+# quotients and square roots are correctly rounded in each lane and nothing is contracted, so
+# every residual has the bits of the scalar pass). The block is reduced at once: its largest
+# magnitude as the largest bit pattern. A block with a NaN or a length off ``compiled.length``'s
+# square-root branch is taken again row by row by the scalar pass, so that edge cases keep exactly
+# the old behaviour. The scalar kernels above stay the reference (``store`` and the tests). ---
+
+#: Rows a block of the blocked passes (their scratch rows, 8 KB each, stay in the cache).
+EDGE_BLOCK = 1024
+
+#: All bits of a float64 but its sign, and the pattern of +inf: a magnitude's pattern above it is
+#: a NaN's.
+_MAGNITUDE_BITS = 0x7FFF_FFFF_FFFF_FFFF
+_INF_BITS = 0x7FF0_0000_0000_0000
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _fast_length(x: float, y: float) -> tuple[float, bool]:
+    """``compiled.length`` on its square-root branch without a branch: (√(x² + y²), whether
+    ``length`` takes that branch or gives the same number: both squares in range, or both
+    arguments zero, where hypot is 0 too). A NaN argument makes a NaN length."""
+    ax, ay = abs(x), abs(y)
+    big = ax if ax > ay else ay
+    usual = ((big > SQUARES_LOW) & (big < SQUARES_HIGH)) | (big == 0.0)
+    return math.sqrt(x * x + y * y), usual
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _top(values: Any, count: int) -> int:
+    """The largest bit pattern of |values[j]|, j < count (0 for none): that of the largest
+    magnitude, or of a NaN if one is NaN (its pattern exceeds every number's). Integers, so
+    the compiler vectorizes the maximum without fast-math."""
+    bits = values.view(np.int64)
+    top = 0
+    for j in range(count):
+        pattern = bits[j] & _MAGNITUDE_BITS
+        top = pattern if pattern > top else top
+    return top
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _all(flags: Any, count: int) -> bool:
+    """Whether flags[j] for every j < count."""
+    every = True
+    for j in range(count):
+        every &= flags[j]
+    return every
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _fold(top: int, largest: float, cell: Any) -> float:
+    """``running_largest`` of the magnitude whose bit pattern is ``top`` (no NaN), through the
+    one-entry integer array ``cell``."""
+    cell[0] = top
+    return running_largest(cell.view(np.float64)[0], largest)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _rows(flat: Any, start: int, count: int) -> Any:
+    """Rows start .. start + count − 1 of a C-contiguous (m, 2) array as its flat entries."""
+    return flat[2 * start : 2 * (start + count)]
+
+
+def _contiguous(points: Any) -> Any:
+    """A float64 array, C-contiguous (the blocked passes read its rows as flat entries)."""
+    return np.ascontiguousarray(points, dtype=np.float64)
+
+
+# (18) by slopes and erratum E61 (``_largest_along_both``)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _along_both_rows(
+    vectors: Any, points: Any, start: int, stop: int, largest: float, printed: float
+) -> tuple[float, float]:
+    """``_largest_along_both`` on rows start .. stop − 1, from the running largest given."""
+    for k in range(start, stop):
+        ex = points[k + 1, 0] - points[k, 0]
+        ey = points[k + 1, 1] - points[k, 1]
+        size = abs(points[k, 0]) + abs(points[k, 1]) + abs(points[k + 1, 0]) + abs(points[k + 1, 1])
+        vx, vy = vectors[k, 0], vectors[k, 1]
+        residual = abs(vx * ey - vy * ex) / size
+        largest = running_largest(1.0 if vx * ex + vy * ey < 0 else residual, largest)
+        slope = ey / ex
+        wx = math.sqrt(1 / (1 + slope * slope))
+        wy = math.sqrt(slope * slope / (1 + slope * slope))
+        residual = abs(wx * ey - wy * ex) / size
+        printed = running_largest(1.0 if wx * ex + wy * ey < 0 else residual, printed)
+    return largest, printed
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _along_both_block(v: Any, q: Any, count: int, along: Any, printed: Any) -> None:
+    """One block of ``_largest_along_both``'s rows (flat vectors v, flat points q with one row
+    more), without branches: the same operations."""
+    for j in range(count):
+        x0, y0, x1, y1 = q[2 * j], q[2 * j + 1], q[2 * j + 2], q[2 * j + 3]
+        ex = x1 - x0
+        ey = y1 - y0
+        size = abs(x0) + abs(y0) + abs(x1) + abs(y1)
+        vx, vy = v[2 * j], v[2 * j + 1]
+        residual = abs(vx * ey - vy * ex) / size
+        along[j] = 1.0 if vx * ex + vy * ey < 0 else residual
+        slope = ey / ex
+        wx = math.sqrt(1 / (1 + slope * slope))
+        wy = math.sqrt(slope * slope / (1 + slope * slope))
+        residual = abs(wx * ey - wy * ex) / size
+        printed[j] = 1.0 if wx * ex + wy * ey < 0 else residual
+
+
+@kernel("UniTuple(float64, 2)(float64[:, ::1], float64[:, ::1])")
+def _largest_along_both_blocked(vectors: Any, points: Any) -> tuple[float, float]:
+    """``_largest_along_both`` a block at a time: the same two largest values."""
+    count = vectors.shape[0]
+    v, q = vectors.reshape(-1), points.reshape(-1)
+    along, printed_rows = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
+    cell = np.empty(1, dtype=np.int64)
+    largest, printed = 0.0, 0.0
+    for start in range(0, count, EDGE_BLOCK):
+        m = min(EDGE_BLOCK, count - start)
+        _along_both_block(_rows(v, start, m), _rows(q, start, m + 1), m, along, printed_rows)
+        top, top_printed = _top(along, m), _top(printed_rows, m)
+        if top > _INF_BITS or top_printed > _INF_BITS:  # a NaN: the block row by row
+            largest, printed = _along_both_rows(vectors, points, start, start + m, largest, printed)
+        else:
+            largest = _fold(top, largest, cell)
+            printed = _fold(top_printed, printed, cell)
+    return largest, printed
+
+
+# (20) by inversion (``_pole_inversion``) and (19) as a rotation (``_contact_rotation``)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _pole_inversion_rows(
+    gauss: Any, contact: Any, scale: Any, start: int, stop: int, tiny: float, largest: float
+) -> float:
+    """``_pole_inversion``'s largest on rows start .. stop − 1, from the running largest."""
+    for k in range(start, stop):
+        tx = contact[k, 0] + contact[k + 1, 0]
+        ty = contact[k, 1] + contact[k + 1, 1]
+        squared = tx * tx + ty * ty
+        ex, ey = 2 * tx / squared, 2 * ty / squared
+        size = length(ex, ey)
+        size = size if size > tiny else tiny
+        value = length(gauss[k, 0] - ex, gauss[k, 1] - ey) / size * scale[k]
+        largest = running_largest(value, largest)
+    return largest
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _pole_inversion_block(
+    g: Any, c: Any, s: Any, count: int, tiny: float, out: Any, usual: Any
+) -> None:
+    """One block of ``_pole_inversion``'s residuals (flat m, flat ñ with one row more, the
+    scales), both lengths on the square-root branch (``usual`` says where ``length`` takes it)."""
+    for j in range(count):
+        tx = c[2 * j] + c[2 * j + 2]
+        ty = c[2 * j + 1] + c[2 * j + 3]
+        squared = tx * tx + ty * ty
+        ex, ey = 2 * tx / squared, 2 * ty / squared
+        size, plain = _fast_length(ex, ey)
+        size = size if size > tiny else tiny
+        distance, plain_distance = _fast_length(g[2 * j] - ex, g[2 * j + 1] - ey)
+        out[j] = distance / size * s[j]
+        usual[j] = plain & plain_distance
+
+
+@kernel("float64(float64[:, ::1], float64[:, ::1], float64[::1], int64, float64)")
+def _largest_pole_inversion(gauss: Any, contact: Any, scale: Any, count: int, tiny: float) -> float:
+    """``_pole_inversion``'s largest (``store`` false) a block at a time: the same number."""
+    g, c = gauss.reshape(-1), contact.reshape(-1)
+    out = np.empty(EDGE_BLOCK)
+    usual = np.empty(EDGE_BLOCK, dtype=np.bool_)
+    cell = np.empty(1, dtype=np.int64)
+    largest = 0.0
+    for start in range(0, count, EDGE_BLOCK):
+        m = min(EDGE_BLOCK, count - start)
+        s = scale[start : start + m]
+        _pole_inversion_block(_rows(g, start, m), _rows(c, start, m + 1), s, m, tiny, out, usual)
+        top = _top(out, m)
+        if top > _INF_BITS or not _all(usual, m):
+            largest = _pole_inversion_rows(gauss, contact, scale, start, start + m, tiny, largest)
+        else:
+            largest = _fold(top, largest, cell)
+    return largest
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _contact_rotation_rows(
+    contact: Any, normals: Any, scale: Any, start: int, stop: int, largest: float
+) -> float:
+    """``_contact_rotation``'s largest on rows start .. stop − 1, from the running largest."""
+    for k in range(start, stop):
+        distance = length(contact[k + 1, 0] - (-normals[k, 1]), contact[k + 1, 1] - normals[k, 0])
+        largest = running_largest(distance * scale[k], largest)
+    return largest
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _contact_rotation_block(c: Any, nrm: Any, s: Any, count: int, out: Any, usual: Any) -> None:
+    """One block of ``_contact_rotation``'s residuals (flat ñ_{k+1}, flat n_k, the scales), the
+    length on the square-root branch (``usual`` says where ``length`` takes it)."""
+    for j in range(count):
+        distance, plain = _fast_length(c[2 * j] - (-nrm[2 * j + 1]), c[2 * j + 1] - nrm[2 * j])
+        out[j] = distance * s[j]
+        usual[j] = plain
+
+
+@kernel("float64(float64[:, ::1], float64[:, ::1], float64[::1], int64)")
+def _largest_contact_rotation(contact: Any, normals: Any, scale: Any, count: int) -> float:
+    """``_contact_rotation``'s largest (``store`` false) a block at a time: the same number."""
+    c, nrm = contact.reshape(-1), normals.reshape(-1)
+    out = np.empty(EDGE_BLOCK)
+    usual = np.empty(EDGE_BLOCK, dtype=np.bool_)
+    cell = np.empty(1, dtype=np.int64)
+    largest = 0.0
+    for start in range(0, count, EDGE_BLOCK):
+        m = min(EDGE_BLOCK, count - start)
+        s = scale[start : start + m]
+        _contact_rotation_block(_rows(c, start + 1, m), _rows(nrm, start, m), s, m, out, usual)
+        top = _top(out, m)
+        if top > _INF_BITS or not _all(usual, m):
+            largest = _contact_rotation_rows(contact, normals, scale, start, start + m, largest)
+        else:
+            largest = _fold(top, largest, cell)
+    return largest
+
+
+# the edge resolution |e_i| / (|p_i| + |p_{i+1}|) and the pole's (the smaller of consecutive ones)
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _edge_resolution_block(q: Any, count: int, out: Any, usual: Any) -> None:
+    """One block of ``_edge_resolution`` (flat points, one row more) into ``out``, the length on
+    the square-root branch (``usual``: where ``length`` takes it and the quotient is a number)."""
+    for j in range(count):
+        x0, y0, x1, y1 = q[2 * j], q[2 * j + 1], q[2 * j + 2], q[2 * j + 3]
+        size = abs(x0) + abs(y0) + abs(x1) + abs(y1)
+        edge, plain = _fast_length(x1 - x0, y1 - y0)
+        value = edge / size
+        out[j] = value
+        usual[j] = plain & (value == value)
+
+
+@kernel("float64[:](float64[:, ::1])")
+def _edge_resolution_blocked(points: Any) -> Any:
+    """``_edge_resolution`` a block at a time: the same array (the rows off the square-root
+    branch, or NaN, made again by the scalar formula)."""
+    count = max(points.shape[0] - 1, 0)
+    q = points.reshape(-1)
+    out = np.empty(count)
+    usual = np.empty(EDGE_BLOCK, dtype=np.bool_)
+    for start in range(0, count, EDGE_BLOCK):
+        m = min(EDGE_BLOCK, count - start)
+        _edge_resolution_block(_rows(q, start, m + 1), m, out[start : start + m], usual)
+        if _all(usual, m):
+            continue
+        for k in range(start, start + m):
+            if not usual[k - start]:
+                ex = points[k + 1, 0] - points[k, 0]
+                ey = points[k + 1, 1] - points[k, 1]
+                size = abs(points[k, 0]) + abs(points[k, 1])
+                size = size + abs(points[k + 1, 0]) + abs(points[k + 1, 1])
+                out[k] = length(ex, ey) / size
+    return out
+
+
+@kernel("float64[:](float64, float64[::1])")
+def _pole_resolution(before: float, resolution: Any) -> Any:
+    """min(r_{k−1}, r_k) per edge, r_{−1} = ``before``: ``np.minimum`` of the resolutions
+    shifted by one (``before`` first) and the resolutions, NaN where either is NaN, in one
+    pass."""
+    count = resolution.shape[0]
+    out = np.empty(count)
+    if count == 0:
+        return out
+    out[0] = before if ((before < resolution[0]) | (before != before)) else resolution[0]
+    for k in range(1, count):
+        previous, current = resolution[k - 1], resolution[k]
+        out[k] = previous if ((previous < current) | (previous != previous)) else current
+    return out
+
+
+def pole_resolution(before: Any, resolution: Any) -> Any:
+    """Float64: ``np.minimum(np.concatenate([before, resolution[:-1]]), resolution)`` (the pole
+    resolution of (20): the smaller resolution of the two edges at ñ_i), for one ``before`` and
+    at least one resolution in one compiled pass, the numpy evaluation otherwise; (r,) → (r,)."""
+    first, rows = np.asarray(before, dtype=np.float64), np.asarray(resolution, dtype=np.float64)
+    if first.shape == (1,) and rows.ndim == 1 and len(rows) > 0:
+        return _pole_resolution(float(first[0]), np.ascontiguousarray(rows))
+    return np.minimum(np.concatenate([first, rows[:-1]]), rows)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _copy_vector(values: Any, start: int, count: int, out: Any) -> None:
+    """values[start .. start + count − 1] into out (a strided column made contiguous; read
+    through a slice, whose indices the compiler knows are not negative)."""
+    segment = values[start : start + count]
+    for j in range(count):
+        out[j] = segment[j]
+
+
+# (13) and its two-step form (``_recursions``), the printed two-step form (erratum E3)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _recursion_rows(
+    d: float, y: Any, start: int, stop: int, tiny: float, largest_one: float, largest_two: float
+) -> tuple[float, float]:
+    """``_recursions``' largest values (``store`` false) on k = start .. stop − 1, from the
+    running largest of each."""
+    n = y.shape[0]
+    for k in range(start, stop):
+        a, b = y[k], y[k + 1]
+        predicted = (b * (b / a) + 2 * d * (d / a) + d * (d / b)) / (1 - (d / a) * (d / b))
+        scale = abs(predicted)
+        residual = abs(y[k + 2] - predicted) / (scale if scale > tiny else tiny)
+        largest_one = running_largest(residual, largest_one)
+        if k < n - 3:
+            e = d / a
+            f = d / b
+            numerator = b * (b / a) * (b / a) + (d * f) * (
+                a / b + 2 + 3 * (b / a) + 4 * (b / a) * (b / a)
+            )
+            numerator = numerator + (d * e) * (e * f) * (2 * (a / b) + 3)
+            predicted = numerator / ((1 - e * f) * (1 - e * f))
+            scale = abs(predicted)
+            residual = abs(y[k + 3] - predicted) / (scale if scale > tiny else tiny)
+            largest_two = running_largest(residual, largest_two)
+    return largest_one, largest_two
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _recursion_pair(
+    d: float, a: float, b: float, after: float, later: float, tiny: float
+) -> tuple[float, float]:
+    """``_recursions``' two residuals at k from a = y_k, b = y_{k+1}, after = y_{k+2} and
+    later = y_{k+3}: the same operations."""
+    predicted = (b * (b / a) + 2 * d * (d / a) + d * (d / b)) / (1 - (d / a) * (d / b))
+    scale = abs(predicted)
+    one = abs(after - predicted) / (scale if scale > tiny else tiny)
+    e = d / a
+    f = d / b
+    numerator = b * (b / a) * (b / a) + (d * f) * (a / b + 2 + 3 * (b / a) + 4 * (b / a) * (b / a))
+    numerator = numerator + (d * e) * (e * f) * (2 * (a / b) + 3)
+    predicted = numerator / ((1 - e * f) * (1 - e * f))
+    scale = abs(predicted)
+    return one, abs(later - predicted) / (scale if scale > tiny else tiny)
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _recursion_block(d: float, y: Any, count: int, tiny: float, one: Any, two: Any) -> None:
+    """One block of ``_recursions``' residuals from contiguous heights y (count + 3 of them:
+    the two-step residual of the last row reads y[count + 2])."""
+    for k in range(count):
+        one[k], two[k] = _recursion_pair(d, y[k], y[k + 1], y[k + 2], y[k + 3], tiny)
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _recursion_block_pairs(d: float, q: Any, count: int, tiny: float, one: Any, two: Any) -> None:
+    """``_recursion_block`` on the heights of flat points (y_k at 2k + 1, count + 3 rows)."""
+    for k in range(count):
+        one[k], two[k] = _recursion_pair(
+            d, q[2 * k + 1], q[2 * k + 3], q[2 * k + 5], q[2 * k + 7], tiny
+        )
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _recursions_blocked(d: float, y: Any, q: Any, paired: bool, tiny: float) -> tuple[float, float]:
+    """``_recursions``' two largest values (``store`` false) a block at a time: the same
+    numbers. The heights y are read as the odd entries of the flat rows q if ``paired`` (y the
+    second column of C-contiguous (n, 2) rows), else, and for the last block, from a
+    contiguous copy, which holds 1.0 past the last height (the two-step residual of the last
+    row of (13) is computed there and left out)."""
+    n = y.shape[0]
+    count = max(n - 2, 0)
+    heights = np.ones(EDGE_BLOCK + 3)
+    one, two = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
+    cell = np.empty(1, dtype=np.int64)
+    largest_one, largest_two = 0.0, 0.0
+    for start in range(0, count, EDGE_BLOCK):
+        m = min(EDGE_BLOCK, count - start)
+        if paired and start + m + 3 <= n:
+            _recursion_block_pairs(d, _rows(q, start, m + 3), m, tiny, one, two)
+        else:
+            rows = min(m + 3, n - start)
+            _copy_vector(y, start, rows, heights)
+            heights[rows:] = 1.0
+            _recursion_block(d, heights, m, tiny, one, two)
+        m_two = min(m, max(n - 3 - start, 0))
+        top_one, top_two = _top(one, m), _top(two, m_two)
+        if top_one > _INF_BITS or top_two > _INF_BITS:
+            largest_one, largest_two = _recursion_rows(
+                d, y, start, start + m, tiny, largest_one, largest_two
+            )
+        else:
+            largest_one = _fold(top_one, largest_one, cell)
+            largest_two = _fold(top_two, largest_two, cell)
+    return largest_one, largest_two
+
+
+@kernel("UniTuple(float64, 2)(float64, float64[:], float64)")
+def _largest_recursions(d: float, y: Any, tiny: float) -> tuple[float, float]:
+    """``_recursions``' two largest values (``store`` false) a block at a time (any heights)."""
+    return _recursions_blocked(d, y, np.empty(0), False, tiny)
+
+
+@kernel("UniTuple(float64, 2)(float64, float64[:, ::1], float64)")
+def _largest_recursions_pairs(d: float, points: Any, tiny: float) -> tuple[float, float]:
+    """``_largest_recursions`` on the heights of C-contiguous (n, 2) rows, read in place."""
+    return _recursions_blocked(d, points[:, 1], points.reshape(-1), True, tiny)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _two_step_printed_pair(
+    d2: float, d4: float, a: float, b: float, later: float, tiny: float
+) -> float:
+    """``_two_step_printed_at`` from a = y_k, b = y_{k+1}, later = y_{k+3}: the same
+    operations."""
+    aa, bb = a * a, b * b
+    b3 = bb * b
+    numerator = (
+        bb * bb * b
+        + d2 * (aa * a + 2 * aa * b + 3 * a * bb + 4 * b3)
+        + d4 * (2 * b3 + 2 * a + 3 * b)
+    )
+    denominator = d2 - a * b
+    predicted = numerator / (denominator * denominator)
+    scale = abs(predicted)
+    return abs(later - predicted) / (scale if scale > tiny else tiny)
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _two_step_printed_block(
+    d2: float, d4: float, y: Any, count: int, tiny: float, out: Any
+) -> None:
+    """One block of ``_two_step_printed_at`` from contiguous heights (count + 3 of them)."""
+    for k in range(count):
+        out[k] = _two_step_printed_pair(d2, d4, y[k], y[k + 1], y[k + 3], tiny)
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _two_step_printed_block_pairs(
+    d2: float, d4: float, q: Any, count: int, tiny: float, out: Any
+) -> None:
+    """``_two_step_printed_block`` on the heights of flat points (y_k at 2k + 1)."""
+    for k in range(count):
+        out[k] = _two_step_printed_pair(d2, d4, q[2 * k + 1], q[2 * k + 3], q[2 * k + 7], tiny)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _two_step_printed_largest(
+    d2: float, d4: float, y: Any, q: Any, paired: bool, tiny: float
+) -> float:
+    """``_largest_two_step_printed`` a block at a time: the same number (the heights read as
+    ``_recursions_blocked`` reads them)."""
+    count = max(y.shape[0] - 3, 0)
+    heights = np.empty(EDGE_BLOCK + 3)
+    out = np.empty(EDGE_BLOCK)
+    cell = np.empty(1, dtype=np.int64)
+    largest = 0.0
+    for start in range(0, count, EDGE_BLOCK):
+        m = min(EDGE_BLOCK, count - start)
+        if paired:
+            _two_step_printed_block_pairs(d2, d4, _rows(q, start, m + 3), m, tiny, out)
+        else:
+            _copy_vector(y, start, m + 3, heights)
+            _two_step_printed_block(d2, d4, heights, m, tiny, out)
+        top = _top(out, m)
+        if top > _INF_BITS:
+            for k in range(start, start + m):
+                largest = running_largest(_two_step_printed_at(d2, d4, y, k, tiny), largest)
+        else:
+            largest = _fold(top, largest, cell)
+    return largest
+
+
+@kernel("float64(float64, float64, float64[:], float64)")
+def _largest_two_step_printed_blocked(d2: float, d4: float, y: Any, tiny: float) -> float:
+    """``_largest_two_step_printed`` a block at a time (any heights): the same number."""
+    return _two_step_printed_largest(d2, d4, y, np.empty(0), False, tiny)
+
+
+@kernel("float64(float64, float64, float64[:, ::1], float64)")
+def _largest_two_step_printed_pairs(d2: float, d4: float, points: Any, tiny: float) -> float:
+    """``_largest_two_step_printed_blocked`` on the heights of C-contiguous (n, 2) rows, read
+    in place."""
+    return _two_step_printed_largest(d2, d4, points[:, 1], points.reshape(-1), True, tiny)
+
+
+def _paired(y: Any) -> Any:
+    """C-contiguous float64 (len(y), 2) rows over y's memory whose second column is the vector
+    y, when y has a stride of two entries inside one writable contiguous buffer (a column view
+    of such rows, as the checks pass the heights p[:, 1]), else None. Only the second column
+    is read."""
+    owner = y.base if isinstance(y, np.ndarray) else None
+    if not (
+        isinstance(owner, np.ndarray)
+        and owner.flags.c_contiguous
+        and owner.flags.writeable
+        and y.ndim == 1
+        and y.dtype == np.float64
+        and y.strides == (16,)
+        and len(y) > 0
+    ):
+        return None
+    start = y.__array_interface__["data"][0] - 8 - owner.__array_interface__["data"][0]
+    if start < 0 or start % 8 or start + 16 * len(y) > owner.nbytes:
+        return None
+    return np.ndarray((len(y), 2), dtype=np.float64, buffer=owner, offset=start, strides=(16, 8))
+
+
+# Nikolaides' right angles (``_right_angles``)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _right_angle_rows(
+    tractrix: Any, axis: Any, p: Any, start: int, stop: int, largest: float
+) -> float:
+    """``_right_angles``' largest on rows start .. stop − 1, from the running largest."""
+    for k in range(start, stop):
+        vx, vy = tractrix[k, 0], tractrix[k, 1]
+        ux, uy = axis[k, 0] - vx, axis[k, 1] - vy
+        size_a = abs(axis[k, 0]) + abs(axis[k, 1]) + abs(vx) + abs(vy)
+        wx, wy = p[k, 0] - vx, p[k, 1] - vy
+        size_b = abs(p[k, 0]) + abs(p[k, 1]) + abs(vx) + abs(vy)
+        at_p = abs(ux * wx + uy * wy) / (size_a * size_b)
+        wx, wy = p[k + 1, 0] - vx, p[k + 1, 1] - vy
+        size_b = abs(p[k + 1, 0]) + abs(p[k + 1, 1]) + abs(vx) + abs(vy)
+        at_next = abs(ux * wx + uy * wy) / (size_a * size_b)
+        residual = at_p if (at_p >= at_next or at_p != at_p) else at_next
+        largest = running_largest(residual, largest)
+    return largest
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _right_angle_block(t: Any, a: Any, q: Any, count: int, out: Any) -> None:
+    """One block of ``_right_angles``' residuals (flat d_i, x_i, and p_i with one row more),
+    without branches."""
+    for k in range(count):
+        vx, vy = t[2 * k], t[2 * k + 1]
+        ax, ay = a[2 * k], a[2 * k + 1]
+        ux, uy = ax - vx, ay - vy
+        size_a = abs(ax) + abs(ay) + abs(vx) + abs(vy)
+        px, py = q[2 * k], q[2 * k + 1]
+        wx, wy = px - vx, py - vy
+        size_b = abs(px) + abs(py) + abs(vx) + abs(vy)
+        at_p = abs(ux * wx + uy * wy) / (size_a * size_b)
+        px, py = q[2 * k + 2], q[2 * k + 3]
+        wx, wy = px - vx, py - vy
+        size_b = abs(px) + abs(py) + abs(vx) + abs(vy)
+        at_next = abs(ux * wx + uy * wy) / (size_a * size_b)
+        out[k] = at_p if ((at_p >= at_next) | (at_p != at_p)) else at_next
+
+
+@kernel("float64(float64[:, ::1], float64[:, ::1], float64[:, ::1], int64)")
+def _largest_right_angle(tractrix: Any, axis: Any, p: Any, n: int) -> float:
+    """``_right_angles``' largest (``store`` false) a block at a time: the same number."""
+    t, a, q = tractrix.reshape(-1), axis.reshape(-1), p.reshape(-1)
+    out = np.empty(EDGE_BLOCK)
+    cell = np.empty(1, dtype=np.int64)
+    largest = 0.0
+    for start in range(0, n, EDGE_BLOCK):
+        m = min(EDGE_BLOCK, n - start)
+        _right_angle_block(_rows(t, start, m), _rows(a, start, m), _rows(q, start, m + 1), m, out)
+        top = _top(out, m)
+        if top > _INF_BITS:
+            largest = _right_angle_rows(tractrix, axis, p, start, start + m, largest)
+        else:
+            largest = _fold(top, largest, cell)
+    return largest
+
+
+# the proof's ratio (erratum E2, ``_printed_ratios``)
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _edge_lengths_block(q: Any, count: int, out: Any, usual: Any) -> None:
+    """|p_{j+1} − p_j| for j < count (flat points) into ``out``, on the square-root branch
+    (``usual``)."""
+    for j in range(count):
+        out[j], usual[j] = _fast_length(q[2 * j + 2] - q[2 * j], q[2 * j + 3] - q[2 * j + 1])
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _ratios_block(q: Any, lengths: Any, count: int, out: Any) -> None:
+    """The ratios Δ²p^y / (l'_j + l'_{j+1}) of one block into ``out`` (flat points p_j, edge
+    lengths l'_j = |p_{j+1} − p_j|)."""
+    for j in range(count):
+        second = q[2 * j + 7] - 2 * q[2 * j + 5] + q[2 * j + 3]
+        out[j] = second / (lengths[j] + lengths[j + 1])
+
+
+@kernel("float64[:](float64[:, ::1])")
+def _printed_ratios_blocked(p: Any) -> Any:
+    """``_printed_ratios`` a block at a time: the same array (each edge's length made once, by
+    the square-root branch or, off it, ``compiled.length``)."""
+    count = max(p.shape[0] - 3, 0)
+    q = p.reshape(-1)
+    out = np.empty(count)
+    lengths = np.empty(EDGE_BLOCK + 1)
+    usual = np.empty(EDGE_BLOCK + 1, dtype=np.bool_)
+    for start in range(0, count, EDGE_BLOCK):
+        m = min(EDGE_BLOCK, count - start)
+        # the lengths of edges start .. start + m (edge k is p_k p_{k+1})
+        _edge_lengths_block(_rows(q, start, m + 2), m + 1, lengths, usual)
+        if not _all(usual, m + 1):
+            for j in range(m + 1):
+                if not usual[j]:
+                    k = start + j
+                    lengths[j] = length(p[k + 1, 0] - p[k, 0], p[k + 1, 1] - p[k, 1])
+        _ratios_block(_rows(q, start, m + 3), lengths, m, out[start : start + m])
+    return out
+
+
+# Theorem 4's hypothesis (``_hypothesis``)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _hypothesis_rows(
+    p: Any, start: int, stop: int, d2: float, largest: float, smallest: float
+) -> tuple[float, float]:
+    """``_hypothesis`` on k = start .. stop − 1, from the running largest and smallest."""
+    for k in range(start, stop):
+        product = p[k - 1, 1] * p[k, 1]
+        excess = d2 - product
+        violation = excess if (excess >= 0.0 or excess != excess) else 0.0
+        largest = running_largest(violation / d2, largest)
+        ratio = product / d2
+        if smallest == smallest and (ratio != ratio or ratio < smallest):
+            smallest = ratio
+    return largest, smallest
+
+
+#: The bits below the sign: xor'ed into a negative float's pattern, they make the patterns of
+#: all floats ordered as the numbers (``_hypothesis_block``).
+_ORDER_BITS = 0x7FFF_FFFF_FFFF_FFFF
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _hypothesis_block(
+    q: Any, count: int, d2: float, violations: Any, ratios: Any
+) -> tuple[int, int, bool]:
+    """One block of ``_hypothesis`` from flat points (count + 1 rows, the first p_{k−1}): the
+    largest bit pattern of the violations (``_top``), the smallest ratio as an ordered integer
+    (a float's pattern, its lower bits flipped if negative: ordered as the numbers, −0 below
+    +0) and whether the block is plain (no NaN ratio, no ratio ±0, which ``<`` does not tell
+    apart as the integers do)."""
+    for k in range(count):
+        product = q[2 * k + 1] * q[2 * k + 3]
+        excess = d2 - product
+        violation = excess if ((excess >= 0.0) | (excess != excess)) else 0.0
+        violations[k] = violation / d2
+        ratios[k] = product / d2
+    bits = ratios.view(np.int64)
+    low = _ORDER_BITS  # the largest int64: above every key
+    plain = True
+    for k in range(count):
+        pattern = bits[k]
+        key = pattern ^ ((pattern >> 63) & _ORDER_BITS)
+        low = key if key < low else low
+        ratio = ratios[k]
+        plain &= (ratio == ratio) & (ratio != 0.0)
+    return _top(violations, count), low, plain
+
+
+@kernel("UniTuple(float64, 2)(float64[:, ::1], int64, float64)")
+def _hypothesis_blocked(p: Any, n: int, d2: float) -> tuple[float, float]:
+    """``_hypothesis`` a block at a time: the same two numbers."""
+    q = p.reshape(-1)
+    violations, ratios = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
+    cell = np.empty(1, dtype=np.int64)
+    largest, smallest = 0.0, math.inf
+    for start in range(1, n, EDGE_BLOCK):
+        m = min(EDGE_BLOCK, n - start)
+        top, low, plain = _hypothesis_block(_rows(q, start - 1, m + 1), m, d2, violations, ratios)
+        if top > _INF_BITS or not plain:
+            largest, smallest = _hypothesis_rows(p, start, start + m, d2, largest, smallest)
+            continue
+        largest = _fold(top, largest, cell)
+        cell[0] = low ^ ((low >> 63) & _ORDER_BITS)
+        ratio = cell.view(np.float64)[0]
+        if smallest == smallest and ratio < smallest:
+            smallest = ratio
+    return largest, smallest
