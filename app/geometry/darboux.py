@@ -69,7 +69,7 @@ def _f64(points: Array) -> Any:
     return np.ascontiguousarray(points, dtype=np.float64)
 
 
-#: Rows per block of the float64 passes (their scratch stays in the cache).
+#: Rows per block of the float64 passes (a block's residuals stay in the cache).
 DARBOUX_BLOCK = 4096
 
 #: The bits of a float64's magnitude (all but the sign).
@@ -121,8 +121,8 @@ def _largest_bits(values: Any, count: int) -> float:
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _edge_length_block(x: Any, e: Any, start: int, count: int, scratch: Any) -> bool:
-    """``edge_length_residuals`` at edges start .. start + count − 1 into ``scratch``, each
+def _edge_length_block(x: Any, e: Any, start: int, count: int, target: Any) -> bool:
+    """``edge_length_residuals`` at edges start .. start + count − 1 into ``target``, each
     length √(x² + y²), in a loop without branches (vectorized by the compiler; a function of
     its own, as the compiler vectorizes it there): whether every length took
     ``compiled.length``'s fast path and no residual is NaN (then they are its residuals)."""
@@ -136,14 +136,14 @@ def _edge_length_block(x: Any, e: Any, start: int, count: int, scratch: Any) -> 
         size = abs(xs[j + 1, 0]) + abs(xs[j + 1, 1]) + abs(xs[j, 0]) + abs(xs[j, 1])
         size = size + abs(es[j + 1, 0]) + abs(es[j + 1, 1]) + abs(es[j, 0]) + abs(es[j, 1])
         residual = abs(ee - ex) / size
-        scratch[j] = residual
+        target[j] = residual
         plain &= _moderate(dx, dy) & _moderate(fx, fy) & (residual == residual)
     return plain
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _distance_block(x: Any, e: Any, expected: float, start: int, count: int, scratch: Any) -> bool:
-    """``distance_residuals`` at points start .. start + count − 1 into ``scratch`` as
+def _distance_block(x: Any, e: Any, expected: float, start: int, count: int, target: Any) -> bool:
+    """``distance_residuals`` at points start .. start + count − 1 into ``target`` as
     ``_edge_length_block``: whether every distance took the fast path and none is NaN."""
     xs, es = x[start : start + count], e[start : start + count]
     plain = True
@@ -152,7 +152,7 @@ def _distance_block(x: Any, e: Any, expected: float, start: int, count: int, scr
         distance = math.sqrt(dx * dx + dy * dy)
         size = abs(xs[j, 0]) + abs(xs[j, 1]) + abs(es[j, 0]) + abs(es[j, 1])
         residual = abs(distance - expected) / size
-        scratch[j] = residual
+        target[j] = residual
         plain &= _moderate(dx, dy) & (residual == residual)
     return plain
 
@@ -169,18 +169,17 @@ def _edge_lengths(x: Any, e: Any, store: bool) -> tuple[Any, float]:
     The same residuals and largest, bit for bit."""
     rows = max(x.shape[0] - 1, 0)
     out = np.empty(rows if store else 0)
-    scratch = np.empty(DARBOUX_BLOCK)
+    scratch = np.empty(0 if store else DARBOUX_BLOCK)
     largest = 0.0
     for start in range(0, rows, DARBOUX_BLOCK):
         count = min(DARBOUX_BLOCK, rows - start)
-        if _edge_length_block(x, e, start, count, scratch):
-            largest = running_largest(_largest_bits(scratch, count), largest)
+        target = out[start : start + count] if store else scratch[:count]
+        if _edge_length_block(x, e, start, count, target):
+            largest = running_largest(_largest_bits(target, count), largest)
         else:  # hypot's ranges, inf or NaN: edge by edge
             for j in range(count):
-                scratch[j] = _edge_length_at(x, e, start + j)
-                largest = running_largest(scratch[j], largest)
-        if store:
-            out[start : start + count] = scratch[:count]
+                target[j] = _edge_length_at(x, e, start + j)
+                largest = running_largest(target[j], largest)
     return out, largest
 
 
@@ -192,16 +191,15 @@ def _distances(x: Any, e: Any, expected: float, store: bool) -> tuple[Any, float
     (``_distance_at``). The same residuals and largest, bit for bit."""
     rows = x.shape[0]
     out = np.empty(rows if store else 0)
-    scratch = np.empty(DARBOUX_BLOCK)
+    scratch = np.empty(0 if store else DARBOUX_BLOCK)
     largest = 0.0
     for start in range(0, rows, DARBOUX_BLOCK):
         count = min(DARBOUX_BLOCK, rows - start)
-        if _distance_block(x, e, expected, start, count, scratch):
-            largest = running_largest(_largest_bits(scratch, count), largest)
+        target = out[start : start + count] if store else scratch[:count]
+        if _distance_block(x, e, expected, start, count, target):
+            largest = running_largest(_largest_bits(target, count), largest)
         else:  # hypot's ranges, inf or NaN: point by point
             for j in range(count):
-                scratch[j] = _distance_at(x, e, expected, start + j)
-                largest = running_largest(scratch[j], largest)
-        if store:
-            out[start : start + count] = scratch[:count]
+                target[j] = _distance_at(x, e, expected, start + j)
+                largest = running_largest(target[j], largest)
     return out, largest
