@@ -311,6 +311,14 @@ def from_sticks(
     )
 
 
+def centre_rows(recursion: Recursion, i_min: int, i_max: int) -> Array:
+    """The rotation centres p_i = ((2i − 1)d, p_i^y), i = i_min .. i_max, of a float64
+    recursion ((n, 2)): rows of the hull's whole ``centres`` array, made alone (``_point_array``
+    computes each row from its own stick, so the bits are those of the whole array's rows)."""
+    h, d, cos_u, sin_u, centre_y, lo = recursion
+    return _point_array(2, h, d, cos_u, sin_u, centre_y, i_min - lo, i_min, i_max)
+
+
 def _assemble(
     ar: Arithmetic,
     h: Scalar,

@@ -188,18 +188,17 @@ def build(
     shift: Scalar,
     i_min: int,
     i_max: int,
-    hull_start: int,
-    tractrix_hull: Array | None,
-    first_direction: tuple[Scalar, Scalar] | None,
-    p_extended: Array | None,
-    directions_hull: Array | None = None,
+    hull_start: int = 0,
+    hull: Callable[[], tuple[Array, Array]] | None = None,
+    before: Array | None = None,
 ) -> GaussImages:
     """The Gauss images on i_min .. i_max + 1 (``contact`` from i_min − 1), each made when read.
 
-    With a construction, ``tractrix_hull`` is the tractrix on hull_start .. (covering 0 and the
-    range), ``first_direction`` the unit vector of stick 0, ``p_extended`` the hyperbolic cosine on
-    i_min − 1 .. i_max + 2, ``directions_hull`` the unit stick directions u on the same indices as
-    ``tractrix_hull``. Without (method=closed-form) the closed forms are used.
+    With a construction, ``hull()`` gives (p on i_min − 1 .. i_max + 2, the unit stick
+    directions u on hull_start .., covering 0 and the range), called only when an image is
+    built from them (not when ``compile_companions`` kept the images: no (n, 2) array of the
+    hull is made then), and ``before`` is p_{i_min−1}, p_{i_min} ((2, 2)). Without
+    (method=closed-form) the closed forms are used.
     """
     closed: dict[str, Callable[[GaussImages], Array]]
     if ar.certified:  # balls: from one exponential per index (``_BallHyperbolic``)
@@ -227,7 +226,7 @@ def build(
         # off ñ on i_min .. i_max + 1 (the same numbers: the same t, and cosh finite on both, so
         # ``amplitude_sech`` takes its direct form on both), one tanh and cosh pass fewer
         closed["closed_tractrix_gauss"] = lambda images: _turned(images.closed_contact[1:])
-    if tractrix_hull is None or first_direction is None or p_extended is None:
+    if hull is None or before is None:
         before = kinematic_closed_forms.hyperbolic_cosine(
             ar, h, d, ar.indices(i_min - 1, i_min), shift
         )
@@ -248,25 +247,26 @@ def build(
     # with J): the chords n_i n_{i+1} are parallel to the tractrix edges, as (18) asks. Read from
     # the construction's stick directions, n carries their rounding only, where accumulating the
     # edge angles (gauss_image.inscribed_parallel) drifted to 1e-11 over 12001 vertices.
-    del first_direction
-    if directions_hull is None:
-        raise ValueError("a construction needs its stick directions")
-    directions = directions_hull
     window = slice(i_min - hull_start, i_max + 1 - hull_start + 1)
+
+    def normals(_: GaussImages) -> Array:
+        directions = hull()[1]
+        return stack_points(directions[window, 1], -directions[window, 0])
+
     constructed = GaussImages(
         True,
         {
             **closed,
-            "tractrix_gauss": lambda _: stack_points(directions[window, 1], -directions[window, 0]),
-            "contact": lambda _: _contact_points(ar, p_extended),
+            "tractrix_gauss": normals,
+            "contact": lambda _: _contact_points(ar, hull()[0]),
             "gauss": (
                 # balls: the tangents at ñ_{i−1}, ñ_i intersected algebraically (``_poles``)
                 (lambda images: _poles(images.contact))
                 if ar.certified
-                else (lambda _: gauss_image.circumscribed(ar, p_extended))
+                else (lambda _: gauss_image.circumscribed(ar, hull()[0]))
             ),
         },
-        p_extended[:2],
+        before,
     )
     if ar.certified:
         constructed.ball_table = (table, i_min)

@@ -41,6 +41,7 @@ from app.geometry.d4b import (
 from app.geometry.d4b.checks import conditioning, evaluate, tolerances
 from app.geometry.d4b.construction import (
     KinematicTractrix,
+    centre_rows,
     construct,
     from_sticks,
     initial_direction,
@@ -209,27 +210,26 @@ class D4bPolygons:
         """Section 5: n_i, ñ_i, m_i (see ``d4b_curvature.GaussImages`` for their alignment)."""
         ar, h, d = self.ar, self.h, self.d
         if not self.constructed:
-            return d4b_curvature.build(
-                ar, h, d, self.shift, self.i_min, self.i_max, 0, None, None, None
-            )
+            return d4b_curvature.build(ar, h, d, self.shift, self.i_min, self.i_max)
         lo, built = self._hull
-        u0 = built.directions[0 - lo]
+
+        def hull() -> tuple[Array, Array]:  # read only by an image not kept already
+            return built.centres[self.i_min - 1 - lo : self.i_max + 3 - lo], built.directions
+
         images = d4b_curvature.build(
-            ar,
-            h,
-            d,
-            self.shift,
-            self.i_min,
-            self.i_max,
-            lo,
-            built.tractrix,
-            (u0[0], u0[1]),
-            built.centres[self.i_min - 1 - lo : self.i_max + 3 - lo],
-            built.directions,
+            ar, h, d, self.shift, self.i_min, self.i_max, lo, hull, self._centres_before(lo, built)
         )
         for name, points in self.__dict__.get("_images", {}).items():
             images.__dict__.setdefault(name, points)  # kept by ``compile_companions``
         return images
+
+    def _centres_before(self, lo: int, built: KinematicTractrix) -> Array:
+        """p_{i_min−1} and p_{i_min} ((2, 2)): in float64 two rows made from the recursion
+        (``construction.centre_rows``: each row by the operations of the whole array, so the
+        same bits) unless the hull's centres are there already."""
+        if built.recursion is not None and "centres" not in vars(built):
+            return centre_rows(built.recursion, self.i_min - 1, self.i_min)
+        return built.centres[self.i_min - 1 - lo : self.i_min + 1 - lo]
 
     def compile_companions(self) -> None:
         """Float64 construction: the six companions (tractrix, axis points, Darboux transform,

@@ -296,3 +296,26 @@ def test_no_check_builds_no_gauss_images(float64: Float64, monkeypatch: pytest.M
     monkeypatch.setattr(curvature, "build", refuse)
     curve = d4b.compute(float64, selection=Selection(checks=frozenset()))
     assert set(curve.companions) == set(d4b.INFO.companions)
+
+
+@pytest.mark.parametrize(
+    ("i_min", "i_max", "beta0"), [(-40, 25, None), (3, 60, 0.7), (-90, -4, 2.2)]
+)
+def test_the_gauss_images_of_kept_companions_make_no_hull_arrays(
+    float64: Float64, i_min: int, i_max: int, beta0: float | None
+) -> None:
+    # the images compile_companions kept are read as they are: none of the hull's (n, 2)
+    # arrays is made for them, and p_{i_min-1}, p_{i_min} are the hull's rows, bit for bit
+    data = d4b.polygons(float64, 1.0, 0.3, beta0, i_min, i_max)
+    data.compile_companions()
+    images = data.gauss
+    lo, built = data._hull
+    assert not {"tractrix", "centres", "directions"} & vars(built).keys()
+    assert images.contact_edges_before is not None
+    rows = built.centres[i_min - 1 - lo : i_min + 1 - lo]
+    np.testing.assert_array_equal(images.contact_edges_before, rows)
+    # the builders still read the hull when an image is asked for anew (the tests perturb them)
+    fresh = d4b.polygons(float64, 1.0, 0.3, beta0, i_min, i_max).gauss
+    for name in ("tractrix_gauss", "contact", "gauss"):
+        np.testing.assert_array_equal(getattr(fresh, name), getattr(images, name))
+    np.testing.assert_array_equal(fresh.contact_edges_before, rows)
