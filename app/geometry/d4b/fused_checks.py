@@ -496,8 +496,8 @@ def _fourth_pass(buffers: Any, edge: Any, edges: int, inner: int, c: Any, worst:
     for j in range(edges):
         scale = _area_size(x, y, j) + abs(c3) * _size(x, y, j)
         raise3 += _may_raise(abs(_area(x, y, j) - c3 * edge[j]), scale, b3)
-    raise1, raise2 = 0, 0
-    for j in range(inner):
+    raise1, raise2, raise_misfit = 0, 0, 0
+    for j in range(inner):  # the misfit's test too, counted only with a ratio (c[3])
         second, second_size = _second(y, j), _second_size(y, j)
         scale = second_size + abs(c1) * (_size(x, y, j) + _size(x, y, j + 1))
         raise1 += _may_raise(abs(second - c1 * (edge[j] + edge[j + 1])), scale, b1)
@@ -507,14 +507,10 @@ def _fourth_pass(buffers: Any, edge: Any, edges: int, inner: int, c: Any, worst:
         )
         scale = second_size + abs(c2) * paired_size
         raise2 += _may_raise(abs(second - c2 * paired), scale, b2)
+        scale = second_size + abs(c_ratio) * paired_size
+        raise_misfit += _may_raise(abs(second - c_ratio * paired), scale, b2)
     if ratio:
-        for j in range(inner):
-            paired, paired_size = (
-                _area(x, y, j) + _area(x, y, j + 1),
-                _area_size(x, y, j) + _area_size(x, y, j + 1),
-            )
-            scale = _second_size(y, j) + abs(c_ratio) * paired_size
-            raise2 += _may_raise(abs(_second(y, j) - c_ratio * paired), scale, b2)
+        raise2 += raise_misfit
     if raise3:
         for j in range(edges):
             scale = _area_size(x, y, j) + abs(c3) * _size(x, y, j)
