@@ -145,7 +145,7 @@ def _fits(p: Any) -> tuple[Any, Any, Any, Any, Any]:
     return summary, d1, d3, eq2, both
 
 
-# --- the fits' summary without their columns: four passes over p in blocks, nothing of size n ---
+# --- the fits' summary without their columns: four passes over p in blocks; of size n only l ---
 
 #: Edges a block of the summary passes holds (its columns ≈ 100 KB, in cache while read). Every
 #: loop over a block runs on one-dimensional buffers, which the compiler vectorizes.
@@ -558,9 +558,11 @@ def _constant(uv: float, vv: float, scales: Any, lhs: int, rhs: int, u: int, v: 
 def _summary_body(p: Any, lengths: Any) -> Any:
     """``_fits``'s summary (its first array) without its columns and residuals: four passes
     over p in blocks of FIT_BLOCK edges, each computing the columns it reads from the
-    coordinates (``_block_columns``) with the same operations on each entry as ``_fit_scales``,
-    ``_fit_terms`` and ``_misfit_into``; the sums by ``_pairwise``'s tree (``_tree_sums``), the
-    largest values as ``largest_of_magnitudes``. Every number has the bits of ``_fits``'s."""
+    coordinates (``_block_columns``, ``_area`` …) with the same operations on each entry as
+    ``_fit_scales``, ``_fit_terms`` and ``_misfit_into``, the edges' lengths once (pass 1
+    writes them to ``lengths``, one entry an edge of p); the sums by ``_pairwise``'s tree
+    (``_tree_sums``), the largest values as ``largest_of_magnitudes``. Every number has the
+    bits of ``_fits``'s."""
     n = p.shape[0]
     edges, inner = max(n - 1, 0), max(n - 2, 0)
     buffers = _buffers()
@@ -621,8 +623,9 @@ def _summary_passes_contiguous(p: Any, lengths: Any) -> Any:
 
 def fits_summary(p: Array) -> Any:
     """The fits' summary of the float64 polygon ``p`` ((m, 2)): ``_fits``'s first array, bit
-    for bit, without an array of size m (``_summary_passes``). A pure function of ``p`` that
-    releases the GIL: ``d4b.checks`` runs it on a second thread at large m."""
+    for bit, with one array of size m − 1 (the edges' lengths) instead of ``_fits``'s columns
+    and residuals (``_summary_passes``). A pure function of ``p`` that releases the GIL:
+    ``d4b.checks`` runs it on a second thread at large m."""
     lengths = np.empty(max(len(p) - 1, 0))  # the edges' lengths, written by the first pass
     if p.flags.c_contiguous:
         return _summary_passes_contiguous(p, lengths)
