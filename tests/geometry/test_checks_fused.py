@@ -139,6 +139,67 @@ def test_fits_summary_has_the_bits_of_the_fits_with_their_residuals(p: np.ndarra
     assert _same(alone.equation_2, given.equation_2)
 
 
+def _adversarial() -> list[np.ndarray]:
+    """Polygons for the summary passes' stored lengths and pass 4's test without divisions
+    (``_may_raise``): NaN and ±inf at and beside block edges, zero-length edges, ±0, subnormal
+    and huge coordinates (hypot's scaled ranges, residuals that overflow or underflow),
+    residuals growing along the polygon (the largest raised in every block) or all equal."""
+    rng = np.random.default_rng(21)
+    out: list[np.ndarray] = [np.zeros((0, 2)), np.zeros((1, 2)), np.zeros((2, 2))]
+    m = 2 * FIT_BLOCK + 5
+    for at in (0, 1, FIT_BLOCK - 1, FIT_BLOCK, FIT_BLOCK + 1, FIT_BLOCK + 2, m - 1):
+        for value in (np.nan, np.inf, -np.inf):
+            for column in (0, 1):
+                p = rng.standard_normal((m, 2))
+                p[at, column] = value
+                out.append(p)
+    p = rng.standard_normal((m, 2))
+    p[100:300] = p[100]  # zero-length edges, Δ²y = 0
+    p[FIT_BLOCK - 3 : FIT_BLOCK + 4] = 0.0
+    p[FIT_BLOCK + 10 :: 7] *= -0.0
+    out.append(p)
+    tiny = 2.0**-1074 * rng.integers(-50, 50, (m, 2)).astype(float)  # subnormal, zeros
+    out.append(tiny)
+    out.append(tiny + 1e-300 * rng.standard_normal((m, 2)))
+    out.append(1e307 * rng.standard_normal((m, 2)))  # lengths and sums that overflow
+    scaled = rng.standard_normal((m, 2)) * np.exp(rng.uniform(-745, 709, (m, 1)))
+    out.append(scaled)
+    grow = rng.standard_normal((m, 2)) * np.linspace(1e-3, 1e3, m)[:, None] ** 3
+    out.append(np.cumsum(np.abs(grow), axis=0))
+    out.append(np.cumsum(np.abs(grow[::-1]), axis=0))
+    x = np.arange(m, dtype=float)
+    out.append(np.stack([x, 3.0 * x + 1.0], axis=1))  # a line: residuals 0 or equal
+    out.append(np.stack([x, x * x], axis=1))  # Δ²y constant
+    for count in (FIT_BLOCK - 1, FIT_BLOCK, FIT_BLOCK + 1, 3 * FIT_BLOCK + 1):
+        out.append(rng.standard_normal((count, 2)))
+    return out
+
+
+@pytest.mark.parametrize("p", _adversarial())
+def test_fits_summary_on_adversarial_polygons_has_the_bits_of_the_fits(p: np.ndarray) -> None:
+    """The summary (lengths computed once, pass 4's largest residuals found without dividing
+    where they cannot count) against ``_fits``, which stores every column and residual."""
+    with np.errstate(all="ignore"):
+        expected = fits_arrays(p)[0]
+        assert _same(fits_summary(p), expected)
+        strided = np.zeros((len(p), 3))
+        strided[:, :2] = p
+        assert _same(fits_summary(strided[:, :2]), expected)
+
+
+def test_fits_summary_on_random_polygons_has_the_bits_of_the_fits() -> None:
+    """Random polygons of random sizes and scales, and cosh-like ones (their residuals at
+    rounding level, many of them equal)."""
+    rng = np.random.default_rng(2021)
+    for _ in range(40):
+        m = int(rng.integers(0, 4 * FIT_BLOCK))
+        p = rng.standard_normal((m, 2)) * 10.0 ** rng.uniform(-200, 200)
+        assert _same(fits_summary(p), fits_arrays(p)[0])
+        x = np.linspace(-rng.uniform(0.1, 40), rng.uniform(0.1, 40), m)
+        p = np.stack([x, np.cosh(x)], axis=1)
+        assert _same(fits_summary(p), fits_arrays(p)[0])
+
+
 def test_fits_summary_of_a_long_d4b_has_the_bits_of_the_stored_columns() -> None:
     """200 001 vertices of (D4b) (about 1600 leaves of numpy's pairwise sums, 196 blocks)."""
     data = discretization.polygons(Float64(), 1.0, 1e-4, None, -100_000, 100_000, "closed-form")

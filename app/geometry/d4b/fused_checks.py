@@ -148,7 +148,7 @@ def _fits(p: Any) -> tuple[Any, Any, Any, Any, Any]:
     return summary, d1, d3, eq2, both
 
 
-# --- the fits' summary without their columns: four passes over p in blocks, nothing of size n ---
+# --- the fits' summary without their columns: four passes over p in blocks; of size n only l ---
 
 #: Edges a block of the summary passes holds (its columns ≈ 100 KB, in cache while read). Every
 #: loop over a block runs on one-dimensional buffers, which the compiler vectorizes.
@@ -156,16 +156,18 @@ FIT_BLOCK = 1024
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _block_columns(p: Any, k0: int, buffers: Any, level: int) -> tuple[int, int]:
-    """The six columns of ``conditions._shared_columns`` on the edges and inner vertices k0, k0
-    + 1, … (up to FIT_BLOCK + 1 edges, FIT_BLOCK inner vertices) into ``buffers`` (``_buffers``),
-    each entry computed as there; returns (edges, inner vertices) filled. Edge lengths: glibc's
-    hypot in its unscaled range for every edge (``compiled._hypot_kernel``, the same
-    operations), then libm's whole ``hypot`` for those outside that range. The columns a pass
-    reads: A, l and Δ²y (level 1), their magnitudes |A|~ and |Δ²y|~ too (2), and |l|~ (3)."""
+def _block_columns(p: Any, k0: int, buffers: Any, first: bool, lengths: Any) -> tuple[int, int]:
+    """The points k0, k0 + 1, … of a block (up to FIT_BLOCK + 1 edges, FIT_BLOCK inner
+    vertices) as columns x and y of ``buffers`` (``_buffers``); returns (edges, inner vertices).
+
+    ``first`` (pass 1): also A, l and Δ²y of ``conditions._shared_columns`` into ``buffers``,
+    each entry computed as there, and l into ``lengths`` (one entry an edge of p): glibc's hypot
+    in its unscaled range for every edge (``compiled._hypot_kernel``, the same operations), then
+    libm's whole ``hypot`` for those outside that range. The later passes read the lengths from
+    ``lengths`` and compute the other columns in their own loops (``_area`` …): the same numbers
+    without a square root and a division an edge, nor a column written and read back."""
     x, y, dx, dy = buffers[0], buffers[1], buffers[2], buffers[3]
-    area, edge, area_size, size = buffers[4], buffers[5], buffers[6], buffers[7]
-    second, second_size = buffers[8], buffers[9]
+    area, edge, second = buffers[4], buffers[5], buffers[8]
     n = p.shape[0]
     edges = min(FIT_BLOCK + 1, max(n - 1 - k0, 0))
     inner = min(FIT_BLOCK, max(n - 2 - k0, 0))
@@ -173,23 +175,48 @@ def _block_columns(p: Any, k0: int, buffers: Any, level: int) -> tuple[int, int]
     for j in range(points):
         x[j] = p[k0 + j, 0]
         y[j] = p[k0 + j, 1]
-    if _edge_columns(x, y, dx, dy, area, edge, edges):
+    if first:
+        if _edge_columns(x, y, dx, dy, area, edge, edges):
+            for j in range(edges):
+                a, b = abs(dx[j]), abs(dy[j])
+                big, small = (a, b) if a >= b else (b, a)
+                if not (big <= HYPOT_LARGE and small >= HYPOT_TINY):
+                    edge[j] = hypot(dx[j], dy[j])
         for j in range(edges):
-            a, b = abs(dx[j]), abs(dy[j])
-            big, small = (a, b) if a >= b else (b, a)
-            if not (big <= HYPOT_LARGE and small >= HYPOT_TINY):
-                edge[j] = hypot(dx[j], dy[j])
-    for j in range(inner):
-        second[j] = y[j + 2] - 2 * y[j + 1] + y[j]
-    if level >= 2:
-        for j in range(edges):
-            area_size[j] = (abs(y[j]) + abs(y[j + 1])) / 2 * (abs(x[j]) + abs(x[j + 1]))
+            lengths[k0 + j] = edge[j]
         for j in range(inner):
-            second_size[j] = abs(y[j + 2]) + 2 * abs(y[j + 1]) + abs(y[j])
-    if level >= 3:
-        for j in range(edges):
-            size[j] = abs(x[j]) + abs(y[j]) + abs(x[j + 1]) + abs(y[j + 1])
+            second[j] = _second(y, j)
     return edges, inner
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _area(x: Any, y: Any, j: int) -> float:
+    """A_j = (y_j + y_{j+1}) / 2 · (x_{j+1} − x_j), as ``_shared_columns`` computes it."""
+    return (y[j] + y[j + 1]) / 2 * (x[j + 1] - x[j])
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _area_size(x: Any, y: Any, j: int) -> float:
+    """|A_j|~ = (|y_j| + |y_{j+1}|) / 2 · (|x_j| + |x_{j+1}|), as ``_shared_columns``."""
+    return (abs(y[j]) + abs(y[j + 1])) / 2 * (abs(x[j]) + abs(x[j + 1]))
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _size(x: Any, y: Any, j: int) -> float:
+    """|l_j|~ = |x_j| + |y_j| + |x_{j+1}| + |y_{j+1}|, as ``_shared_columns``."""
+    return abs(x[j]) + abs(y[j]) + abs(x[j + 1]) + abs(y[j + 1])
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _second(y: Any, j: int) -> float:
+    """Δ²y_j = y_{j+2} − 2 y_{j+1} + y_j, as ``_shared_columns``."""
+    return y[j + 2] - 2 * y[j + 1] + y[j]
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _second_size(y: Any, j: int) -> float:
+    """|Δ²y_j|~ = |y_{j+2}| + 2 |y_{j+1}| + |y_j|, as ``_shared_columns``."""
+    return abs(y[j + 2]) + 2 * abs(y[j + 1]) + abs(y[j])
 
 
 @numba.njit(cache=True, error_model="numpy")
@@ -285,24 +312,26 @@ def _first_pass(buffers: Any, edges: int, inner: int, big: Any, nan: Any) -> Non
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _second_pass(buffers: Any, edges: int, inner: int, scales: Any, big: Any, nan: Any) -> None:
-    """Pass 2 on a block: the largest |u| and |v| of the three fits (``_fit_scales``'s second
-    loop, u of Δ²y shared by (D1) and eq. (2)) into ``big``, ``nan`` (``_S_U`` … ``_S_V2``);
-    the quotients first into buffers (a loop the compiler vectorizes), then their largest."""
-    area, edge, area_size = buffers[4], buffers[5], buffers[6]
-    second, second_size = buffers[8], buffers[9]
+def _second_pass(
+    buffers: Any, edge: Any, edges: int, inner: int, scales: Any, big: Any, nan: Any
+) -> None:
+    """Pass 2 on a block (its points in ``buffers``, its edges' lengths ``edge``): the largest
+    |u| and |v| of the three fits (``_fit_scales``'s second loop, u of Δ²y shared by (D1) and
+    eq. (2)) into ``big``, ``nan`` (``_S_U`` … ``_S_V2``); the quotients first into buffers (a
+    loop the compiler vectorizes, the columns computed in it), then their largest."""
+    x, y = buffers[0], buffers[1]
     u, v1, v2, u3, v3 = buffers[10], buffers[11], buffers[12], buffers[13], buffers[14]
     s_second, s_pl, s_area = scales[_S_SECOND], scales[_S_PAIRED_L], scales[_S_AREA]
     s_l, s_pa = scales[_S_L], scales[_S_PAIRED_A]
     for j in range(edges):
-        weight = _weight(area_size[j])
-        u3[j] = area[j] / s_area / weight
+        weight = _weight(_area_size(x, y, j))
+        u3[j] = _area(x, y, j) / s_area / weight
         v3[j] = edge[j] / s_l / weight
     for j in range(inner):
-        weight = _weight(second_size[j])
-        u[j] = second[j] / s_second / weight
+        weight = _weight(_second_size(y, j))
+        u[j] = _second(y, j) / s_second / weight
         v1[j] = (edge[j] + edge[j + 1]) / s_pl / weight
-        v2[j] = (area[j] + area[j + 1]) / s_pa / weight
+        v2[j] = (_area(x, y, j) + _area(x, y, j + 1)) / s_pa / weight
     _scan(u3, edges, big, nan, _S_U3)
     _scan(v3, edges, big, nan, _S_V3)
     _scan(u, inner, big, nan, _S_U)
@@ -311,29 +340,33 @@ def _second_pass(buffers: Any, edges: int, inner: int, scales: Any, big: Any, na
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _fill_terms(p: Any, k0: int, scales: Any, buffers: Any) -> tuple[int, int]:
+def _fill_terms(p: Any, k0: int, scales: Any, buffers: Any, lengths: Any) -> tuple[int, int]:
     """The terms of the fits' sums (``_fit_terms``'s v² and u·v, each computed as
     ``_fit_scales`` and ``_fit_terms`` compute it) on the equations k0, k0 + 1, … of a block:
     (D1)'s and eq. (2)'s into ``buffers[10:14]``, (D3)'s into ``buffers[14:16]``; returns how
     many of each ((D1) and eq. (2), (D3))."""
-    edges, inner = _block_columns(p, k0, buffers, 2)
+    edges, inner = _block_columns(p, k0, buffers, False, lengths)
     edges = min(edges, FIT_BLOCK)
-    area, edge, area_size = buffers[4], buffers[5], buffers[6]
-    second, second_size = buffers[8], buffers[9]
+    x, y, edge = buffers[0], buffers[1], buffers[5]
+    for j in range(min(edges + 1, lengths.shape[0] - k0)):
+        edge[j] = lengths[k0 + j]
     t0, t1, t2, t3 = buffers[10], buffers[11], buffers[12], buffers[13]
     t4, t5 = buffers[14], buffers[15]
     s_second, s_pl, s_pa = scales[_S_SECOND], scales[_S_PAIRED_L], scales[_S_PAIRED_A]
     s_u, s_v1, s_v2 = scales[_S_U], scales[_S_V1], scales[_S_V2]
     for j in range(inner):
-        weight = _weight(second_size[j])
-        u_k = second[j] / s_second / weight / s_u
+        weight = _weight(_second_size(y, j))
+        u_k = _second(y, j) / s_second / weight / s_u
         v1 = (edge[j] + edge[j + 1]) / s_pl / weight / s_v1
-        v2 = (area[j] + area[j + 1]) / s_pa / weight / s_v2
+        v2 = (_area(x, y, j) + _area(x, y, j + 1)) / s_pa / weight / s_v2
         t0[j] = v1 * v1
         t1[j] = u_k * v1
         t2[j] = v2 * v2
         t3[j] = u_k * v2
     s_area, s_l, s_u3, s_v3 = scales[_S_AREA], scales[_S_L], scales[_S_U3], scales[_S_V3]
+    area, area_size = buffers[4], buffers[6]  # first: a loop of divisions reading them vectorizes
+    for j in range(edges):
+        area[j], area_size[j] = _area(x, y, j), _area_size(x, y, j)
     for j in range(edges):
         weight = _weight(area_size[j])
         v3 = edge[j] / s_l / weight / s_v3
@@ -357,11 +390,11 @@ def _leaves(start: int, count: int, out: Any, at: int) -> int:
 
 @numba.njit(cache=True, error_model="numpy")
 def _refill(
-    p: Any, k0: int, scales: Any, buffers: Any, window: Any, leaves: Any, sums: Any
+    p: Any, k0: int, scales: Any, buffers: Any, lengths: Any, window: Any, leaves: Any, sums: Any
 ) -> None:
     """The terms of the block from k0 (``_fill_terms``), then the sums of (D3)'s leaves that lie
     in it, in order (window: first index, end of (D1)'s terms, end of (D3)'s, next leaf)."""
-    inner, edges = _fill_terms(p, k0, scales, buffers)
+    inner, edges = _fill_terms(p, k0, scales, buffers, lengths)
     window[0], window[1], window[2] = k0, k0 + inner, k0 + edges
     at = window[3]
     while at < leaves.shape[0]:
@@ -375,11 +408,19 @@ def _refill(
 
 
 @kernel(
-    "UniTuple(float64, 4)(float64[:, :], int64, int64, float64[::1], float64[:, ::1], int64[::1], "
-    "int64[:, ::1], float64[:, ::1])"
+    "UniTuple(float64, 4)(float64[:, :], int64, int64, float64[::1], float64[:, ::1], "
+    "float64[::1], int64[::1], int64[:, ::1], float64[:, ::1])"
 )
 def _tree_sums(
-    p: Any, start: int, count: int, scales: Any, buffers: Any, window: Any, leaves: Any, sums: Any
+    p: Any,
+    start: int,
+    count: int,
+    scales: Any,
+    buffers: Any,
+    lengths: Any,
+    window: Any,
+    leaves: Any,
+    sums: Any,
 ) -> tuple[float, float, float, float]:
     """numpy's pairwise sums (``_pairwise``'s tree) of (D1)'s and eq. (2)'s terms start ..
     start + count − 1 (``_fill_terms``). The leaves (≤ 128 terms) are read from the term
@@ -393,15 +434,15 @@ def _tree_sums(
             k0 = start
             if window[3] < leaves.shape[0]:
                 k0 = min(k0, leaves[window[3], 0])
-            _refill(p, k0, scales, buffers, window, leaves, sums)
+            _refill(p, k0, scales, buffers, lengths, window, leaves, sums)
         at = start - window[0]
         first, second = _pairwise(buffers[10], at, count), _pairwise(buffers[11], at, count)
         third, fourth = _pairwise(buffers[12], at, count), _pairwise(buffers[13], at, count)
         return first, second, third, fourth
     half = count // 2
     half -= half % 8
-    a = _tree_sums(p, start, half, scales, buffers, window, leaves, sums)
-    b = _tree_sums(p, start + half, count - half, scales, buffers, window, leaves, sums)
+    a = _tree_sums(p, start, half, scales, buffers, lengths, window, leaves, sums)
+    b = _tree_sums(p, start + half, count - half, scales, buffers, lengths, window, leaves, sums)
     return a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3]
 
 
@@ -422,35 +463,88 @@ def _leaf_tree(count: int, sums: Any, at: Any) -> tuple[float, float]:
     return a[0] + b[0], a[1] + b[1]
 
 
+#: A residual |lhs − c·rhs| / d whose numerator is below b·d, b = (1 − 2^-40) times the largest
+#: residual so far (b·d rounded, and normal), is at most that largest: b·d ≤ (1 − 2^-40)(1 +
+#: 2^-53)² × largest × d, so the quotient is below the largest before its rounding, which keeps
+#: it there (rounding is monotone; the largest is a float). NaN (numerator or bound) fails the
+#: test, as does a bound of 0 (nothing seen yet) or a subnormal one (rounded by more than 2^-53).
+_BELOW = 1.0 - 2.0**-40
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _may_raise(numerator: float, scale: float, bound: float) -> int:
+    """1 unless ``numerator / max(scale, TINY)`` is certainly at most the largest residual so
+    far (``_BELOW``; bound = (1 − 2^-40) × that largest): a test without a division."""
+    below = bound * (scale if scale > TINY else TINY)
+    return 0 if ((numerator < below) & (below >= TINY)) else 1
+
+
 @numba.njit(cache=True, error_model="numpy")
-def _fourth_pass(buffers: Any, edges: int, inner: int, c: Any, worst: Any) -> None:
-    """Pass 4 on a block: the largest residual of (D1), (D3) and eq. (2) (with its misfit at
-    c_(D1)/c_(D3) when c[3] is 1) into ``worst`` (``_misfit_into``, then ``largest_of_
-    magnitudes`` of eq. (2)'s maximum with its misfit, NaN winning), as bits (``_fold``); the
-    residuals first into buffers (a loop the compiler vectorizes), then their largest."""
-    area, edge, area_size, size = buffers[4], buffers[5], buffers[6], buffers[7]
-    second, second_size = buffers[8], buffers[9]
+def _fourth_pass(buffers: Any, edge: Any, edges: int, inner: int, c: Any, worst: Any) -> None:
+    """Pass 4 on a block (its points in ``buffers``, its edges' lengths ``edge``): the largest
+    residual of (D1), (D3) and eq. (2) (with its misfit at c_(D1)/c_(D3) when c[3] is 1) into
+    ``worst`` (``_misfit_into``, then ``largest_of_magnitudes`` of eq. (2)'s maximum with its
+    misfit, NaN winning), as bits (``_fold``).
+
+    Most residuals cannot raise the largest so far: a loop without divisions (``_may_raise``)
+    counts those that might, by check; only a check with one computes the block's residuals (a
+    loop the compiler vectorizes, with the same operations as ``_misfit_into``) and folds their
+    largest in. ``_fold`` is an integer maximum, so the skipped residuals change no bit."""
+    x, y = buffers[0], buffers[1]
     r3, r1, r2, misfit = buffers[10], buffers[11], buffers[12], buffers[13]
     c1, c3, c2, ratio, c_ratio = c[0], c[1], c[2], c[3] != 0, c[4]
+    largest = worst.view(np.float64)
+    b1, b3, b2 = largest[0] * _BELOW, largest[1] * _BELOW, largest[2] * _BELOW
+    raise3 = 0
     for j in range(edges):
-        scale = area_size[j] + abs(c3) * size[j]
-        r3[j] = abs(area[j] - c3 * edge[j]) / (scale if scale > TINY else TINY)
-    for j in range(inner):
-        scale = second_size[j] + abs(c1) * (size[j] + size[j + 1])
-        r1[j] = abs(second[j] - c1 * (edge[j] + edge[j + 1])) / (scale if scale > TINY else TINY)
-        paired_size = area_size[j] + area_size[j + 1]
-        scale = second_size[j] + abs(c2) * paired_size
-        r2[j] = abs(second[j] - c2 * (area[j] + area[j + 1])) / (scale if scale > TINY else TINY)
-    _fold(r3, edges, worst, 1)
-    _fold(r1, inner, worst, 0)
-    _fold(r2, inner, worst, 2)
-    if ratio:  # np.maximum of eq. (2)'s residual and its misfit, NaN winning: both folded
+        scale = _area_size(x, y, j) + abs(c3) * _size(x, y, j)
+        raise3 += _may_raise(abs(_area(x, y, j) - c3 * edge[j]), scale, b3)
+    raise1, raise2, raise_misfit = 0, 0, 0
+    for j in range(inner):  # the misfit's test too, counted only with a ratio (c[3])
+        second, second_size = _second(y, j), _second_size(y, j)
+        scale = second_size + abs(c1) * (_size(x, y, j) + _size(x, y, j + 1))
+        raise1 += _may_raise(abs(second - c1 * (edge[j] + edge[j + 1])), scale, b1)
+        paired, paired_size = (
+            _area(x, y, j) + _area(x, y, j + 1),
+            _area_size(x, y, j) + _area_size(x, y, j + 1),
+        )
+        scale = second_size + abs(c2) * paired_size
+        raise2 += _may_raise(abs(second - c2 * paired), scale, b2)
+        scale = second_size + abs(c_ratio) * paired_size
+        raise_misfit += _may_raise(abs(second - c_ratio * paired), scale, b2)
+    if ratio:
+        raise2 += raise_misfit
+    if raise3:
+        for j in range(edges):
+            scale = _area_size(x, y, j) + abs(c3) * _size(x, y, j)
+            r3[j] = abs(_area(x, y, j) - c3 * edge[j]) / (scale if scale > TINY else TINY)
+        _fold(r3, edges, worst, 1)
+    if raise1:
         for j in range(inner):
-            paired_size = area_size[j] + area_size[j + 1]
-            scale = second_size[j] + abs(c_ratio) * paired_size
-            paired = area[j] + area[j + 1]
-            misfit[j] = abs(second[j] - c_ratio * paired) / (scale if scale > TINY else TINY)
-        _fold(misfit, inner, worst, 2)
+            scale = _second_size(y, j) + abs(c1) * (_size(x, y, j) + _size(x, y, j + 1))
+            residual = abs(_second(y, j) - c1 * (edge[j] + edge[j + 1]))
+            r1[j] = residual / (scale if scale > TINY else TINY)
+        _fold(r1, inner, worst, 0)
+    if raise2:
+        for j in range(inner):
+            paired, paired_size = (
+                _area(x, y, j) + _area(x, y, j + 1),
+                _area_size(x, y, j) + _area_size(x, y, j + 1),
+            )
+            scale = _second_size(y, j) + abs(c2) * paired_size
+            r2[j] = abs(_second(y, j) - c2 * paired) / (scale if scale > TINY else TINY)
+        _fold(r2, inner, worst, 2)
+        if ratio:  # np.maximum of eq. (2)'s residual and its misfit, NaN winning: both folded
+            for j in range(inner):
+                paired, paired_size = (
+                    _area(x, y, j) + _area(x, y, j + 1),
+                    _area_size(x, y, j) + _area_size(x, y, j + 1),
+                )
+                scale = _second_size(y, j) + abs(c_ratio) * paired_size
+                misfit[j] = abs(_second(y, j) - c_ratio * paired) / (
+                    scale if scale > TINY else TINY
+                )
+            _fold(misfit, inner, worst, 2)
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
@@ -464,25 +558,28 @@ def _constant(uv: float, vv: float, scales: Any, lhs: int, rhs: int, u: int, v: 
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _summary_body(p: Any) -> Any:
+def _summary_body(p: Any, lengths: Any) -> Any:
     """``_fits``'s summary (its first array) without its columns and residuals: four passes
     over p in blocks of FIT_BLOCK edges, each computing the columns it reads from the
-    coordinates (``_block_columns``) with the same operations on each entry as ``_fit_scales``,
-    ``_fit_terms`` and ``_misfit_into``; the sums by ``_pairwise``'s tree (``_tree_sums``), the
-    largest values as ``largest_of_magnitudes``. Every number has the bits of ``_fits``'s."""
+    coordinates (``_block_columns``, ``_area`` …) with the same operations on each entry as
+    ``_fit_scales``, ``_fit_terms`` and ``_misfit_into``, the edges' lengths once (pass 1
+    writes them to ``lengths``, one entry an edge of p); the sums by ``_pairwise``'s tree
+    (``_tree_sums``), the largest values as ``largest_of_magnitudes``. Every number has the
+    bits of ``_fits``'s."""
     n = p.shape[0]
     edges, inner = max(n - 1, 0), max(n - 2, 0)
     buffers = _buffers()
     big, nan = np.zeros(10, dtype=np.int64), np.zeros(10, dtype=np.bool_)
     scales = np.empty(10)
     for k0 in range(0, edges, FIT_BLOCK):  # pass 1: the columns' scales
-        block, block_inner = _block_columns(p, k0, buffers, 1)
+        block, block_inner = _block_columns(p, k0, buffers, True, lengths)
         _first_pass(buffers, min(block, FIT_BLOCK), block_inner, big, nan)
     for k in range(5):
         scales[k] = _scale_of(big, nan, k)
     for k0 in range(0, edges, FIT_BLOCK):  # pass 2: the scales of u and v
-        block, block_inner = _block_columns(p, k0, buffers, 2)
-        _second_pass(buffers, min(block, FIT_BLOCK), block_inner, scales, big, nan)
+        block, block_inner = _block_columns(p, k0, buffers, False, lengths)
+        edge = lengths[k0 : k0 + block]
+        _second_pass(buffers, edge, min(block, FIT_BLOCK), block_inner, scales, big, nan)
     for k in range(5, 10):
         scales[k] = _scale_of(big, nan, k)
     # pass 3: the sums, in numpy's order; (D3)'s leaves from the same blocks as the others'
@@ -490,9 +587,9 @@ def _summary_body(p: Any) -> Any:
     leaves = leaves[: _leaves(0, edges, leaves, 0) if edges else 0]
     sums = np.empty((leaves.shape[0], 2))
     window = np.zeros(4, dtype=np.int64)
-    vv1, uv1, vv2, uv2 = _tree_sums(p, 0, inner, scales, buffers, window, leaves, sums)
+    vv1, uv1, vv2, uv2 = _tree_sums(p, 0, inner, scales, buffers, lengths, window, leaves, sums)
     while window[3] < leaves.shape[0]:  # (D3)'s last leaves, past (D1)'s equations
-        _refill(p, leaves[window[3], 0], scales, buffers, window, leaves, sums)
+        _refill(p, leaves[window[3], 0], scales, buffers, lengths, window, leaves, sums)
     vv3, uv3 = _leaf_tree(edges, sums, np.zeros(1, dtype=np.int64))
     c1, has1 = _constant(uv1, vv1, scales, _S_SECOND, _S_PAIRED_L, _S_U, _S_V1)
     c3, has3 = _constant(uv3, vv3, scales, _S_AREA, _S_L, _S_U3, _S_V3)
@@ -501,8 +598,9 @@ def _summary_body(p: Any) -> Any:
     constants = np.array([c1, c3, c2, 1.0 if ratio else 0.0, c1 / c3 if ratio else 0.0])
     worst = np.zeros(3, dtype=np.int64)  # the bits of the largest residuals (``_fold``)
     for k0 in range(0, edges, FIT_BLOCK):  # pass 4: the largest residuals
-        block, block_inner = _block_columns(p, k0, buffers, 3)
-        _fourth_pass(buffers, min(block, FIT_BLOCK), block_inner, constants, worst)
+        block, block_inner = _block_columns(p, k0, buffers, False, lengths)
+        edge = lengths[k0 : k0 + block]
+        _fourth_pass(buffers, edge, min(block, FIT_BLOCK), block_inner, constants, worst)
     summary = np.empty(9)
     summary[0], summary[1], summary[2] = c1, c3, c2
     summary[3] = 1.0 if has1 else 0.0
@@ -513,26 +611,28 @@ def _summary_body(p: Any) -> Any:
     return summary
 
 
-@kernel("float64[::1](float64[:, :])")
-def _summary_passes(p: Any) -> Any:
+@kernel("float64[::1](float64[:, :], float64[::1])")
+def _summary_passes(p: Any, lengths: Any) -> Any:
     """``_summary_body`` of a polygon of any layout."""
-    return _summary_body(p)
+    return _summary_body(p, lengths)
 
 
-@kernel("float64[::1](float64[:, ::1])")
-def _summary_passes_contiguous(p: Any) -> Any:
+@kernel("float64[::1](float64[:, ::1], float64[::1])")
+def _summary_passes_contiguous(p: Any, lengths: Any) -> Any:
     """``_summary_body`` of a C-contiguous polygon (its coordinates read with fixed strides:
     the blocks' copies ≈ 2 ns a vertex faster than through p's strides)."""
-    return _summary_body(p)
+    return _summary_body(p, lengths)
 
 
 def fits_summary(p: Array) -> Any:
     """The fits' summary of the float64 polygon ``p`` ((m, 2)): ``_fits``'s first array, bit
-    for bit, without an array of size m (``_summary_passes``). A pure function of ``p`` that
-    releases the GIL: ``d4b.checks`` runs it on a second thread at large m."""
+    for bit, with one array of size m − 1 (the edges' lengths) instead of ``_fits``'s columns
+    and residuals (``_summary_passes``). A pure function of ``p`` that releases the GIL:
+    ``d4b.checks`` runs it on a second thread at large m."""
+    lengths = np.empty(max(len(p) - 1, 0))  # the edges' lengths, written by the first pass
     if p.flags.c_contiguous:
-        return _summary_passes_contiguous(p)
-    return _summary_passes(p)
+        return _summary_passes_contiguous(p, lengths)
+    return _summary_passes(p, lengths)
 
 
 def fits_arrays(p: Array) -> tuple[Any, Any, Any, Any, Any]:
