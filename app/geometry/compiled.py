@@ -153,6 +153,37 @@ def length3(x: float, y: float, z: float) -> float:
     return hypot(hypot(x, y), z)
 
 
+#: All bits of a float64 but its sign, and the pattern of +inf. For non-negative floats the
+#: patterns as integers order as the numbers do (a NaN's pattern is above ``INF_BITS``), so the
+#: largest magnitude of a block is an integer maximum, which the compiler vectorizes without
+#: fast-math (a float maximum it does not: ``max`` is not associative once NaN is involved).
+MAGNITUDE_BITS = 0x7FFF_FFFF_FFFF_FFFF
+INF_BITS = 0x7FF0_0000_0000_0000
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def largest_bits(values: Any, count: int) -> int:
+    """The largest magnitude's bit pattern of float64 ``values[:count]`` (0 for none; above
+    ``INF_BITS`` if one is NaN), as an integer maximum the compiler vectorizes."""
+    bits = values.view(np.int64)
+    top = 0
+    for j in range(count):
+        pattern = bits[j] & MAGNITUDE_BITS
+        top = pattern if pattern > top else top
+    return top
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def fast_length(x: float, y: float) -> tuple[float, bool]:
+    """``length`` on its square-root branch without a branch: (√(x² + y²), whether ``length``
+    takes that branch or gives the same number: the larger magnitude inside its moderate
+    range, or both zero, where hypot is 0 too). A NaN argument makes a NaN length."""
+    ax, ay = abs(x), abs(y)
+    big = ax if ax > ay else ay
+    usual = ((big > SQUARES_LOW) & (big < SQUARES_HIGH)) | (big == 0.0)
+    return math.sqrt(x * x + y * y), usual
+
+
 @numba.njit(cache=True, inline="always", error_model="numpy")
 def running_largest(value: float, largest: float) -> float:
     """One step of the largest |value| of a sequence, NaN once one is NaN (as ``np.max`` of the

@@ -13,7 +13,14 @@ import numba
 import numpy as np
 
 from app.geometry.checks import Largest, point_distance
-from app.geometry.compiled import SQUARES_HIGH, SQUARES_LOW, kernel, length, running_largest
+from app.geometry.compiled import (
+    SQUARES_HIGH,
+    SQUARES_LOW,
+    kernel,
+    largest_bits,
+    length,
+    running_largest,
+)
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array
 
@@ -72,9 +79,6 @@ def _f64(points: Array) -> Any:
 #: Rows per block of the float64 passes (a block's residuals stay in the cache).
 DARBOUX_BLOCK = 4096
 
-#: The bits of a float64's magnitude (all but the sign).
-_MAGNITUDE_BITS = 0x7FFF_FFFF_FFFF_FFFF
-
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
 def _edge_length_at(x: Any, e: Any, k: int) -> float:
@@ -110,13 +114,8 @@ def _largest_bits(values: Any, count: int) -> float:
     """The largest |v| of the first ``count`` values, none NaN, as the largest bit pattern of
     the magnitudes (for floats without NaN their order as integers is the order of the numbers);
     a maximum of integers that the compiler vectorizes."""
-    bits = values.view(np.int64)
-    top = 0
-    for j in range(count):
-        pattern = bits[j] & _MAGNITUDE_BITS
-        top = pattern if pattern > top else top
     found = np.empty(1, dtype=np.int64)
-    found[0] = top
+    found[0] = largest_bits(values, count)
     return found.view(np.float64)[0]
 
 

@@ -23,12 +23,15 @@ from app.geometry.compiled import (
     HYPOT_EPS,
     HYPOT_LARGE,
     HYPOT_TINY,
+    INF_BITS,
+    MAGNITUDE_BITS,
     SQUARES_HIGH,
     SQUARES_LOW,
     _hypot_kernel,
     all_finite_vector,
     hypot,
     kernel,
+    largest_bits,
     largest_of_magnitudes,
     length,
     running_largest,
@@ -250,13 +253,6 @@ def _weight(size: float) -> float:
     return size if size > TINY else TINY
 
 
-#: A float64's bits as an int64 without its sign bit, and those of +inf: the bits of
-#: non-negative floats order as the floats do (+inf's the largest; above them, only NaN's), so a
-#: largest magnitude is an integer maximum, which the compiler vectorizes (a float one it does
-#: not: ``max`` is not associative once NaN is involved).
-_MAGNITUDE, _INF_BITS = 0x7FFFFFFFFFFFFFFF, 0x7FF0000000000000
-
-
 @numba.njit(cache=True, inline="always", error_model="numpy")
 def _scale_of(big: Any, nan: Any, at: int) -> float:
     """``_column_scale`` of the largest magnitude whose bits are big[at], and of whether a NaN
@@ -272,26 +268,26 @@ _S_U, _S_V1, _S_U3, _S_V3, _S_V2 = 5, 6, 7, 8, 9
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
 def _scan(values: Any, count: int, big: Any, nan: Any, at: int) -> None:
-    """Fold max |v| of the non-NaN v of values[:count] (as bits: ``_MAGNITUDE``) into big[at],
+    """Fold max |v| of the non-NaN v of values[:count] (as bits: ``MAGNITUDE_BITS``) into big[at],
     and whether a v is NaN into nan[at]: ``_largest``'s result, found as integers."""
     bits = values.view(np.int64)
     largest, seen = big[at], 0
     for j in range(count):
-        magnitude = bits[j] & _MAGNITUDE
+        magnitude = bits[j] & MAGNITUDE_BITS
         seen = max(seen, magnitude)
-        largest = max(largest, magnitude if magnitude <= _INF_BITS else 0)
+        largest = max(largest, magnitude if magnitude <= INF_BITS else 0)
     big[at] = largest
-    nan[at] |= seen > _INF_BITS
+    nan[at] |= seen > INF_BITS
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
 def _fold(values: Any, count: int, worst: Any, at: int) -> None:
-    """``running_largest`` over values[:count] from worst[at], as bits (``_MAGNITUDE``): the
-    largest magnitude, or bits above ``_INF_BITS`` (a NaN) once a value is NaN."""
+    """``running_largest`` over values[:count] from worst[at], as bits (``MAGNITUDE_BITS``): the
+    largest magnitude, or bits above ``INF_BITS`` (a NaN) once a value is NaN."""
     bits = values.view(np.int64)
     largest = worst[at]
     for j in range(count):
-        largest = max(largest, bits[j] & _MAGNITUDE)
+        largest = max(largest, bits[j] & MAGNITUDE_BITS)
     worst[at] = largest
 
 
@@ -877,10 +873,6 @@ def _closed_comparisons(
 _NO_POINTS = np.empty((0, 2))
 _NO_ENTRIES = np.empty(0)
 
-#: The magnitude bits of a float64 (its sign cleared) and, above them, the patterns of NaN.
-_MAGNITUDE_BITS = 0x7FFF_FFFF_FFFF_FFFF
-_INFINITY_BITS = 0x7FF0_0000_0000_0000
-
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
 def _on_fast_path(x: float, y: float) -> bool:
@@ -898,19 +890,6 @@ def _all_finite(values: Any, start: int, stop: int) -> bool:
     for k in range(start, stop):
         finite &= abs(values[k]) < np.inf
     return finite
-
-
-@numba.njit(cache=True, inline="always", error_model="numpy")
-def _largest_bits(values: Any, count: int) -> int:
-    """The largest magnitude's bit pattern of ``values[:count]`` (float64 ≥ 0 without NaN order
-    as their patterns do; a NaN's pattern is above ``_INFINITY_BITS``), as an integer maximum
-    the compiler vectorizes."""
-    bits = values.view(np.int64)
-    top = 0
-    for k in range(count):
-        b = bits[k] & _MAGNITUDE_BITS
-        top = b if b > top else top
-    return top
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
@@ -1050,9 +1029,9 @@ def _closed_kinematic_block(
             scale = scale if scale > tiny else tiny
             values_6[k] = math.sqrt(dx * dx + dy * dy) / scale
             plain &= _on_fast_path(dx, dy)
-    top_5 = _largest_bits(values_5, rows) if theorem_5_wanted else 0
-    top_6 = _largest_bits(values_6, rows) if theorem_6_wanted else 0
-    if plain and top_5 <= _INFINITY_BITS and top_6 <= _INFINITY_BITS:
+    top_5 = largest_bits(values_5, rows) if theorem_5_wanted else 0
+    top_6 = largest_bits(values_6, rows) if theorem_6_wanted else 0
+    if plain and top_5 <= INF_BITS and top_6 <= INF_BITS:
         if theorem_5_wanted:
             theorem_5 = running_largest(_bits_value(top_5), theorem_5)
         if theorem_6_wanted:
@@ -1338,8 +1317,8 @@ def _closed_image_block(
     tops = np.zeros(6, dtype=np.int64)
     for j in range(6):
         if wanted[j]:
-            tops[j] = _largest_bits(scratch[j], rows)
-            plain &= tops[j] <= _INFINITY_BITS
+            tops[j] = largest_bits(scratch[j], rows)
+            plain &= tops[j] <= INF_BITS
     if plain:
         for j in range(6):
             if wanted[j]:

@@ -33,7 +33,15 @@ import numpy as np
 
 from app.geometry import checks
 from app.geometry.checks import Largest
-from app.geometry.compiled import SQUARES_HIGH, SQUARES_LOW, kernel, length, running_largest
+from app.geometry.compiled import (
+    INF_BITS,
+    MAGNITUDE_BITS,
+    fast_length,
+    kernel,
+    largest_bits,
+    length,
+    running_largest,
+)
 from app.geometry.precision import Arithmetic, Array
 
 TINY = float(np.finfo(np.float64).tiny)
@@ -72,6 +80,26 @@ def _scaled_relative_distances(computed: Any, expected: Any, tiny: float, scale:
     return out
 
 
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _one_step(d: float, a: float, b: float, after: float, tiny: float) -> float:
+    """(13)'s residual of ``after`` = p_{i+1}^y from a = p_{i−1}^y, b = p_i^y."""
+    predicted = (b * (b / a) + 2 * d * (d / a) + d * (d / b)) / (1 - (d / a) * (d / b))
+    scale = abs(predicted)
+    return abs(after - predicted) / (scale if scale > tiny else tiny)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _two_steps(d: float, a: float, b: float, later: float, tiny: float) -> float:
+    """The two-step form's residual of ``later`` = p_{i+2}^y from a = p_{i−1}^y, b = p_i^y."""
+    e = d / a
+    f = d / b
+    numerator = b * (b / a) * (b / a) + (d * f) * (a / b + 2 + 3 * (b / a) + 4 * (b / a) * (b / a))
+    numerator = numerator + (d * e) * (e * f) * (2 * (a / b) + 3)
+    predicted = numerator / ((1 - e * f) * (1 - e * f))
+    scale = abs(predicted)
+    return abs(later - predicted) / (scale if scale > tiny else tiny)
+
+
 @kernel("Tuple((float64[:], float64[:], float64, float64))(float64, float64[:], float64, boolean)")
 def _recursions(d: float, y: Any, tiny: float, store: bool) -> tuple[Any, Any, float, float]:
     """Relative differences of p_{i+1}^y from (13) and of p_{i+2}^y from its two-step form,
@@ -86,23 +114,12 @@ def _recursions(d: float, y: Any, tiny: float, store: bool) -> tuple[Any, Any, f
     two = np.empty(max(n - 3, 0) if store else 0)
     largest_one, largest_two = 0.0, 0.0
     for k in range(n - 2):
-        a, b = y[k], y[k + 1]
-        predicted = (b * (b / a) + 2 * d * (d / a) + d * (d / b)) / (1 - (d / a) * (d / b))
-        scale = abs(predicted)
-        residual = abs(y[k + 2] - predicted) / (scale if scale > tiny else tiny)
+        residual = _one_step(d, y[k], y[k + 1], y[k + 2], tiny)
         largest_one = running_largest(residual, largest_one)
         if store:
             one[k] = residual
         if k < n - 3:
-            e = d / a
-            f = d / b
-            numerator = b * (b / a) * (b / a) + (d * f) * (
-                a / b + 2 + 3 * (b / a) + 4 * (b / a) * (b / a)
-            )
-            numerator = numerator + (d * e) * (e * f) * (2 * (a / b) + 3)
-            predicted = numerator / ((1 - e * f) * (1 - e * f))
-            scale = abs(predicted)
-            residual = abs(y[k + 3] - predicted) / (scale if scale > tiny else tiny)
+            residual = _two_steps(d, y[k], y[k + 1], y[k + 3], tiny)
             largest_two = running_largest(residual, largest_two)
             if store:
                 two[k] = residual
@@ -148,6 +165,21 @@ def _largest_two_step_printed(d2: float, d4: float, y: Any, tiny: float) -> floa
     return largest
 
 
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _right_angle_at(tractrix: Any, axis: Any, p: Any, k: int) -> float:
+    """``_right_angles``' residual at row k: the larger of the two angles' (NaN wins)."""
+    vx, vy = tractrix[k, 0], tractrix[k, 1]
+    ux, uy = axis[k, 0] - vx, axis[k, 1] - vy
+    size_a = abs(axis[k, 0]) + abs(axis[k, 1]) + abs(vx) + abs(vy)
+    wx, wy = p[k, 0] - vx, p[k, 1] - vy
+    size_b = abs(p[k, 0]) + abs(p[k, 1]) + abs(vx) + abs(vy)
+    at_p = abs(ux * wx + uy * wy) / (size_a * size_b)
+    wx, wy = p[k + 1, 0] - vx, p[k + 1, 1] - vy
+    size_b = abs(p[k + 1, 0]) + abs(p[k + 1, 1]) + abs(vx) + abs(vy)
+    at_next = abs(ux * wx + uy * wy) / (size_a * size_b)
+    return at_p if (at_p >= at_next or at_p != at_p) else at_next  # np.maximum: NaN wins
+
+
 @kernel("Tuple((float64[:], float64))(float64[:, :], float64[:, :], float64[:, :], int64, boolean)")
 def _right_angles(tractrix: Any, axis: Any, p: Any, n: int, store: bool) -> tuple[Any, float]:
     """max over the angles x_i d_i p_i and x_i d_i p_{i+1} of |cos| measured as Nikolaides',
@@ -159,17 +191,7 @@ def _right_angles(tractrix: Any, axis: Any, p: Any, n: int, store: bool) -> tupl
     out = np.empty(n if store else 0)
     largest = 0.0
     for k in range(n):
-        vx, vy = tractrix[k, 0], tractrix[k, 1]
-        ux, uy = axis[k, 0] - vx, axis[k, 1] - vy
-        size_a = abs(axis[k, 0]) + abs(axis[k, 1]) + abs(vx) + abs(vy)
-        wx, wy = p[k, 0] - vx, p[k, 1] - vy
-        size_b = abs(p[k, 0]) + abs(p[k, 1]) + abs(vx) + abs(vy)
-        at_p = abs(ux * wx + uy * wy) / (size_a * size_b)
-        wx, wy = p[k + 1, 0] - vx, p[k + 1, 1] - vy
-        size_b = abs(p[k + 1, 0]) + abs(p[k + 1, 1]) + abs(vx) + abs(vy)
-        at_next = abs(ux * wx + uy * wy) / (size_a * size_b)
-        # np.maximum: NaN wins
-        residual = at_p if (at_p >= at_next or at_p != at_p) else at_next
+        residual = _right_angle_at(tractrix, axis, p, k)
         largest = running_largest(residual, largest)
         if store:
             out[k] = residual
@@ -233,14 +255,12 @@ def right_angle_largest(tractrix: Any, axis: Any, p: Any, n: int) -> Largest:
     return Largest(float(largest), max(n, 0), lambda: right_angle_residuals(tractrix, axis, p, n))
 
 
-@kernel("UniTuple(float64, 2)(float64[:, :], int64, float64)")
-def _hypothesis(p: Any, n: int, d2: float) -> tuple[float, float]:
-    """The hypothesis of Theorem 4 on p_0 .. p_{n−1}, as ``checks._hypothesis`` computes it
-    entry by entry: the largest violation max(d² − p_{k−1}^y p_k^y, 0)/d² (NaN if one is NaN,
-    as ``np.maximum`` and the largest magnitude give it) and the smallest p_{k−1}^y p_k^y / d²
-    (NaN if one is NaN, as ``np.min``), k = 1 .. n − 1."""
-    largest, smallest = 0.0, math.inf
-    for k in range(1, n):
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _hypothesis_rows(
+    p: Any, start: int, stop: int, d2: float, largest: float, smallest: float
+) -> tuple[float, float]:
+    """``_hypothesis`` on k = start .. stop − 1, from the running largest and smallest."""
+    for k in range(start, stop):
         product = p[k - 1, 1] * p[k, 1]
         excess = d2 - product
         violation = excess if (excess >= 0.0 or excess != excess) else 0.0
@@ -249,6 +269,15 @@ def _hypothesis(p: Any, n: int, d2: float) -> tuple[float, float]:
         if smallest == smallest and (ratio != ratio or ratio < smallest):
             smallest = ratio
     return largest, smallest
+
+
+@kernel("UniTuple(float64, 2)(float64[:, :], int64, float64)")
+def _hypothesis(p: Any, n: int, d2: float) -> tuple[float, float]:
+    """The hypothesis of Theorem 4 on p_0 .. p_{n−1}, as ``checks._hypothesis`` computes it
+    entry by entry: the largest violation max(d² − p_{k−1}^y p_k^y, 0)/d² (NaN if one is NaN,
+    as ``np.maximum`` and the largest magnitude give it) and the smallest p_{k−1}^y p_k^y / d²
+    (NaN if one is NaN, as ``np.min``), k = 1 .. n − 1."""
+    return _hypothesis_rows(p, 1, n, d2, 0.0, math.inf)
 
 
 def hypothesis_largest(p: Any, n: int, d: float) -> tuple[Largest, float]:
@@ -266,6 +295,13 @@ def hypothesis_largest(p: Any, n: int, d: float) -> tuple[Largest, float]:
     return Largest(float(largest), n - 1, violations), float(smallest)
 
 
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _contact_rotation_at(contact: Any, normals: Any, scale: Any, k: int) -> float:
+    """``_contact_rotation``'s residual at row k."""
+    distance = length(contact[k + 1, 0] - (-normals[k, 1]), contact[k + 1, 1] - normals[k, 0])
+    return distance * scale[k]
+
+
 @kernel("Tuple((float64[:], float64))(float64[:, :], float64[:, :], float64[:], int64, boolean)")
 def _contact_rotation(contact: Any, normals: Any, scale: Any, count: int, store: bool) -> Any:
     """(19) as the rotation of n by a quarter turn, k = 0 .. count − 1: |ñ_{k+1} − (−n_k^y,
@@ -275,8 +311,7 @@ def _contact_rotation(contact: Any, normals: Any, scale: Any, count: int, store:
     out = np.empty(count if store else 0)
     largest = 0.0
     for k in range(count):
-        distance = length(contact[k + 1, 0] - (-normals[k, 1]), contact[k + 1, 1] - normals[k, 0])
-        value = distance * scale[k]
+        value = _contact_rotation_at(contact, normals, scale, k)
         largest = running_largest(value, largest)
         if store:
             out[k] = value
@@ -295,6 +330,18 @@ def contact_rotation_largest(contact: Any, normals: Any, scale: Any, count: int)
     return Largest(float(largest), count, lambda: _contact_rotation(*arrays, count, True)[0])
 
 
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _pole_inversion_at(gauss: Any, contact: Any, scale: Any, k: int, tiny: float) -> float:
+    """``_pole_inversion``'s residual at row k."""
+    tx = contact[k, 0] + contact[k + 1, 0]
+    ty = contact[k, 1] + contact[k + 1, 1]
+    squared = tx * tx + ty * ty
+    ex, ey = 2 * tx / squared, 2 * ty / squared
+    size = length(ex, ey)
+    size = size if size > tiny else tiny
+    return length(gauss[k, 0] - ex, gauss[k, 1] - ey) / size * scale[k]
+
+
 @kernel(
     "Tuple((float64[:], float64))(float64[:, :], float64[:, :], float64[:], int64, float64, "
     "boolean)"
@@ -309,13 +356,7 @@ def _pole_inversion(
     out = np.empty(count if store else 0)
     largest = 0.0
     for k in range(count):
-        tx = contact[k, 0] + contact[k + 1, 0]
-        ty = contact[k, 1] + contact[k + 1, 1]
-        squared = tx * tx + ty * ty
-        ex, ey = 2 * tx / squared, 2 * ty / squared
-        size = length(ex, ey)
-        size = size if size > tiny else tiny
-        value = length(gauss[k, 0] - ex, gauss[k, 1] - ey) / size * scale[k]
+        value = _pole_inversion_at(gauss, contact, scale, k, tiny)
         largest = running_largest(value, largest)
         if store:
             out[k] = value
@@ -417,9 +458,6 @@ ROTATION_BLOCK = 8192
 #: calls (numpy's arctan2 saves ≈ 25 ns an angle, the calls cost ≈ 12 µs).
 ROTATION_LIBM_BELOW = 512
 
-#: The bits of a float64's magnitude (all but the sign).
-_ANGLE_MAGNITUDE_BITS = 0x7FFF_FFFF_FFFF_FFFF
-
 
 @kernel("void(float64[:, ::1], float64[:, ::1], int64, int64, float64[:, ::1])")
 def _rotation_arguments(p: Any, axis: Any, start: int, stop: int, rows: Any) -> None:
@@ -467,9 +505,9 @@ def _rotation_residuals(
     top, top_printed = 0, 0
     for j in range(count):
         plain &= (corrected[j] == corrected[j]) & (printed[j] == printed[j])
-        bits = corrected_bits[j] & _ANGLE_MAGNITUDE_BITS
+        bits = corrected_bits[j] & MAGNITUDE_BITS
         top = bits if bits > top else top
-        bits = printed_bits[j] & _ANGLE_MAGNITUDE_BITS
+        bits = printed_bits[j] & MAGNITUDE_BITS
         top_printed = bits if bits > top_printed else top_printed
     if not plain:  # a NaN: the running largest residual by residual
         for j in range(count):
@@ -757,13 +795,12 @@ def largest_printed_gauss_difference(
     return worst if math.isfinite(worst) else None
 
 
-@kernel("UniTuple(float64, 2)(float64[:, :], float64[:, :])")
-def _largest_along_both(vectors: Any, points: Any) -> tuple[float, float]:
-    """``_along`` of ``vectors`` and ``_largest_along_printed_slope`` on their first
-    len(vectors) edges, in one pass: the largest of each (NaN if one is NaN), each edge and
-    its size made once for both, every quotient as the two passes make it."""
-    largest, printed = 0.0, 0.0
-    for k in range(vectors.shape[0]):
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _along_both_rows(
+    vectors: Any, points: Any, start: int, stop: int, largest: float, printed: float
+) -> tuple[float, float]:
+    """``_largest_along_both`` on rows start .. stop − 1, from the running largest given."""
+    for k in range(start, stop):
         ex = points[k + 1, 0] - points[k, 0]
         ey = points[k + 1, 1] - points[k, 1]
         size = abs(points[k, 0]) + abs(points[k, 1]) + abs(points[k + 1, 0]) + abs(points[k + 1, 1])
@@ -776,6 +813,14 @@ def _largest_along_both(vectors: Any, points: Any) -> tuple[float, float]:
         residual = abs(wx * ey - wy * ex) / size
         printed = running_largest(1.0 if wx * ex + wy * ey < 0 else residual, printed)
     return largest, printed
+
+
+@kernel("UniTuple(float64, 2)(float64[:, :], float64[:, :])")
+def _largest_along_both(vectors: Any, points: Any) -> tuple[float, float]:
+    """``_along`` of ``vectors`` and ``_largest_along_printed_slope`` on their first
+    len(vectors) edges, in one pass: the largest of each (NaN if one is NaN), each edge and
+    its size made once for both, every quotient as the two passes make it."""
+    return _along_both_rows(vectors, points, 0, vectors.shape[0], 0.0, 0.0)
 
 
 def along_largest(vectors: Any, points: Any) -> tuple[Largest, float | None]:
@@ -860,35 +905,6 @@ def ratio_spread(p: Any) -> float | None:
 #: Rows a block of the blocked passes (their scratch rows, 8 KB each, stay in the cache).
 EDGE_BLOCK = 1024
 
-#: All bits of a float64 but its sign, and the pattern of +inf: a magnitude's pattern above it is
-#: a NaN's.
-_MAGNITUDE_BITS = 0x7FFF_FFFF_FFFF_FFFF
-_INF_BITS = 0x7FF0_0000_0000_0000
-
-
-@numba.njit(cache=True, inline="always", error_model="numpy")
-def _fast_length(x: float, y: float) -> tuple[float, bool]:
-    """``compiled.length`` on its square-root branch without a branch: (√(x² + y²), whether
-    ``length`` takes that branch or gives the same number: both squares in range, or both
-    arguments zero, where hypot is 0 too). A NaN argument makes a NaN length."""
-    ax, ay = abs(x), abs(y)
-    big = ax if ax > ay else ay
-    usual = ((big > SQUARES_LOW) & (big < SQUARES_HIGH)) | (big == 0.0)
-    return math.sqrt(x * x + y * y), usual
-
-
-@numba.njit(cache=True, error_model="numpy")
-def _top(values: Any, count: int) -> int:
-    """The largest bit pattern of |values[j]|, j < count (0 for none): that of the largest
-    magnitude, or of a NaN if one is NaN (its pattern exceeds every number's). Integers, so
-    the compiler vectorizes the maximum without fast-math."""
-    bits = values.view(np.int64)
-    top = 0
-    for j in range(count):
-        pattern = bits[j] & _MAGNITUDE_BITS
-        top = pattern if pattern > top else top
-    return top
-
 
 @numba.njit(cache=True, error_model="numpy")
 def _all(flags: Any, count: int) -> bool:
@@ -921,26 +937,6 @@ def _contiguous(points: Any) -> Any:
 # (18) by slopes and erratum E61 (``_largest_along_both``)
 
 
-@numba.njit(cache=True, inline="always", error_model="numpy")
-def _along_both_rows(
-    vectors: Any, points: Any, start: int, stop: int, largest: float, printed: float
-) -> tuple[float, float]:
-    """``_largest_along_both`` on rows start .. stop − 1, from the running largest given."""
-    for k in range(start, stop):
-        ex = points[k + 1, 0] - points[k, 0]
-        ey = points[k + 1, 1] - points[k, 1]
-        size = abs(points[k, 0]) + abs(points[k, 1]) + abs(points[k + 1, 0]) + abs(points[k + 1, 1])
-        vx, vy = vectors[k, 0], vectors[k, 1]
-        residual = abs(vx * ey - vy * ex) / size
-        largest = running_largest(1.0 if vx * ex + vy * ey < 0 else residual, largest)
-        slope = ey / ex
-        wx = math.sqrt(1 / (1 + slope * slope))
-        wy = math.sqrt(slope * slope / (1 + slope * slope))
-        residual = abs(wx * ey - wy * ex) / size
-        printed = running_largest(1.0 if wx * ex + wy * ey < 0 else residual, printed)
-    return largest, printed
-
-
 @numba.njit(cache=True, error_model="numpy")
 def _along_both_block(v: Any, q: Any, count: int, along: Any, printed: Any) -> None:
     """One block of ``_largest_along_both``'s rows (flat vectors v, flat points q with one row
@@ -971,8 +967,8 @@ def _largest_along_both_blocked(vectors: Any, points: Any) -> tuple[float, float
     for start in range(0, count, EDGE_BLOCK):
         m = min(EDGE_BLOCK, count - start)
         _along_both_block(_rows(v, start, m), _rows(q, start, m + 1), m, along, printed_rows)
-        top, top_printed = _top(along, m), _top(printed_rows, m)
-        if top > _INF_BITS or top_printed > _INF_BITS:  # a NaN: the block row by row
+        top, top_printed = largest_bits(along, m), largest_bits(printed_rows, m)
+        if top > INF_BITS or top_printed > INF_BITS:  # a NaN: the block row by row
             largest, printed = _along_both_rows(vectors, points, start, start + m, largest, printed)
         else:
             largest = _fold(top, largest, cell)
@@ -989,14 +985,7 @@ def _pole_inversion_rows(
 ) -> float:
     """``_pole_inversion``'s largest on rows start .. stop − 1, from the running largest."""
     for k in range(start, stop):
-        tx = contact[k, 0] + contact[k + 1, 0]
-        ty = contact[k, 1] + contact[k + 1, 1]
-        squared = tx * tx + ty * ty
-        ex, ey = 2 * tx / squared, 2 * ty / squared
-        size = length(ex, ey)
-        size = size if size > tiny else tiny
-        value = length(gauss[k, 0] - ex, gauss[k, 1] - ey) / size * scale[k]
-        largest = running_largest(value, largest)
+        largest = running_largest(_pole_inversion_at(gauss, contact, scale, k, tiny), largest)
     return largest
 
 
@@ -1011,9 +1000,9 @@ def _pole_inversion_block(
         ty = c[2 * j + 1] + c[2 * j + 3]
         squared = tx * tx + ty * ty
         ex, ey = 2 * tx / squared, 2 * ty / squared
-        size, plain = _fast_length(ex, ey)
+        size, plain = fast_length(ex, ey)
         size = size if size > tiny else tiny
-        distance, plain_distance = _fast_length(g[2 * j] - ex, g[2 * j + 1] - ey)
+        distance, plain_distance = fast_length(g[2 * j] - ex, g[2 * j + 1] - ey)
         out[j] = distance / size * s[j]
         usual[j] = plain & plain_distance
 
@@ -1030,8 +1019,8 @@ def _largest_pole_inversion(gauss: Any, contact: Any, scale: Any, count: int, ti
         m = min(EDGE_BLOCK, count - start)
         s = scale[start : start + m]
         _pole_inversion_block(_rows(g, start, m), _rows(c, start, m + 1), s, m, tiny, out, usual)
-        top = _top(out, m)
-        if top > _INF_BITS or not _all(usual, m):
+        top = largest_bits(out, m)
+        if top > INF_BITS or not _all(usual, m):
             largest = _pole_inversion_rows(gauss, contact, scale, start, start + m, tiny, largest)
         else:
             largest = _fold(top, largest, cell)
@@ -1044,8 +1033,7 @@ def _contact_rotation_rows(
 ) -> float:
     """``_contact_rotation``'s largest on rows start .. stop − 1, from the running largest."""
     for k in range(start, stop):
-        distance = length(contact[k + 1, 0] - (-normals[k, 1]), contact[k + 1, 1] - normals[k, 0])
-        largest = running_largest(distance * scale[k], largest)
+        largest = running_largest(_contact_rotation_at(contact, normals, scale, k), largest)
     return largest
 
 
@@ -1054,7 +1042,7 @@ def _contact_rotation_block(c: Any, nrm: Any, s: Any, count: int, out: Any, usua
     """One block of ``_contact_rotation``'s residuals (flat ñ_{k+1}, flat n_k, the scales), the
     length on the square-root branch (``usual`` says where ``length`` takes it)."""
     for j in range(count):
-        distance, plain = _fast_length(c[2 * j] - (-nrm[2 * j + 1]), c[2 * j + 1] - nrm[2 * j])
+        distance, plain = fast_length(c[2 * j] - (-nrm[2 * j + 1]), c[2 * j + 1] - nrm[2 * j])
         out[j] = distance * s[j]
         usual[j] = plain
 
@@ -1071,8 +1059,8 @@ def _largest_contact_rotation(contact: Any, normals: Any, scale: Any, count: int
         m = min(EDGE_BLOCK, count - start)
         s = scale[start : start + m]
         _contact_rotation_block(_rows(c, start + 1, m), _rows(nrm, start, m), s, m, out, usual)
-        top = _top(out, m)
-        if top > _INF_BITS or not _all(usual, m):
+        top = largest_bits(out, m)
+        if top > INF_BITS or not _all(usual, m):
             largest = _contact_rotation_rows(contact, normals, scale, start, start + m, largest)
         else:
             largest = _fold(top, largest, cell)
@@ -1089,7 +1077,7 @@ def _edge_resolution_block(q: Any, count: int, out: Any, usual: Any) -> None:
     for j in range(count):
         x0, y0, x1, y1 = q[2 * j], q[2 * j + 1], q[2 * j + 2], q[2 * j + 3]
         size = abs(x0) + abs(y0) + abs(x1) + abs(y1)
-        edge, plain = _fast_length(x1 - x0, y1 - y0)
+        edge, plain = fast_length(x1 - x0, y1 - y0)
         value = edge / size
         out[j] = value
         usual[j] = plain & (value == value)
@@ -1164,21 +1152,9 @@ def _recursion_rows(
     running largest of each."""
     n = y.shape[0]
     for k in range(start, stop):
-        a, b = y[k], y[k + 1]
-        predicted = (b * (b / a) + 2 * d * (d / a) + d * (d / b)) / (1 - (d / a) * (d / b))
-        scale = abs(predicted)
-        residual = abs(y[k + 2] - predicted) / (scale if scale > tiny else tiny)
-        largest_one = running_largest(residual, largest_one)
+        largest_one = running_largest(_one_step(d, y[k], y[k + 1], y[k + 2], tiny), largest_one)
         if k < n - 3:
-            e = d / a
-            f = d / b
-            numerator = b * (b / a) * (b / a) + (d * f) * (
-                a / b + 2 + 3 * (b / a) + 4 * (b / a) * (b / a)
-            )
-            numerator = numerator + (d * e) * (e * f) * (2 * (a / b) + 3)
-            predicted = numerator / ((1 - e * f) * (1 - e * f))
-            scale = abs(predicted)
-            residual = abs(y[k + 3] - predicted) / (scale if scale > tiny else tiny)
+            residual = _two_steps(d, y[k], y[k + 1], y[k + 3], tiny)
             largest_two = running_largest(residual, largest_two)
     return largest_one, largest_two
 
@@ -1189,16 +1165,7 @@ def _recursion_pair(
 ) -> tuple[float, float]:
     """``_recursions``' two residuals at k from a = y_k, b = y_{k+1}, after = y_{k+2} and
     later = y_{k+3}: the same operations."""
-    predicted = (b * (b / a) + 2 * d * (d / a) + d * (d / b)) / (1 - (d / a) * (d / b))
-    scale = abs(predicted)
-    one = abs(after - predicted) / (scale if scale > tiny else tiny)
-    e = d / a
-    f = d / b
-    numerator = b * (b / a) * (b / a) + (d * f) * (a / b + 2 + 3 * (b / a) + 4 * (b / a) * (b / a))
-    numerator = numerator + (d * e) * (e * f) * (2 * (a / b) + 3)
-    predicted = numerator / ((1 - e * f) * (1 - e * f))
-    scale = abs(predicted)
-    return one, abs(later - predicted) / (scale if scale > tiny else tiny)
+    return _one_step(d, a, b, after, tiny), _two_steps(d, a, b, later, tiny)
 
 
 @numba.njit(cache=True, error_model="numpy")
@@ -1241,8 +1208,8 @@ def _recursions_blocked(d: float, y: Any, q: Any, paired: bool, tiny: float) -> 
             heights[rows:] = 1.0
             _recursion_block(d, heights, m, tiny, one, two)
         m_two = min(m, max(n - 3 - start, 0))
-        top_one, top_two = _top(one, m), _top(two, m_two)
-        if top_one > _INF_BITS or top_two > _INF_BITS:
+        top_one, top_two = largest_bits(one, m), largest_bits(two, m_two)
+        if top_one > INF_BITS or top_two > INF_BITS:
             largest_one, largest_two = _recursion_rows(
                 d, y, start, start + m, tiny, largest_one, largest_two
             )
@@ -1319,8 +1286,8 @@ def _two_step_printed_largest(
         else:
             _copy_vector(y, start, m + 3, heights)
             _two_step_printed_block(d2, d4, heights, m, tiny, out)
-        top = _top(out, m)
-        if top > _INF_BITS:
+        top = largest_bits(out, m)
+        if top > INF_BITS:
             for k in range(start, start + m):
                 largest = running_largest(_two_step_printed_at(d2, d4, y, k, tiny), largest)
         else:
@@ -1372,17 +1339,7 @@ def _right_angle_rows(
 ) -> float:
     """``_right_angles``' largest on rows start .. stop − 1, from the running largest."""
     for k in range(start, stop):
-        vx, vy = tractrix[k, 0], tractrix[k, 1]
-        ux, uy = axis[k, 0] - vx, axis[k, 1] - vy
-        size_a = abs(axis[k, 0]) + abs(axis[k, 1]) + abs(vx) + abs(vy)
-        wx, wy = p[k, 0] - vx, p[k, 1] - vy
-        size_b = abs(p[k, 0]) + abs(p[k, 1]) + abs(vx) + abs(vy)
-        at_p = abs(ux * wx + uy * wy) / (size_a * size_b)
-        wx, wy = p[k + 1, 0] - vx, p[k + 1, 1] - vy
-        size_b = abs(p[k + 1, 0]) + abs(p[k + 1, 1]) + abs(vx) + abs(vy)
-        at_next = abs(ux * wx + uy * wy) / (size_a * size_b)
-        residual = at_p if (at_p >= at_next or at_p != at_p) else at_next
-        largest = running_largest(residual, largest)
+        largest = running_largest(_right_angle_at(tractrix, axis, p, k), largest)
     return largest
 
 
@@ -1416,8 +1373,8 @@ def _largest_right_angle(tractrix: Any, axis: Any, p: Any, n: int) -> float:
     for start in range(0, n, EDGE_BLOCK):
         m = min(EDGE_BLOCK, n - start)
         _right_angle_block(_rows(t, start, m), _rows(a, start, m), _rows(q, start, m + 1), m, out)
-        top = _top(out, m)
-        if top > _INF_BITS:
+        top = largest_bits(out, m)
+        if top > INF_BITS:
             largest = _right_angle_rows(tractrix, axis, p, start, start + m, largest)
         else:
             largest = _fold(top, largest, cell)
@@ -1432,7 +1389,7 @@ def _edge_lengths_block(q: Any, count: int, out: Any, usual: Any) -> None:
     """|p_{j+1} − p_j| for j < count (flat points) into ``out``, on the square-root branch
     (``usual``)."""
     for j in range(count):
-        out[j], usual[j] = _fast_length(q[2 * j + 2] - q[2 * j], q[2 * j + 3] - q[2 * j + 1])
+        out[j], usual[j] = fast_length(q[2 * j + 2] - q[2 * j], q[2 * j + 3] - q[2 * j + 1])
 
 
 @numba.njit(cache=True, error_model="numpy")
@@ -1469,22 +1426,6 @@ def _printed_ratios_blocked(p: Any) -> Any:
 # Theorem 4's hypothesis (``_hypothesis``)
 
 
-@numba.njit(cache=True, inline="always", error_model="numpy")
-def _hypothesis_rows(
-    p: Any, start: int, stop: int, d2: float, largest: float, smallest: float
-) -> tuple[float, float]:
-    """``_hypothesis`` on k = start .. stop − 1, from the running largest and smallest."""
-    for k in range(start, stop):
-        product = p[k - 1, 1] * p[k, 1]
-        excess = d2 - product
-        violation = excess if (excess >= 0.0 or excess != excess) else 0.0
-        largest = running_largest(violation / d2, largest)
-        ratio = product / d2
-        if smallest == smallest and (ratio != ratio or ratio < smallest):
-            smallest = ratio
-    return largest, smallest
-
-
 #: The bits below the sign: xor'ed into a negative float's pattern, they make the patterns of
 #: all floats ordered as the numbers (``_hypothesis_block``).
 _ORDER_BITS = 0x7FFF_FFFF_FFFF_FFFF
@@ -1495,10 +1436,10 @@ def _hypothesis_block(
     q: Any, count: int, d2: float, violations: Any, ratios: Any
 ) -> tuple[int, int, bool]:
     """One block of ``_hypothesis`` from flat points (count + 1 rows, the first p_{k−1}): the
-    largest bit pattern of the violations (``_top``), the smallest ratio as an ordered integer
-    (a float's pattern, its lower bits flipped if negative: ordered as the numbers, −0 below
-    +0) and whether the block is plain (no NaN ratio, no ratio ±0, which ``<`` does not tell
-    apart as the integers do)."""
+    largest bit pattern of the violations (``compiled.largest_bits``), the smallest ratio as an
+    ordered integer (a float's pattern, its lower bits flipped if negative: ordered as the
+    numbers, −0 below +0) and whether the block is plain (no NaN ratio, no ratio ±0, which
+    ``<`` does not tell apart as the integers do)."""
     for k in range(count):
         product = q[2 * k + 1] * q[2 * k + 3]
         excess = d2 - product
@@ -1514,7 +1455,7 @@ def _hypothesis_block(
         low = key if key < low else low
         ratio = ratios[k]
         plain &= (ratio == ratio) & (ratio != 0.0)
-    return _top(violations, count), low, plain
+    return largest_bits(violations, count), low, plain
 
 
 @kernel("UniTuple(float64, 2)(float64[:, ::1], int64, float64)")
@@ -1527,7 +1468,7 @@ def _hypothesis_blocked(p: Any, n: int, d2: float) -> tuple[float, float]:
     for start in range(1, n, EDGE_BLOCK):
         m = min(EDGE_BLOCK, n - start)
         top, low, plain = _hypothesis_block(_rows(q, start - 1, m + 1), m, d2, violations, ratios)
-        if top > _INF_BITS or not plain:
+        if top > INF_BITS or not plain:
             largest, smallest = _hypothesis_rows(p, start, start + m, d2, largest, smallest)
             continue
         largest = _fold(top, largest, cell)

@@ -19,6 +19,7 @@ import numba
 import numpy as np
 
 from app.geometry.compiled import (
+    MAGNITUDE_BITS,
     SQUARES_HIGH,
     SQUARES_LOW,
     hypot,
@@ -444,10 +445,6 @@ def _faces_unbranched(
         areas[j], theorems[j], equations[j], differences[j], usual[j] = found
 
 
-#: All bits of a float64 but its sign.
-_MAGNITUDE_BITS = 0x7FFF_FFFF_FFFF_FFFF
-
-
 @numba.njit(cache=True, error_model="numpy")
 def _block_largest(
     count: int, areas: Any, theorems: Any, equations: Any, differences: Any, usual: Any
@@ -468,9 +465,9 @@ def _block_largest(
         theorem, equation_17 = theorems[j], equations[j]
         plain &= usual[j] & (areas[j] > 0) & (theorem == theorem) & (equation_17 == equation_17)
         zeros += differences[j] == 0
-        bits = theorem_bits[j] & _MAGNITUDE_BITS
+        bits = theorem_bits[j] & MAGNITUDE_BITS
         top = bits if bits > top else top
-        bits = equation_bits[j] & _MAGNITUDE_BITS
+        bits = equation_bits[j] & MAGNITUDE_BITS
         top_17 = bits if bits > top_17 else top_17
     found = np.empty(2, dtype=np.int64)
     found[0], found[1] = top, top_17
