@@ -6,7 +6,6 @@ edges have equal length, |e_i − e_{i+1}| = |x_i − x_{i+1}|.
 
 from __future__ import annotations
 
-import math
 from typing import Any
 
 import numba
@@ -14,8 +13,7 @@ import numpy as np
 
 from app.geometry.checks import Largest, point_distance
 from app.geometry.compiled import (
-    SQUARES_HIGH,
-    SQUARES_LOW,
+    fast_length,
     kernel,
     largest_bits,
     length,
@@ -101,15 +99,6 @@ def _distance_at(x: Any, e: Any, expected: float, k: int) -> float:
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
-def _moderate(x: float, y: float) -> bool:
-    """Whether ``compiled.length`` takes its fast path (√(x² + y²)) for (x, y), NaN aside;
-    without branches."""
-    a, b = abs(x), abs(y)
-    big = a if a > b else b
-    return (big > SQUARES_LOW) & (big < SQUARES_HIGH)
-
-
-@numba.njit(cache=True, inline="always", error_model="numpy")
 def _largest_bits(values: Any, count: int) -> float:
     """The largest |v| of the first ``count`` values, none NaN, as the largest bit pattern of
     the magnitudes (for floats without NaN their order as integers is the order of the numbers);
@@ -130,13 +119,13 @@ def _edge_length_block(x: Any, e: Any, start: int, count: int, target: Any) -> b
     for j in range(count):
         dx, dy = xs[j + 1, 0] - xs[j, 0], xs[j + 1, 1] - xs[j, 1]
         fx, fy = es[j + 1, 0] - es[j, 0], es[j + 1, 1] - es[j, 1]
-        ex = math.sqrt(dx * dx + dy * dy)
-        ee = math.sqrt(fx * fx + fy * fy)
+        ex, plain_x = fast_length(dx, dy)
+        ee, plain_e = fast_length(fx, fy)
         size = abs(xs[j + 1, 0]) + abs(xs[j + 1, 1]) + abs(xs[j, 0]) + abs(xs[j, 1])
         size = size + abs(es[j + 1, 0]) + abs(es[j + 1, 1]) + abs(es[j, 0]) + abs(es[j, 1])
         residual = abs(ee - ex) / size
         target[j] = residual
-        plain &= _moderate(dx, dy) & _moderate(fx, fy) & (residual == residual)
+        plain &= plain_x & plain_e & (residual == residual)
     return plain
 
 
@@ -148,11 +137,11 @@ def _distance_block(x: Any, e: Any, expected: float, start: int, count: int, tar
     plain = True
     for j in range(count):
         dx, dy = xs[j, 0] - es[j, 0], xs[j, 1] - es[j, 1]
-        distance = math.sqrt(dx * dx + dy * dy)
+        distance, plain_distance = fast_length(dx, dy)
         size = abs(xs[j, 0]) + abs(xs[j, 1]) + abs(es[j, 0]) + abs(es[j, 1])
         residual = abs(distance - expected) / size
         target[j] = residual
-        plain &= _moderate(dx, dy) & (residual == residual)
+        plain &= plain_distance & (residual == residual)
     return plain
 
 

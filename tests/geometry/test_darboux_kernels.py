@@ -15,6 +15,7 @@ from app.geometry.checks import Largest
 from app.geometry.compiled import length
 from app.geometry.d4b import discretization as d4b
 from app.geometry.precision import Float64
+from tests.geometry.bits import D4B_POLYGONS, same_bits
 
 BLOCK = darboux.DARBOUX_BLOCK
 
@@ -48,11 +49,6 @@ def old_largest(values: Any) -> float:
     return float(np.max(np.abs(values))) if len(values) else 0.0
 
 
-def same(a: Any, b: Any) -> bool:
-    a, b = np.asarray(a, dtype=np.float64), np.asarray(b, dtype=np.float64)
-    return a.shape == b.shape and a.tobytes() == b.tobytes()
-
-
 def assert_equal_old(x: Any, e: Any, expected: float) -> None:
     ar = Float64()
     with np.errstate(all="ignore"):
@@ -62,23 +58,18 @@ def assert_equal_old(x: Any, e: Any, expected: float) -> None:
         largest_edges = darboux.edge_length_largest(x, e)
         largest_distances = darboux.distance_largest(x, e, expected)
         assert isinstance(largest_edges, Largest) and isinstance(largest_distances, Largest)
-        assert same(found_edges, edges) and same(found_distances, distances)
-        assert same(largest_edges.value, old_largest(edges))
-        assert same(largest_distances.value, old_largest(distances))
+        assert same_bits(found_edges, edges) and same_bits(found_distances, distances)
+        assert same_bits(largest_edges.value, old_largest(edges))
+        assert same_bits(largest_distances.value, old_largest(distances))
         assert len(largest_edges) == len(edges) and len(largest_distances) == len(distances)
-        assert same(largest_edges.residuals(), edges)
-        assert same(largest_distances.residuals(), distances)
+        assert same_bits(largest_edges.residuals(), edges)
+        assert same_bits(largest_distances.residuals(), distances)
 
 
 def test_real_polygons() -> None:
     """The (D4b) axis and Darboux transform: d = 0.5h, 1e-4h, 0.99h, h = 100, tilted starts."""
     ar = Float64()
-    for h, ratio, beta0, lo, hi in (
-        (1.0, 0.5, None, -3000, 3000),
-        (100.0, 1e-4, None, -20000, 20000),
-        (100.0, 0.99, 0.4, -2000, 2500),
-        (1.0, 0.3, 2.5, -9000, 100),
-    ):
+    for h, ratio, beta0, lo, hi in D4B_POLYGONS:
         data = d4b.polygons(ar, h, h * ratio, beta0, lo, hi)
         n = data.vertices
         assert_equal_old(data.axis[:n], data.darboux[:n], 2 * h)
@@ -124,10 +115,10 @@ def test_layouts() -> None:
     edges, distances = old_edge_lengths(x, e), old_distances(x, e, 0.5)
     ar = Float64()
     for xx, ee in ((np.asfortranarray(x), e), (x, wide[:, 1:])):
-        assert same(darboux.edge_length_residuals(ar, xx, ee), edges)
-        assert same(darboux.distance_residuals(ar, xx, ee, 0.5), distances)
-        assert same(darboux.edge_length_largest(xx, ee).value, old_largest(edges))
-        assert same(darboux.distance_largest(xx, ee, 0.5).value, old_largest(distances))
+        assert same_bits(darboux.edge_length_residuals(ar, xx, ee), edges)
+        assert same_bits(darboux.distance_residuals(ar, xx, ee, 0.5), distances)
+        assert same_bits(darboux.edge_length_largest(xx, ee).value, old_largest(edges))
+        assert same_bits(darboux.distance_largest(xx, ee, 0.5).value, old_largest(distances))
 
 
 def test_nan_largest() -> None:

@@ -20,17 +20,7 @@ from app.geometry.d4b.fused_checks import (
     closed_kinematic_comparisons,
 )
 from app.geometry.precision import BLOCK_SIZE, Float64
-
-
-def _same(a: object, b: object) -> bool:
-    """Equal bits (NaN equal to NaN, +0 apart from −0); None equal to None."""
-    if a is None or b is None:
-        return a is b
-    return np.array_equal(
-        np.asarray(a, dtype=np.float64).view(np.int64),
-        np.asarray(b, dtype=np.float64).view(np.int64),
-    )
-
+from tests.geometry.bits import same_bits
 
 # ---- the reference: the session 20 loops, as they were ------------------------------------------
 
@@ -213,14 +203,14 @@ def _check_images(data: Any, n: int, arrays: tuple[Any, ...], wanted: tuple[bool
         data.ar, data.h, data.d, data.shift, data.i_min, n, wanted, normals, contact, gauss,
         s19, s20,
     )  # fmt: skip
-    assert _same(found, expected), (found, expected)
+    assert same_bits(found, expected), (found, expected)
 
 
 def _check_kinematic(data: Any, n: int) -> None:
     for theorem_5, theorem_6 in [(True, True), (True, False), (False, True), (False, False)]:
         expected = _old_kinematic(data, n, theorem_5, theorem_6)
         found = closed_kinematic_comparisons(data, n, theorem_5, theorem_6)
-        assert _same(found, expected), (theorem_5, theorem_6, found, expected)
+        assert same_bits(found, expected), (theorem_5, theorem_6, found, expected)
 
 
 _SIZES = [1, 2, 3, BLOCK_SIZE - 1, BLOCK_SIZE, BLOCK_SIZE + 1, 2 * BLOCK_SIZE + 5, 10**5]

@@ -13,6 +13,7 @@ import pytest
 from app.geometry.compiled import running_largest
 from app.geometry.d4b import discretization as d4b, residual_kernels
 from app.geometry.precision import Float64
+from tests.geometry.bits import D4B_POLYGONS, same_bits
 
 
 @numba.njit(cache=False, error_model="numpy")
@@ -77,32 +78,21 @@ def old_rotation_angles(
     return corrected, printed, largest, largest_printed
 
 
-def same(a: Any, b: Any) -> bool:
-    """Equal bit for bit (NaN's pattern included)."""
-    a, b = np.asarray(a, dtype=np.float64), np.asarray(b, dtype=np.float64)
-    return a.shape == b.shape and a.tobytes() == b.tobytes()
-
-
 def assert_blocks_equal_old(d: float, p: Any, axis: Any, n: int, blocks: tuple[int, ...]) -> None:
     for block in blocks:
         expected = old_rotation_angles(d, p, axis, n, block)
         found = residual_kernels._rotation_angles(d, p, axis, n, True, block)
         for a, b in zip(found, expected, strict=True):
-            assert same(a, b), (block, a, b)
+            assert same_bits(a, b), (block, a, b)
         alone = residual_kernels._rotation_angles(d, p, axis, n, False, block)
-        assert same(alone[2], expected[2]) and same(alone[3], expected[3])
+        assert same_bits(alone[2], expected[2]) and same_bits(alone[3], expected[3])
         assert alone[0].shape == alone[1].shape == (0,)
 
 
 def test_real_polygons_equal_old_blocks() -> None:
     """Constructed and closed-form polygons, d = 0.5h, 1e-4h, 0.99h, h = 100, tilted starts."""
     ar = Float64()
-    for h, ratio, beta0, lo, hi in (
-        (1.0, 0.5, None, -3000, 3000),
-        (100.0, 1e-4, None, -20000, 20000),
-        (100.0, 0.99, 0.4, -2000, 2500),
-        (1.0, 0.3, 2.5, -9000, 100),
-    ):
+    for h, ratio, beta0, lo, hi in D4B_POLYGONS:
         for method in ("construction", "closed-form"):
             data = d4b.polygons(ar, h, h * ratio, beta0, lo, hi, method)
             n = data.vertices - 1
@@ -111,9 +101,9 @@ def test_real_polygons_equal_old_blocks() -> None:
             assert_blocks_equal_old(h * ratio, p, axis, n, (residual_kernels.ROTATION_BLOCK, 999))
             corrected, printed = residual_kernels.rotation_angles(h * ratio, p, axis, n)
             old = old_rotation_angles(h * ratio, p, axis, n, residual_kernels.ROTATION_BLOCK)
-            assert same(corrected, old[0]) and same(printed, old[1])
+            assert same_bits(corrected, old[0]) and same_bits(printed, old[1])
             largest, worst = residual_kernels.rotation_angle_largest(h * ratio, p, axis, n)
-            assert same(largest.value, old[2])
+            assert same_bits(largest.value, old[2])
             assert worst == (old[3] if math.isfinite(old[3]) else None)
 
 
@@ -175,7 +165,7 @@ def test_layouts_are_copied_not_misread() -> None:
     wide[:, 1:3] = axis
     for pp, aa in ((np.asfortranarray(p), axis), (p, wide[:, 1:3]), (p[::-1][::-1], axis)):
         corrected, printed = residual_kernels.rotation_angles(0.5, pp, aa, n)
-        assert same(corrected, expected[0]) and same(printed, expected[1])
+        assert same_bits(corrected, expected[0]) and same_bits(printed, expected[1])
 
 
 def test_nan_largest_and_the_erratum() -> None:
@@ -188,4 +178,4 @@ def test_nan_largest_and_the_erratum() -> None:
     largest, worst = residual_kernels.rotation_angle_largest(0.5, p, axis, n)
     assert math.isnan(largest.value) and worst is None and len(largest) == n - 1
     expected = old_rotation_angles(0.5, p, axis, n, residual_kernels.ROTATION_BLOCK)
-    assert same(largest.residuals(), expected[0])
+    assert same_bits(largest.residuals(), expected[0])
