@@ -156,15 +156,6 @@ def _two_step_printed(d2: float, d4: float, y: Any, tiny: float) -> Any:
     return out
 
 
-@kernel("float64(float64, float64, float64[:], float64)")
-def _largest_two_step_printed(d2: float, d4: float, y: Any, tiny: float) -> float:
-    """The largest ``_two_step_printed_at`` without the array (NaN if one is NaN, as np.max)."""
-    largest = 0.0
-    for k in range(max(y.shape[0] - 3, 0)):
-        largest = running_largest(_two_step_printed_at(d2, d4, y, k, tiny), largest)
-    return largest
-
-
 @numba.njit(cache=True, inline="always", error_model="numpy")
 def _right_angle_at(tractrix: Any, axis: Any, p: Any, k: int) -> float:
     """``_right_angles``' residual at row k: the larger of the two angles' (NaN wins)."""
@@ -259,7 +250,10 @@ def right_angle_largest(tractrix: Any, axis: Any, p: Any, n: int) -> Largest:
 def _hypothesis_rows(
     p: Any, start: int, stop: int, d2: float, largest: float, smallest: float
 ) -> tuple[float, float]:
-    """``_hypothesis`` on k = start .. stop − 1, from the running largest and smallest."""
+    """Theorem 4's hypothesis on k = start .. stop − 1 as ``checks._hypothesis`` computes it
+    entry by entry, from the running values given: the largest violation max(d² − p_{k−1}^y
+    p_k^y, 0)/d² (NaN wins, as ``np.maximum`` and the largest magnitude give it) and the smallest
+    p_{k−1}^y p_k^y / d² (NaN wins, as ``np.min``)."""
     for k in range(start, stop):
         product = p[k - 1, 1] * p[k, 1]
         excess = d2 - product
@@ -269,15 +263,6 @@ def _hypothesis_rows(
         if smallest == smallest and (ratio != ratio or ratio < smallest):
             smallest = ratio
     return largest, smallest
-
-
-@kernel("UniTuple(float64, 2)(float64[:, :], int64, float64)")
-def _hypothesis(p: Any, n: int, d2: float) -> tuple[float, float]:
-    """The hypothesis of Theorem 4 on p_0 .. p_{n−1}, as ``checks._hypothesis`` computes it
-    entry by entry: the largest violation max(d² − p_{k−1}^y p_k^y, 0)/d² (NaN if one is NaN,
-    as ``np.maximum`` and the largest magnitude give it) and the smallest p_{k−1}^y p_k^y / d²
-    (NaN if one is NaN, as ``np.min``), k = 1 .. n − 1."""
-    return _hypothesis_rows(p, 1, n, d2, 0.0, math.inf)
 
 
 def hypothesis_largest(p: Any, n: int, d: float) -> tuple[Largest, float]:
@@ -799,7 +784,9 @@ def largest_printed_gauss_difference(
 def _along_both_rows(
     vectors: Any, points: Any, start: int, stop: int, largest: float, printed: float
 ) -> tuple[float, float]:
-    """``_largest_along_both`` on rows start .. stop − 1, from the running largest given."""
+    """``_along`` of ``vectors`` and ``_largest_along_printed_slope`` (erratum E61) on the
+    edges start .. stop − 1 in one pass, each edge and its size made once for both, every
+    quotient as the two passes make it: the running largest of each (NaN wins)."""
     for k in range(start, stop):
         ex = points[k + 1, 0] - points[k, 0]
         ey = points[k + 1, 1] - points[k, 1]
@@ -813,14 +800,6 @@ def _along_both_rows(
         residual = abs(wx * ey - wy * ex) / size
         printed = running_largest(1.0 if wx * ex + wy * ey < 0 else residual, printed)
     return largest, printed
-
-
-@kernel("UniTuple(float64, 2)(float64[:, :], float64[:, :])")
-def _largest_along_both(vectors: Any, points: Any) -> tuple[float, float]:
-    """``_along`` of ``vectors`` and ``_largest_along_printed_slope`` on their first
-    len(vectors) edges, in one pass: the largest of each (NaN if one is NaN), each edge and
-    its size made once for both, every quotient as the two passes make it."""
-    return _along_both_rows(vectors, points, 0, vectors.shape[0], 0.0, 0.0)
 
 
 def along_largest(vectors: Any, points: Any) -> tuple[Largest, float | None]:
@@ -842,25 +821,6 @@ def largest_along_printed_slope(count: int, points: Any) -> float | None:
         return None
     worst = float(_largest_along_printed_slope(count, _points(points)))
     return worst if math.isfinite(worst) else None
-
-
-@kernel("float64[:](float64[:, :])")
-def _printed_ratios(p: Any) -> Any:
-    """The proof's ratio Δ²p_i^y / (l'_i + l'_{i+1}), l'_i = |p_i − p_{i−1}| (erratum E2), as
-    ``checks._ratio_erratum`` computes it: entry k from p_k .. p_{k+3}, the lengths by
-    ``compiled.length`` (within 2 ulp of libm's hypot, which numpy's evaluation takes: a printed
-    residual, far from rounding level, moves in its last bits)."""
-    count = max(p.shape[0] - 3, 0)
-    out = np.empty(count)
-    if count == 0:
-        return out
-    after = length(p[1, 0] - p[0, 0], p[1, 1] - p[0, 1])
-    for k in range(count):
-        before = after
-        after = length(p[k + 2, 0] - p[k + 1, 0], p[k + 2, 1] - p[k + 1, 1])
-        second = p[k + 3, 1] - 2 * p[k + 2, 1] + p[k + 1, 1]
-        out[k] = second / (before + after)
-    return out
 
 
 @kernel("float64(float64[:], float64, float64)")
@@ -934,12 +894,12 @@ def _contiguous(points: Any) -> Any:
     return np.ascontiguousarray(points, dtype=np.float64)
 
 
-# (18) by slopes and erratum E61 (``_largest_along_both``)
+# (18) by slopes and erratum E61 (``_along_both_rows``)
 
 
 @numba.njit(cache=True, error_model="numpy")
 def _along_both_block(v: Any, q: Any, count: int, along: Any, printed: Any) -> None:
-    """One block of ``_largest_along_both``'s rows (flat vectors v, flat points q with one row
+    """One block of ``_along_both_rows``' residuals (flat vectors v, flat points q with one row
     more), without branches: the same operations."""
     for j in range(count):
         x0, y0, x1, y1 = q[2 * j], q[2 * j + 1], q[2 * j + 2], q[2 * j + 3]
@@ -958,7 +918,7 @@ def _along_both_block(v: Any, q: Any, count: int, along: Any, printed: Any) -> N
 
 @kernel("UniTuple(float64, 2)(float64[:, ::1], float64[:, ::1])")
 def _largest_along_both_blocked(vectors: Any, points: Any) -> tuple[float, float]:
-    """``_largest_along_both`` a block at a time: the same two largest values."""
+    """``_along_both_rows`` over every edge, a block at a time: the same two largest values."""
     count = vectors.shape[0]
     v, q = vectors.reshape(-1), points.reshape(-1)
     along, printed_rows = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
@@ -1272,7 +1232,7 @@ def _two_step_printed_block_pairs(
 def _two_step_printed_largest(
     d2: float, d4: float, y: Any, q: Any, paired: bool, tiny: float
 ) -> float:
-    """``_largest_two_step_printed`` a block at a time: the same number (the heights read as
+    """The largest ``_two_step_printed_at`` (NaN wins) a block at a time (the heights read as
     ``_recursions_blocked`` reads them)."""
     count = max(y.shape[0] - 3, 0)
     heights = np.empty(EDGE_BLOCK + 3)
@@ -1297,7 +1257,7 @@ def _two_step_printed_largest(
 
 @kernel("float64(float64, float64, float64[:], float64)")
 def _largest_two_step_printed_blocked(d2: float, d4: float, y: Any, tiny: float) -> float:
-    """``_largest_two_step_printed`` a block at a time (any heights): the same number."""
+    """The largest ``_two_step_printed_at`` (NaN wins), a block at a time (any heights)."""
     return _two_step_printed_largest(d2, d4, y, np.empty(0), False, tiny)
 
 
@@ -1381,7 +1341,7 @@ def _largest_right_angle(tractrix: Any, axis: Any, p: Any, n: int) -> float:
     return largest
 
 
-# the proof's ratio (erratum E2, ``_printed_ratios``)
+# the proof's ratio (erratum E2)
 
 
 @numba.njit(cache=True, error_model="numpy")
@@ -1403,8 +1363,11 @@ def _ratios_block(q: Any, lengths: Any, count: int, out: Any) -> None:
 
 @kernel("float64[:](float64[:, ::1])")
 def _printed_ratios_blocked(p: Any) -> Any:
-    """``_printed_ratios`` a block at a time: the same array (each edge's length made once, by
-    the square-root branch or, off it, ``compiled.length``)."""
+    """The proof's ratio Δ²p_i^y / (l'_i + l'_{i+1}), l'_i = |p_i − p_{i−1}| (erratum E2), as
+    ``checks._ratio_erratum`` computes it: entry k from p_k .. p_{k+3}, a block at a time, each
+    edge's length made once, by the square-root branch or, off it, ``compiled.length`` (within
+    2 ulp of libm's hypot, which numpy's evaluation takes: a printed residual, far from
+    rounding level, moves in its last bits)."""
     count = max(p.shape[0] - 3, 0)
     q = p.reshape(-1)
     out = np.empty(count)
@@ -1423,7 +1386,7 @@ def _printed_ratios_blocked(p: Any) -> Any:
     return out
 
 
-# Theorem 4's hypothesis (``_hypothesis``)
+# Theorem 4's hypothesis (``_hypothesis_rows``)
 
 
 #: The bits below the sign: xor'ed into a negative float's pattern, they make the patterns of
@@ -1435,7 +1398,7 @@ _ORDER_BITS = 0x7FFF_FFFF_FFFF_FFFF
 def _hypothesis_block(
     q: Any, count: int, d2: float, violations: Any, ratios: Any
 ) -> tuple[int, int, bool]:
-    """One block of ``_hypothesis`` from flat points (count + 1 rows, the first p_{k−1}): the
+    """One block of ``_hypothesis_rows`` from flat points (count + 1 rows, the first p_{k−1}): the
     largest bit pattern of the violations (``compiled.largest_bits``), the smallest ratio as an
     ordered integer (a float's pattern, its lower bits flipped if negative: ordered as the
     numbers, −0 below +0) and whether the block is plain (no NaN ratio, no ratio ±0, which
@@ -1460,7 +1423,7 @@ def _hypothesis_block(
 
 @kernel("UniTuple(float64, 2)(float64[:, ::1], int64, float64)")
 def _hypothesis_blocked(p: Any, n: int, d2: float) -> tuple[float, float]:
-    """``_hypothesis`` a block at a time: the same two numbers."""
+    """``_hypothesis_rows`` on k = 1 .. n − 1, a block at a time: the same two numbers."""
     q = p.reshape(-1)
     violations, ratios = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
     cell = np.empty(1, dtype=np.int64)

@@ -13,6 +13,7 @@ import numba
 import numpy as np
 import pytest
 
+from app.geometry.compiled import length, running_largest
 from app.geometry.d4b import discretization as d4b, residual_kernels as rk
 from app.geometry.precision import Float64
 
@@ -49,6 +50,42 @@ def same_arrays(got: np.ndarray, expected: np.ndarray) -> bool:
         and np.array_equal(np.isnan(got), nan)
         and np.array_equal(got[~nan].view(np.int64), expected[~nan].view(np.int64))
     )
+
+
+# ---- the references: the scalar passes the blocked ones replaced (session 20), row by row -----
+
+
+@numba.njit(cache=True, error_model="numpy")
+def ref_largest_along_both(vectors: np.ndarray, points: np.ndarray) -> tuple[float, float]:
+    return rk._along_both_rows(vectors, points, 0, vectors.shape[0], 0.0, 0.0)
+
+
+@numba.njit(cache=True, error_model="numpy")
+def ref_hypothesis(p: np.ndarray, n: int, d2: float) -> tuple[float, float]:
+    return rk._hypothesis_rows(p, 1, n, d2, 0.0, math.inf)
+
+
+@numba.njit(cache=True, error_model="numpy")
+def ref_largest_two_step_printed(d2: float, d4: float, y: np.ndarray, tiny: float) -> float:
+    largest = 0.0
+    for k in range(max(y.shape[0] - 3, 0)):
+        largest = running_largest(rk._two_step_printed_at(d2, d4, y, k, tiny), largest)
+    return largest
+
+
+@numba.njit(cache=True, error_model="numpy")
+def ref_printed_ratios(p: np.ndarray) -> np.ndarray:
+    count = max(p.shape[0] - 3, 0)
+    out = np.empty(count)
+    if count == 0:
+        return out
+    after = length(p[1, 0] - p[0, 0], p[1, 1] - p[0, 1])
+    for k in range(count):
+        before = after
+        after = length(p[k + 2, 0] - p[k + 1, 0], p[k + 2, 1] - p[k + 1, 1])
+        second = p[k + 3, 1] - 2 * p[k + 2, 1] + p[k + 1, 1]
+        out[k] = second / (before + after)
+    return out
 
 
 def noisy(rng: np.random.Generator, rows: int, mode: str, cols: int = 2) -> np.ndarray:
@@ -92,7 +129,7 @@ def test_blocked_edge_passes_equal_the_scalar_ones(count: int, mode: str, seed: 
     scale = np.abs(noisy(rng, count, mode, cols=0))
     got, expected = (
         rk._largest_along_both_blocked(vectors, points),
-        rk._largest_along_both(vectors, points),
+        ref_largest_along_both(vectors, points),
     )
     assert same(got[0], expected[0]) and same(got[1], expected[1])
     got_one = rk._largest_pole_inversion(other, points, scale, count, rk.TINY)
@@ -100,14 +137,14 @@ def test_blocked_edge_passes_equal_the_scalar_ones(count: int, mode: str, seed: 
     got_one = rk._largest_contact_rotation(points, vectors, scale, count)
     assert same(got_one, rk._contact_rotation(points, vectors, scale, count, False)[1])
     assert same_arrays(rk._edge_resolution_blocked(points), rk._edge_resolution(points))
-    assert same_arrays(rk._printed_ratios_blocked(points), rk._printed_ratios(points))
+    assert same_arrays(rk._printed_ratios_blocked(points), ref_printed_ratios(points))
     axis = noisy(rng, count, mode if mode != "smooth" else "plain")
     got_one = rk._largest_right_angle(vectors, axis, points, count)
     assert same(got_one, rk._right_angles(vectors, axis, points, count, False)[1])
     for d2 in (1e-4, 0.0, 2.5):
         found, reference = (
             rk._hypothesis_blocked(points, count + 1, d2),
-            rk._hypothesis(points, count + 1, d2),
+            ref_hypothesis(points, count + 1, d2),
         )
         assert same(found[0], reference[0]) and same(found[1], reference[1])
 
@@ -122,19 +159,19 @@ def test_blocked_height_passes_equal_the_scalar_ones(count: int, mode: str, seed
             expected = rk._recursions(d, y, rk.TINY, False)
             assert same(got[0], expected[2]) and same(got[1], expected[3])
             got_one = rk._largest_two_step_printed_blocked(d * d, d**4, y, rk.TINY)
-            assert same(got_one, rk._largest_two_step_printed(d * d, d**4, y, rk.TINY))
+            assert same(got_one, ref_largest_two_step_printed(d * d, d**4, y, rk.TINY))
             # the heights read in place from their rows (the checks' p[:, 1])
             got = rk._largest_recursions_pairs(d, points, rk.TINY)
             assert same(got[0], expected[2]) and same(got[1], expected[3])
             got_one = rk._largest_two_step_printed_pairs(d * d, d**4, points, rk.TINY)
-            assert same(got_one, rk._largest_two_step_printed(d * d, d**4, y, rk.TINY))
+            assert same(got_one, ref_largest_two_step_printed(d * d, d**4, y, rk.TINY))
     for d in (1e-3, 0.7):  # the public functions, on the column and on a copy of it
         for y in (points[:, 1], np.ascontiguousarray(points[:, 1]), points[1:, 1]):
             one, two = rk.recursion_largest(d, y)
             expected = rk._recursions(d, np.ascontiguousarray(y), rk.TINY, False)
             assert same(one.value, expected[2]) and same(two.value, expected[3])
             if len(y) >= 4:
-                worst = rk._largest_two_step_printed(d * d, d**4, y, rk.TINY)
+                worst = ref_largest_two_step_printed(d * d, d**4, y, rk.TINY)
                 printed = rk.largest_two_step_printed_residual(d, y)
                 assert printed == (worst if math.isfinite(worst) else None)
 
@@ -162,11 +199,11 @@ def test_hypothesis_smallest_keeps_the_first_of_two_zeros() -> None:
         p[BLOCK + 5, 1], p[BLOCK + 7, 1] = first, second
         p[BLOCK + 6, 1] = 1.0
         p[2 * BLOCK + 1, 1] = -1.0
-        got, expected = rk._hypothesis_blocked(p, len(p), 1.0), rk._hypothesis(p, len(p), 1.0)
+        got, expected = rk._hypothesis_blocked(p, len(p), 1.0), ref_hypothesis(p, len(p), 1.0)
         assert same(got[0], expected[0]) and same(got[1], expected[1])
         q = p.copy()
         q[2 * BLOCK + 1, 1] = 1.0  # no negative ratio: the smallest is a zero, the first one
-        got, expected = rk._hypothesis_blocked(q, len(q), 1.0), rk._hypothesis(q, len(q), 1.0)
+        got, expected = rk._hypothesis_blocked(q, len(q), 1.0), ref_hypothesis(q, len(q), 1.0)
         assert same(got[1], expected[1]) and math.copysign(1, got[1]) == math.copysign(
             1, expected[1]
         )
@@ -196,8 +233,8 @@ def test_blocked_passes_on_the_real_polygons(n: int) -> None:
         expected = rk._recursions(d, y, rk.TINY, False)
         assert same(got[0], expected[2]) and same(got[1], expected[3])
         got_one = rk._largest_two_step_printed_blocked(d * d, d**4, y, rk.TINY)
-        assert same(got_one, rk._largest_two_step_printed(d * d, d**4, y, rk.TINY))
-        found, reference = rk._hypothesis_blocked(p, m + 1, d * d), rk._hypothesis(p, m + 1, d * d)
+        assert same(got_one, ref_largest_two_step_printed(d * d, d**4, y, rk.TINY))
+        found, reference = rk._hypothesis_blocked(p, m + 1, d * d), ref_hypothesis(p, m + 1, d * d)
         assert same(found[0], reference[0]) and same(found[1], reference[1])
     count = min(m, len(tractrix), len(axis))
     got_one = rk._largest_right_angle(tractrix, axis, p, count)
@@ -206,11 +243,11 @@ def test_blocked_passes_on_the_real_polygons(n: int) -> None:
     unit = edges / np.hypot(edges[:, :1], edges[:, 1:])
     normals = np.ascontiguousarray(np.stack([unit[:, 1], -unit[:, 0]], axis=1))
     got_pair = rk._largest_along_both_blocked(unit, p)
-    expected_pair = rk._largest_along_both(unit, p)
+    expected_pair = ref_largest_along_both(unit, p)
     assert same(got_pair[0], expected_pair[0]) and same(got_pair[1], expected_pair[1])
     resolution = rk._edge_resolution_blocked(p)
     assert same_arrays(resolution, rk._edge_resolution(p))
-    assert same_arrays(rk._printed_ratios_blocked(p), rk._printed_ratios(p))
+    assert same_arrays(rk._printed_ratios_blocked(p), ref_printed_ratios(p))
     contact = np.concatenate([normals[:1], normals])
     got_one = rk._largest_contact_rotation(contact, normals, resolution, m)
     assert same(got_one, rk._contact_rotation(contact, normals, resolution, m, False)[1])
@@ -226,7 +263,7 @@ def test_the_public_largest_functions_take_the_blocked_passes() -> None:
     expected = rk._recursions(0.01, y, rk.TINY, False)
     assert same(one.value, expected[2]) and same(two.value, expected[3])
     largest, smallest = rk.hypothesis_largest(p, len(p), 0.01)
-    reference = rk._hypothesis(p, len(p), 0.01 * 0.01)
+    reference = ref_hypothesis(p, len(p), 0.01 * 0.01)
     assert same(largest.value, reference[0]) and same(smallest, reference[1])
     assert same_arrays(rk.edge_resolution(p), rk._edge_resolution(p))
 
