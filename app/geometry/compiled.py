@@ -174,6 +174,14 @@ def largest_bits(values: Any, count: int) -> int:
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
+def bits_value(bits: int) -> float:
+    """The float64 whose bit pattern is ``bits`` (e.g. ``largest_bits``' result as a number)."""
+    found = np.empty(1, dtype=np.int64)
+    found[0] = bits
+    return found.view(np.float64)[0]
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
 def fast_length(x: float, y: float) -> tuple[float, bool]:
     """``length`` on its square-root branch without a branch: (√(x² + y²), whether ``length``
     takes that branch or gives the same number: the larger magnitude inside its moderate

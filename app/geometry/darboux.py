@@ -13,6 +13,7 @@ import numpy as np
 
 from app.geometry.checks import Largest, point_distance
 from app.geometry.compiled import (
+    bits_value,
     fast_length,
     kernel,
     largest_bits,
@@ -98,16 +99,6 @@ def _distance_at(x: Any, e: Any, expected: float, k: int) -> float:
     return abs(distance - expected) / size
 
 
-@numba.njit(cache=True, inline="always", error_model="numpy")
-def _largest_bits(values: Any, count: int) -> float:
-    """The largest |v| of the first ``count`` values, none NaN, as the largest bit pattern of
-    the magnitudes (for floats without NaN their order as integers is the order of the numbers);
-    a maximum of integers that the compiler vectorizes."""
-    found = np.empty(1, dtype=np.int64)
-    found[0] = largest_bits(values, count)
-    return found.view(np.float64)[0]
-
-
 @numba.njit(cache=True, error_model="numpy")
 def _edge_length_block(x: Any, e: Any, start: int, count: int, target: Any) -> bool:
     """``edge_length_residuals`` at edges start .. start + count − 1 into ``target``, each
@@ -153,7 +144,7 @@ def _edge_lengths(x: Any, e: Any, store: bool) -> tuple[Any, float]:
     In blocks of ``DARBOUX_BLOCK`` edges: the residuals in a loop without branches (vectorized
     by the compiler), each length √(x² + y²) with a flag where ``compiled.length`` would leave
     that path; a block with such an edge or a NaN is taken again edge by edge as before
-    (``_edge_length_at``), else its largest is the largest bit pattern (``_largest_bits``).
+    (``_edge_length_at``), else its largest is the largest bit pattern (``compiled.largest_bits``).
     The same residuals and largest, bit for bit."""
     rows = max(x.shape[0] - 1, 0)
     out = np.empty(rows if store else 0)
@@ -163,7 +154,7 @@ def _edge_lengths(x: Any, e: Any, store: bool) -> tuple[Any, float]:
         count = min(DARBOUX_BLOCK, rows - start)
         target = out[start : start + count] if store else scratch[:count]
         if _edge_length_block(x, e, start, count, target):
-            largest = running_largest(_largest_bits(target, count), largest)
+            largest = running_largest(bits_value(largest_bits(target, count)), largest)
         else:  # hypot's ranges, inf or NaN: edge by edge
             for j in range(count):
                 target[j] = _edge_length_at(x, e, start + j)
@@ -185,7 +176,7 @@ def _distances(x: Any, e: Any, expected: float, store: bool) -> tuple[Any, float
         count = min(DARBOUX_BLOCK, rows - start)
         target = out[start : start + count] if store else scratch[:count]
         if _distance_block(x, e, expected, start, count, target):
-            largest = running_largest(_largest_bits(target, count), largest)
+            largest = running_largest(bits_value(largest_bits(target, count)), largest)
         else:  # hypot's ranges, inf or NaN: point by point
             for j in range(count):
                 target[j] = _distance_at(x, e, expected, start + j)

@@ -29,6 +29,7 @@ from app.geometry.compiled import (
     SQUARES_LOW,
     _hypot_kernel,
     all_finite_vector,
+    bits_value,
     hypot,
     kernel,
     largest_bits,
@@ -892,14 +893,6 @@ def _all_finite(values: Any, start: int, stop: int) -> bool:
     return finite
 
 
-@numba.njit(cache=True, inline="always", error_model="numpy")
-def _bits_value(bits: int) -> float:
-    """The float64 of a bit pattern."""
-    found = np.empty(1, dtype=np.int64)
-    found[0] = bits
-    return found.view(np.float64)[0]
-
-
 @kernel("void(int64, int64, float64, float64, float64[::1])")
 def _kinematic_arguments(first: int, count: int, L: float, shift: float, out: Any) -> None:
     """(14)'s i·L + (τ − ½)L into ``out[:count]`` and (16)'s i·L + τL into ``out[count:2count]``
@@ -1033,9 +1026,9 @@ def _closed_kinematic_block(
     top_6 = largest_bits(values_6, rows) if theorem_6_wanted else 0
     if plain and top_5 <= INF_BITS and top_6 <= INF_BITS:
         if theorem_5_wanted:
-            theorem_5 = running_largest(_bits_value(top_5), theorem_5)
+            theorem_5 = running_largest(bits_value(top_5), theorem_5)
         if theorem_6_wanted:
-            theorem_6 = running_largest(_bits_value(top_6), theorem_6)
+            theorem_6 = running_largest(bits_value(top_6), theorem_6)
         return True, theorem_5, theorem_6
     theorem_5, theorem_6 = _kinematic_rows(
         first,
@@ -1322,7 +1315,7 @@ def _closed_image_block(
     if plain:
         for j in range(6):
             if wanted[j]:
-                largest[j] = running_largest(_bits_value(tops[j]), largest[j])
+                largest[j] = running_largest(bits_value(tops[j]), largest[j])
         return True
     _image_rows(
         count,

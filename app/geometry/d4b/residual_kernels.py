@@ -36,6 +36,7 @@ from app.geometry.checks import Largest
 from app.geometry.compiled import (
     INF_BITS,
     MAGNITUDE_BITS,
+    bits_value,
     fast_length,
     kernel,
     largest_bits,
@@ -876,14 +877,6 @@ def _all(flags: Any, count: int) -> bool:
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
-def _fold(top: int, largest: float, cell: Any) -> float:
-    """``running_largest`` of the magnitude whose bit pattern is ``top`` (no NaN), through the
-    one-entry integer array ``cell``."""
-    cell[0] = top
-    return running_largest(cell.view(np.float64)[0], largest)
-
-
-@numba.njit(cache=True, inline="always", error_model="numpy")
 def _rows(flat: Any, start: int, count: int) -> Any:
     """Rows start .. start + count − 1 of a C-contiguous (m, 2) array as its flat entries."""
     return flat[2 * start : 2 * (start + count)]
@@ -922,7 +915,6 @@ def _largest_along_both_blocked(vectors: Any, points: Any) -> tuple[float, float
     count = vectors.shape[0]
     v, q = vectors.reshape(-1), points.reshape(-1)
     along, printed_rows = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
-    cell = np.empty(1, dtype=np.int64)
     largest, printed = 0.0, 0.0
     for start in range(0, count, EDGE_BLOCK):
         m = min(EDGE_BLOCK, count - start)
@@ -931,8 +923,8 @@ def _largest_along_both_blocked(vectors: Any, points: Any) -> tuple[float, float
         if top > INF_BITS or top_printed > INF_BITS:  # a NaN: the block row by row
             largest, printed = _along_both_rows(vectors, points, start, start + m, largest, printed)
         else:
-            largest = _fold(top, largest, cell)
-            printed = _fold(top_printed, printed, cell)
+            largest = running_largest(bits_value(top), largest)
+            printed = running_largest(bits_value(top_printed), printed)
     return largest, printed
 
 
@@ -973,7 +965,6 @@ def _largest_pole_inversion(gauss: Any, contact: Any, scale: Any, count: int, ti
     g, c = gauss.reshape(-1), contact.reshape(-1)
     out = np.empty(EDGE_BLOCK)
     usual = np.empty(EDGE_BLOCK, dtype=np.bool_)
-    cell = np.empty(1, dtype=np.int64)
     largest = 0.0
     for start in range(0, count, EDGE_BLOCK):
         m = min(EDGE_BLOCK, count - start)
@@ -983,7 +974,7 @@ def _largest_pole_inversion(gauss: Any, contact: Any, scale: Any, count: int, ti
         if top > INF_BITS or not _all(usual, m):
             largest = _pole_inversion_rows(gauss, contact, scale, start, start + m, tiny, largest)
         else:
-            largest = _fold(top, largest, cell)
+            largest = running_largest(bits_value(top), largest)
     return largest
 
 
@@ -1013,7 +1004,6 @@ def _largest_contact_rotation(contact: Any, normals: Any, scale: Any, count: int
     c, nrm = contact.reshape(-1), normals.reshape(-1)
     out = np.empty(EDGE_BLOCK)
     usual = np.empty(EDGE_BLOCK, dtype=np.bool_)
-    cell = np.empty(1, dtype=np.int64)
     largest = 0.0
     for start in range(0, count, EDGE_BLOCK):
         m = min(EDGE_BLOCK, count - start)
@@ -1023,7 +1013,7 @@ def _largest_contact_rotation(contact: Any, normals: Any, scale: Any, count: int
         if top > INF_BITS or not _all(usual, m):
             largest = _contact_rotation_rows(contact, normals, scale, start, start + m, largest)
         else:
-            largest = _fold(top, largest, cell)
+            largest = running_largest(bits_value(top), largest)
     return largest
 
 
@@ -1156,7 +1146,6 @@ def _recursions_blocked(d: float, y: Any, q: Any, paired: bool, tiny: float) -> 
     count = max(n - 2, 0)
     heights = np.ones(EDGE_BLOCK + 3)
     one, two = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
-    cell = np.empty(1, dtype=np.int64)
     largest_one, largest_two = 0.0, 0.0
     for start in range(0, count, EDGE_BLOCK):
         m = min(EDGE_BLOCK, count - start)
@@ -1174,8 +1163,8 @@ def _recursions_blocked(d: float, y: Any, q: Any, paired: bool, tiny: float) -> 
                 d, y, start, start + m, tiny, largest_one, largest_two
             )
         else:
-            largest_one = _fold(top_one, largest_one, cell)
-            largest_two = _fold(top_two, largest_two, cell)
+            largest_one = running_largest(bits_value(top_one), largest_one)
+            largest_two = running_largest(bits_value(top_two), largest_two)
     return largest_one, largest_two
 
 
@@ -1237,7 +1226,6 @@ def _two_step_printed_largest(
     count = max(y.shape[0] - 3, 0)
     heights = np.empty(EDGE_BLOCK + 3)
     out = np.empty(EDGE_BLOCK)
-    cell = np.empty(1, dtype=np.int64)
     largest = 0.0
     for start in range(0, count, EDGE_BLOCK):
         m = min(EDGE_BLOCK, count - start)
@@ -1251,7 +1239,7 @@ def _two_step_printed_largest(
             for k in range(start, start + m):
                 largest = running_largest(_two_step_printed_at(d2, d4, y, k, tiny), largest)
         else:
-            largest = _fold(top, largest, cell)
+            largest = running_largest(bits_value(top), largest)
     return largest
 
 
@@ -1328,7 +1316,6 @@ def _largest_right_angle(tractrix: Any, axis: Any, p: Any, n: int) -> float:
     """``_right_angles``' largest (``store`` false) a block at a time: the same number."""
     t, a, q = tractrix.reshape(-1), axis.reshape(-1), p.reshape(-1)
     out = np.empty(EDGE_BLOCK)
-    cell = np.empty(1, dtype=np.int64)
     largest = 0.0
     for start in range(0, n, EDGE_BLOCK):
         m = min(EDGE_BLOCK, n - start)
@@ -1337,7 +1324,7 @@ def _largest_right_angle(tractrix: Any, axis: Any, p: Any, n: int) -> float:
         if top > INF_BITS:
             largest = _right_angle_rows(tractrix, axis, p, start, start + m, largest)
         else:
-            largest = _fold(top, largest, cell)
+            largest = running_largest(bits_value(top), largest)
     return largest
 
 
@@ -1426,7 +1413,6 @@ def _hypothesis_blocked(p: Any, n: int, d2: float) -> tuple[float, float]:
     """``_hypothesis_rows`` on k = 1 .. n − 1, a block at a time: the same two numbers."""
     q = p.reshape(-1)
     violations, ratios = np.empty(EDGE_BLOCK), np.empty(EDGE_BLOCK)
-    cell = np.empty(1, dtype=np.int64)
     largest, smallest = 0.0, math.inf
     for start in range(1, n, EDGE_BLOCK):
         m = min(EDGE_BLOCK, n - start)
@@ -1434,9 +1420,8 @@ def _hypothesis_blocked(p: Any, n: int, d2: float) -> tuple[float, float]:
         if top > INF_BITS or not plain:
             largest, smallest = _hypothesis_rows(p, start, start + m, d2, largest, smallest)
             continue
-        largest = _fold(top, largest, cell)
-        cell[0] = low ^ ((low >> 63) & _ORDER_BITS)
-        ratio = cell.view(np.float64)[0]
+        largest = running_largest(bits_value(top), largest)
+        ratio = bits_value(low ^ ((low >> 63) & _ORDER_BITS))
         if smallest == smallest and ratio < smallest:
             smallest = ratio
     return largest, smallest
