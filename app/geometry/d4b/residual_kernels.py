@@ -5,11 +5,12 @@ polygons with numpy (a dozen passes each, and many small calls on short polygons
 here compute the same residual arrays entry by entry, with the same operations in the same order
 (``closed_forms.recursion_13``, ``closed_forms.two_step``, ``checks.relative_difference``,
 ``nikolaides.right_angle_residuals``), so they agree with the numpy evaluation bit for bit
-(tests/geometry/d4b/test_residual_kernels.py); the rotation angle takes numpy's vectorized
-``arctan2`` on contiguous blocks of long polygons instead of libm's atan2, equal to it or an
-ulp apart. They hold the proof's formulas, as ``closed_forms`` does, and take the polygons as
-given (arrays in, residual arrays out): the construction is never consulted here. The mp path
-keeps the numpy/mpmath evaluation.
+(tests/geometry/d4b/test_residual_kernels.py); the rotation angle (since session 22) is one
+argument of a complex product instead of a difference of atan2's, and on a true polygon the
+quotient that atan rounds to, a few ulp of the angles from the old residuals
+(``_rotation_angles``). They hold the proof's formulas, as ``closed_forms`` does, and take the
+polygons as given (arrays in, residual arrays out): the construction is never consulted here.
+The mp path keeps the numpy/mpmath evaluation.
 
 The distances between two polygons (``point_distance``, ``relative_point_difference``) take
 √(x² + y²) where neither square can overflow or lose its bits to underflow, instead of libm's
