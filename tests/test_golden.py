@@ -88,6 +88,21 @@ TEXT_CHANGES: dict[tuple[str, str], str] = {
 #: (the 21 checks compared with main at 30, 50 and 500 digits). These strings compare as
 #: numbers (STRING_CHANGES) and residuals below 1e-9 compare equal (RESIDUAL_KEYS), so no entry
 #: below is needed.
+#: Issue 13 (session 22, angles): Theorem 4's rotation angle (D4b, float64) is one argument,
+#: that of z conj(w)² with z = a · b + i a × b and w = p^y + i d, instead of the difference of
+#: atan2(a × b, a · b) and 2 atan2(d, p^y), and where it is below 2^-27 the quotient im / re (atan
+#: rounds to it; blocks that could wrap or hold a NaN keep the three atan2); Darboux's edge
+#: residuals (D4b) are |l² − l'²| / (√(2(l² + l'²)) size), squares without a root an edge where
+#: |l² − l'²| ≤ 2^-26 (l² + l'²). Both move at rounding level: theorem-4-rotation-angle by at most
+#: 6.6e-17 absolute (1.56e-16 -> 2.22e-16 at h = 1, d = 0.3, β0 = 2.5, closed-form; 8.8e-5 of its
+#: tolerance 7.5e-13), darboux-d4b by at most 7.3e-18 (9.87e-17 -> 9.14e-17, 2.9e-5 of its
+#: tolerance 2.5e-13), their detail arrays by at most 2.3e-17, the rotation angle's printed
+#: residual (erratum) by at most 4.4e-9 relative (d = 1e-4: 7.99999948e-12 -> 7.99999952e-12).
+#: No vertex, companion, tolerance, verdict or note moved (966 checks compared with eaaf885 on
+#: 60 answers: D4b n = 21, 1001, 10^5, construction and closed-form, h = 1 with d = 0.5, 1e-3,
+#: 1e-4, h = 100 with d = 0.99h and β0 = 0.4, d = 0.3 with β0 = 2.5, h = 0.01 with d = 1e-4 h,
+#: with and without detail). Residuals below 1e-9 and printed residuals to 1e-6 compare equal
+#: (RESIDUAL_KEYS), so no entry below is needed.
 VALUE_CHANGES = re.compile(
     r"\.companions\.tractrix_gauss_image\."
     r"|^/surfaces/pseudosphere(-gauss-image)?\.face_values\.(H|K|planarity)\["

@@ -6,6 +6,7 @@ edges have equal length, |e_i − e_{i+1}| = |x_i − x_{i+1}|.
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numba
@@ -13,6 +14,7 @@ import numpy as np
 
 from app.geometry.checks import Largest, point_distance
 from app.geometry.compiled import (
+    INF_BITS,
     bits_value,
     fast_length,
     kernel,
@@ -136,16 +138,63 @@ def _distance_block(x: Any, e: Any, expected: float, start: int, count: int, tar
     return plain
 
 
+#: The squares' pass (session 22): where |D| ≤ ``NEAR`` T for D = l² − l'², T = l² + l'² of two
+#: lengths l, l', √(2T) is l + l' to a relative 2^-55 (its square is (l + l')² + (l − l')²), so
+#: |l − l'| = |D| / (l + l') is |D| / √(2T) to rounding; the sums of squares between
+#: ``SQUARES_SUM`` and the sizes between ``SIZES`` keep every square of the quotient normal.
+NEAR = 2.0**-26
+SQUARES_SUM = (2.0**-400, 2.0**400)
+SIZES = (2.0**-200, 2.0**200)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _squared_residual(difference: float, total: float, size: float) -> float:
+    """(|l − l'| / size)² as D² / (2T size²) (``NEAR``), or NaN where its conditions fail (a NaN
+    argument included)."""
+    plain = (abs(difference) <= NEAR * total) & (total > SQUARES_SUM[0]) & (total < SQUARES_SUM[1])
+    plain &= (size > SIZES[0]) & (size < SIZES[1])
+    squared = difference * difference / ((total + total) * (size * size))
+    return squared if plain else math.nan
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _edge_squares_block(x: Any, e: Any, start: int, count: int, target: Any) -> int:
+    """The squares of ``edge_length_residuals`` at edges start .. start + count − 1 into
+    ``target`` by ``_squared_residual`` (no square root, one division an edge), in a loop
+    without branches (vectorized by the compiler): their largest bit pattern (above
+    ``INF_BITS`` if one is off the conditions)."""
+    xs, es = x[start : start + count + 1], e[start : start + count + 1]  # indices from 0
+    for j in range(count):
+        dx, dy = xs[j + 1, 0] - xs[j, 0], xs[j + 1, 1] - xs[j, 1]
+        fx, fy = es[j + 1, 0] - es[j, 0], es[j + 1, 1] - es[j, 1]
+        squared_x, squared_e = dx * dx + dy * dy, fx * fx + fy * fy
+        size = abs(xs[j + 1, 0]) + abs(xs[j + 1, 1]) + abs(xs[j, 0]) + abs(xs[j, 1])
+        size = size + abs(es[j + 1, 0]) + abs(es[j + 1, 1]) + abs(es[j, 0]) + abs(es[j, 1])
+        target[j] = _squared_residual(squared_e - squared_x, squared_e + squared_x, size)
+    return largest_bits(target, count)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _roots(target: Any, count: int) -> None:
+    """√ of ``target[:count]`` in place (a stored block of squares)."""
+    for j in range(count):
+        target[j] = math.sqrt(target[j])
+
+
 @kernel("Tuple((float64[::1], float64))(float64[:, ::1], float64[:, ::1], boolean)")
 def _edge_lengths(x: Any, e: Any, store: bool) -> tuple[Any, float]:
     """``edge_length_residuals`` of C-contiguous ``(n, 2)`` points x, e: the ``(n − 1,)``
     residuals if ``store`` (else an empty array) and their largest (NaN if one is NaN).
 
-    In blocks of ``DARBOUX_BLOCK`` edges: the residuals in a loop without branches (vectorized
-    by the compiler), each length √(x² + y²) with a flag where ``compiled.length`` would leave
-    that path; a block with such an edge or a NaN is taken again edge by edge as before
-    (``_edge_length_at``), else its largest is the largest bit pattern (``compiled.largest_bits``).
-    The same residuals and largest, bit for bit."""
+    In blocks of ``DARBOUX_BLOCK`` edges, since session 22 first as squares without a square
+    root (``_edge_squares_block``): the largest residual is the root of the largest square (the
+    block's largest bit pattern, ``compiled.largest_bits``), the stored ones the roots of the
+    squares; they move at rounding level (a few units of (l + l') / size,
+    tests/geometry/test_darboux_rounding.py). A block with an edge off the squares' conditions
+    (``NEAR``: also a perturbed polygon's edges, a NaN or inf) is taken as before: the residuals
+    in a loop without branches, each length √(x² + y²) with a flag where ``compiled.length``
+    would leave that path, and a block with such an edge or a NaN edge by edge
+    (``_edge_length_at``)."""
     rows = max(x.shape[0] - 1, 0)
     out = np.empty(rows if store else 0)
     scratch = np.empty(0 if store else DARBOUX_BLOCK)
@@ -153,7 +202,12 @@ def _edge_lengths(x: Any, e: Any, store: bool) -> tuple[Any, float]:
     for start in range(0, rows, DARBOUX_BLOCK):
         count = min(DARBOUX_BLOCK, rows - start)
         target = out[start : start + count] if store else scratch[:count]
-        if _edge_length_block(x, e, start, count, target):
+        top = _edge_squares_block(x, e, start, count, target)
+        if top < INF_BITS:  # √ is monotonic and correctly rounded: √ of the largest square
+            largest = running_largest(math.sqrt(bits_value(top)), largest)
+            if store:
+                _roots(target, count)
+        elif _edge_length_block(x, e, start, count, target):
             largest = running_largest(bits_value(largest_bits(target, count)), largest)
         else:  # hypot's ranges, inf or NaN: edge by edge
             for j in range(count):
@@ -166,8 +220,9 @@ def _edge_lengths(x: Any, e: Any, store: bool) -> tuple[Any, float]:
 def _distances(x: Any, e: Any, expected: float, store: bool) -> tuple[Any, float]:
     """``distance_residuals`` of C-contiguous ``(n, 2)`` points x, e: the ``(n,)`` residuals if
     ``store`` (else an empty array) and their largest (NaN if one is NaN); in blocks without
-    branches as ``_edge_lengths``, a block off the fast path point by point
-    (``_distance_at``). The same residuals and largest, bit for bit."""
+    branches as ``_edge_lengths`` before session 22, a block off the fast path point by point
+    (``_distance_at``). The same residuals and largest, bit for bit (one square root a point:
+    its squares' pass measured no faster, the pass is bound by reading the points)."""
     rows = x.shape[0]
     out = np.empty(rows if store else 0)
     scratch = np.empty(0 if store else DARBOUX_BLOCK)

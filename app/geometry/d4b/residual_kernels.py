@@ -5,11 +5,12 @@ polygons with numpy (a dozen passes each, and many small calls on short polygons
 here compute the same residual arrays entry by entry, with the same operations in the same order
 (``closed_forms.recursion_13``, ``closed_forms.two_step``, ``checks.relative_difference``,
 ``nikolaides.right_angle_residuals``), so they agree with the numpy evaluation bit for bit
-(tests/geometry/d4b/test_residual_kernels.py); the rotation angle takes numpy's vectorized
-``arctan2`` on contiguous blocks of long polygons instead of libm's atan2, equal to it or an
-ulp apart. They hold the proof's formulas, as ``closed_forms`` does, and take the polygons as
-given (arrays in, residual arrays out): the construction is never consulted here. The mp path
-keeps the numpy/mpmath evaluation.
+(tests/geometry/d4b/test_residual_kernels.py); the rotation angle (since session 22) is one
+argument of a complex product instead of a difference of atan2's, and on a true polygon the
+quotient that atan rounds to, a few ulp of the angles from the old residuals
+(``_rotation_angles``). They hold the proof's formulas, as ``closed_forms`` does, and take the
+polygons as given (arrays in, residual arrays out): the construction is never consulted here.
+The mp path keeps the numpy/mpmath evaluation.
 
 The distances between two polygons (``point_distance``, ``relative_point_difference``) take
 √(x² + y²) where neither square can overflow or lose its bits to underflow, instead of libm's
@@ -538,49 +539,241 @@ def _rotation_angles_libm(
     return corrected, printed, largest, largest_printed
 
 
+#: Outcomes of a block of ``_rotation_blocks``: every angle from its quotient (done), some
+#: angle not small (``ROTATION_WRAPPED``: one atan2 each, if none can wrap), or a row off the
+#: conditions (``ROTATION_OLD``: the block as before, three atan2 a vertex).
+ROTATION_WRAPPED, ROTATION_OLD = 1, 2
+
+#: |im / re| up to this, atan(im / re) rounds to the quotient itself (atan t = t (1 − t²/3 + …),
+#: and t²/3 < 2^-55 is below half a unit in the last place); its bit pattern.
+ROTATION_SMALL = 2.0**-27
+ROTATION_SMALL_BITS = 0x3E40_0000_0000_0000
+
+#: re between these: the products that make re and im lose no relative 2^-100 to underflow
+#: (an error of 2^-1074 at most each), and none of them overflows.
+ROTATION_LOW, ROTATION_HIGH = 2.0**-900, 2.0**1000
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _rotation_products(
+    u: float, v: float, here: Any, around: Any, j: int
+) -> tuple[float, float, float, float, float, float]:
+    """(re, im) of z conj(w)² s² for the corrected and the printed angle at p = here[j]
+    (x_{k−1}, x_k, x_{k+1} = around[j], around[j + 1], around[j + 2]), u + iv = s w = s (p^y + i d)
+    for a power of two s, and the two dot products."""
+    px = here[j, 0]
+    ax, ay = around[j, 0] - px, around[j, 1] - here[j, 1]
+    bx, by = around[j + 1, 0] - px, around[j + 1, 1] - here[j, 1]
+    cx, cy = around[j + 2, 0] - px, around[j + 2, 1] - here[j, 1]
+    cross, dot = ax * by - ay * bx, ax * bx + ay * by
+    cross_printed, dot_printed = bx * cy - by * cx, bx * cx + by * cy
+    real, imaginary = (u - v) * (u + v), 2 * u * v  # conj(s w)² = real − i imaginary
+    re = dot * real + cross * imaginary
+    im = cross * real - dot * imaginary
+    re_printed = dot_printed * real + cross_printed * imaginary
+    im_printed = cross_printed * real - dot_printed * imaginary
+    return re, im, re_printed, im_printed, dot, dot_printed
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _rotation_terms(d: float, p: Any, axis: Any, start: int, stop: int, rows: Any) -> int:
+    """Theorem 4's rotation angle at p_k, k = start .. stop − 1, less 2 atan2(d, p_k^y), as
+    one argument each: with w = p_k^y + i d, that of z conj(w)², z = a · b + i a × b (corrected:
+    a = x_{k−1} − p_k, b = x_k − p_k; printed: b and c = x_{k+1} − p_k), the angle of a product
+    being the sum of the angles; w scaled by the power of two nearest the block's first height
+    (exact: no division a row). |im / re| to ``rows`` 0 (corrected) and 1 (printed), NaN where
+    p_k^y ≤ |d| or re is near under- or overflow. A loop without branches (vectorized by the
+    compiler), then the largest bit pattern of each row (``compiled.largest_bits``).
+
+    The outcome: 0 if every |im / re| ≤ ``ROTATION_SMALL`` (then rows 0 and 1 are the residuals:
+    atan(im / re) rounds to the quotient, and the argument is the old difference of atan2's:
+    with |2 atan2(d, p^y)| < π/2 the difference is within 3π/2 of 0, and so not 2π from a small
+    one), ``ROTATION_OLD`` if a row is NaN, else ``ROTATION_WRAPPED``."""
+    count = stop - start
+    here, around = p[start:stop], axis[start - 1 : stop + 1]  # indices from 0: no wrapping
+    size = abs(d)
+    s = math.ldexp(1.0, -math.frexp(here[0, 1])[1]) if count else 1.0
+    if not s < math.inf:  # a subnormal first height: its scale overflows
+        return ROTATION_OLD
+    v = d * s
+    corrected, printed = rows[0], rows[1]
+    for j in range(count):
+        u = here[j, 1] * s
+        re, im, re_printed, im_printed, _, _ = _rotation_products(u, v, here, around, j)
+        plain = (here[j, 1] > size) & (re > ROTATION_LOW) & (re < ROTATION_HIGH)
+        plain &= (re_printed > ROTATION_LOW) & (re_printed < ROTATION_HIGH)
+        t, t_printed = abs(im / re), abs(im_printed / re_printed)
+        corrected[j] = t if plain else math.nan
+        printed[j] = t_printed if plain else math.nan
+    top = max(largest_bits(corrected, count), largest_bits(printed, count))
+    if top > INF_BITS:
+        return ROTATION_OLD
+    return 0 if top <= ROTATION_SMALL_BITS else ROTATION_WRAPPED
+
+
+@kernel("boolean(float64, float64[:, ::1], float64[:, ::1], int64, int64, float64[:, ::1])")
+def _rotation_arguments_wrapped(
+    d: float, p: Any, axis: Any, start: int, stop: int, rows: Any
+) -> bool:
+    """A ``ROTATION_WRAPPED`` block's (re, im) into ``rows`` 0, 1 (corrected) and 2, 3
+    (printed), for an atan2 each, as ``_rotation_terms`` scales them: whether none can wrap
+    (a · b > 0 and b · c > 0 too: both angles within π/2 of 0, their difference within π) and
+    every im is finite."""
+    count = stop - start
+    here, around = p[start:stop], axis[start - 1 : stop + 1]
+    size = abs(d)
+    s = math.ldexp(1.0, -math.frexp(here[0, 1])[1]) if count else 1.0
+    v = d * s
+    plain = True
+    for j in range(count):
+        u = here[j, 1] * s
+        re, im, re_printed, im_printed, dot, dot_printed = _rotation_products(u, v, here, around, j)
+        rows[0, j], rows[1, j], rows[2, j], rows[3, j] = re, im, re_printed, im_printed
+        plain &= (here[j, 1] > size) & (dot > 0) & (dot_printed > 0)
+        plain &= (re > ROTATION_LOW) & (re < ROTATION_HIGH)
+        plain &= (re_printed > ROTATION_LOW) & (re_printed < ROTATION_HIGH)
+        plain &= (abs(im) < ROTATION_HIGH) & (abs(im_printed) < ROTATION_HIGH)
+    return plain
+
+
+@kernel(
+    "Tuple((int64, float64, float64, int64))(float64, float64[:, ::1], float64[:, ::1], int64, "
+    "int64, int64, float64[:, ::1], float64[::1], float64[::1], boolean, float64, float64)"
+)
+def _rotation_blocks(
+    d: float,
+    p: Any,
+    axis: Any,
+    start: int,
+    n: int,
+    block: int,
+    rows: Any,
+    corrected: Any,
+    printed: Any,
+    store: bool,
+    largest: float,
+    largest_printed: float,
+) -> tuple[int, float, float, int]:
+    """``_rotation_terms`` block after block from vertex ``start`` while every angle is small:
+    the residuals |im / re| (stored if ``store``) and the running largest of each, as the largest
+    bit pattern (no NaN there). Stops at the first block that is not: (its first vertex, the
+    largest so far, its outcome); (n, …, 0) when done."""
+    for first in range(start, n, block):
+        stop = min(first + block, n)
+        outcome = _rotation_terms(d, p, axis, first, stop, rows)
+        if outcome != 0:
+            return first, largest, largest_printed, outcome
+        m = stop - first
+        largest = running_largest(bits_value(largest_bits(rows[0], m)), largest)
+        largest_printed = running_largest(bits_value(largest_bits(rows[1], m)), largest_printed)
+        if store:
+            corrected[first - 1 : stop - 1] = rows[0, :m]
+            printed[first - 1 : stop - 1] = rows[1, :m]
+    return n, largest, largest_printed, 0
+
+
+@kernel("UniTuple(float64, 2)(float64[:, ::1], int64, boolean, float64, float64)")
+def _rotation_wrapped(
+    rows: Any, count: int, libm: bool, largest: float, largest_printed: float
+) -> tuple[float, float]:
+    """A ``ROTATION_WRAPPED`` block: |atan2(im, re)| into rows 4 and 5 (libm's here if ``libm``,
+    else already numpy's there) and the running largest of each (no NaN there)."""
+    if libm:
+        for j in range(count):
+            rows[4, j] = math.atan2(rows[1, j], rows[0, j])
+            rows[5, j] = math.atan2(rows[3, j], rows[2, j])
+    for j in range(count):
+        rows[4, j] = abs(rows[4, j])
+        rows[5, j] = abs(rows[5, j])
+    largest = running_largest(bits_value(largest_bits(rows[4], count)), largest)
+    return largest, running_largest(bits_value(largest_bits(rows[5], count)), largest_printed)
+
+
+def _rotation_old_block(
+    d: float, p: Any, axis: Any, start: int, stop: int, largest: float, largest_printed: float
+) -> tuple[Any, Any, float, float]:
+    """Vertices start .. stop − 1 as before session 22 (a ``ROTATION_OLD`` block): three atan2
+    a vertex, libm's in one pass for fewer than ``ROTATION_LIBM_BELOW``, else numpy's."""
+    m = stop - start
+    if m < ROTATION_LIBM_BELOW:
+        corrected, printed, top, top_printed = _rotation_angles_libm(
+            d, p[start - 1 : stop + 1], axis[start - 1 : stop + 1], m + 1, True
+        )
+        return corrected, printed, _fold(top, largest), _fold(top_printed, largest_printed)
+    rows, angles = np.empty((5, m)), np.empty((3, m))
+    _rotation_arguments(p, axis, start, stop, rows)
+    np.arctan2(np.full(m, d), rows[0], out=angles[0])
+    np.arctan2(rows[1], rows[2], out=angles[1])
+    np.arctan2(rows[3], rows[4], out=angles[2])
+    largest, largest_printed = _rotation_residuals(
+        angles[0], angles[1], angles[2], m, largest, largest_printed
+    )
+    return angles[1], angles[2], largest, largest_printed
+
+
+def _fold(value: float, largest: float) -> float:
+    """``compiled.running_largest`` in Python (a block's largest into the running one)."""
+    if largest != largest:
+        return largest
+    magnitude = abs(value)
+    return magnitude if not magnitude <= largest else largest
+
+
 def _rotation_angles(
     d: float, p: Any, axis: Any, n: int, store: bool, block: int | None = None
 ) -> tuple[Any, Any, float, float]:
     """Theorem 4's rotation angle at p_i, i = 1 .. n − 1: |angle − 2 atan2(d, p_i^y)| for the
     angle between x_{i−1} − p_i and x_i − p_i (corrected), and for x_i − p_i, x_{i+1} − p_i
-    (printed); each angle atan2(a × b, a · b) as ``checks._signed_angle``. Both arrays stored
-    if ``store`` (else empty), and the largest of each (NaN if one is NaN).
+    (printed), each angle as ``checks._signed_angle`` defines it. Both arrays stored if
+    ``store`` (else empty), and the largest of each (NaN if one is NaN).
 
-    In blocks: a compiled pass writes the atan2 arguments into contiguous rows, numpy's
-    ``arctan2`` (vectorized: ≈ 2.5 ns an entry against 30–55 for libm's atan2 in a compiled
-    loop) takes the three angles, a second pass the residuals and their largest. Both passes
-    have no branches and are vectorized (``_rotation_arguments``, ``_rotation_residuals``);
-    points that are not C-contiguous are copied first. numpy's vectorized atan2 may differ
-    from libm's in the last bit, so the residuals may differ by an ulp of the angles (below π)
-    from libm's; they are rounding-level either way. Fewer than ``ROTATION_LIBM_BELOW`` angles
-    take libm's in one pass (``_rotation_angles_libm``) unless a ``block`` size is given.
+    Since session 22 the difference is one argument, not a difference of atan2's: that of
+    z conj(w)², z = a · b + i a × b, w = p_i^y + i d (the angle of a product is the sum of the
+    angles), and where it is below 2^-27 (every vertex of a true polygon: the residuals are
+    rounding) the quotient im / re itself, which atan rounds to: a compiled pass without a
+    transcendental call (``_rotation_terms``, ``_rotation_blocks``), in blocks of ``block``
+    vertices (``ROTATION_BLOCK``). A block with a larger one takes one atan2 a vertex (numpy's,
+    libm's below ``ROTATION_LIBM_BELOW`` vertices); a block where the angles could wrap, or with a
+    NaN, an infinity or a product near underflow, is taken as before (three atan2 a vertex,
+    ``_rotation_old_block``). The residuals move at rounding level (a few units in the last place
+    of the angles, tests/geometry/d4b/test_rotation_rounding.py); points that are not
+    C-contiguous are copied first.
     """
     count = max(n - 1, 0)
-    if block is None:
-        if count < ROTATION_LIBM_BELOW:
-            return _rotation_angles_libm(d, p, axis, n, store)
-        block = ROTATION_BLOCK
-    p, axis = np.ascontiguousarray(p), np.ascontiguousarray(axis)
+    block = ROTATION_BLOCK if block is None else block
+    p, axis = np.ascontiguousarray(p, dtype=np.float64), np.ascontiguousarray(axis, np.float64)
     corrected = np.empty(count if store else 0)
     printed = np.empty(count if store else 0)
     largest, largest_printed = 0.0, 0.0
-    size = min(block, count)
-    rows = np.empty((5, size))
-    angles = np.empty((3, size))
-    steps = np.full(size, d)
-    for start in range(1, n, block):
-        stop = min(start + block, n)
-        m = stop - start
-        _rotation_arguments(p, axis, start, stop, rows)
-        np.arctan2(steps[:m], rows[0, :m], out=angles[0, :m])
-        np.arctan2(rows[1, :m], rows[2, :m], out=angles[1, :m])
-        np.arctan2(rows[3, :m], rows[4, :m], out=angles[2, :m])
-        largest, largest_printed = _rotation_residuals(
-            angles[0], angles[1], angles[2], m, largest, largest_printed
+    rows = np.empty((6, max(min(block, count), 1)))
+    first = 1
+    while first < n:
+        first, largest, largest_printed, outcome = _rotation_blocks(
+            d, p, axis, first, n, block, rows, corrected, printed, store, largest, largest_printed
         )
+        if first >= n:
+            break
+        stop = min(first + block, n)
+        m = stop - first
+        libm = m < ROTATION_LIBM_BELOW
+        if outcome == ROTATION_WRAPPED and not _rotation_arguments_wrapped(
+            d, p, axis, first, stop, rows
+        ):
+            outcome = ROTATION_OLD
+        if outcome == ROTATION_WRAPPED:
+            if not libm:
+                np.arctan2(rows[1, :m], rows[0, :m], out=rows[4, :m])
+                np.arctan2(rows[3, :m], rows[2, :m], out=rows[5, :m])
+            largest, largest_printed = _rotation_wrapped(rows, m, libm, largest, largest_printed)
+            found, found_printed = rows[4, :m], rows[5, :m]
+        else:
+            found, found_printed, largest, largest_printed = _rotation_old_block(
+                d, p, axis, first, stop, largest, largest_printed
+            )
         if store:
-            corrected[start - 1 : stop - 1] = angles[1, :m]
-            printed[start - 1 : stop - 1] = angles[2, :m]
+            corrected[first - 1 : stop - 1] = found
+            printed[first - 1 : stop - 1] = found_printed
+        first = stop
     return corrected, printed, largest, largest_printed
 
 

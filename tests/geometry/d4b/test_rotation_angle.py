@@ -1,5 +1,6 @@
-"""Theorem 4's rotation angle in blocks without branches (session 21) equals the passes it
-replaced, bit for bit: the residuals, their largest and NaN's rules."""
+"""Theorem 4's rotation angle in blocks without branches (session 21) and as one argument
+(session 22) agrees with the passes it replaced: the residuals to a few units in the last place
+of the angles (``ULPS``), their largest likewise, and NaN where they had NaN."""
 
 from __future__ import annotations
 
@@ -78,14 +79,58 @@ def old_rotation_angles(
     return corrected, printed, largest, largest_printed
 
 
+#: How far the residuals may move (session 22: one argument of z conj(w)² instead of a
+#: difference of atan2's), in units in the last place of the larger of the two angles at the
+#: vertex: the cross and dot products are the same, the product's parts add three roundings each
+#: to the terms of the difference (up to 12 units of the larger angle in the worst case; 3.6
+#: measured at 10^6 vertices), atan2 one.
+ULPS = 16
+
+
+def angle_scale(d: float, p: Any, axis: Any, n: int) -> tuple[Any, Any]:
+    """The larger of |angle| and |2 atan2(d, p^y)| at each vertex, corrected and printed (the
+    scale a residual's rounding is measured against)."""
+    k = np.arange(1, max(n, 1))
+    a, b, c = axis[k - 1] - p[k], axis[k] - p[k], axis[k + 1] - p[k]
+    with np.errstate(invalid="ignore", over="ignore"):
+        formula = abs(2 * np.arctan2(d, p[k, 1]))
+
+        def angle(u: Any, v: Any) -> Any:
+            cross = u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]
+            return abs(np.arctan2(cross, u[:, 0] * v[:, 0] + u[:, 1] * v[:, 1]))
+
+        return np.fmax(angle(a, b), formula), np.fmax(angle(b, c), formula)
+
+
+def assert_close(found: Any, expected: Any, scale: Any) -> None:
+    """Equal to ``ULPS`` units of ``scale`` entry by entry, NaN exactly where expected is."""
+    found, expected = np.asarray(found), np.asarray(expected)
+    assert found.shape == expected.shape
+    nan = np.isnan(expected)
+    assert (np.isnan(found) == nan).all(), (found, expected)
+    big = float(np.finfo(np.float64).max)
+    with np.errstate(over="ignore"):  # the spacing of the largest float is inf
+        room = ULPS * np.spacing(np.nan_to_num(scale, nan=big, posinf=big))
+    assert (abs(found[~nan] - expected[~nan]) <= room[~nan]).all(), (found, expected)
+
+
 def assert_blocks_equal_old(d: float, p: Any, axis: Any, n: int, blocks: tuple[int, ...]) -> None:
+    """The residuals and their largest near the old blocks' (``assert_close``); the largest
+    NaN exactly when the old one is."""
+    scale, scale_printed = angle_scale(d, p, axis, n)
+    top = np.max(scale) if scale.size and not np.isnan(scale).any() else np.pi
+    top_printed = (
+        np.max(scale_printed) if scale_printed.size and not np.isnan(scale_printed).any() else np.pi
+    )
     for block in blocks:
         expected = old_rotation_angles(d, p, axis, n, block)
         found = residual_kernels._rotation_angles(d, p, axis, n, True, block)
-        for a, b in zip(found, expected, strict=True):
-            assert same_bits(a, b), (block, a, b)
+        assert_close(found[0], expected[0], scale)
+        assert_close(found[1], expected[1], scale_printed)
+        assert_close(found[2], expected[2], top)
+        assert_close(found[3], expected[3], top_printed)
         alone = residual_kernels._rotation_angles(d, p, axis, n, False, block)
-        assert same_bits(alone[2], expected[2]) and same_bits(alone[3], expected[3])
+        assert same_bits(alone[2], found[2]) and same_bits(alone[3], found[3])
         assert alone[0].shape == alone[1].shape == (0,)
 
 
@@ -101,10 +146,13 @@ def test_real_polygons_equal_old_blocks() -> None:
             assert_blocks_equal_old(h * ratio, p, axis, n, (residual_kernels.ROTATION_BLOCK, 999))
             corrected, printed = residual_kernels.rotation_angles(h * ratio, p, axis, n)
             old = old_rotation_angles(h * ratio, p, axis, n, residual_kernels.ROTATION_BLOCK)
-            assert same_bits(corrected, old[0]) and same_bits(printed, old[1])
+            scale, scale_printed = angle_scale(h * ratio, p, axis, n)
+            assert_close(corrected, old[0], scale)
+            assert_close(printed, old[1], scale_printed)
             largest, worst = residual_kernels.rotation_angle_largest(h * ratio, p, axis, n)
-            assert same_bits(largest.value, old[2])
-            assert worst == (old[3] if math.isfinite(old[3]) else None)
+            assert same_bits(largest.value, np.max(corrected, initial=0.0))
+            assert (worst is None) == (not math.isfinite(old[3]) or n < 2)
+            assert worst is None or worst == np.max(printed)
 
 
 @pytest.mark.parametrize("seed", [1, 2, 3])
@@ -156,11 +204,16 @@ def test_adversarial_points_equal_old_blocks() -> None:
 
 
 def test_layouts_are_copied_not_misread() -> None:
-    """Points that are not C-contiguous (Fortran order, strided views) give the same bits."""
+    """Points that are not C-contiguous (Fortran order, strided views) give the same bits as
+    C-contiguous ones, near the old blocks."""
     rng = np.random.default_rng(5)
     n = 600
     p, axis = rng.normal(size=(n + 1, 2)), rng.normal(size=(n + 1, 2))
-    expected = old_rotation_angles(0.5, p, axis, n, residual_kernels.ROTATION_BLOCK)
+    expected = residual_kernels.rotation_angles(0.5, p, axis, n)
+    old = old_rotation_angles(0.5, p, axis, n, residual_kernels.ROTATION_BLOCK)
+    scale, scale_printed = angle_scale(0.5, p, axis, n)
+    assert_close(expected[0], old[0], scale)
+    assert_close(expected[1], old[1], scale_printed)
     wide = np.zeros((n + 1, 4))
     wide[:, 1:3] = axis
     for pp, aa in ((np.asfortranarray(p), axis), (p, wide[:, 1:3]), (p[::-1][::-1], axis)):
@@ -178,4 +231,4 @@ def test_nan_largest_and_the_erratum() -> None:
     largest, worst = residual_kernels.rotation_angle_largest(0.5, p, axis, n)
     assert math.isnan(largest.value) and worst is None and len(largest) == n - 1
     expected = old_rotation_angles(0.5, p, axis, n, residual_kernels.ROTATION_BLOCK)
-    assert same_bits(largest.residuals(), expected[0])
+    assert_close(largest.residuals(), expected[0], angle_scale(0.5, p, axis, n)[0])
