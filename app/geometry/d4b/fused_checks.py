@@ -971,12 +971,21 @@ def _sech_tanh(t: float, w: float) -> tuple[float, float]:
     return 2.0 * w * r, math.copysign((1.0 - w) * (1.0 + w) * r, t)
 
 
+#: The squares of ``SQUARES_LOW`` and ``SQUARES_HIGH``: a sum of squares between them is normal
+#: and its square root within an ulp or two of hypot's.
+SQUARE_LOW, SQUARE_HIGH = SQUARES_LOW**2, SQUARES_HIGH**2
+
+
 @numba.njit(cache=True, inline="always", error_model="numpy")
-def _moderate(x: float) -> bool:
-    """Whether x² neither overflows nor underflows past its last bits: 2^−480 < |x| < 2^480
-    (false for 0 and for a NaN). Without branches."""
-    magnitude = abs(x)
-    return (magnitude > SQUARES_LOW) & (magnitude < SQUARES_HIGH)
+def _usual(square: float) -> bool:
+    """Whether a sum of squares (a squared length or scale) already computed is 0 or between
+    2^−960 and 2^960, false for a NaN: a three-comparison stand-in for ``_on_fast_path`` on its
+    components. It admits less at the top; at the bottom it also admits a length whose
+    components are both below 2^−537 (their squares underflow to 0): a length of at most 2^−536
+    taken as 0, below an ulp of any residual's scale here (a scale's square of 0 is not a
+    denominator's: a zero denominator gives an infinite or NaN square, which sends the block
+    back). Without branches."""
+    return (square < SQUARE_HIGH) & ((square > SQUARE_LOW) | (square == 0.0))
 
 
 @kernel(
@@ -1017,8 +1026,8 @@ def _kinematic_block_from_decays(
     square (an integer maximum of bit patterns) and takes one square root of it (√ is monotone
     and correctly rounded: the root of the largest square is the largest root). The rounding
     moves at the last bits of the residuals (tests/test_golden.py, session 22). A NaN, an
-    infinite or out-of-range square (a length off ``length``'s square-root branch, a scale
-    whose square leaves the normal numbers, a zero closed point) sends the block back."""
+    infinite or out-of-range square (a squared length or scale not ``_usual``, a zero closed
+    point) sends the block back."""
     rows = min(count, n - offset)
     if rows <= 0:
         return True, theorem_5, theorem_6
@@ -1032,8 +1041,9 @@ def _kinematic_block_from_decays(
             w = block_w[k]
             ex, ey = float(first + k) * step - d, amplitude * (0.5 / w + 0.5 * w)
             dx, dy = block_p[2 * k] - ex, block_p[2 * k + 1] - ey
-            values_5[k] = (dx * dx + dy * dy) / (ex * ex + ey * ey)
-            plain &= _on_fast_path(ex, ey) & _on_fast_path(dx, dy)
+            distance, size = dx * dx + dy * dy, ex * ex + ey * ey
+            values_5[k] = distance / size
+            plain &= _usual(distance) & _usual(size)
         top_5 = largest_bits(values_5, rows)
     if theorem_6_wanted:
         block_w, offset_t = decays[count : count + rows], shift * L
@@ -1044,8 +1054,9 @@ def _kinematic_block_from_decays(
             tx, ty = float(first + k) * step - h * th, h * sech
             dx, dy = block_d[2 * k] - tx, block_d[2 * k + 1] - ty
             scale = abs(block_axis[2 * k]) + h
-            values_6[k] = (dx * dx + dy * dy) / (scale * scale)
-            plain &= _on_fast_path(dx, dy) & _moderate(scale)
+            distance, scale = dx * dx + dy * dy, scale * scale
+            values_6[k] = distance / scale
+            plain &= _usual(distance) & _usual(scale)
         top_6 = largest_bits(values_6, rows)
     if not (plain and top_5 < INF_BITS and top_6 < INF_BITS):
         return False, theorem_5, theorem_6
@@ -1526,7 +1537,7 @@ def _six_rows(
 ) -> bool:
     """``_image_block_from_decays``' rows when all six comparisons are asked for (every check):
     the same numbers from one loop that reads each row once, the squares into ``scratch[:6]``;
-    whether every length is on its square-root branch."""
+    whether every square is ``_usual``."""
     plain = True
     block_n = normals[2 * offset : 2 * (offset + rows)]
     block_c = contact[2 * offset + 2 : 2 * (offset + rows) + 2]
@@ -1537,13 +1548,14 @@ def _six_rows(
         sech, th = _sech_tanh((float(first + k) + shift) * L, w_19[k])
         # (18) and its printed form (sech t, −tanh t)
         ax, ay, by = block_n[2 * k] - sech, block_n[2 * k + 1] - th, block_n[2 * k + 1] + th
-        scratch[0, k], scratch[3, k] = ax * ax + ay * ay, ax * ax + by * by
+        a, b = ax * ax + ay * ay, ax * ax + by * by
+        scratch[0, k], scratch[3, k] = a, b
         # (19) and its printed form (tanh t, sech t)
         cx, ey = block_c[2 * k], block_c[2 * k + 1] - sech
         ex, fx, s = cx + th, cx - th, scale_19[k]
-        scratch[1, k], scratch[4, k] = (ex * ex + ey * ey) * (s * s), fx * fx + ey * ey
-        plain &= _on_fast_path(ax, ay) & _on_fast_path(ax, by) & _on_fast_path(s, 0.0)
-        plain &= _on_fast_path(ex, ey) & _on_fast_path(fx, ey)
+        e, f, s = ex * ex + ey * ey, fx * fx + ey * ey, s * s
+        scratch[1, k], scratch[4, k] = e * s, f
+        plain &= _usual(a) & _usual(b) & _usual(e) & _usual(f) & _usual(s)
         # (20) and its printed form from n_i
         sech_20, th_20 = _sech_tanh((float(first + k) - 0.5 + shift) * L, w_20[k])
         mx, my, gx, gy, s = (
@@ -1554,13 +1566,14 @@ def _six_rows(
             scale_20[k],
         )
         dx, dy = gx - mx, gy - my
-        scratch[2, k] = (dx * dx + dy * dy) * (s * s) / (mx * mx + my * my)
+        a, m, s = dx * dx + dy * dy, mx * mx + my * my, s * s
+        scratch[2, k] = a * s / m
         reciprocal = 1.0 / (h + d * th)
         x, y = (h * th - d) * reciprocal, h * sech * reciprocal
         qx, qy = gx - x, gy - y
-        scratch[5, k] = (qx * qx + qy * qy) / (x * x + y * y)
-        plain &= _on_fast_path(mx, my) & _on_fast_path(dx, dy) & _on_fast_path(s, 0.0)
-        plain &= _on_fast_path(x, y) & _on_fast_path(qx, qy)
+        q, z = qx * qx + qy * qy, x * x + y * y
+        scratch[5, k] = q / z
+        plain &= _usual(a) & _usual(m) & _usual(s) & _usual(q) & _usual(z)
     return plain
 
 
@@ -1586,7 +1599,7 @@ def _chosen_rows(
 ) -> bool:
     """``_image_block_from_decays``' rows for the ``wanted`` comparisons, a loop each (sech t and
     tanh t of (19)'s arguments made once into ``scratch[6:8]``), the squares into
-    ``scratch[:6]``; whether every length is on its square-root branch."""
+    ``scratch[:6]``; whether every square is ``_usual``."""
     sechs, tanhs = scratch[6], scratch[7]
     plain = True
     if wanted[0] or wanted[1] or wanted[3] or wanted[4] or wanted[5]:
@@ -1602,28 +1615,28 @@ def _chosen_rows(
         for k in range(rows):
             dx, dy = block_n[2 * k] - sechs[k], block_n[2 * k + 1] - tanhs[k]
             values[k] = dx * dx + dy * dy
-            plain &= _on_fast_path(dx, dy)
+            plain &= _usual(values[k])
     if wanted[3]:  # (18) printed: (sech t, −tanh t)
         values = scratch[3]
         for k in range(rows):
             dx, dy = block_n[2 * k] - sechs[k], block_n[2 * k + 1] + tanhs[k]
             values[k] = dx * dx + dy * dy
-            plain &= _on_fast_path(dx, dy)
+            plain &= _usual(values[k])
     if wanted[1] or wanted[4]:  # ñ_i at row k + 1 of the contact points (from i_min − 1)
         block_c = contact[2 * offset + 2 : 2 * (offset + rows) + 2]
     if wanted[1]:
         values, block_scale = scratch[1], contact_scale[offset : offset + rows]
         for k in range(rows):
             dx, dy = block_c[2 * k] + tanhs[k], block_c[2 * k + 1] - sechs[k]
-            scale = block_scale[k]
-            values[k] = (dx * dx + dy * dy) * (scale * scale)
-            plain &= _on_fast_path(dx, dy) & _on_fast_path(scale, 0.0)
+            distance, scale = dx * dx + dy * dy, block_scale[k] * block_scale[k]
+            values[k] = distance * scale
+            plain &= _usual(distance) & _usual(scale)
     if wanted[4]:  # (19) printed: (tanh t, sech t)
         values = scratch[4]
         for k in range(rows):
             dx, dy = block_c[2 * k] - tanhs[k], block_c[2 * k + 1] - sechs[k]
             values[k] = dx * dx + dy * dy
-            plain &= _on_fast_path(dx, dy)
+            plain &= _usual(values[k])
     if wanted[2] or wanted[5]:
         block_m = gauss[2 * offset : 2 * (offset + rows)]
     if wanted[2]:
@@ -1634,9 +1647,10 @@ def _chosen_rows(
             sech, th = _sech_tanh(t, block_w[k])
             mx, my = -th, gauss_amplitude * sech
             dx, dy = block_m[2 * k] - mx, block_m[2 * k + 1] - my
-            scale = block_scale[k]
-            values[k] = (dx * dx + dy * dy) * (scale * scale) / (mx * mx + my * my)
-            plain &= _on_fast_path(mx, my) & _on_fast_path(dx, dy) & _on_fast_path(scale, 0.0)
+            distance, size = dx * dx + dy * dy, mx * mx + my * my
+            scale = block_scale[k] * block_scale[k]
+            values[k] = distance * scale / size
+            plain &= _usual(distance) & _usual(size) & _usual(scale)
     if wanted[5]:  # (20) printed, from n_i: ((h tanh t − d), h sech t)/(h + d tanh t)
         values = scratch[5]
         for k in range(rows):
@@ -1644,8 +1658,9 @@ def _chosen_rows(
             reciprocal = 1.0 / (h + d * th)
             x, y = (h * th - d) * reciprocal, h * sechs[k] * reciprocal
             dx, dy = block_m[2 * k] - x, block_m[2 * k + 1] - y
-            values[k] = (dx * dx + dy * dy) / (x * x + y * y)
-            plain &= _on_fast_path(x, y) & _on_fast_path(dx, dy)
+            distance, size = dx * dx + dy * dy, x * x + y * y
+            values[k] = distance / size
+            plain &= _usual(distance) & _usual(size)
     return plain
 
 
@@ -1688,9 +1703,8 @@ def _image_block_from_decays(
     integer maximum of bit patterns, and takes one square root of it (√ is monotone and
     correctly rounded). The printed (20) multiplies by the reciprocal of its denominator
     h + d·tanh t. The rounding moves at the last bits of the residuals (tests/test_golden.py,
-    session 22). A NaN, an infinite or out-of-range square (a length off ``length``'s
-    square-root branch, a resolution whose square leaves the normal numbers) sends the block
-    back."""
+    session 22). A NaN, an infinite or out-of-range square (a squared length or resolution not
+    ``_usual``) sends the block back."""
     rows = min(count, n - offset)
     if rows <= 0:
         return True
