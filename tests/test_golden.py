@@ -103,6 +103,23 @@ TEXT_CHANGES: dict[tuple[str, str], str] = {
 #: 1e-4, h = 100 with d = 0.99h and β0 = 0.4, d = 0.3 with β0 = 2.5, h = 0.01 with d = 1e-4 h,
 #: with and without detail). Residuals below 1e-9 and printed residuals to 1e-6 compare equal
 #: (RESIDUAL_KEYS), so no entry below is needed.
+#: Issue 13 (session 22, images): the float64 closed comparisons of Theorems 5, 6 and (18)–(20)
+#: (with their printed forms, errata E60, E62, E63: their printed residuals) make sech t, tanh t and
+#: cosh t from one exponential w = e^(−|t|) (numpy's vectorized exp; 2w/(1 + w²), (1 − w)(1 + w)/(1
+#: + w²), (1/w + w)/2: the fraction form of (18)) where they called numpy's cosh, sinh and tanh;
+#: take the residual of the unit vectors n_i, ñ_i and their printed forms as the distance itself (no
+#: division by a computed length of 1 ± 1 ulp); keep the largest squared residual of a block and
+#: take one square root of it; and multiply by the reciprocal of the printed (20)'s denominator.
+#: None of these closed points is served (they are compared as they are made; the companions come
+#: from the stored closed forms, unchanged). Residuals move at rounding level: at most 1.56e-16
+#: absolute, 0.7 ulp of the row's scale (theorem-5 at d = 1e-3h, n = 10^5: 1.37146e-13 ->
+#: 1.37302e-13, tolerance 7.2e-10), at most 3.2e-4 of a tolerance (equation-18 at h = 100, d =
+#: 0.99h: 5.884e-15 -> 5.995e-15, tolerance 3.8e-11); printed residuals by at most 2.2e-16 relative
+#: (at 10^6: E60, E62 2.0000000000000004 -> 2.0, E63 2.000200020002 -> 2.0002000200020005). No
+#: vertex, companion, tolerance, verdict, note or erratum moved (231 checks compared with main, 30
+#: of them moved: D4b n up to 100,000, d = 0.5h, 0.3h, 0.1h, 0.99h, 1e-3h, 1e-4h, tilted starts,
+#: detail). Residuals below 1e-9 and printed residuals to 1e-6 compare equal (RESIDUAL_KEYS), so no
+#: entry below is needed.
 VALUE_CHANGES = re.compile(
     r"\.companions\.tractrix_gauss_image\."
     r"|^/surfaces/pseudosphere(-gauss-image)?\.face_values\.(H|K|planarity)\["

@@ -915,6 +915,158 @@ def _image_arguments(first: int, count: int, L: float, shift: float, out: Any) -
         out[count + 1 + k] = (float(first + k) - 0.5 + shift) * L
 
 
+#: The largest |t| whose closed forms the blocks make from w = e^(−|t|) (``_sech_tanh``): w stays
+#: a normal number there, 1/w and cosh t finite. numpy's cosh overflows only past 710.47, so a
+#: block within the limit is one the old path would not have refused; a block with an argument
+#: beyond it (or a NaN) takes the old path, numpy's cosh and its None on overflow.
+DECAY_LIMIT = 700.0
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _within(lowest: float, highest: float) -> bool:
+    """Whether the arguments of a run, from ``lowest`` to ``highest`` (t rises or falls with the
+    index: float(i)·L and the offset's addition are rounded monotonically, so the ends are its
+    largest magnitudes), all have |t| ≤ ``DECAY_LIMIT``; false for a NaN."""
+    return (abs(lowest) <= DECAY_LIMIT) & (abs(highest) <= DECAY_LIMIT)
+
+
+@kernel("boolean(int64, int64, float64, float64, float64[::1])")
+def _kinematic_decays(first: int, count: int, L: float, shift: float, out: Any) -> bool:
+    """−|t| for (14)'s and (16)'s arguments t as ``_kinematic_arguments`` computes them, into
+    ``out[:count]`` and ``out[count:2count]`` (numpy's exp, which is vectorized, then makes w =
+    e^(−|t|) of them), and whether every |t| ≤ ``DECAY_LIMIT``, for each of the two."""
+    offset_p, offset_t = (shift - 0.5) * L, shift * L
+    for k in range(count):
+        u = float(first + k) * L
+        out[k] = -abs(u + offset_p)
+        out[count + k] = -abs(u + offset_t)
+    last = float(first + count - 1) * L
+    return _within(float(first) * L + offset_p, last + offset_p) & _within(
+        float(first) * L + offset_t, last + offset_t
+    )
+
+
+@kernel("boolean(int64, int64, float64, float64, float64[::1])")
+def _image_decays(first: int, count: int, L: float, shift: float, out: Any) -> bool:
+    """−|t| for (19)'s and (20)'s arguments t as ``_image_arguments`` computes them, into
+    ``out[:count + 1]`` and ``out[count + 1:2count + 1]`` (numpy's exp then makes w =
+    e^(−|t|)), and whether every |t| ≤ ``DECAY_LIMIT``."""
+    for k in range(count + 1):
+        out[k] = -abs((float(first - 1 + k) + shift) * L)
+    for k in range(count):
+        out[count + 1 + k] = -abs((float(first + k) - 0.5 + shift) * L)
+    return _within((float(first - 1) + shift) * L, (float(first + count - 1) + shift) * L) & (
+        _within((float(first) - 0.5 + shift) * L, (float(first + count - 1) - 0.5 + shift) * L)
+    )
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _sech_tanh(t: float, w: float) -> tuple[float, float]:
+    """(sech t, tanh t) from w = e^(−|t|), |t| ≤ ``DECAY_LIMIT``, in the fraction form the paper
+    gives (18) in (with w = ((h − d)/(h + d))^i): 2w/(1 + w²) and ±(1 − w)(1 + w)/(1 + w²) with
+    the sign of t, one division. 1 − w is exact for w ≥ ½ (near t = 0, where tanh is small), so
+    tanh's error there is w's, about an ulp of 1: the scale of the unit vectors it makes. No
+    branch (the loops calling it vectorize)."""
+    r = 1.0 / (1.0 + w * w)
+    return 2.0 * w * r, math.copysign((1.0 - w) * (1.0 + w) * r, t)
+
+
+#: The squares of ``SQUARES_LOW`` and ``SQUARES_HIGH``: a sum of squares between them is normal
+#: and its square root within an ulp or two of hypot's.
+SQUARE_LOW, SQUARE_HIGH = SQUARES_LOW**2, SQUARES_HIGH**2
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _usual(square: float) -> bool:
+    """Whether a sum of squares (a squared length or scale) already computed is 0 or between
+    2^−960 and 2^960, false for a NaN: a three-comparison stand-in for ``_on_fast_path`` on its
+    components. It admits less at the top; at the bottom it also admits a length whose
+    components are both below 2^−537 (their squares underflow to 0): a length of at most 2^−536
+    taken as 0, below an ulp of any residual's scale here (a scale's square of 0 is not a
+    denominator's: a zero denominator gives an infinite or NaN square, which sends the block
+    back). Without branches."""
+    return (square < SQUARE_HIGH) & ((square > SQUARE_LOW) | (square == 0.0))
+
+
+@kernel(
+    "Tuple((boolean, float64, float64))(int64, int64, float64, float64, float64[::1], float64, "
+    "float64, float64, float64[::1], float64[::1], float64[::1], int64, int64, boolean, boolean, "
+    "float64, float64, float64[:, ::1])"
+)
+def _kinematic_block_from_decays(
+    first: int,
+    count: int,
+    L: float,
+    shift: float,
+    decays: Any,
+    h: float,
+    d: float,
+    amplitude: float,
+    p: Any,
+    tractrix: Any,
+    axis: Any,
+    offset: int,
+    n: int,
+    theorem_5_wanted: bool,
+    theorem_6_wanted: bool,
+    theorem_5: float,
+    theorem_6: float,
+    scratch: Any,
+) -> tuple[bool, float, float]:
+    """One block of Theorems 5 and 6's comparisons (indices first .. first + count − 1, rows
+    ``offset`` .., those below ``n``; w = e^(−|t|) of (14)'s arguments t at ``[:count]``, of
+    (16)'s at ``[count:2count]``, every |t| ≤ ``DECAY_LIMIT``; t's sign as
+    ``_kinematic_arguments`` computes t), folded into the running largest of each
+    theorem: (False, the largest given) when a row needs the old path.
+
+    The closed forms from one exponential a row: (14)'s y = √(h² − d²)·cosh t with cosh t =
+    (1/w + w)/2, (16)'s point (x − h·tanh t, h·sech t) by ``_sech_tanh``. No square root a row:
+    Theorem 5's residual |p − p̃|/|p̃| is the root of (|p − p̃|²/|p̃|²) and Theorem 6's
+    |d − d̃|/(|a_x| + h) the root of |d − d̃|²/(|a_x| + h)², so each block keeps the largest
+    square (an integer maximum of bit patterns) and takes one square root of it (√ is monotone
+    and correctly rounded: the root of the largest square is the largest root). The rounding
+    moves at the last bits of the residuals (tests/test_golden.py, session 22). A NaN, an
+    infinite or out-of-range square (a squared length or scale not ``_usual``, a zero closed
+    point) sends the block back."""
+    rows = min(count, n - offset)
+    if rows <= 0:
+        return True, theorem_5, theorem_6
+    step = 2 * d
+    plain = True
+    values_5, values_6 = scratch[0], scratch[1]
+    top_5 = top_6 = 0
+    if theorem_5_wanted:
+        block_w, block_p = decays[:rows], p[2 * offset : 2 * (offset + rows)]
+        for k in range(rows):
+            w = block_w[k]
+            ex, ey = float(first + k) * step - d, amplitude * (0.5 / w + 0.5 * w)
+            dx, dy = block_p[2 * k] - ex, block_p[2 * k + 1] - ey
+            distance, size = dx * dx + dy * dy, ex * ex + ey * ey
+            values_5[k] = distance / size
+            plain &= _usual(distance) & _usual(size)
+        top_5 = largest_bits(values_5, rows)
+    if theorem_6_wanted:
+        block_w, offset_t = decays[count : count + rows], shift * L
+        block_d = tractrix[2 * offset : 2 * (offset + rows)]
+        block_axis = axis[2 * offset : 2 * (offset + rows)]
+        for k in range(rows):
+            sech, th = _sech_tanh(float(first + k) * L + offset_t, block_w[k])
+            tx, ty = float(first + k) * step - h * th, h * sech
+            dx, dy = block_d[2 * k] - tx, block_d[2 * k + 1] - ty
+            scale = abs(block_axis[2 * k]) + h
+            distance, scale = dx * dx + dy * dy, scale * scale
+            values_6[k] = distance / scale
+            plain &= _usual(distance) & _usual(scale)
+        top_6 = largest_bits(values_6, rows)
+    if not (plain and top_5 < INF_BITS and top_6 < INF_BITS):
+        return False, theorem_5, theorem_6
+    if theorem_5_wanted:
+        theorem_5 = running_largest(math.sqrt(bits_value(top_5)), theorem_5)
+    if theorem_6_wanted:
+        theorem_6 = running_largest(math.sqrt(bits_value(top_6)), theorem_6)
+    return True, theorem_5, theorem_6
+
+
 @numba.njit(cache=True, error_model="numpy")
 def _kinematic_rows(
     first: int,
@@ -1072,7 +1224,8 @@ def closed_kinematic_comparisons(
     shift = float(data.shift)
     amplitude = float(ar.sqrt((data.h - data.d) * (data.h + data.d)))
     block = min(rows, BLOCK_SIZE)
-    arguments, cosh, sinh = np.empty(2 * block), np.empty(2 * block), np.empty(block)
+    arguments, decays = np.empty(2 * block), np.empty(2 * block)
+    cosh, sinh = np.empty(2 * block), np.empty(block)
     scratch = np.empty((2, block))
     largest_5 = largest_6 = 0.0
     p = _flat(data.p) if theorem_5 else _NO_ENTRIES
@@ -1082,8 +1235,33 @@ def closed_kinematic_comparisons(
     for start in range(0, min(rows, n), block):
         count = min(block, rows - start)
         first = data.i_min + start
-        _kinematic_arguments(first, count, L, shift, arguments)
         lo, hi = (0 if theorem_5 else count), (2 * count if theorem_6 else count)
+        if _kinematic_decays(first, count, L, shift, decays):
+            np.exp(decays[lo:hi], out=decays[lo:hi])
+            done, largest_5, largest_6 = _kinematic_block_from_decays(
+                first,
+                count,
+                L,
+                shift,
+                decays,
+                h,
+                d,
+                amplitude,
+                p,
+                tractrix,
+                axis,
+                start,
+                n,
+                theorem_5,
+                theorem_6,
+                largest_5,
+                largest_6,
+                scratch,
+            )
+            if done:
+                continue
+        # the old path: numpy's cosh and sinh, the old block (its rows with hypot's branch)
+        _kinematic_arguments(first, count, L, shift, arguments)
         with np.errstate(over="ignore"):
             np.cosh(arguments[lo:hi], out=cosh[lo:hi])
             if theorem_6:  # (an overflow here is a cosh's too: the block returns None)
@@ -1338,6 +1516,251 @@ def _closed_image_block(
     return True
 
 
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _six_rows(
+    first: int,
+    count: int,
+    rows: int,
+    L: float,
+    shift: float,
+    decays: Any,
+    h: float,
+    d: float,
+    gauss_amplitude: float,
+    normals: Any,
+    contact: Any,
+    gauss: Any,
+    contact_scale: Any,
+    gauss_scale: Any,
+    offset: int,
+    scratch: Any,
+) -> bool:
+    """``_image_block_from_decays``' rows when all six comparisons are asked for (every check):
+    the same numbers from one loop that reads each row once, the squares into ``scratch[:6]``;
+    whether every square is ``_usual``."""
+    plain = True
+    block_n = normals[2 * offset : 2 * (offset + rows)]
+    block_c = contact[2 * offset + 2 : 2 * (offset + rows) + 2]
+    block_m = gauss[2 * offset : 2 * (offset + rows)]
+    scale_19, scale_20 = contact_scale[offset : offset + rows], gauss_scale[offset : offset + rows]
+    w_19, w_20 = decays[1 : rows + 1], decays[count + 1 : count + 1 + rows]
+    for k in range(rows):
+        sech, th = _sech_tanh((float(first + k) + shift) * L, w_19[k])
+        # (18) and its printed form (sech t, −tanh t)
+        ax, ay, by = block_n[2 * k] - sech, block_n[2 * k + 1] - th, block_n[2 * k + 1] + th
+        a, b = ax * ax + ay * ay, ax * ax + by * by
+        scratch[0, k], scratch[3, k] = a, b
+        # (19) and its printed form (tanh t, sech t)
+        cx, ey = block_c[2 * k], block_c[2 * k + 1] - sech
+        ex, fx, s = cx + th, cx - th, scale_19[k]
+        e, f, s = ex * ex + ey * ey, fx * fx + ey * ey, s * s
+        scratch[1, k], scratch[4, k] = e * s, f
+        plain &= _usual(a) & _usual(b) & _usual(e) & _usual(f) & _usual(s)
+        # (20) and its printed form from n_i
+        sech_20, th_20 = _sech_tanh((float(first + k) - 0.5 + shift) * L, w_20[k])
+        mx, my, gx, gy, s = (
+            -th_20,
+            gauss_amplitude * sech_20,
+            block_m[2 * k],
+            block_m[2 * k + 1],
+            scale_20[k],
+        )
+        dx, dy = gx - mx, gy - my
+        a, m, s = dx * dx + dy * dy, mx * mx + my * my, s * s
+        scratch[2, k] = a * s / m
+        reciprocal = 1.0 / (h + d * th)
+        x, y = (h * th - d) * reciprocal, h * sech * reciprocal
+        qx, qy = gx - x, gy - y
+        q, z = qx * qx + qy * qy, x * x + y * y
+        scratch[5, k] = q / z
+        plain &= _usual(a) & _usual(m) & _usual(s) & _usual(q) & _usual(z)
+    return plain
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _chosen_rows(
+    first: int,
+    count: int,
+    rows: int,
+    L: float,
+    shift: float,
+    decays: Any,
+    h: float,
+    d: float,
+    gauss_amplitude: float,
+    normals: Any,
+    contact: Any,
+    gauss: Any,
+    contact_scale: Any,
+    gauss_scale: Any,
+    offset: int,
+    scratch: Any,
+    wanted: Any,
+) -> bool:
+    """``_image_block_from_decays``' rows for the ``wanted`` comparisons, a loop each (sech t and
+    tanh t of (19)'s arguments made once into ``scratch[6:8]``), the squares into
+    ``scratch[:6]``; whether every square is ``_usual``."""
+    sechs, tanhs = scratch[6], scratch[7]
+    plain = True
+    if wanted[0] or wanted[1] or wanted[3] or wanted[4] or wanted[5]:
+        # (19)'s arguments from one index before: n_i and ñ_i at row k + 1
+        block_w = decays[1 : rows + 1]
+        for k in range(rows):
+            t = (float(first + k) + shift) * L
+            sechs[k], tanhs[k] = _sech_tanh(t, block_w[k])
+    if wanted[0] or wanted[3]:
+        block_n = normals[2 * offset : 2 * (offset + rows)]
+    if wanted[0]:
+        values = scratch[0]
+        for k in range(rows):
+            dx, dy = block_n[2 * k] - sechs[k], block_n[2 * k + 1] - tanhs[k]
+            values[k] = dx * dx + dy * dy
+            plain &= _usual(values[k])
+    if wanted[3]:  # (18) printed: (sech t, −tanh t)
+        values = scratch[3]
+        for k in range(rows):
+            dx, dy = block_n[2 * k] - sechs[k], block_n[2 * k + 1] + tanhs[k]
+            values[k] = dx * dx + dy * dy
+            plain &= _usual(values[k])
+    if wanted[1] or wanted[4]:  # ñ_i at row k + 1 of the contact points (from i_min − 1)
+        block_c = contact[2 * offset + 2 : 2 * (offset + rows) + 2]
+    if wanted[1]:
+        values, block_scale = scratch[1], contact_scale[offset : offset + rows]
+        for k in range(rows):
+            dx, dy = block_c[2 * k] + tanhs[k], block_c[2 * k + 1] - sechs[k]
+            distance, scale = dx * dx + dy * dy, block_scale[k] * block_scale[k]
+            values[k] = distance * scale
+            plain &= _usual(distance) & _usual(scale)
+    if wanted[4]:  # (19) printed: (tanh t, sech t)
+        values = scratch[4]
+        for k in range(rows):
+            dx, dy = block_c[2 * k] - tanhs[k], block_c[2 * k + 1] - sechs[k]
+            values[k] = dx * dx + dy * dy
+            plain &= _usual(values[k])
+    if wanted[2] or wanted[5]:
+        block_m = gauss[2 * offset : 2 * (offset + rows)]
+    if wanted[2]:
+        values, block_scale = scratch[2], gauss_scale[offset : offset + rows]
+        block_w = decays[count + 1 : count + 1 + rows]
+        for k in range(rows):
+            t = (float(first + k) - 0.5 + shift) * L
+            sech, th = _sech_tanh(t, block_w[k])
+            mx, my = -th, gauss_amplitude * sech
+            dx, dy = block_m[2 * k] - mx, block_m[2 * k + 1] - my
+            distance, size = dx * dx + dy * dy, mx * mx + my * my
+            scale = block_scale[k] * block_scale[k]
+            values[k] = distance * scale / size
+            plain &= _usual(distance) & _usual(size) & _usual(scale)
+    if wanted[5]:  # (20) printed, from n_i: ((h tanh t − d), h sech t)/(h + d tanh t)
+        values = scratch[5]
+        for k in range(rows):
+            th = tanhs[k]
+            reciprocal = 1.0 / (h + d * th)
+            x, y = (h * th - d) * reciprocal, h * sechs[k] * reciprocal
+            dx, dy = block_m[2 * k] - x, block_m[2 * k + 1] - y
+            distance, size = dx * dx + dy * dy, x * x + y * y
+            values[k] = distance / size
+            plain &= _usual(distance) & _usual(size)
+    return plain
+
+
+@kernel(
+    "boolean(int64, int64, float64, float64, float64[::1], float64, float64, float64, "
+    "float64[::1], float64[::1], float64[::1], float64[::1], float64[::1], int64, int64, "
+    "boolean[::1], float64[::1], float64[:, ::1])"
+)
+def _image_block_from_decays(
+    first: int,
+    count: int,
+    L: float,
+    shift: float,
+    decays: Any,
+    h: float,
+    d: float,
+    gauss_amplitude: float,
+    normals: Any,
+    contact: Any,
+    gauss: Any,
+    contact_scale: Any,
+    gauss_scale: Any,
+    offset: int,
+    n: int,
+    wanted: Any,
+    largest: Any,
+    scratch: Any,
+) -> bool:
+    """One block of (18)–(20)'s comparisons as ``_closed_image_block`` (indices first .. first +
+    count − 1; w = e^(−|t|) of its arguments t at the same places in ``decays``, every |t| ≤
+    ``DECAY_LIMIT``; t's sign as ``_image_arguments`` computes t), into the running
+    ``largest`` of each ``wanted`` entry of ``IMAGE_COMPARISONS``; False (``largest`` untouched)
+    when a row needs the old path.
+
+    sech t and tanh t from one exponential a row (``_sech_tanh``, the fraction form of (18)).
+    n_i, ñ_i and their printed forms (sech t, ±tanh t), (∓tanh t, sech t) are unit vectors:
+    their residual is the distance itself, not divided by its computed length (1 within an
+    ulp). No square root a row: each block keeps the largest squared residual, |q − q̃|² (times
+    the resolution's square for (19) and (20), over |q̃|² for m_i and the printed (20)), an
+    integer maximum of bit patterns, and takes one square root of it (√ is monotone and
+    correctly rounded). The printed (20) multiplies by the reciprocal of its denominator
+    h + d·tanh t. The rounding moves at the last bits of the residuals (tests/test_golden.py,
+    session 22). A NaN, an infinite or out-of-range square (a squared length or resolution not
+    ``_usual``) sends the block back."""
+    rows = min(count, n - offset)
+    if rows <= 0:
+        return True
+    everything = wanted[0] & wanted[1] & wanted[2] & wanted[3] & wanted[4] & wanted[5]
+    if everything:
+        plain = _six_rows(
+            first,
+            count,
+            rows,
+            L,
+            shift,
+            decays,
+            h,
+            d,
+            gauss_amplitude,
+            normals,
+            contact,
+            gauss,
+            contact_scale,
+            gauss_scale,
+            offset,
+            scratch,
+        )
+    else:
+        plain = _chosen_rows(
+            first,
+            count,
+            rows,
+            L,
+            shift,
+            decays,
+            h,
+            d,
+            gauss_amplitude,
+            normals,
+            contact,
+            gauss,
+            contact_scale,
+            gauss_scale,
+            offset,
+            scratch,
+            wanted,
+        )
+    tops = np.zeros(6, dtype=np.int64)
+    for j in range(6):
+        if wanted[j]:
+            tops[j] = largest_bits(scratch[j], rows)
+            plain &= tops[j] < INF_BITS
+    if not plain:
+        return False
+    for j in range(6):
+        if wanted[j]:
+            largest[j] = running_largest(math.sqrt(bits_value(tops[j])), largest[j])
+    return True
+
+
 def closed_image_comparisons(
     ar: Arithmetic,
     h_scalar: Scalar,
@@ -1364,11 +1787,7 @@ def closed_image_comparisons(
     shift = float(shift_scalar)
     gauss_amplitude = float(h_scalar / ar.sqrt((h_scalar - d_scalar) * (h_scalar + d_scalar)))
     block = min(rows, BLOCK_SIZE)
-    arguments, cosh, tanh = (
-        np.empty(2 * block + 1),
-        np.empty(2 * block + 1),
-        np.empty(2 * block + 1),
-    )
+    arguments, decays, cosh, tanh = (np.empty(2 * block + 1) for _ in range(4))
     scratch = np.empty((8, block))
     largest = np.zeros(len(IMAGE_COMPARISONS))
     flags = np.array(wanted, dtype=np.bool_)
@@ -1378,6 +1797,31 @@ def closed_image_comparisons(
     normals, contact, gauss = _flat(normals), _flat(contact), _flat(gauss)
     for start in range(0, min(rows, n), block):
         count = min(block, rows - start)
+        if _image_decays(i_min + start, count, L, shift, decays):
+            exps = 2 * count + 1 if flags[2] else count + 1  # (20)'s only where it is compared
+            np.exp(decays[:exps], out=decays[:exps])
+            if _image_block_from_decays(
+                i_min + start,
+                count,
+                L,
+                shift,
+                decays,
+                h,
+                d,
+                gauss_amplitude,
+                normals,
+                contact,
+                gauss,
+                scale_19,
+                scale_20,
+                start,
+                n,
+                flags,
+                largest,
+                scratch,
+            ):
+                continue
+        # the old path: numpy's cosh and tanh, the old block (its rows with hypot's branch)
         _image_arguments(i_min + start, count, L, shift, arguments)
         # tanh of (20)'s arguments only where (20) itself is compared
         tanhs = 2 * count + 1 if flags[2] else count + 1

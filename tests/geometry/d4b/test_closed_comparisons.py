@@ -1,7 +1,12 @@
 """The blocked closed-form comparisons of (18)–(20) and Theorems 5, 6 (``fused_checks``) give the
-numbers of the scalar loops they replaced, bit for bit: those loops are copied here as the
-reference (session 21), and both are run on real polygons at several sizes, tilted starts, and on
-images with NaN, ±inf, ±0, subnormal and huge entries at block edges and inside blocks."""
+numbers of the scalar loops they replaced: those loops are copied here as the reference (session
+21), and both are run on real polygons at several sizes, tilted starts, and on images with NaN,
+±inf, ±0, subnormal and huge entries at block edges and inside blocks. Since session 22 the blocks
+make the closed forms from one exponential a row and take one square root a block, so a residual
+may move at its last bits (``close_residuals``: ``ULPS`` units of the row's scale); None, NaN,
+±inf and each residual's place are the reference's exactly, and a block the fast path sends back
+(an argument past ``DECAY_LIMIT``, a NaN, a length off its square-root branch) gives the old
+bits."""
 
 from __future__ import annotations
 
@@ -21,6 +26,37 @@ from app.geometry.d4b.fused_checks import (
 )
 from app.geometry.precision import BLOCK_SIZE, Float64
 from tests.geometry.bits import same_bits
+
+#: How far a residual of the blocks may be from the reference's, in units of 2^-52 times the
+#: row's scale: the closed point's coordinates from one exponential are within 2–4 ulp of numpy's
+#: (``_sech_tanh``, test_closed_rounding.py), but a residual sees the difference of the two
+#: closed points' errors, and its own rounding changes by an ulp (a division by a computed unit
+#: length dropped, one square root of the largest square; the printed (20)'s Möbius form scales
+#: the point's error by at most (h² + d²)/(h − d)² over its length, 1.7 at d = 0.5h). Measured:
+#: at most 1.0 ulp on D4b polygons up to n = 10^5 (d = 0.5h, 0.1h, 1e-3h, 1e-4h, tilted).
+ULPS = 4
+
+
+def close_residuals(found: Any, expected: Any, scales: Any) -> bool:
+    """``found`` within ``ULPS`` ulp of ``expected``, entry by entry, relative to the larger of
+    the entry and its ``scales`` entry (the rows' largest resolution for (19) and (20), 1 for a
+    relative residual); None only with None; NaN, ±inf only with the same bits."""
+    if found is None or expected is None:
+        return found is expected
+    for f, e, s in zip(found, expected, scales, strict=True):
+        if not (np.isfinite(f) and np.isfinite(e)):
+            if not same_bits(f, e):
+                return False
+        elif abs(f - e) > ULPS * 2.0**-52 * max(abs(e), s):
+            return False
+    return True
+
+
+def _scale(values: Any) -> float:
+    """The largest finite magnitude of ``values`` (1.0 at least): a residual's row scale."""
+    finite = np.abs(values[np.isfinite(values)])
+    return max(1.0, float(finite.max())) if finite.size else 1.0
+
 
 # ---- the reference: the session 20 loops, as they were ------------------------------------------
 
@@ -203,14 +239,24 @@ def _check_images(data: Any, n: int, arrays: tuple[Any, ...], wanted: tuple[bool
         data.ar, data.h, data.d, data.shift, data.i_min, n, wanted, normals, contact, gauss,
         s19, s20,
     )  # fmt: skip
-    assert same_bits(found, expected), (found, expected)
+    scales = [1.0, _scale(s19[:n]), _scale(s20[:n]), 1.0, 1.0, 1.0]
+    assert close_residuals(found, expected, scales), (found, expected)
 
 
 def _check_kinematic(data: Any, n: int) -> None:
     for theorem_5, theorem_6 in [(True, True), (True, False), (False, True), (False, False)]:
         expected = _old_kinematic(data, n, theorem_5, theorem_6)
         found = closed_kinematic_comparisons(data, n, theorem_5, theorem_6)
-        assert same_bits(found, expected), (theorem_5, theorem_6, found, expected)
+        # Theorem 6's row scale: the tractrix point's x (rounded as before) over |a_x| + h
+        x, axis = np.asarray(data.tractrix)[:n, 0], np.asarray(data.axis)[:n, 0]
+        h = float(data.h)
+        scale_6 = _scale((np.abs(x) + h) / (np.abs(axis) + h)) if theorem_6 else 1.0
+        assert close_residuals(found, expected, [1.0, scale_6]), (
+            theorem_5,
+            theorem_6,
+            found,
+            expected,
+        )
 
 
 _SIZES = [1, 2, 3, BLOCK_SIZE - 1, BLOCK_SIZE, BLOCK_SIZE + 1, 2 * BLOCK_SIZE + 5, 10**5]
@@ -218,7 +264,7 @@ _SIZES = [1, 2, 3, BLOCK_SIZE - 1, BLOCK_SIZE, BLOCK_SIZE + 1, 2 * BLOCK_SIZE + 
 
 @pytest.mark.parametrize("n", _SIZES)
 @pytest.mark.parametrize(("d", "beta0"), [(1e-4, None), (1e-4, 0.7), (1e-3, 2.9), (0.5, None)])
-def test_real_polygons_give_the_old_loops_bits(n: int, d: float, beta0: float | None) -> None:
+def test_real_polygons_give_the_old_loops_residuals(n: int, d: float, beta0: float | None) -> None:
     if d == 0.5 and n > 3000:  # cosh overflows: both None (see the overflow test)
         n = 1200
     data = discretization.polygons(Float64(), 1.0, d, beta0, -(n // 2), n - n // 2 - 1)
@@ -254,7 +300,7 @@ _ODD = [np.nan, np.inf, -np.inf, 0.0, -0.0, 5e-324, 1e-310, 1e-200, 1e200, 1e308
 
 
 @pytest.mark.parametrize("seed", range(6))
-def test_odd_entries_at_block_edges_and_inside_give_the_old_loops_bits(seed: int) -> None:
+def test_odd_entries_at_block_edges_and_inside_give_the_old_loops_residuals(seed: int) -> None:
     rng = np.random.default_rng(seed)
     n = 2 * BLOCK_SIZE + 17
     data = discretization.polygons(Float64(), 1.0, 1e-3, [None, 0.4][seed % 2], -9000, n - 9001)
