@@ -716,8 +716,8 @@ def _summary_passes_contiguous(p: Any, lengths: Any) -> Any:
 def fits_summary(p: Array) -> Any:
     """The fits' summary of the float64 polygon ``p`` ((m, 2)): ``_fits``'s first array (to
     rounding, ``_ratio_scales``), with one array of size m − 1 (the edges' lengths) instead of
-    ``_fits``'s columns and residuals (``_summary_passes``). A pure function of ``p`` that releases the GIL:
-    ``d4b.checks`` runs it on a second thread at large m."""
+    ``_fits``'s columns and residuals (``_summary_passes``). A pure function of ``p`` that
+    releases the GIL: ``d4b.checks`` runs it on a second thread at large m."""
     lengths = np.empty(max(len(p) - 1, 0))  # the edges' lengths, written by the first pass
     if p.flags.c_contiguous:
         return _summary_passes_contiguous(p, lengths)
