@@ -120,6 +120,18 @@ TEXT_CHANGES: dict[tuple[str, str], str] = {
 #: of them moved: D4b n up to 100,000, d = 0.5h, 0.3h, 0.1h, 0.99h, 1e-3h, 1e-4h, tilted starts,
 #: detail). Residuals below 1e-9 and printed residuals to 1e-6 compare equal (RESIDUAL_KEYS), so no
 #: entry below is needed.
+#: Issue 13 (session 22, rings): the float64 fits' summary of D4b (Theorem 4 (i)-(iii): (D1),
+#: (D3), eq. (2), without ``detail``) takes its terms by reciprocals: u = Δ²y · (1/w) · (1/U), U
+#: the largest |Δ²y · (1/w)| found in pass 1, and so on (one division a row instead of up to
+#: nine, and no pass for the scales of u and v), where every ratio is NaN-free and within
+#: 2^±1000; the served constants move by a few ulp of their sums (at most 2 ulp, 4.4e-16
+#: relative: c_(D1) 0.5000000000000001 -> 0.4999999999999999 at d = 0.5h, i -10 .. 10, beta0 =
+#: 1.2) and the largest residuals of theorem-4-i/ii/iii with them, at most 5.3e-17 absolute
+#: (theorem-4-i there: 1.248e-16 -> 1.775e-16, 1.7e-4 of its tolerance 3.0e-13). With
+#: ``detail`` the constants are ``_fits``'s, unchanged. No vertex, companion, tolerance, note or
+#: verdict moved (1092 checks of 90 answers compared with main: D4b n up to 100 001, d = 0.5h,
+#: 0.99h, 0.1h, 1e-3, 1e-4, beta0 = 1.2, detail; 53 residuals moved). Constants agree to 4 ulp
+#: and residuals below 1e-9 compare equal (RESIDUAL_KEYS), so no entry below is needed.
 VALUE_CHANGES = re.compile(
     r"\.companions\.tractrix_gauss_image\."
     r"|^/surfaces/pseudosphere(-gauss-image)?\.face_values\.(H|K|planarity)\["

@@ -266,6 +266,14 @@ def _scale_of(big: Any, nan: Any, at: int) -> float:
 _S_SECOND, _S_PAIRED_L, _S_AREA, _S_L, _S_PAIRED_A = 0, 1, 2, 3, 4
 _S_U, _S_V1, _S_U3, _S_V3, _S_V2 = 5, 6, 7, 8, 9
 
+#: Where the scale vector holds 1/s of scale k (``_INVERSE + k``) and whether the terms are
+#: taken by reciprocals (``_BY_RECIPROCALS``: 1.0 or 0.0; ``_ratio_scales``).
+_INVERSE, _BY_RECIPROCALS = 10, 20
+
+#: Scales whose reciprocals the terms multiply by: 1/s is then normal and finite, and x·(1/s)
+#: within an ulp or so of x/s wherever that is normal (``_ratio_scales``).
+RECIPROCAL_LOW, RECIPROCAL_HIGH = 2.0**-1000, 2.0**1000
+
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
 def _scan(values: Any, count: int, big: Any, nan: Any, at: int) -> None:
@@ -295,7 +303,9 @@ def _fold(values: Any, count: int, worst: Any, at: int) -> None:
 @numba.njit(cache=True, error_model="numpy")
 def _first_pass(buffers: Any, edges: int, inner: int, big: Any, nan: Any) -> None:
     """Pass 1 on a block: the largest |Δ²y|, |l_k + l_{k+1}|, |A|, |l|, |A_k + A_{k+1}| into
-    ``big`` (NaN seen into ``nan``), at the positions of their scales (``_S_*``)."""
+    ``big`` (NaN seen into ``nan``), at the positions of their scales (``_S_*``); then the
+    largest |u| and |v| of the fits before their column scales (Δ²y / w, (l_k + l_{k+1}) / w …
+    as the products with 1/w) at 10 + the positions of u's and v's scales."""
     area, edge, second = buffers[4], buffers[5], buffers[8]
     paired_l, paired_a = buffers[10], buffers[11]
     for j in range(inner):
@@ -306,6 +316,23 @@ def _first_pass(buffers: Any, edges: int, inner: int, big: Any, nan: Any) -> Non
     _scan(second, inner, big, nan, _S_SECOND)
     _scan(paired_l, inner, big, nan, _S_PAIRED_L)
     _scan(paired_a, inner, big, nan, _S_PAIRED_A)
+    # the ratios u·s_lhs and v·s_rhs, one division a row (``_ratio_scales``)
+    x, y = buffers[0], buffers[1]
+    r_u3, r_v3, r_u, r_v1, r_v2 = buffers[6], buffers[7], buffers[9], buffers[12], buffers[13]
+    for j in range(edges):
+        by_weight = 1.0 / _weight(_area_size(x, y, j))
+        r_u3[j] = area[j] * by_weight
+        r_v3[j] = edge[j] * by_weight
+    for j in range(inner):
+        by_weight = 1.0 / _weight(_second_size(y, j))
+        r_u[j] = second[j] * by_weight
+        r_v1[j] = paired_l[j] * by_weight
+        r_v2[j] = paired_a[j] * by_weight
+    _scan(r_u3, edges, big, nan, 10 + _S_U3)
+    _scan(r_v3, edges, big, nan, 10 + _S_V3)
+    _scan(r_u, inner, big, nan, 10 + _S_U)
+    _scan(r_v1, inner, big, nan, 10 + _S_V1)
+    _scan(r_v2, inner, big, nan, 10 + _S_V2)
 
 
 @numba.njit(cache=True, error_model="numpy")
@@ -338,10 +365,13 @@ def _second_pass(
 
 @numba.njit(cache=True, error_model="numpy")
 def _fill_terms(p: Any, k0: int, scales: Any, buffers: Any, lengths: Any) -> tuple[int, int]:
-    """The terms of the fits' sums (``_fit_terms``'s v² and u·v, each computed as
-    ``_fit_scales`` and ``_fit_terms`` compute it) on the equations k0, k0 + 1, … of a block:
-    (D1)'s and eq. (2)'s into ``buffers[10:14]``, (D3)'s into ``buffers[14:16]``; returns how
-    many of each ((D1) and eq. (2), (D3))."""
+    """The terms of the fits' sums (``_fit_terms``'s v² and u·v) on the equations k0, k0 + 1,
+    … of a block: (D1)'s and eq. (2)'s into ``buffers[10:14]``, (D3)'s into ``buffers[14:16]``;
+    returns how many of each ((D1) and eq. (2), (D3)).
+
+    By reciprocals (``_ratio_scales``): u = Δ²y · (1/w) · (1/U), U the largest |Δ²y · (1/w)|
+    (pass 1), and so on, one division a row; else each computed as ``_fit_scales`` and
+    ``_fit_terms`` compute it (nine quotients a row of (D1) and eq. (2), seven of (D3))."""
     edges, inner = _block_columns(p, k0, buffers, False, lengths)
     edges = min(edges, FIT_BLOCK)
     x, y, edge = buffers[0], buffers[1], buffers[5]
@@ -349,6 +379,28 @@ def _fill_terms(p: Any, k0: int, scales: Any, buffers: Any, lengths: Any) -> tup
         edge[j] = lengths[k0 + j]
     t0, t1, t2, t3 = buffers[10], buffers[11], buffers[12], buffers[13]
     t4, t5 = buffers[14], buffers[15]
+    area, area_size = buffers[4], buffers[6]  # first: a loop of divisions reading them vectorizes
+    for j in range(max(edges, inner + 1 if inner else 0)):  # A_j of both kinds of rows
+        area[j], area_size[j] = _area(x, y, j), _area_size(x, y, j)
+    if scales[_BY_RECIPROCALS] != 0:
+        inverse = scales[_INVERSE:]
+        i_u, i_v1, i_v2 = inverse[_S_U], inverse[_S_V1], inverse[_S_V2]
+        for j in range(inner):
+            by_weight = 1.0 / _weight(_second_size(y, j))
+            u_k = _second(y, j) * by_weight * i_u
+            v1 = (edge[j] + edge[j + 1]) * by_weight * i_v1
+            v2 = (area[j] + area[j + 1]) * by_weight * i_v2
+            t0[j] = v1 * v1
+            t1[j] = u_k * v1
+            t2[j] = v2 * v2
+            t3[j] = u_k * v2
+        i_u3, i_v3 = inverse[_S_U3], inverse[_S_V3]
+        for j in range(edges):
+            by_weight = 1.0 / _weight(area_size[j])
+            v3 = edge[j] * by_weight * i_v3
+            t4[j] = v3 * v3
+            t5[j] = area[j] * by_weight * i_u3 * v3
+        return inner, edges
     s_second, s_pl, s_pa = scales[_S_SECOND], scales[_S_PAIRED_L], scales[_S_PAIRED_A]
     s_u, s_v1, s_v2 = scales[_S_U], scales[_S_V1], scales[_S_V2]
     for j in range(inner):
@@ -361,9 +413,6 @@ def _fill_terms(p: Any, k0: int, scales: Any, buffers: Any, lengths: Any) -> tup
         t2[j] = v2 * v2
         t3[j] = u_k * v2
     s_area, s_l, s_u3, s_v3 = scales[_S_AREA], scales[_S_L], scales[_S_U3], scales[_S_V3]
-    area, area_size = buffers[4], buffers[6]  # first: a loop of divisions reading them vectorizes
-    for j in range(edges):
-        area[j], area_size[j] = _area(x, y, j), _area_size(x, y, j)
     for j in range(edges):
         weight = _weight(area_size[j])
         v3 = edge[j] / s_l / weight / s_v3
@@ -555,30 +604,68 @@ def _constant(uv: float, vv: float, scales: Any, lhs: int, rhs: int, u: int, v: 
 
 
 @numba.njit(cache=True, error_model="numpy")
+def _ratio_scales(big: Any, nan: Any, scales: Any) -> bool:
+    """Whether the terms are taken by reciprocals: no ratio of pass 1 NaN and the largest of
+    each (U, V: the largest |u| and |v| before the column scales) in [RECIPROCAL_LOW,
+    RECIPROCAL_HIGH]; then U and V become the scales of u and v, their reciprocals beside them
+    (``_INVERSE``).
+
+    The fits' constants do not depend on the scales: c = Σ u v / Σ v² · (s_u s_lhs) / (s_v s_rhs)
+    for any positive scales, and s_lhs · s_u is the largest |lhs / w| as U is, to rounding. So
+    u = (lhs · 1/w) · 1/U is ``_fit_scales``'s (lhs / s_lhs / w) / s_u to a few ulp, without
+    pass 2 (the scales of u and v) and with one division a row instead of up to nine; the
+    constants move by a few ulp of the sums (tests/geometry/d4b/test_fits_rounding.py). Any
+    other polygon (a NaN, an infinite or zero column, ratios beyond 2^±1000) keeps the
+    quotients, which give ``_fits``'s bits."""
+    for k in range(5, 10):
+        value = big.view(np.float64)[10 + k]
+        if nan[10 + k] or not (RECIPROCAL_LOW <= value <= RECIPROCAL_HIGH):
+            return False
+    for k in range(5, 10):
+        value = big.view(np.float64)[10 + k]
+        scales[k], scales[_INVERSE + k] = value, 1.0 / value
+    return True
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _ratio_constant(uv: float, vv: float, scales: Any, u: int, v: int) -> Any:
+    """``_constant`` of terms taken by reciprocals: Σ u v / Σ v² · U / V (``_ratio_scales``)."""
+    uv, vv = 0.0 + uv, 0.0 + vv
+    if vv > 0:
+        return uv / vv * (scales[u] / scales[v]), True
+    return 0.0, False
+
+
+@numba.njit(cache=True, error_model="numpy")
 def _summary_body(p: Any, lengths: Any) -> Any:
     """``_fits``'s summary (its first array) without its columns and residuals: four passes
     over p in blocks of FIT_BLOCK edges, each computing the columns it reads from the
     coordinates (``_block_columns``, ``_area`` …) with the same operations on each entry as
     ``_fit_scales``, ``_fit_terms`` and ``_misfit_into``, the edges' lengths once (pass 1
     writes them to ``lengths``, one entry an edge of p); the sums by ``_pairwise``'s tree
-    (``_tree_sums``), the largest values as ``largest_of_magnitudes``. Every number has the
-    bits of ``_fits``'s."""
+    (``_tree_sums``), the largest values as ``largest_of_magnitudes``. Pass 2 (the scales of u
+    and v) only where the terms cannot be taken by reciprocals (``_ratio_scales``): there every
+    number has the bits of ``_fits``'s, elsewhere the constants are within a few ulp of their
+    sums' rounding and the largest residuals move with them (tests/geometry/fit_rounding.py)."""
     n = p.shape[0]
     edges, inner = max(n - 1, 0), max(n - 2, 0)
     buffers = _buffers()
-    big, nan = np.zeros(10, dtype=np.int64), np.zeros(10, dtype=np.bool_)
-    scales = np.empty(10)
-    for k0 in range(0, edges, FIT_BLOCK):  # pass 1: the columns' scales
+    big, nan = np.zeros(20, dtype=np.int64), np.zeros(20, dtype=np.bool_)
+    scales = np.zeros(21)  # the ten scales, their reciprocals, whether those are taken
+    for k0 in range(0, edges, FIT_BLOCK):  # pass 1: the columns' scales, the ratios' largest
         block, block_inner = _block_columns(p, k0, buffers, True, lengths)
         _first_pass(buffers, min(block, FIT_BLOCK), block_inner, big, nan)
     for k in range(5):
         scales[k] = _scale_of(big, nan, k)
-    for k0 in range(0, edges, FIT_BLOCK):  # pass 2: the scales of u and v
+    by_reciprocals = _ratio_scales(big, nan, scales)
+    scales[_BY_RECIPROCALS] = 1.0 if by_reciprocals else 0.0
+    for k0 in range(0, edges if not by_reciprocals else 0, FIT_BLOCK):  # pass 2: u's, v's scales
         block, block_inner = _block_columns(p, k0, buffers, False, lengths)
         edge = lengths[k0 : k0 + block]
         _second_pass(buffers, edge, min(block, FIT_BLOCK), block_inner, scales, big, nan)
-    for k in range(5, 10):
-        scales[k] = _scale_of(big, nan, k)
+    if not by_reciprocals:
+        for k in range(5, 10):
+            scales[k] = _scale_of(big, nan, k)
     # pass 3: the sums, in numpy's order; (D3)'s leaves from the same blocks as the others'
     leaves = np.empty((edges // 64 + 2, 2), dtype=np.int64)
     leaves = leaves[: _leaves(0, edges, leaves, 0) if edges else 0]
@@ -588,9 +675,14 @@ def _summary_body(p: Any, lengths: Any) -> Any:
     while window[3] < leaves.shape[0]:  # (D3)'s last leaves, past (D1)'s equations
         _refill(p, leaves[window[3], 0], scales, buffers, lengths, window, leaves, sums)
     vv3, uv3 = _leaf_tree(edges, sums, np.zeros(1, dtype=np.int64))
-    c1, has1 = _constant(uv1, vv1, scales, _S_SECOND, _S_PAIRED_L, _S_U, _S_V1)
-    c3, has3 = _constant(uv3, vv3, scales, _S_AREA, _S_L, _S_U3, _S_V3)
-    c2, has2 = _constant(uv2, vv2, scales, _S_SECOND, _S_PAIRED_A, _S_U, _S_V2)
+    if by_reciprocals:
+        c1, has1 = _ratio_constant(uv1, vv1, scales, _S_U, _S_V1)
+        c3, has3 = _ratio_constant(uv3, vv3, scales, _S_U3, _S_V3)
+        c2, has2 = _ratio_constant(uv2, vv2, scales, _S_U, _S_V2)
+    else:
+        c1, has1 = _constant(uv1, vv1, scales, _S_SECOND, _S_PAIRED_L, _S_U, _S_V1)
+        c3, has3 = _constant(uv3, vv3, scales, _S_AREA, _S_L, _S_U3, _S_V3)
+        c2, has2 = _constant(uv2, vv2, scales, _S_SECOND, _S_PAIRED_A, _S_U, _S_V2)
     ratio = has1 and has3 and c3 != 0 and inner > 0
     constants = np.array([c1, c3, c2, 1.0 if ratio else 0.0, c1 / c3 if ratio else 0.0])
     worst = np.zeros(3, dtype=np.int64)  # the bits of the largest residuals (``_fold``)
@@ -622,10 +714,10 @@ def _summary_passes_contiguous(p: Any, lengths: Any) -> Any:
 
 
 def fits_summary(p: Array) -> Any:
-    """The fits' summary of the float64 polygon ``p`` ((m, 2)): ``_fits``'s first array, bit
-    for bit, with one array of size m − 1 (the edges' lengths) instead of ``_fits``'s columns
-    and residuals (``_summary_passes``). A pure function of ``p`` that releases the GIL:
-    ``d4b.checks`` runs it on a second thread at large m."""
+    """The fits' summary of the float64 polygon ``p`` ((m, 2)): ``_fits``'s first array (to
+    rounding, ``_ratio_scales``), with one array of size m − 1 (the edges' lengths) instead of
+    ``_fits``'s columns and residuals (``_summary_passes``). A pure function of ``p`` that
+    releases the GIL: ``d4b.checks`` runs it on a second thread at large m."""
     lengths = np.empty(max(len(p) - 1, 0))  # the edges' lengths, written by the first pass
     if p.flags.c_contiguous:
         return _summary_passes_contiguous(p, lengths)
@@ -677,10 +769,16 @@ class Fits:
 
     @property
     def fits(self) -> dict[str, ConditionFit]:
-        """The three fits with their residuals (``_fits``'s arrays, computed once)."""
-        _, d1, d3, eq2, _ = self._residuals()
+        """The three fits with their residuals (``_fits``'s arrays, computed once), each with
+        the constant its residuals were computed with (``_fits``'s: without ``detail`` the
+        summary's ``constants`` may differ from it by a few ulp, ``_ratio_scales``)."""
+        summary, d1, d3, eq2, _ = self._residuals()
+        own = summary.tolist()
         found = {"d1": d1, "d3": d3, "eq2": eq2}
-        return {key: ConditionFit(self.constants[key], found[key]) for key in found}
+        return {
+            key: ConditionFit(np.float64(own[k]) if own[k + 3] else None, found[key])
+            for k, key in enumerate(found)
+        }
 
     @property
     def equation_2(self) -> Any:
