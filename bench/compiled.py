@@ -158,28 +158,41 @@ def checks(n: int = 10**6, rounds: int = 5) -> None:
 
 # --- part 0: the arithmetic every check needs, and what it costs here at the least ---
 
-#: Per vertex of a 10^6 D4b with every check (method=construction), the calls each check's
-#: float64 pass makes, counted from the kernels' source (session 18): (check, divisions,
-#: square roots, libm-exact hypots, numpy cosh/sinh/tanh, numpy atan2). A ``length`` or
-#: ``length3`` is one square root; the fits keep libm's hypot (their constants are shown).
-#: Session 18 moved the rings (2 nested hypots a face), Darboux (3) and erratum E2 (1) from
-#: hypot to a square root. Divisions by a power of two are products and are not counted.
-ARITHMETIC: tuple[tuple[str, int, int, int, int, int], ...] = (
-    ("Theorem 4's hypothesis", 2, 0, 0, 0, 0),
-    ("Theorem 4 (i)-(iii): three fits + (2)'s misfit", 22, 0, 1, 0, 0),
-    ("erratum E2 (the proof's ratio)", 2, 1, 0, 0, 0),
-    ("Theorem 4's rotation angle (three atan2)", 0, 0, 0, 0, 3),
-    ("(13) and its two-step form", 8, 0, 0, 0, 0),
-    ("two-step as printed (E3)", 2, 0, 0, 0, 0),
-    ("Theorems 5, 6 (closed forms (14), (16) + comparison)", 3, 4, 0, 3, 0),
-    ("Darboux: edges and distance", 2, 3, 0, 0, 0),
-    ("Nikolaides' right angles", 2, 0, 0, 0, 0),
-    ("(18)-(20) closed forms (19), (20)", 2, 0, 0, 4, 0),
-    ("(18), (19), (20) corrected and printed comparisons", 8, 12, 0, 0, 0),
-    ("(18)'s slope form as printed (E61)", 4, 2, 0, 0, 0),
-    ("(19) as a rotation, (20) by inversion, resolutions", 4, 4, 0, 0, 0),
-    ("Theorems 7, 8 and (17): two rings", 12, 4, 0, 0, 0),
+#: Per vertex of a 10^6 D4b with every check (method=construction, no ``detail``), the calls each
+#: check's float64 pass makes on an ordinary polygon, counted from the kernels' source (session
+#: 22): (check, divisions, square roots, libm-exact hypots, numpy cosh/sinh/tanh, numpy exp, numpy
+#: atan2). Per-vertex work only (not a block's one root of its largest square); divisions by a
+#: power of two are products and are not counted; a ``length``, ``length3`` or ``fast_length`` is
+#: one square root; the fits keep libm's hypot for the edges (their constants are shown). Session
+#: 22 retook the counts: the rotation angle is a quotient im/re a row for the corrected and the
+#: printed angle (atan2 only in blocks off that path, e.g. a perturbed polygon); Darboux's edges
+#: are squares (one division, no root; the distances keep their root); Theorems 5, 6 and
+#: (18)-(20) make their closed forms from w = e^(-|t|), numpy's exp of each argument (no cosh,
+#: sinh, tanh), and compare squares (no root a row); the fits drop pass 2, take pass 3 by
+#: reciprocals (a division a row) and run pass 4's divisions only in blocks that may raise a
+#: largest residual (``_may_raise``; at 10^6 about a fifth of the blocks for (D3), 1 % for the
+#: others: under 0.25 a vertex, not counted); E2's spread is read at the extreme ratios (no
+#: division a row); the row of (18) by slopes now counts the along residual's division with
+#: E61's four (one pass for both; session 18's row left it out).
+ARITHMETIC: tuple[tuple[str, int, int, int, int, int, int], ...] = (
+    ("Theorem 4's hypothesis", 2, 0, 0, 0, 0, 0),
+    ("Theorem 4 (i)-(iii): three fits + (2)'s misfit", 4, 0, 1, 0, 0, 0),
+    ("erratum E2 (the proof's ratio)", 1, 1, 0, 0, 0, 0),
+    ("Theorem 4's rotation angle (a quotient im/re each)", 2, 0, 0, 0, 0, 0),
+    ("(13) and its two-step form", 8, 0, 0, 0, 0, 0),
+    ("two-step as printed (E3)", 2, 0, 0, 0, 0, 0),
+    ("Theorems 5, 6 (closed forms (14), (16) + comparison)", 4, 0, 0, 0, 2, 0),
+    ("Darboux: edges (squares) and distance", 2, 1, 0, 0, 0, 0),
+    ("Nikolaides' right angles", 2, 0, 0, 0, 0, 0),
+    ("(18)-(20) closed forms (19), (20)", 2, 0, 0, 0, 2, 0),
+    ("(18), (19), (20) corrected and printed comparisons", 3, 0, 0, 0, 0, 0),
+    ("(18) by slopes and as printed (E61)", 5, 2, 0, 0, 0, 0),
+    ("(19) as a rotation, (20) by inversion, resolutions", 4, 4, 0, 0, 0, 0),
+    ("Theorems 7, 8 and (17): two rings", 12, 4, 0, 0, 0, 0),
 )
+
+#: The columns of ``ARITHMETIC``'s counts as ``arithmetic`` prints them: (heading, width).
+COUNT_COLUMNS = (("div", 3), ("sqrt", 4), ("hyp", 3), ("hyp.fn", 6), ("exp", 3), ("atan2", 5))
 
 
 #: Entries of the cache-resident block the primitives loop over (``arithmetic``): 3 × 32 KB.
@@ -288,6 +301,7 @@ def arithmetic(n: int = 10**6, repeat: int = 9) -> float:
     x = rng.uniform(0.5, 2.0, BLOCK)  # moderate magnitudes: hypot's unscaled branch
     y = rng.uniform(0.5, 2.0, BLOCK)
     t = rng.uniform(-30.0, 30.0, BLOCK)  # the closed forms' arguments at 10^6 (|t| <= 100)
+    decays = -np.abs(t)  # exp's arguments: w = e^(-|t|) of the closed forms since session 22
     out = np.empty(BLOCK)
     rounds = max(n // BLOCK, 1)
 
@@ -308,6 +322,7 @@ def arithmetic(n: int = 10**6, repeat: int = 9) -> float:
         "cosh (numpy | libm)": (cpu(_numpy_rounds(np.cosh), t), cpu(_libm_cosh, t)),
         "sinh (numpy)": (cpu(_numpy_rounds(np.sinh), t), math.nan),
         "tanh (numpy)": (cpu(_numpy_rounds(np.tanh), t), math.nan),
+        "exp (numpy)": (cpu(_numpy_rounds(np.exp), decays), math.nan),
         "atan2 (numpy | libm)": (cpu(_numpy_rounds(np.arctan2)), cpu(_libm_atan2)),
     }
     print(
@@ -327,30 +342,31 @@ def arithmetic(n: int = 10**6, repeat: int = 9) -> float:
         ("√(x² + y²)",),
         ("hypot (libm's bits, inline)",),
         ("cosh (numpy | libm)", "sinh (numpy)", "tanh (numpy)"),
+        ("exp (numpy)",),
         ("atan2 (numpy | libm)",),
-    )
-    # the checks take numpy's cosh, sinh, tanh and arctan2: their vectorized cost in both columns
+    )  # in the order of ``COUNT_COLUMNS``
+    # the checks take numpy's cosh, sinh, tanh, exp and arctan2 (the kinds from the fourth on):
+    # their vectorized cost in both columns
     per_kind = [statistics.mean(net[name][0] for name in kind) for kind in kinds]
     per_kind_scalar = [
         statistics.mean(net[name][0 if k >= 3 else 1] for name in kind)
         for k, kind in enumerate(kinds)
     ]
-    print(f"  {'per vertex, every check':<54} div sqrt hyp hyp.fn atan2   floor ns  scalar ns")
+
+    def counted(values: list[int]) -> str:
+        return " ".join(f"{v:{width}}" for v, (_, width) in zip(values, COUNT_COLUMNS, strict=True))
+
+    headings = " ".join(f"{name:>{width}}" for name, width in COUNT_COLUMNS)
+    print(f"  {'per vertex, every check':<54} {headings}   floor ns  scalar ns")
     total = total_scalar = 0.0
-    counts = [0] * 5
+    counts = [0] * len(COUNT_COLUMNS)
     for label, *row in ARITHMETIC:
         ns = sum(c * cost for c, cost in zip(row, per_kind, strict=True))
         ns_scalar = sum(c * cost for c, cost in zip(row, per_kind_scalar, strict=True))
         total, total_scalar = total + ns, total_scalar + ns_scalar
         counts = [a + b for a, b in zip(counts, row, strict=True)]
-        print(
-            f"  {label:<54} {row[0]:3d} {row[1]:4d} {row[2]:3d} {row[3]:6d} {row[4]:5d}"
-            f" {ns:10.1f} {ns_scalar:10.1f}"
-        )
-    print(
-        f"  {'total':<54} {counts[0]:3d} {counts[1]:4d} {counts[2]:3d} {counts[3]:6d} "
-        f"{counts[4]:5d} {total:10.1f} {total_scalar:10.1f}"
-    )
+        print(f"  {label:<54} {counted(row)} {ns:10.1f} {ns_scalar:10.1f}")
+    print(f"  {'total':<54} {counted(counts)} {total:10.1f} {total_scalar:10.1f}")
     print(
         f"  arithmetic floor at 10^6 vertices: {total:.0f} ms vectorized, {total_scalar:.0f} ms "
         f"in scalar passes (ns/vertex × 10^6; the 100× target ≈ 100 ms)"
