@@ -1615,151 +1615,29 @@ def _closed_image_block(
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
-def _six_rows(
-    first: int,
-    count: int,
-    rows: int,
-    L: float,
-    shift: float,
-    decays: Any,
-    h: float,
-    d: float,
-    gauss_amplitude: float,
-    normals: Any,
-    contact: Any,
-    gauss: Any,
-    contact_scale: Any,
-    gauss_scale: Any,
-    offset: int,
-    scratch: Any,
-) -> bool:
-    """``_image_block_from_decays``' rows when all six comparisons are asked for (every check):
-    the same numbers from one loop that reads each row once, the squares into ``scratch[:6]``;
-    whether every square is ``_usual``."""
-    plain = True
-    block_n = normals[2 * offset : 2 * (offset + rows)]
-    block_c = contact[2 * offset + 2 : 2 * (offset + rows) + 2]
-    block_m = gauss[2 * offset : 2 * (offset + rows)]
-    scale_19, scale_20 = contact_scale[offset : offset + rows], gauss_scale[offset : offset + rows]
-    w_19, w_20 = decays[1 : rows + 1], decays[count + 1 : count + 1 + rows]
-    for k in range(rows):
-        sech, th = _sech_tanh((float(first + k) + shift) * L, w_19[k])
-        # (18) and its printed form (sech t, −tanh t)
-        ax, ay, by = block_n[2 * k] - sech, block_n[2 * k + 1] - th, block_n[2 * k + 1] + th
-        a, b = ax * ax + ay * ay, ax * ax + by * by
-        scratch[0, k], scratch[3, k] = a, b
-        # (19) and its printed form (tanh t, sech t)
-        cx, ey = block_c[2 * k], block_c[2 * k + 1] - sech
-        ex, fx, s = cx + th, cx - th, scale_19[k]
-        e, f, s = ex * ex + ey * ey, fx * fx + ey * ey, s * s
-        scratch[1, k], scratch[4, k] = e * s, f
-        plain &= _usual(a) & _usual(b) & _usual(e) & _usual(f) & _usual(s)
-        # (20) and its printed form from n_i
-        sech_20, th_20 = _sech_tanh((float(first + k) - 0.5 + shift) * L, w_20[k])
-        mx, my, gx, gy, s = (
-            -th_20,
-            gauss_amplitude * sech_20,
-            block_m[2 * k],
-            block_m[2 * k + 1],
-            scale_20[k],
-        )
-        dx, dy = gx - mx, gy - my
-        a, m, s = dx * dx + dy * dy, mx * mx + my * my, s * s
-        scratch[2, k] = a * s / m
-        reciprocal = 1.0 / (h + d * th)
-        x, y = (h * th - d) * reciprocal, h * sech * reciprocal
-        qx, qy = gx - x, gy - y
-        q, z = qx * qx + qy * qy, x * x + y * y
-        scratch[5, k] = q / z
-        plain &= _usual(a) & _usual(m) & _usual(s) & _usual(q) & _usual(z)
-    return plain
+def _square_distance(px: float, py: float, qx: float, qy: float) -> float:
+    """|p − q|² of two points given by their coordinates."""
+    dx, dy = px - qx, py - qy
+    return dx * dx + dy * dy
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
-def _chosen_rows(
-    first: int,
-    count: int,
-    rows: int,
-    L: float,
-    shift: float,
-    decays: Any,
-    h: float,
-    d: float,
-    gauss_amplitude: float,
-    normals: Any,
-    contact: Any,
-    gauss: Any,
-    contact_scale: Any,
-    gauss_scale: Any,
-    offset: int,
-    scratch: Any,
-    wanted: Any,
-) -> bool:
-    """``_image_block_from_decays``' rows for the ``wanted`` comparisons, a loop each (sech t and
-    tanh t of (19)'s arguments made once into ``scratch[6:8]``), the squares into
-    ``scratch[:6]``; whether every square is ``_usual``."""
-    sechs, tanhs = scratch[6], scratch[7]
-    plain = True
-    if wanted[0] or wanted[1] or wanted[3] or wanted[4] or wanted[5]:
-        # (19)'s arguments from one index before: n_i and ñ_i at row k + 1
-        block_w = decays[1 : rows + 1]
-        for k in range(rows):
-            t = (float(first + k) + shift) * L
-            sechs[k], tanhs[k] = _sech_tanh(t, block_w[k])
-    if wanted[0] or wanted[3]:
-        block_n = normals[2 * offset : 2 * (offset + rows)]
-    if wanted[0]:
-        values = scratch[0]
-        for k in range(rows):
-            dx, dy = block_n[2 * k] - sechs[k], block_n[2 * k + 1] - tanhs[k]
-            values[k] = dx * dx + dy * dy
-            plain &= _usual(values[k])
-    if wanted[3]:  # (18) printed: (sech t, −tanh t)
-        values = scratch[3]
-        for k in range(rows):
-            dx, dy = block_n[2 * k] - sechs[k], block_n[2 * k + 1] + tanhs[k]
-            values[k] = dx * dx + dy * dy
-            plain &= _usual(values[k])
-    if wanted[1] or wanted[4]:  # ñ_i at row k + 1 of the contact points (from i_min − 1)
-        block_c = contact[2 * offset + 2 : 2 * (offset + rows) + 2]
-    if wanted[1]:
-        values, block_scale = scratch[1], contact_scale[offset : offset + rows]
-        for k in range(rows):
-            dx, dy = block_c[2 * k] + tanhs[k], block_c[2 * k + 1] - sechs[k]
-            distance, scale = dx * dx + dy * dy, block_scale[k] * block_scale[k]
-            values[k] = distance * scale
-            plain &= _usual(distance) & _usual(scale)
-    if wanted[4]:  # (19) printed: (tanh t, sech t)
-        values = scratch[4]
-        for k in range(rows):
-            dx, dy = block_c[2 * k] - tanhs[k], block_c[2 * k + 1] - sechs[k]
-            values[k] = dx * dx + dy * dy
-            plain &= _usual(values[k])
-    if wanted[2] or wanted[5]:
-        block_m = gauss[2 * offset : 2 * (offset + rows)]
-    if wanted[2]:
-        values, block_scale = scratch[2], gauss_scale[offset : offset + rows]
-        block_w = decays[count + 1 : count + 1 + rows]
-        for k in range(rows):
-            t = (float(first + k) - 0.5 + shift) * L
-            sech, th = _sech_tanh(t, block_w[k])
-            mx, my = -th, gauss_amplitude * sech
-            dx, dy = block_m[2 * k] - mx, block_m[2 * k + 1] - my
-            distance, size = dx * dx + dy * dy, mx * mx + my * my
-            scale = block_scale[k] * block_scale[k]
-            values[k] = distance * scale / size
-            plain &= _usual(distance) & _usual(size) & _usual(scale)
-    if wanted[5]:  # (20) printed, from n_i: ((h tanh t − d), h sech t)/(h + d tanh t)
-        values = scratch[5]
-        for k in range(rows):
-            th = tanhs[k]
-            reciprocal = 1.0 / (h + d * th)
-            x, y = (h * th - d) * reciprocal, h * sechs[k] * reciprocal
-            dx, dy = block_m[2 * k] - x, block_m[2 * k + 1] - y
-            distance, size = dx * dx + dy * dy, x * x + y * y
-            values[k] = distance / size
-            plain &= _usual(distance) & _usual(size)
-    return plain
+def _gauss_square(gx: float, gy: float, sech: float, th: float, amplitude: float, s: float) -> Any:
+    """(20)'s squared residual at a row, |m_i − (−tanh t, amplitude · sech t)|² · s² / |closed|²
+    (s: the row's resolution), and whether its three squares are ``_usual``."""
+    mx, my = -th, amplitude * sech
+    distance, size, scale = _square_distance(gx, gy, mx, my), mx * mx + my * my, s * s
+    return distance * scale / size, _usual(distance) & _usual(size) & _usual(scale)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _printed_gauss_square(gx: float, gy: float, sech: float, th: float, h: float, d: float) -> Any:
+    """The printed (20)'s squared relative residual at a row, from n_i's (sech t, tanh t): the
+    point ((h tanh t − d), h sech t) · 1/(h + d tanh t); and whether its squares are ``_usual``."""
+    reciprocal = 1.0 / (h + d * th)
+    x, y = (h * th - d) * reciprocal, h * sech * reciprocal
+    distance, size = _square_distance(gx, gy, x, y), x * x + y * y
+    return distance / size, _usual(distance) & _usual(size)
 
 
 @kernel(
@@ -1802,50 +1680,84 @@ def _image_block_from_decays(
     correctly rounded). The printed (20) multiplies by the reciprocal of its denominator
     h + d·tanh t. The rounding moves at the last bits of the residuals (tests/test_golden.py,
     session 22). A NaN, an infinite or out-of-range square (a squared length or resolution not
-    ``_usual``) sends the block back."""
+    ``_usual``) sends the block back.
+
+    With all six wanted (every check) one loop reads each row of n, ñ and m once; otherwise a
+    loop a comparison (sech t, tanh t of (19)'s arguments made once into ``scratch[6:8]``). Each
+    comparison's square comes from the same helper with the same arguments either way
+    (``_square_distance``, ``_gauss_square``, ``_printed_gauss_square``): the same numbers."""
     rows = min(count, n - offset)
     if rows <= 0:
         return True
-    everything = wanted[0] & wanted[1] & wanted[2] & wanted[3] & wanted[4] & wanted[5]
-    if everything:
-        plain = _six_rows(
-            first,
-            count,
-            rows,
-            L,
-            shift,
-            decays,
-            h,
-            d,
-            gauss_amplitude,
-            normals,
-            contact,
-            gauss,
-            contact_scale,
-            gauss_scale,
-            offset,
-            scratch,
-        )
+    plain = True
+    # n_i and ñ_i at row k + 1 of (19)'s arguments and of the contact points (from i_min − 1)
+    block_n = normals[2 * offset : 2 * (offset + rows)]
+    block_c = contact[2 * offset + 2 : 2 * (offset + rows) + 2]
+    block_m = gauss[2 * offset : 2 * (offset + rows)]
+    scale_19, scale_20 = contact_scale[offset : offset + rows], gauss_scale[offset : offset + rows]
+    w_19, w_20 = decays[1 : rows + 1], decays[count + 1 : count + 1 + rows]
+    if wanted[0] & wanted[1] & wanted[2] & wanted[3] & wanted[4] & wanted[5]:
+        for k in range(rows):
+            sech, th = _sech_tanh((float(first + k) + shift) * L, w_19[k])
+            nx, ny, cx, cy = block_n[2 * k], block_n[2 * k + 1], block_c[2 * k], block_c[2 * k + 1]
+            gx, gy = block_m[2 * k], block_m[2 * k + 1]
+            # (18) and its printed form (sech t, −tanh t)
+            a, b = _square_distance(nx, ny, sech, th), _square_distance(nx, ny, sech, -th)
+            # (19) and its printed form (tanh t, sech t)
+            e, f = _square_distance(cx, cy, -th, sech), _square_distance(cx, cy, th, sech)
+            s = scale_19[k] * scale_19[k]
+            scratch[0, k], scratch[3, k], scratch[1, k], scratch[4, k] = a, b, e * s, f
+            plain &= _usual(a) & _usual(b) & _usual(e) & _usual(f) & _usual(s)
+            # (20) and its printed form from n_i
+            sech_20, th_20 = _sech_tanh((float(first + k) - 0.5 + shift) * L, w_20[k])
+            g, plain_g = _gauss_square(gx, gy, sech_20, th_20, gauss_amplitude, scale_20[k])
+            q, plain_q = _printed_gauss_square(gx, gy, sech, th, h, d)
+            scratch[2, k], scratch[5, k] = g, q
+            plain &= plain_g & plain_q
     else:
-        plain = _chosen_rows(
-            first,
-            count,
-            rows,
-            L,
-            shift,
-            decays,
-            h,
-            d,
-            gauss_amplitude,
-            normals,
-            contact,
-            gauss,
-            contact_scale,
-            gauss_scale,
-            offset,
-            scratch,
-            wanted,
-        )
+        sechs, tanhs = scratch[6], scratch[7]
+        if wanted[0] or wanted[1] or wanted[3] or wanted[4] or wanted[5]:
+            for k in range(rows):
+                sechs[k], tanhs[k] = _sech_tanh((float(first + k) + shift) * L, w_19[k])
+        if wanted[0]:
+            values = scratch[0]
+            for k in range(rows):
+                values[k] = _square_distance(block_n[2 * k], block_n[2 * k + 1], sechs[k], tanhs[k])
+                plain &= _usual(values[k])
+        if wanted[3]:  # (18) printed: (sech t, −tanh t)
+            values = scratch[3]
+            for k in range(rows):
+                values[k] = _square_distance(
+                    block_n[2 * k], block_n[2 * k + 1], sechs[k], -tanhs[k]
+                )
+                plain &= _usual(values[k])
+        if wanted[1]:
+            values = scratch[1]
+            for k in range(rows):
+                e = _square_distance(block_c[2 * k], block_c[2 * k + 1], -tanhs[k], sechs[k])
+                s = scale_19[k] * scale_19[k]
+                values[k] = e * s
+                plain &= _usual(e) & _usual(s)
+        if wanted[4]:  # (19) printed: (tanh t, sech t)
+            values = scratch[4]
+            for k in range(rows):
+                values[k] = _square_distance(block_c[2 * k], block_c[2 * k + 1], tanhs[k], sechs[k])
+                plain &= _usual(values[k])
+        if wanted[2]:
+            values = scratch[2]
+            for k in range(rows):
+                sech_20, th_20 = _sech_tanh((float(first + k) - 0.5 + shift) * L, w_20[k])
+                gx, gy = block_m[2 * k], block_m[2 * k + 1]
+                g, plain_g = _gauss_square(gx, gy, sech_20, th_20, gauss_amplitude, scale_20[k])
+                values[k] = g
+                plain &= plain_g
+        if wanted[5]:  # (20) printed, from n_i: ((h tanh t − d), h sech t)/(h + d tanh t)
+            values = scratch[5]
+            for k in range(rows):
+                gx, gy = block_m[2 * k], block_m[2 * k + 1]
+                q, plain_q = _printed_gauss_square(gx, gy, sechs[k], tanhs[k], h, d)
+                values[k] = q
+                plain &= plain_q
     tops = np.zeros(6, dtype=np.int64)
     for j in range(6):
         if wanted[j]:
