@@ -712,7 +712,9 @@ def _rotation_old_block(
 
 
 def _fold(value: float, largest: float) -> float:
-    """``compiled.running_largest`` in Python (a block's largest into the running one)."""
+    """``compiled.running_largest`` in Python (a block's largest into the running one): the
+    njit function called from Python would be compiled for it at the first such request, and
+    the app compiles only on import (tests/geometry/test_compiled.py)."""
     if largest != largest:
         return largest
     magnitude = abs(value)
