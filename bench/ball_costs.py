@@ -29,9 +29,10 @@ charged: list[float] = []
 _original = admission.Admission.charge
 
 
-def _spy(self: Any, ticket: Any, seconds: float, nbytes: int) -> None:
-    charged.append(seconds)
-    _original(self, ticket, seconds, nbytes)
+def _spy(self: Any, ticket: Any, seconds: float, nbytes: int, dry: bool = False) -> None:
+    if not dry:  # a dry charge only tests what a charge would refuse: nothing is admitted
+        charged.append(seconds)
+    _original(self, ticket, seconds, nbytes, dry)
 
 
 def main() -> None:

@@ -40,7 +40,7 @@ from bench.common import compare, ratio_row
 TARGET = 3.0
 
 
-def kernels(ar: Float64, n: int) -> list[tuple[str, int, Callable[[], object]]]:
+def kernels(ar: Float64, n: int) -> list[tuple[str, float, Callable[[], object]]]:
     """(label, (n, 2) arrays returned, function) for every kernel at n vertices."""
     lo, hi = -(n // 2), n - n // 2 - 1
     i = ar.indices(lo, hi)

@@ -26,6 +26,7 @@ measurable time.
 
 from __future__ import annotations
 
+import functools
 import os
 import sys
 from pathlib import Path
@@ -63,7 +64,7 @@ def plain_script(digits: int) -> list[object]:
 
 def on_balls(digits: int, selection: Selection = EVERYTHING) -> Any:
     """(D4b) as the service computes precision=mp: on balls, every check."""
-    arguments = {"h": H, "d": D, "beta0": None, "i_min": LO, "i_max": HI}
+    arguments: dict[str, Any] = {"h": H, "d": D, "beta0": None, "i_min": LO, "i_max": HI}
     return balls.serve(
         "d4b",
         MultiPrecision(digits),
@@ -81,12 +82,9 @@ def main(digits: tuple[int, ...] = (50, 500)) -> None:
     # process runs both the script and the served computation about 45 % slower (heap and
     # caches; a gc.collect() does not undo it), which made the ratio jump from run to run
     for n_digits in digits:
-        served = compare(
-            lambda n=n_digits: plain_script(n), lambda n=n_digits: on_balls(n), SERVED_PAIRS
-        )
-        polygon = compare(
-            lambda n=n_digits: plain_script(n), lambda n=n_digits: on_balls(n, NOTHING), PAIRS
-        )
+        script = functools.partial(plain_script, n_digits)
+        served = compare(script, functools.partial(on_balls, n_digits), SERVED_PAIRS)
+        polygon = compare(script, functools.partial(on_balls, n_digits, NOTHING), PAIRS)
         print(
             ratio_row(f"digits={n_digits}: balls (served), every check", served, "script", TARGET)
         )
@@ -94,8 +92,8 @@ def main(digits: tuple[int, ...] = (50, 500)) -> None:
     for n_digits in digits:
         mp = MultiPrecision(n_digits)
         mpmath_path = compare(
-            lambda n=n_digits: plain_script(n),
-            lambda mp=mp: d4b.compute(mp, H, D, None, LO, HI),
+            functools.partial(plain_script, n_digits),
+            functools.partial(d4b.compute, mp, H, D, None, LO, HI),
             1,
             warm=False,
         )

@@ -75,7 +75,7 @@ TRANSCENDENTAL = (
 )
 
 
-class Counted(np.ndarray):  # type: ignore[type-arg]
+class Counted(np.ndarray):
     """An object array that counts the entries of every ufunc applied to it."""
 
     def __array_ufunc__(self, ufunc: Any, method: str, *inputs: Any, **kwargs: Any) -> Any:
@@ -154,7 +154,7 @@ def _instrument() -> None:
             built.__dict__[name] = _counted(getattr(built, name))
         return built
 
-    d4b.construct = counted_construct  # type: ignore[assignment]
+    d4b.construct = counted_construct  # type: ignore[attr-defined,assignment]
 
 
 def _instrument_section_5() -> None:
@@ -191,7 +191,7 @@ def _instrument_section_5() -> None:
                 entry[2] += COUNTS["compiled"] - before
                 entry[3] += COMPILED_SECONDS[-1]
 
-    arb_program.run = counted_run  # type: ignore[assignment]
+    arb_program.run = counted_run
 
 
 def _timed(function: Callable[[], object]) -> tuple[float, dict[str, int]]:
