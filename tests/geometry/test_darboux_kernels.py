@@ -16,7 +16,7 @@ from app.geometry.checks import Largest
 from app.geometry.compiled import length
 from app.geometry.d4b import discretization as d4b
 from app.geometry.precision import Float64
-from tests.geometry.bits import D4B_POLYGONS, same_bits
+from tests.geometry.bits import D4B_POLYGONS, assert_within_ulps, same_bits
 
 BLOCK = darboux.DARBOUX_BLOCK
 
@@ -48,7 +48,6 @@ def old_distances(x: Any, e: Any, expected: float) -> Any:
 #: How far an edge's residual may move (session 22: |l² − l'²| / √(2(l² + l'²)) instead of
 #: |l − l'|), in units of (l + l') / size: each way is within about one of the exact value.
 ULPS = 8
-BIG = float(np.finfo(np.float64).max)
 
 
 def edge_scale(x: Any, e: Any) -> Any:
@@ -62,13 +61,7 @@ def edge_scale(x: Any, e: Any) -> Any:
 
 def assert_near(found: Any, expected: Any, scale: Any) -> None:
     """``ULPS`` units of ``scale`` apart entry by entry, NaN exactly where expected is."""
-    found, expected = np.atleast_1d(found), np.atleast_1d(expected)
-    assert found.shape == expected.shape
-    nan = np.isnan(expected)
-    assert (np.isnan(found) == nan).all(), (found, expected)
-    with np.errstate(all="ignore"):
-        room = ULPS * np.spacing(np.nan_to_num(np.atleast_1d(scale), nan=BIG, posinf=BIG))
-    assert (abs(found[~nan] - expected[~nan]) <= room[~nan]).all(), (found, expected)
+    assert_within_ulps(found, expected, scale, ULPS)
 
 
 def old_largest(values: Any) -> float:

@@ -659,11 +659,11 @@ def _summary_body(p: Any, lengths: Any) -> Any:
         scales[k] = _scale_of(big, nan, k)
     by_reciprocals = _ratio_scales(big, nan, scales)
     scales[_BY_RECIPROCALS] = 1.0 if by_reciprocals else 0.0
-    for k0 in range(0, edges if not by_reciprocals else 0, FIT_BLOCK):  # pass 2: u's, v's scales
-        block, block_inner = _block_columns(p, k0, buffers, False, lengths)
-        edge = lengths[k0 : k0 + block]
-        _second_pass(buffers, edge, min(block, FIT_BLOCK), block_inner, scales, big, nan)
     if not by_reciprocals:
+        for k0 in range(0, edges, FIT_BLOCK):  # pass 2: the scales of u and v
+            block, block_inner = _block_columns(p, k0, buffers, False, lengths)
+            edge = lengths[k0 : k0 + block]
+            _second_pass(buffers, edge, min(block, FIT_BLOCK), block_inner, scales, big, nan)
         for k in range(5, 10):
             scales[k] = _scale_of(big, nan, k)
     # pass 3: the sums, in numpy's order; (D3)'s leaves from the same blocks as the others'

@@ -555,6 +555,14 @@ ROTATION_LOW, ROTATION_HIGH = 2.0**-900, 2.0**1000
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
+def _height_scale(here: Any, count: int) -> float:
+    """The power of two that scales w = p^y + i d in a block of the rotation angle: about
+    1/p^y at the block's first vertex (exact, so no division a row); inf for a subnormal first
+    height, 1 for an empty block."""
+    return math.ldexp(1.0, -math.frexp(here[0, 1])[1]) if count else 1.0
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
 def _rotation_products(
     u: float, v: float, here: Any, around: Any, j: int
 ) -> tuple[float, float, float, float, float, float]:
@@ -592,7 +600,7 @@ def _rotation_terms(d: float, p: Any, axis: Any, start: int, stop: int, rows: An
     count = stop - start
     here, around = p[start:stop], axis[start - 1 : stop + 1]  # indices from 0: no wrapping
     size = abs(d)
-    s = math.ldexp(1.0, -math.frexp(here[0, 1])[1]) if count else 1.0
+    s = _height_scale(here, count)
     if not s < math.inf:  # a subnormal first height: its scale overflows
         return ROTATION_OLD
     v = d * s
@@ -622,7 +630,7 @@ def _rotation_arguments_wrapped(
     count = stop - start
     here, around = p[start:stop], axis[start - 1 : stop + 1]
     size = abs(d)
-    s = math.ldexp(1.0, -math.frexp(here[0, 1])[1]) if count else 1.0
+    s = _height_scale(here, count)
     v = d * s
     plain = True
     for j in range(count):

@@ -14,7 +14,7 @@ import pytest
 from app.geometry.compiled import running_largest
 from app.geometry.d4b import discretization as d4b, residual_kernels
 from app.geometry.precision import Float64
-from tests.geometry.bits import D4B_POLYGONS, same_bits
+from tests.geometry.bits import D4B_POLYGONS, assert_within_ulps, same_bits
 
 
 @numba.njit(cache=False, error_model="numpy")
@@ -104,14 +104,7 @@ def angle_scale(d: float, p: Any, axis: Any, n: int) -> tuple[Any, Any]:
 
 def assert_close(found: Any, expected: Any, scale: Any) -> None:
     """Equal to ``ULPS`` units of ``scale`` entry by entry, NaN exactly where expected is."""
-    found, expected = np.asarray(found), np.asarray(expected)
-    assert found.shape == expected.shape
-    nan = np.isnan(expected)
-    assert (np.isnan(found) == nan).all(), (found, expected)
-    big = float(np.finfo(np.float64).max)
-    with np.errstate(over="ignore"):  # the spacing of the largest float is inf
-        room = ULPS * np.spacing(np.nan_to_num(scale, nan=big, posinf=big))
-    assert (abs(found[~nan] - expected[~nan]) <= room[~nan]).all(), (found, expected)
+    assert_within_ulps(found, expected, scale, ULPS)
 
 
 def assert_blocks_equal_old(d: float, p: Any, axis: Any, n: int, blocks: tuple[int, ...]) -> None:
