@@ -358,33 +358,24 @@ def pole_inversion_largest(gauss: Any, contact: Any, scale: Any, count: int) -> 
     return Largest(float(largest), count, lambda: _pole_inversion(*arrays, count, TINY, True)[0])
 
 
-@kernel(
-    "UniTuple(float64, 2)(float64[:, :], float64[:, :], float64[:, :], float64[:, :], "
-    "float64[:, :], int64, boolean, boolean, float64)"
-)
-def _rotation_and_inversion(
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _rotation_and_inversion_rows(
     p: Any,
-    before: Any,
     contact: Any,
     normals: Any,
     gauss: Any,
-    count: int,
+    start: int,
+    stop: int,
     rotation: bool,
     inversion: bool,
     tiny: float,
-) -> tuple[float, float]:
-    """``_contact_rotation`` (if ``rotation``) and ``_pole_inversion`` (if ``inversion``) as
-    their largest values, k = 0 .. count − 1, in one pass that makes their scales as it goes:
-    the edge resolution of p_k p_{k+1} (``_edge_resolution``) and the pole's, the smaller of it
-    and the previous edge's (np.minimum's, NaN if either is; the edge before the range is
-    ``before``'s one edge), so that neither scale is stored. The same numbers as the passes
-    over the stored scales."""
-    ex = before[1, 0] - before[0, 0]
-    ey = before[1, 1] - before[0, 1]
-    size = abs(before[0, 0]) + abs(before[0, 1]) + abs(before[1, 0]) + abs(before[1, 1])
-    previous = length(ex, ey) / size
-    largest_rotation, largest_inversion = 0.0, 0.0
-    for k in range(count):
+    previous: float,
+    largest_rotation: float,
+    largest_inversion: float,
+) -> tuple[float, float, float]:
+    """``_rotation_and_inversion`` on rows start .. stop − 1 from the previous edge's
+    resolution and the running largest values: (the last edge's resolution, the two largest)."""
+    for k in range(start, stop):
         ex = p[k + 1, 0] - p[k, 0]
         ey = p[k + 1, 1] - p[k, 1]
         size = abs(p[k, 0]) + abs(p[k, 1]) + abs(p[k + 1, 0]) + abs(p[k + 1, 1])
@@ -406,7 +397,44 @@ def _rotation_and_inversion(
             value = length(gauss[k, 0] - px, gauss[k, 1] - py) / pole * scale
             largest_inversion = running_largest(value, largest_inversion)
         previous = resolution
-    return largest_rotation, largest_inversion
+    return previous, largest_rotation, largest_inversion
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _resolution_before(before: Any) -> float:
+    """The edge resolution of ``before``'s one edge (the edge before the range)."""
+    ex = before[1, 0] - before[0, 0]
+    ey = before[1, 1] - before[0, 1]
+    size = abs(before[0, 0]) + abs(before[0, 1]) + abs(before[1, 0]) + abs(before[1, 1])
+    return length(ex, ey) / size
+
+
+@kernel(
+    "UniTuple(float64, 2)(float64[:, :], float64[:, :], float64[:, :], float64[:, :], "
+    "float64[:, :], int64, boolean, boolean, float64)"
+)
+def _rotation_and_inversion(
+    p: Any,
+    before: Any,
+    contact: Any,
+    normals: Any,
+    gauss: Any,
+    count: int,
+    rotation: bool,
+    inversion: bool,
+    tiny: float,
+) -> tuple[float, float]:
+    """``_contact_rotation`` (if ``rotation``) and ``_pole_inversion`` (if ``inversion``) as
+    their largest values, k = 0 .. count − 1, in one pass that makes their scales as it goes:
+    the edge resolution of p_k p_{k+1} (``_edge_resolution``) and the pole's, the smaller of it
+    and the previous edge's (np.minimum's, NaN if either is; the edge before the range is
+    ``before``'s one edge), so that neither scale is stored. The same numbers as the passes
+    over the stored scales; the scalar reference of ``_rotation_and_inversion_blocked``."""
+    found = _rotation_and_inversion_rows(
+        p, contact, normals, gauss, 0, count, rotation, inversion, tiny,
+        _resolution_before(before), 0.0, 0.0,
+    )  # fmt: skip
+    return found[1], found[2]
 
 
 def rotation_and_inversion_largest(
@@ -424,12 +452,12 @@ def rotation_and_inversion_largest(
     the pole resolution ``curvature.evaluate`` makes from it and ``before``), those asked for
     (0.0 for the other), from one pass without the scales' arrays; ``p`` and ``contact`` need
     count + 1 rows, ``normals`` and ``gauss`` count, ``before`` two."""
-    found = _rotation_and_inversion(
-        _points(p),
-        _points(before),
-        _points(contact),
-        _points(normals),
-        _points(gauss),
+    found = _rotation_and_inversion_blocked(
+        _contiguous(p),
+        _contiguous(before),
+        _contiguous(contact),
+        _contiguous(normals),
+        _contiguous(gauss),
         count,
         rotation,
         inversion,
@@ -1218,6 +1246,84 @@ def _largest_contact_rotation(contact: Any, normals: Any, scale: Any, count: int
         else:
             largest = running_largest(bits_value(top), largest)
     return largest
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _rotation_and_inversion_block(
+    q: Any, c: Any, nrm: Any, g: Any, count: int, tiny: float, out: Any, usual: Any
+) -> None:
+    """One block of ``_rotation_and_inversion_rows`` without branches (flat p and ñ with one row
+    more, flat n and m; ``out[0, 0]`` the previous edge's resolution on entry): the edges'
+    resolutions into out[0, 1 ..], (19)'s residuals into out[1], (20)'s into out[2]; ``usual``
+    says where every length is on ``compiled.length``'s square-root branch."""
+    resolution, rotated, inverted = out[0], out[1], out[2]
+    for j in range(count):
+        x0, y0, x1, y1 = q[2 * j], q[2 * j + 1], q[2 * j + 2], q[2 * j + 3]
+        size = abs(x0) + abs(y0) + abs(x1) + abs(y1)
+        edge, plain = fast_length(x1 - x0, y1 - y0)
+        resolution[j + 1] = edge / size
+        usual[j] = plain
+    for j in range(count):
+        previous, here = resolution[j], resolution[j + 1]
+        distance, plain = fast_length(c[2 * j + 2] - (-nrm[2 * j + 1]), c[2 * j + 3] - nrm[2 * j])
+        rotated[j] = distance * here
+        keep = (previous < here) | (previous != previous)
+        scale = previous if keep else here
+        tx = c[2 * j] + c[2 * j + 2]
+        ty = c[2 * j + 1] + c[2 * j + 3]
+        squared = tx * tx + ty * ty
+        px, py = 2 * tx / squared, 2 * ty / squared
+        pole, plain_pole = fast_length(px, py)
+        pole = pole if pole > tiny else tiny
+        distance, plain_distance = fast_length(g[2 * j] - px, g[2 * j + 1] - py)
+        inverted[j] = distance / pole * scale
+        usual[j] &= plain & plain_pole & plain_distance
+
+
+@kernel(
+    "UniTuple(float64, 2)(float64[:, ::1], float64[:, ::1], float64[:, ::1], float64[:, ::1], "
+    "float64[:, ::1], int64, boolean, boolean, float64)"
+)
+def _rotation_and_inversion_blocked(
+    p: Any,
+    before: Any,
+    contact: Any,
+    normals: Any,
+    gauss: Any,
+    count: int,
+    rotation: bool,
+    inversion: bool,
+    tiny: float,
+) -> tuple[float, float]:
+    """``_rotation_and_inversion`` a block of ``EDGE_BLOCK`` rows at a time (both residuals of a
+    block in a loop the compiler vectorizes, ``_rotation_and_inversion_block``; a block with a
+    NaN or a length off the square-root branch row by row): the same two numbers, bit for bit."""
+    q, c, nrm, g = p.reshape(-1), contact.reshape(-1), normals.reshape(-1), gauss.reshape(-1)
+    out = np.empty((3, EDGE_BLOCK + 1))
+    usual = np.empty(EDGE_BLOCK, dtype=np.bool_)
+    previous = _resolution_before(before)
+    largest_rotation, largest_inversion = 0.0, 0.0
+    for start in range(0, count, EDGE_BLOCK):
+        m = min(EDGE_BLOCK, count - start)
+        out[0, 0] = previous
+        _rotation_and_inversion_block(
+            _rows(q, start, m + 1), _rows(c, start, m + 1), _rows(nrm, start, m),
+            _rows(g, start, m), m, tiny, out, usual,
+        )  # fmt: skip
+        top_rotation = largest_bits(out[1], m) if rotation else 0
+        top_inversion = largest_bits(out[2], m) if inversion else 0
+        if top_rotation > INF_BITS or top_inversion > INF_BITS or not _all(usual, m):
+            previous, largest_rotation, largest_inversion = _rotation_and_inversion_rows(
+                p, contact, normals, gauss, start, start + m, rotation, inversion, tiny,
+                previous, largest_rotation, largest_inversion,
+            )  # fmt: skip
+            continue
+        if rotation:
+            largest_rotation = running_largest(bits_value(top_rotation), largest_rotation)
+        if inversion:
+            largest_inversion = running_largest(bits_value(top_inversion), largest_inversion)
+        previous = out[0, m]
+    return largest_rotation, largest_inversion
 
 
 # the edge resolution |e_i| / (|p_i| + |p_{i+1}|) and the pole's (the smaller of consecutive ones)

@@ -136,6 +136,14 @@ def test_blocked_edge_passes_equal_the_scalar_ones(count: int, mode: str, seed: 
     assert same(got_one, rk._pole_inversion(other, points, scale, count, rk.TINY, False)[1])
     got_one = rk._largest_contact_rotation(points, vectors, scale, count)
     assert same(got_one, rk._contact_rotation(points, vectors, scale, count, False)[1])
+    before = noisy(rng, 2, mode if mode != "smooth" else "plain")
+    for rotation, inversion in ((True, True), (True, False), (False, True)):
+        args = (points, before, points, vectors, other, count, rotation, inversion, rk.TINY)
+        found, reference = (
+            rk._rotation_and_inversion_blocked(*args),
+            rk._rotation_and_inversion(*args),
+        )
+        assert same(found[0], reference[0]) and same(found[1], reference[1])
     assert same_arrays(rk._edge_resolution_blocked(points), rk._edge_resolution(points))
     assert same_arrays(rk._printed_ratios_blocked(points), ref_printed_ratios(points))
     axis = noisy(rng, count, mode if mode != "smooth" else "plain")
@@ -274,6 +282,7 @@ def test_the_public_largest_functions_take_the_blocked_passes() -> None:
     [
         "_largest_along_both_blocked",
         "_largest_pole_inversion",
+        "_rotation_and_inversion_blocked",
         "_largest_recursions",
         "_largest_two_step_printed_pairs",
         "_edge_resolution_blocked",
