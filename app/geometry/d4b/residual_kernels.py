@@ -373,8 +373,13 @@ def _rotation_and_inversion_rows(
     largest_rotation: float,
     largest_inversion: float,
 ) -> tuple[float, float, float]:
-    """``_rotation_and_inversion`` on rows start .. stop − 1 from the previous edge's
-    resolution and the running largest values: (the last edge's resolution, the two largest)."""
+    """(19) as a rotation and (20) by inversion, their largest residuals on rows start .. stop − 1
+    in one scalar pass that makes their scales as it goes (from the previous edge's resolution
+    and the running largest values): (the last edge's resolution, the two largest). The
+    ``_contact_rotation`` (if ``rotation``) and ``_pole_inversion`` (if ``inversion``) of the
+    edge resolution of p_k p_{k+1} (``_edge_resolution``) and of the pole's, the smaller of it
+    and the previous edge's (np.minimum's, NaN if either is), so that neither scale is stored:
+    the same numbers as the passes over the stored scales."""
     for k in range(start, stop):
         ex = p[k + 1, 0] - p[k, 0]
         ey = p[k + 1, 1] - p[k, 1]
@@ -407,34 +412,6 @@ def _resolution_before(before: Any) -> float:
     ey = before[1, 1] - before[0, 1]
     size = abs(before[0, 0]) + abs(before[0, 1]) + abs(before[1, 0]) + abs(before[1, 1])
     return length(ex, ey) / size
-
-
-@kernel(
-    "UniTuple(float64, 2)(float64[:, :], float64[:, :], float64[:, :], float64[:, :], "
-    "float64[:, :], int64, boolean, boolean, float64)"
-)
-def _rotation_and_inversion(
-    p: Any,
-    before: Any,
-    contact: Any,
-    normals: Any,
-    gauss: Any,
-    count: int,
-    rotation: bool,
-    inversion: bool,
-    tiny: float,
-) -> tuple[float, float]:
-    """``_contact_rotation`` (if ``rotation``) and ``_pole_inversion`` (if ``inversion``) as
-    their largest values, k = 0 .. count − 1, in one pass that makes their scales as it goes:
-    the edge resolution of p_k p_{k+1} (``_edge_resolution``) and the pole's, the smaller of it
-    and the previous edge's (np.minimum's, NaN if either is; the edge before the range is
-    ``before``'s one edge), so that neither scale is stored. The same numbers as the passes
-    over the stored scales; the scalar reference of ``_rotation_and_inversion_blocked``."""
-    found = _rotation_and_inversion_rows(
-        p, contact, normals, gauss, 0, count, rotation, inversion, tiny,
-        _resolution_before(before), 0.0, 0.0,
-    )  # fmt: skip
-    return found[1], found[2]
 
 
 def rotation_and_inversion_largest(
@@ -1295,9 +1272,11 @@ def _rotation_and_inversion_blocked(
     inversion: bool,
     tiny: float,
 ) -> tuple[float, float]:
-    """``_rotation_and_inversion`` a block of ``EDGE_BLOCK`` rows at a time (both residuals of a
-    block in a loop the compiler vectorizes, ``_rotation_and_inversion_block``; a block with a
-    NaN or a length off the square-root branch row by row): the same two numbers, bit for bit."""
+    """The largest residuals of (19) as a rotation and (20) by inversion, k = 0 .. count − 1,
+    those asked for (0.0 for the other; the edge before the range is ``before``'s one edge):
+    ``_rotation_and_inversion_rows`` a block of ``EDGE_BLOCK`` rows at a time (both residuals of
+    a block in a loop the compiler vectorizes, ``_rotation_and_inversion_block``; a block with a
+    NaN or a length off the square-root branch row by row), the same two numbers, bit for bit."""
     q, c, nrm, g = p.reshape(-1), contact.reshape(-1), normals.reshape(-1), gauss.reshape(-1)
     out = np.empty((3, EDGE_BLOCK + 1))
     usual = np.empty(EDGE_BLOCK, dtype=np.bool_)

@@ -88,6 +88,25 @@ def ref_printed_ratios(p: np.ndarray) -> np.ndarray:
     return out
 
 
+@numba.njit(cache=True, error_model="numpy")
+def ref_rotation_and_inversion(
+    p: np.ndarray,
+    before: np.ndarray,
+    contact: np.ndarray,
+    normals: np.ndarray,
+    gauss: np.ndarray,
+    count: int,
+    rotation: bool,
+    inversion: bool,
+    tiny: float,
+) -> tuple[float, float]:
+    previous = rk._resolution_before(before)
+    found = rk._rotation_and_inversion_rows(
+        p, contact, normals, gauss, 0, count, rotation, inversion, tiny, previous, 0.0, 0.0
+    )
+    return found[1], found[2]
+
+
 def noisy(rng: np.random.Generator, rows: int, mode: str, cols: int = 2) -> np.ndarray:
     """Rows of moderate numbers; "edges": special values at the block edges; "inside": special
     values at random places; "ranges": magnitudes from subnormal to near overflow; "smooth":
@@ -141,7 +160,7 @@ def test_blocked_edge_passes_equal_the_scalar_ones(count: int, mode: str, seed: 
         args = (points, before, points, vectors, other, count, rotation, inversion, rk.TINY)
         found, reference = (
             rk._rotation_and_inversion_blocked(*args),
-            rk._rotation_and_inversion(*args),
+            ref_rotation_and_inversion(*args),
         )
         assert same(found[0], reference[0]) and same(found[1], reference[1])
     assert same_arrays(rk._edge_resolution_blocked(points), rk._edge_resolution(points))
