@@ -100,7 +100,7 @@ test: $(BIN)/.dev-installed $(VENDOR)/.built browser warm contract nginx
 lint: $(BIN)/.dev-installed
 	$(BIN)/ruff check app tests bench examples
 	$(BIN)/ruff format --check app tests bench examples
-	$(BIN)/mypy app
+	$(BIN)/mypy app bench
 
 openapi: $(BIN)/.runtime-installed
 	$(BIN)/python -m app.openapi_export openapi/openapi.json
