@@ -359,6 +359,12 @@ def pole_inversion_largest(gauss: Any, contact: Any, scale: Any, count: int) -> 
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
+def _minimum(a: float, b: float) -> float:
+    """``np.minimum`` of two floats, without a branch: NaN if either is NaN."""
+    return a if ((a < b) | (a != a)) else b
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
 def _rotation_and_inversion_rows(
     p: Any,
     contact: Any,
@@ -391,8 +397,7 @@ def _rotation_and_inversion_rows(
             )
             largest_rotation = running_largest(distance * resolution, largest_rotation)
         if inversion:
-            keep = previous < resolution or previous != previous
-            scale = previous if keep else resolution
+            scale = _minimum(previous, resolution)
             tx = contact[k, 0] + contact[k + 1, 0]
             ty = contact[k, 1] + contact[k + 1, 1]
             squared = tx * tx + ty * ty
@@ -1225,27 +1230,86 @@ def _largest_contact_rotation(contact: Any, normals: Any, scale: Any, count: int
     return largest
 
 
+# the edge resolution |e_i| / (|p_i| + |p_{i+1}|) and the pole's (the smaller of consecutive ones)
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _edge_resolution_block(q: Any, count: int, out: Any, usual: Any) -> None:
+    """One block of ``_edge_resolution`` (flat points, one row more) into ``out``, the length on
+    the square-root branch (``usual``: where ``length`` takes it and the quotient is a number)."""
+    for j in range(count):
+        x0, y0, x1, y1 = q[2 * j], q[2 * j + 1], q[2 * j + 2], q[2 * j + 3]
+        size = abs(x0) + abs(y0) + abs(x1) + abs(y1)
+        edge, plain = fast_length(x1 - x0, y1 - y0)
+        value = edge / size
+        out[j] = value
+        usual[j] = plain & (value == value)
+
+
+@kernel("float64[:](float64[:, ::1])")
+def _edge_resolution_blocked(points: Any) -> Any:
+    """``_edge_resolution`` a block at a time: the same array (the rows off the square-root
+    branch, or NaN, made again by the scalar formula)."""
+    count = max(points.shape[0] - 1, 0)
+    q = points.reshape(-1)
+    out = np.empty(count)
+    usual = np.empty(EDGE_BLOCK, dtype=np.bool_)
+    for start in range(0, count, EDGE_BLOCK):
+        m = min(EDGE_BLOCK, count - start)
+        _edge_resolution_block(_rows(q, start, m + 1), m, out[start : start + m], usual)
+        if _all(usual, m):
+            continue
+        for k in range(start, start + m):
+            if not usual[k - start]:
+                ex = points[k + 1, 0] - points[k, 0]
+                ey = points[k + 1, 1] - points[k, 1]
+                size = abs(points[k, 0]) + abs(points[k, 1])
+                size = size + abs(points[k + 1, 0]) + abs(points[k + 1, 1])
+                out[k] = length(ex, ey) / size
+    return out
+
+
+@kernel("float64[:](float64, float64[::1])")
+def _pole_resolution(before: float, resolution: Any) -> Any:
+    """min(r_{k−1}, r_k) per edge, r_{−1} = ``before``: ``np.minimum`` of the resolutions
+    shifted by one (``before`` first) and the resolutions, NaN where either is NaN, in one
+    pass."""
+    count = resolution.shape[0]
+    out = np.empty(count)
+    if count == 0:
+        return out
+    out[0] = _minimum(before, resolution[0])
+    for k in range(1, count):
+        out[k] = _minimum(resolution[k - 1], resolution[k])
+    return out
+
+
+def pole_resolution(before: Any, resolution: Any) -> Any:
+    """Float64: ``np.minimum(np.concatenate([before, resolution[:-1]]), resolution)`` (the pole
+    resolution of (20): the smaller resolution of the two edges at ñ_i), for one ``before`` and
+    at least one resolution in one compiled pass, the numpy evaluation otherwise; (r,) → (r,)."""
+    first, rows = np.asarray(before, dtype=np.float64), np.asarray(resolution, dtype=np.float64)
+    if first.shape == (1,) and rows.ndim == 1 and len(rows) > 0:
+        return _pole_resolution(float(first[0]), np.ascontiguousarray(rows))
+    return np.minimum(np.concatenate([first, rows[:-1]]), rows)
+
+
 @numba.njit(cache=True, error_model="numpy")
 def _rotation_and_inversion_block(
     q: Any, c: Any, nrm: Any, g: Any, count: int, tiny: float, out: Any, usual: Any
 ) -> None:
     """One block of ``_rotation_and_inversion_rows`` without branches (flat p and ñ with one row
     more, flat n and m; ``out[0, 0]`` the previous edge's resolution on entry): the edges'
-    resolutions into out[0, 1 ..], (19)'s residuals into out[1], (20)'s into out[2]; ``usual``
-    says where every length is on ``compiled.length``'s square-root branch."""
+    resolutions into out[0, 1 ..] (``_edge_resolution_block``), (19)'s residuals into out[1],
+    (20)'s into out[2]; ``usual`` says where every length is on ``compiled.length``'s
+    square-root branch and every resolution a number."""
     resolution, rotated, inverted = out[0], out[1], out[2]
-    for j in range(count):
-        x0, y0, x1, y1 = q[2 * j], q[2 * j + 1], q[2 * j + 2], q[2 * j + 3]
-        size = abs(x0) + abs(y0) + abs(x1) + abs(y1)
-        edge, plain = fast_length(x1 - x0, y1 - y0)
-        resolution[j + 1] = edge / size
-        usual[j] = plain
+    _edge_resolution_block(q, count, resolution[1:], usual)
     for j in range(count):
         previous, here = resolution[j], resolution[j + 1]
         distance, plain = fast_length(c[2 * j + 2] - (-nrm[2 * j + 1]), c[2 * j + 3] - nrm[2 * j])
         rotated[j] = distance * here
-        keep = (previous < here) | (previous != previous)
-        scale = previous if keep else here
+        scale = _minimum(previous, here)
         tx = c[2 * j] + c[2 * j + 2]
         ty = c[2 * j + 1] + c[2 * j + 3]
         squared = tx * tx + ty * ty
@@ -1303,71 +1367,6 @@ def _rotation_and_inversion_blocked(
             largest_inversion = running_largest(bits_value(top_inversion), largest_inversion)
         previous = out[0, m]
     return largest_rotation, largest_inversion
-
-
-# the edge resolution |e_i| / (|p_i| + |p_{i+1}|) and the pole's (the smaller of consecutive ones)
-
-
-@numba.njit(cache=True, error_model="numpy")
-def _edge_resolution_block(q: Any, count: int, out: Any, usual: Any) -> None:
-    """One block of ``_edge_resolution`` (flat points, one row more) into ``out``, the length on
-    the square-root branch (``usual``: where ``length`` takes it and the quotient is a number)."""
-    for j in range(count):
-        x0, y0, x1, y1 = q[2 * j], q[2 * j + 1], q[2 * j + 2], q[2 * j + 3]
-        size = abs(x0) + abs(y0) + abs(x1) + abs(y1)
-        edge, plain = fast_length(x1 - x0, y1 - y0)
-        value = edge / size
-        out[j] = value
-        usual[j] = plain & (value == value)
-
-
-@kernel("float64[:](float64[:, ::1])")
-def _edge_resolution_blocked(points: Any) -> Any:
-    """``_edge_resolution`` a block at a time: the same array (the rows off the square-root
-    branch, or NaN, made again by the scalar formula)."""
-    count = max(points.shape[0] - 1, 0)
-    q = points.reshape(-1)
-    out = np.empty(count)
-    usual = np.empty(EDGE_BLOCK, dtype=np.bool_)
-    for start in range(0, count, EDGE_BLOCK):
-        m = min(EDGE_BLOCK, count - start)
-        _edge_resolution_block(_rows(q, start, m + 1), m, out[start : start + m], usual)
-        if _all(usual, m):
-            continue
-        for k in range(start, start + m):
-            if not usual[k - start]:
-                ex = points[k + 1, 0] - points[k, 0]
-                ey = points[k + 1, 1] - points[k, 1]
-                size = abs(points[k, 0]) + abs(points[k, 1])
-                size = size + abs(points[k + 1, 0]) + abs(points[k + 1, 1])
-                out[k] = length(ex, ey) / size
-    return out
-
-
-@kernel("float64[:](float64, float64[::1])")
-def _pole_resolution(before: float, resolution: Any) -> Any:
-    """min(r_{k−1}, r_k) per edge, r_{−1} = ``before``: ``np.minimum`` of the resolutions
-    shifted by one (``before`` first) and the resolutions, NaN where either is NaN, in one
-    pass."""
-    count = resolution.shape[0]
-    out = np.empty(count)
-    if count == 0:
-        return out
-    out[0] = before if ((before < resolution[0]) | (before != before)) else resolution[0]
-    for k in range(1, count):
-        previous, current = resolution[k - 1], resolution[k]
-        out[k] = previous if ((previous < current) | (previous != previous)) else current
-    return out
-
-
-def pole_resolution(before: Any, resolution: Any) -> Any:
-    """Float64: ``np.minimum(np.concatenate([before, resolution[:-1]]), resolution)`` (the pole
-    resolution of (20): the smaller resolution of the two edges at ñ_i), for one ``before`` and
-    at least one resolution in one compiled pass, the numpy evaluation otherwise; (r,) → (r,)."""
-    first, rows = np.asarray(before, dtype=np.float64), np.asarray(resolution, dtype=np.float64)
-    if first.shape == (1,) and rows.ndim == 1 and len(rows) > 0:
-        return _pole_resolution(float(first[0]), np.ascontiguousarray(rows))
-    return np.minimum(np.concatenate([first, rows[:-1]]), rows)
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
