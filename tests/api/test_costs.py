@@ -66,14 +66,28 @@ def charges(monkeypatch: pytest.MonkeyPatch) -> list[tuple[float, int]]:
     return seen
 
 
+#: Further runs of a request whose first one took more than 3× its estimate.
+RETRIES = 2
+
+
+def _cpu_seconds(client: TestClient, url: str) -> float:
+    start = time.process_time()
+    assert client.get(url).status_code == 200
+    return time.process_time() - start
+
+
 @pytest.mark.parametrize("url", REQUESTS)
 def test_the_estimate_is_within_an_order_of_magnitude_of_the_cost(
     client: TestClient, charges: list[tuple[float, int]], url: str
 ) -> None:
-    start = time.process_time()
-    assert client.get(url).status_code == 200
-    cpu = time.process_time() - start
+    cpu = _cpu_seconds(client, url)
     seconds = sum(s for s, _ in charges)
+    if cpu > 3 * seconds:
+        # The process's CPU clock also counts whatever else runs in it (a thread a test before
+        # left behind, a first call's cold caches), and a loaded host only adds to it: the
+        # request's own cost is the least of a few runs (CI once measured 1.52 s for a request
+        # that takes 0.07-0.25 s here).
+        cpu = min([cpu] + [_cpu_seconds(client, url) for _ in range(RETRIES)])
     charges.clear()
     tracemalloc.start()
     try:
