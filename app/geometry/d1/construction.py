@@ -33,12 +33,13 @@ from edge i+1 back to edge i is m_i = −F(−m_{i+1}), F the forward step. Any 
 **Numerics.** F is evaluated without cancellation: for m < 0, κ = ((1 − c²)m² − c²)/(m − c√(1+m²))
 and for κ < 0, m+ = (κ − c)(κ + c)/(κ − c√(κ² + 1 − c²)) (both are the product of the two roots
 divided by the other one). The slopes are sequential (each step needs the previous slope), so
-they are computed in a scalar loop over max(|i_min|, |i_max|) steps: in float64 the compiled
-kernel ``_chain`` (app/geometry/compiled.py; ≈ 30 ns per step, 1.8 µs as a Python loop), in mp
-the loop of ``construct`` over mpmath numbers, the same step in both, except that the kernel
-takes √(1 + m_{i+1}²) from the step's own numbers instead of a second hypot (``_step``: within
-4 units in the last place of the previous kernel on tests/geometry/previous_constructions.json);
-the heights are then partial sums (numpy cumsum). The step
+they are computed in a scalar loop: in float64 the compiled kernel ``_chain`` (its forward
+and backward chains side by side, one step of each per turn; ≈ 25 ns a vertex at 10^5, 1.8 µs
+a step as a Python loop), in mp the loop of ``construct`` over mpmath numbers, the same step
+in both, except that the kernel takes √(1 + m_{i+1}²) from the step's own numbers instead of a
+second hypot (``_step``: within 4 units in the last place of the previous kernel on
+tests/geometry/previous_constructions.json); the heights are then partial sums (numpy cumsum).
+The step
 is a hyperbolic rotation of (√(1 + m²), m), so vectorizing it means solving the recursion: that
 is the closed form (``hanging_chain_closed_forms``), a theorem the checks compare with this
 construction, so it is not used here; ``method=closed-form`` serves long ranges from it.
@@ -174,23 +175,29 @@ def _chain(
             vertices[i - i_min, 0] = delta * float(i)
             vertices[i - i_min, 1] = y0 if i == 0 else y1
     r0 = math.hypot(1.0, m0)
-    m, r = m0, r0
-    total = 0.0
-    for j in range(1, hi):  # edge j from edge j − 1; then p_{j+1} = p_j + (δ, δm_j)
-        m, r = _step(c, one_minus_c2, root, m, r)
-        slopes[j - lo] = m
-        total = delta * m if j == 1 else total + delta * m
-        if i_min <= j + 1 <= i_max:
-            vertices[j + 1 - i_min, 0] = delta * float(j + 1)
-            vertices[j + 1 - i_min, 1] = y1 + total
-    m, r = -m0, r0
-    for j in range(-1, lo - 1, -1):  # edge j from edge j + 1; then p_j = p_{j+1} − (δ, δm_j)
-        m, r = _step(c, one_minus_c2, root, m, r)
-        slopes[j - lo] = -m
-        total = delta * -m if j == -1 else total + delta * -m
-        if i_min <= j <= i_max:
-            vertices[j - i_min, 0] = delta * float(j)
-            vertices[j - i_min, 1] = y0 - total
+    # The two chains (edges 1 .. hi − 1 forwards, −1 .. lo backwards) depend on nothing but
+    # m_0, so they run side by side: one step of each per turn, two independent sequences of
+    # divisions and roots that the processor overlaps (each chain's operations and their order
+    # are those of running it alone: the same bits, in about half the time).
+    m, r, total = m0, r0, 0.0  # forwards
+    mb, rb, total_b = -m0, r0, 0.0  # backwards, as the forward step of the reversed chain
+    for t in range(max(hi - 1, -lo)):
+        if t < hi - 1:  # edge j from edge j − 1; then p_{j+1} = p_j + (δ, δm_j)
+            j = t + 1
+            m, r = _step(c, one_minus_c2, root, m, r)
+            slopes[j - lo] = m
+            total = delta * m if j == 1 else total + delta * m
+            if i_min <= j + 1 <= i_max:
+                vertices[j + 1 - i_min, 0] = delta * float(j + 1)
+                vertices[j + 1 - i_min, 1] = y1 + total
+        if t < -lo:  # edge j from edge j + 1; then p_j = p_{j+1} − (δ, δm_j)
+            j = -1 - t
+            mb, rb = _step(c, one_minus_c2, root, mb, rb)
+            slopes[j - lo] = -mb
+            total_b = delta * -mb if j == -1 else total_b + delta * -mb
+            if i_min <= j <= i_max:
+                vertices[j - i_min, 0] = delta * float(j)
+                vertices[j - i_min, 1] = y0 - total_b
     return slopes, vertices
 
 
@@ -211,7 +218,7 @@ def construct(
     lo, hi = min(0, i_min), max(1, i_max)  # vertices lo .. hi, edges lo .. hi − 1
     if ar.mode == "float64":
         m, vertices = _chain(k.c, k.one_minus_c2, k.root, dd, yy0, yy1, lo, hi, i_min, i_max)
-        ar.check_time()  # once, after the kernel: ≈ 30 ns per step
+        ar.check_time()  # once, after the kernel: ≈ 25 ns per vertex
         return HangingChain(
             first=i_min,
             vertices=vertices,

@@ -191,20 +191,27 @@ def _vertices(
         if i_min <= i <= i_max:
             out[i - i_min, 0] = delta * float(i)
             out[i - i_min, 1] = height
-    near, last = y0, ahead
-    for j in range(2, i_max + 1):
-        big, small = _roots(sum_factor, root_factor, product_term, lowest, last)
-        near, last = last, (big if abs(big - near) >= abs(small - near) else small)
-        if j >= i_min:
-            out[j - i_min, 0] = delta * float(j)
-            out[j - i_min, 1] = last
-    near, last = y0, behind
-    for j in range(-2, i_min - 1, -1):
-        big, small = _roots(sum_factor, root_factor, product_term, lowest, last)
-        near, last = last, (big if abs(big - near) >= abs(small - near) else small)
-        if j <= i_max:
-            out[j - i_min, 0] = delta * float(j)
-            out[j - i_min, 1] = last
+    # The forward chain (j = 2 .. i_max) and the backward one (j = −2 .. i_min) start from p_0
+    # and p_{±1} and never meet, so they run side by side, one step of each per turn: the
+    # processor overlaps their roots and divisions, and each chain's operations are those of
+    # running it alone (the same bits).
+    near, last = y0, ahead  # forwards
+    near_b, last_b = y0, behind  # backwards
+    for t in range(max(i_max - 1, -i_min - 1)):
+        if t < i_max - 1:
+            j = t + 2
+            big, small = _roots(sum_factor, root_factor, product_term, lowest, last)
+            near, last = last, (big if abs(big - near) >= abs(small - near) else small)
+            if j >= i_min:
+                out[j - i_min, 0] = delta * float(j)
+                out[j - i_min, 1] = last
+        if t < -i_min - 1:
+            j = -t - 2
+            big, small = _roots(sum_factor, root_factor, product_term, lowest, last_b)
+            near_b, last_b = last_b, (big if abs(big - near_b) >= abs(small - near_b) else small)
+            if j <= i_max:
+                out[j - i_min, 0] = delta * float(j)
+                out[j - i_min, 1] = last_b
     return out
 
 
@@ -234,7 +241,7 @@ def construct(
             i_min,
             i_max,
         )
-        ar.check_time()  # once, after the kernel: ≈ 20 ns per step
+        ar.check_time()  # once, after the kernel: ≈ 15–20 ns per vertex
         return AreaLengthPolygon(first=i_min, vertices=vertices)
     i = ar.indices(i_min, i_max)
     y: list[Scalar] = [yy0] * (hi - lo + 1)

@@ -143,6 +143,34 @@ def _place(axis: Array, tractrix: Array, h: float, k: int, x: float, c: float, s
     tractrix[k, 1] = 0.0 + h * s
 
 
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _forward_stick(
+    h: float, carry: float, keep: float, widening: float, x: float, c: float, s: float, side: int
+) -> tuple[float, float, float, int]:
+    """Stick k (x, cos, sin, side) from stick k − 1: ``_Stepper.pull`` ahead from the cusp or
+    the pursuit side, else ``_Stepper.carrier`` leaning forward."""
+    if side >= CUSP:  # pull, the leader moves ahead
+        root = math.sqrt(c * c + widening * s * s)
+        return (x + carry * c) + h * root, -root, keep * s, PURSUIT
+    sin_n = s / keep  # carrier leaning forward
+    cos_n = math.sqrt((1 - sin_n) * (1 + sin_n))
+    return x + h * c - carry * cos_n, cos_n, sin_n, (CUSP if sin_n > keep else MIRRORED)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _backward_stick(
+    h: float, carry: float, keep: float, widening: float, x: float, c: float, s: float, side: int
+) -> tuple[float, float, float, int]:
+    """Stick k (x, cos, sin, side) from stick k + 1: ``_Stepper.pull`` behind from the cusp or
+    the mirrored side, else ``_Stepper.carrier`` leaning back."""
+    if side <= CUSP:  # pull, the leader moves behind
+        root = math.sqrt(c * c + widening * s * s)
+        return (x + carry * c) - h * root, root, keep * s, MIRRORED
+    sin_n = s / keep  # carrier leaning back
+    cos_n = -math.sqrt((1 - sin_n) * (1 + sin_n))
+    return x + h * c - carry * cos_n, cos_n, sin_n, (CUSP if sin_n > keep else PURSUIT)
+
+
 @kernel(
     "Tuple((float64[:, :], float64[:, :], float64[:, :], int64[:]))"
     "(float64, float64, float64, float64, float64, float64, int64, int64)"
@@ -175,36 +203,28 @@ def _sticks(
     u[k0, 1] = s0
     _place(axis, tractrix, h, k0, 0.0, c0, s0)
     side[k0] = CUSP if s0 > keep else (PURSUIT if c0 < 0 else MIRRORED)
-    # the previous stick (x, cos, sin, side) stays in registers: reading it back from the
-    # arrays would wait on the stores just made (the compiler cannot tell the arrays apart)
+    # The forward chain (sticks k0 + 1 .. n − 1) and the backward one (k0 − 1 .. 0) both start
+    # from stick k0 and never meet, so they run side by side, one step of each per turn: the
+    # processor overlaps their roots and divisions, and each chain's operations are those of
+    # running it alone (the same bits). Each keeps its last stick (x, cos, sin, side) in
+    # registers: reading it back from the arrays would wait on the stores just made.
+    xf, cf, sf, sidef = 0.0, c0, s0, side[k0]
     xb, cb, sb, sideb = 0.0, c0, s0, side[k0]
-    for k in range(k0 + 1, n):  # forward: stick k from stick k − 1
-        if sideb >= CUSP:  # pull, the leader moves ahead
-            root = math.sqrt(cb * cb + widening * sb * sb)
-            xb, cb, sb, sideb = (xb + carry * cb) + h * root, -root, keep * sb, PURSUIT
-        else:  # carrier leaning forward
-            sin_n = sb / keep
-            cos_n = math.sqrt((1 - sin_n) * (1 + sin_n))
-            xb, cb, sb = xb + h * cb - carry * cos_n, cos_n, sin_n
-            sideb = CUSP if sin_n > keep else MIRRORED
-        u[k, 0] = cb
-        u[k, 1] = sb
-        _place(axis, tractrix, h, k, xb, cb, sb)
-        side[k] = sideb
-    xb, cb, sb, sideb = 0.0, c0, s0, side[k0]
-    for k in range(k0 - 1, -1, -1):  # backward: stick k from stick k + 1
-        if sideb <= CUSP:  # pull, the leader moves behind
-            root = math.sqrt(cb * cb + widening * sb * sb)
-            xb, cb, sb, sideb = (xb + carry * cb) - h * root, root, keep * sb, MIRRORED
-        else:  # carrier leaning back
-            sin_n = sb / keep
-            cos_n = -math.sqrt((1 - sin_n) * (1 + sin_n))
-            xb, cb, sb = xb + h * cb - carry * cos_n, cos_n, sin_n
-            sideb = CUSP if sin_n > keep else PURSUIT
-        u[k, 0] = cb
-        u[k, 1] = sb
-        _place(axis, tractrix, h, k, xb, cb, sb)
-        side[k] = sideb
+    for t in range(max(n - 1 - k0, k0)):
+        if t < n - 1 - k0:  # forward: stick k from stick k − 1
+            k = k0 + 1 + t
+            xf, cf, sf, sidef = _forward_stick(h, carry, keep, widening, xf, cf, sf, sidef)
+            u[k, 0] = cf
+            u[k, 1] = sf
+            _place(axis, tractrix, h, k, xf, cf, sf)
+            side[k] = sidef
+        if t < k0:  # backward: stick k from stick k + 1
+            k = k0 - 1 - t
+            xb, cb, sb, sideb = _backward_stick(h, carry, keep, widening, xb, cb, sb, sideb)
+            u[k, 0] = cb
+            u[k, 1] = sb
+            _place(axis, tractrix, h, k, xb, cb, sb)
+            side[k] = sideb
     return axis, tractrix, u, side
 
 
