@@ -35,8 +35,11 @@ install: $(BIN)/.runtime-installed
 install-dev: $(BIN)/.dev-installed
 
 # Every compiled kernel into the cache before the server or the tests start (2-3 s once; again
-# when app/geometry changes), so that no request and no test worker compiles one.
+# when app/geometry changes), so that no request and no test worker compiles one. numba checks a
+# cached kernel against its own file only, so the kernels of the modules that import a changed
+# file go first (scripts/stale_kernels.py): they hold its code or constants compiled in.
 $(NUMBA_CACHE_DIR)/.warm: $(BIN)/.runtime-installed $(shell find app/geometry -name '*.py')
+	$(BIN)/python scripts/stale_kernels.py $?
 	$(BIN)/python -m app.geometry.warm
 	touch $@
 
