@@ -22,6 +22,7 @@ from __future__ import annotations
 from typing import Any
 
 import flint
+import numba
 import numpy as np
 
 from app.geometry.compiled import kernel
@@ -320,14 +321,19 @@ def pole_by_inversion(before: Array, after: Array) -> Array:
     return stack_points(2 * total[:, 0] / squared, 2 * total[:, 1] / squared)
 
 
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def inversion_pole(bx: float, by: float, ax: float, ay: float) -> tuple[float, float]:
+    """(20)'s pole of the chord from b to a, in float64: t = b + a, 2t/(t^x t^x + t^y t^y)."""
+    tx = bx + ax
+    ty = by + ay
+    squared = tx * tx + ty * ty
+    return 2 * tx / squared, 2 * ty / squared
+
+
 @kernel("float64[:, :](float64[:, :], float64[:, :])")
 def _pole_by_inversion(before: Any, after: Any) -> Any:
-    """``pole_by_inversion`` row by row: t = b + a, 2t/(t^x t^x + t^y t^y)."""
+    """``pole_by_inversion`` row by row (``inversion_pole``)."""
     out = np.empty((before.shape[0], 2))
     for k in range(before.shape[0]):
-        tx = before[k, 0] + after[k, 0]
-        ty = before[k, 1] + after[k, 1]
-        squared = tx * tx + ty * ty
-        out[k, 0] = 2 * tx / squared
-        out[k, 1] = 2 * ty / squared
+        out[k, 0], out[k, 1] = inversion_pole(before[k, 0], before[k, 1], after[k, 0], after[k, 1])
     return out

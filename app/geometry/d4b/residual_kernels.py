@@ -44,6 +44,7 @@ from app.geometry.compiled import (
     length,
     running_largest,
 )
+from app.geometry.d4b.closed_forms import inversion_pole
 from app.geometry.precision import Arithmetic, Array
 
 TINY = float(np.finfo(np.float64).tiny)
@@ -320,10 +321,7 @@ def contact_rotation_largest(contact: Any, normals: Any, scale: Any, count: int)
 @numba.njit(cache=True, inline="always", error_model="numpy")
 def _pole_inversion_at(gauss: Any, contact: Any, scale: Any, k: int, tiny: float) -> float:
     """``_pole_inversion``'s residual at row k."""
-    tx = contact[k, 0] + contact[k + 1, 0]
-    ty = contact[k, 1] + contact[k + 1, 1]
-    squared = tx * tx + ty * ty
-    ex, ey = 2 * tx / squared, 2 * ty / squared
+    ex, ey = inversion_pole(contact[k, 0], contact[k, 1], contact[k + 1, 0], contact[k + 1, 1])
     size = length(ex, ey)
     size = size if size > tiny else tiny
     return length(gauss[k, 0] - ex, gauss[k, 1] - ey) / size * scale[k]
@@ -398,10 +396,9 @@ def _rotation_and_inversion_rows(
             largest_rotation = running_largest(distance * resolution, largest_rotation)
         if inversion:
             scale = _minimum(previous, resolution)
-            tx = contact[k, 0] + contact[k + 1, 0]
-            ty = contact[k, 1] + contact[k + 1, 1]
-            squared = tx * tx + ty * ty
-            px, py = 2 * tx / squared, 2 * ty / squared
+            px, py = inversion_pole(
+                contact[k, 0], contact[k, 1], contact[k + 1, 0], contact[k + 1, 1]
+            )
             pole = length(px, py)
             pole = pole if pole > tiny else tiny
             value = length(gauss[k, 0] - px, gauss[k, 1] - py) / pole * scale
@@ -1161,10 +1158,7 @@ def _pole_inversion_block(
     """One block of ``_pole_inversion``'s residuals (flat m, flat ñ with one row more, the
     scales), both lengths on the square-root branch (``usual`` says where ``length`` takes it)."""
     for j in range(count):
-        tx = c[2 * j] + c[2 * j + 2]
-        ty = c[2 * j + 1] + c[2 * j + 3]
-        squared = tx * tx + ty * ty
-        ex, ey = 2 * tx / squared, 2 * ty / squared
+        ex, ey = inversion_pole(c[2 * j], c[2 * j + 1], c[2 * j + 2], c[2 * j + 3])
         size, plain = fast_length(ex, ey)
         size = size if size > tiny else tiny
         distance, plain_distance = fast_length(g[2 * j] - ex, g[2 * j + 1] - ey)
@@ -1310,10 +1304,7 @@ def _rotation_and_inversion_block(
         distance, plain = fast_length(c[2 * j + 2] - (-nrm[2 * j + 1]), c[2 * j + 3] - nrm[2 * j])
         rotated[j] = distance * here
         scale = _minimum(previous, here)
-        tx = c[2 * j] + c[2 * j + 2]
-        ty = c[2 * j + 1] + c[2 * j + 3]
-        squared = tx * tx + ty * ty
-        px, py = 2 * tx / squared, 2 * ty / squared
+        px, py = inversion_pole(c[2 * j], c[2 * j + 1], c[2 * j + 2], c[2 * j + 3])
         pole, plain_pole = fast_length(px, py)
         pole = pole if pole > tiny else tiny
         distance, plain_distance = fast_length(g[2 * j] - px, g[2 * j + 1] - py)
