@@ -138,6 +138,11 @@ class Largest:
     count: int
     residuals: Callable[[], Array]
 
+    def __init__(self, value: float, count: int, residuals: Callable[[], Array]) -> None:
+        # written out as ``Check.__init__`` is: a 100-vertex D4b makes about twenty of these
+        fields = self.__dict__
+        fields["value"], fields["count"], fields["residuals"] = value, count, residuals
+
     def __len__(self) -> int:
         return self.count
 

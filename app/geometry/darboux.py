@@ -51,20 +51,22 @@ def distance_residuals(ar: Arithmetic, x: Array, e: Array, expected: object) -> 
     return abs(point_distance(ar, x, e) - expected) / magnitude(x, e)
 
 
-def edge_length_largest(x: Any, e: Any) -> Largest:
+def edge_length_largest(x: Any, e: Any, found: float | None = None) -> Largest:
     """``edge_length_residuals`` of float64 ``(n, 2)`` points as their largest
-    (``checks.Largest``), not stored; the array only if asked for."""
+    (``checks.Largest``), not stored; the array only if asked for. ``found``: the largest,
+    computed already (``d4b.fused_checks.section_numbers``)."""
     x, e = _f64(x), _f64(e)
-    _, largest = _edge_lengths(x, e, False)
+    largest = _edge_lengths(x, e, False)[1] if found is None else found
     count = max(x.shape[0] - 1, 0)
     return Largest(float(largest), count, lambda: _edge_lengths(x, e, True)[0])
 
 
-def distance_largest(x: Any, e: Any, expected: object) -> Largest:
+def distance_largest(x: Any, e: Any, expected: object, found: float | None = None) -> Largest:
     """``distance_residuals`` of float64 ``(n, 2)`` points as their largest (``checks.Largest``),
-    not stored; the array only if asked for."""
+    not stored; the array only if asked for. ``found``: the largest, computed already
+    (``d4b.fused_checks.section_numbers``)."""
     x, e, value = _f64(x), _f64(e), float(expected)  # type: ignore[arg-type]
-    _, largest = _distances(x, e, value, False)
+    largest = _distances(x, e, value, False)[1] if found is None else found
     return Largest(float(largest), x.shape[0], lambda: _distances(x, e, value, True)[0])
 
 

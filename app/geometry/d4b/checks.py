@@ -93,6 +93,18 @@ ERRATUM_TWO_STEP = (
 _CLOSED_FORMS = (THEOREM_5, THEOREM_6, D4B_EQUATION_18, D4B_EQUATION_19, D4B_EQUATION_20)
 #: The statements that read the fits of (D1), (D3) and eq. (2).
 _FITTED = (THEOREM_4_I, THEOREM_4_II, THEOREM_4_III)
+#: The statements whose float64 numbers come from one call when all are selected
+#: (``_Context.section_numbers``).
+_SECTION = (
+    HYPOTHESIS,
+    *_FITTED,
+    ROTATION_ANGLE,
+    RECURSION_13,
+    TWO_STEP,
+    DARBOUX,
+    DARBOUX_DISTANCE,
+    NIKOLAIDES,
+)
 #: From this many indices a float64 computation that checks a fit computes the fits on a second
 #: thread, from the start of the checks to where they are first read (≈ 30 ms at 10^6 here;
 #: a thread costs ≈ 0.1 ms), as ``curvature`` does with its two rings.
@@ -244,11 +256,38 @@ class _Context:
         return self._tolerances[2]
 
     @cached_property
+    def section_numbers(self) -> fused_checks.SectionNumbers | None:
+        """Float64 without ``detail``, when every statement of ``_SECTION`` is selected and n is
+        below ``fused_checks.SECTION_BELOW``: their numbers from one compiled call (the same
+        bits as each check's own pass; ``fused_checks.section_numbers``), else None (each check
+        calls its own: beyond a few hundred vertices the calls cost nothing to speak of)."""
+        if self.ar.mode != "float64" or self.detail or self.n >= fused_checks.SECTION_BELOW:
+            return None
+        wanted = self.selection.wants_check
+        if not all(wanted(statement.id) for statement in _SECTION):
+            return None
+        data = self.data
+        return fused_checks.section_numbers(
+            data.p, data.axis, data.darboux, data.tractrix, self.n, self.d, self.h
+        )
+
+    def found(self, first: int) -> tuple[float, float] | None:
+        """Entries ``first`` and ``first + 1`` of ``section_numbers`` (None without them)."""
+        numbers = self.section_numbers
+        return None if numbers is None else numbers.pair(first)
+
+    def found_one(self, entry: int) -> float | None:
+        """Entry ``entry`` of ``section_numbers`` (None without them)."""
+        numbers = self.section_numbers
+        return None if numbers is None else numbers.values[entry]
+
+    @cached_property
     def compiled_recursion(self) -> tuple[Array | Largest, Array | Largest]:
         """Float64 residuals of (13) and of its two-step form, both from one compiled pass (their
         largest values alone without ``detail``)."""
         if not self.detail:
-            return residual_kernels.recursion_largest(self.d, self.data.p[:, 1])
+            found = self.found(fused_checks.RECURSION_ONE)
+            return residual_kernels.recursion_largest(self.d, self.data.p[:, 1], found)
         return residual_kernels.recursion_residuals(self.d, self.data.p[:, 1])
 
     @cached_property
@@ -274,7 +313,10 @@ class _Context:
         p = self.data.p[: self.n]
         if self._pending_fits is not None:
             return fused_checks.Fits(p, self._pending_fits.result())
-        return fused_checks.Fits(p, fused_checks.fits_arrays(p) if self.detail else None)
+        if self.detail:
+            return fused_checks.Fits(p, fused_checks.fits_arrays(p))
+        numbers = self.section_numbers
+        return fused_checks.Fits(p, None if numbers is None else numbers.fits)
 
     @cached_property
     def fit_constants(self) -> dict[str, Scalar | None]:
@@ -345,7 +387,8 @@ class _Context:
 
 def _hypothesis(ctx: _Context, p: Array) -> Check:
     if ctx.ar.mode == "float64" and not ctx.detail and ctx.n >= 2:  # one compiled pass
-        largest, smallest = residual_kernels.hypothesis_largest(p, ctx.n, ctx.d)
+        found = ctx.found(fused_checks.HYPOTHESIS_LARGEST) if p is ctx.data.p else None
+        largest, smallest = residual_kernels.hypothesis_largest(p, ctx.n, ctx.d, found)
         note = f"smallest p_(i-1)^y p_i^y / d² = {smallest:.6g}"
         if math.isfinite(largest.value):  # the note is the check's only one
             return ctx.check(HYPOTHESIS, 1, largest, note=note)
@@ -410,7 +453,9 @@ def _ratio_erratum(ctx: _Context, p: Array) -> Erratum | None:
     """The proof's ratio with its own l_i = |p_i − p_{i−1}|: not constant along the polygon."""
     ar = ctx.ar
     if ar.mode == "float64":  # the same numbers in compiled passes, the ratios' array alone
-        return Erratum(*ERRATUM_RATIO, printed_residual=residual_kernels.ratio_spread(p))
+        numbers = ctx.section_numbers if p is ctx.data.p else None
+        found = None if numbers is None else numbers.ratio
+        return Erratum(*ERRATUM_RATIO, printed_residual=residual_kernels.ratio_spread(p, found))
     if p is ctx.data.p and ctx.ball_columns is not None:  # the same balls, compiled
         spread = ctx.ball_columns.ratio_spread()
         worst = None if spread is None else printed_residual(ar, spread)
@@ -428,7 +473,9 @@ def _ratio_erratum(ctx: _Context, p: Array) -> Erratum | None:
 def _rotation_angle(ctx: _Context, p: Array, axis: Array) -> Check:
     ar, n = ctx.ar, ctx.n
     if ar.mode == "float64" and not ctx.detail:  # the largest residuals in one compiled pass
-        largest, worst = residual_kernels.rotation_angle_largest(ctx.d, p, axis, n)
+        numbers = ctx.section_numbers if p is ctx.data.p and axis is ctx.data.axis else None
+        found = None if numbers is None else numbers.rotation
+        largest, worst = residual_kernels.rotation_angle_largest(ctx.d, p, axis, n, found)
         return ctx.check(ROTATION_ANGLE, 1, largest, Erratum(*ERRATUM_ANGLE, worst))
     if ar.mode == "float64":  # the same residuals in one compiled pass
         corrected, printed_angles = residual_kernels.rotation_angles(ctx.d, p, axis, n)
@@ -473,9 +520,16 @@ def _two_step(ctx: _Context, p: Array) -> Check:
         return ctx.check(TWO_STEP, 1, corrected, erratum, factor=3)
     # the printed form has 7th powers: its residual only where they stay finite (max |y| as
     # np.max(abs(y)), NaN included, by one compiled pass in float64)
-    small = float(largest_of_magnitudes(y)) < 1e60 if ar.mode == "float64" else True
+    numbers = ctx.section_numbers if p is ctx.data.p else None
+    if ar.mode != "float64":
+        small = True
+    elif numbers is not None:
+        small = numbers.values[fused_checks.HEIGHT_LARGEST] < 1e60
+    else:
+        small = float(largest_of_magnitudes(y)) < 1e60
     if ar.mode == "float64" and small:  # the same, compiled
-        worst = residual_kernels.largest_two_step_printed_residual(ctx.d, y)
+        found = None if numbers is None else numbers.values[fused_checks.TWO_STEP_PRINTED]
+        worst = residual_kernels.largest_two_step_printed_residual(ctx.d, y, found)
         erratum = Erratum(*ERRATUM_TWO_STEP, printed_residual=worst)
     elif ar.mode == "mp":
         printed = kinematic_closed_forms.two_step_printed(ctx.d, y[:-3], y[1:-2])
@@ -548,8 +602,10 @@ def _nikolaides(ctx: _Context, p: Array, tractrix: Array, axis: Array) -> Check:
     n = ctx.n
     if ctx.ar.mode == "float64":  # the same residuals in one compiled pass
         if not ctx.detail:  # the largest alone
+            same = p is ctx.data.p and tractrix is ctx.data.tractrix and axis is ctx.data.axis
+            found = ctx.found_one(fused_checks.RIGHT_ANGLES) if same else None
             return ctx.check(
-                NIKOLAIDES, 0, residual_kernels.right_angle_largest(tractrix, axis, p, n)
+                NIKOLAIDES, 0, residual_kernels.right_angle_largest(tractrix, axis, p, n, found)
             )
         return ctx.check(
             NIKOLAIDES, 0, residual_kernels.right_angle_residuals(tractrix, axis, p, n)
@@ -566,7 +622,8 @@ def _darboux(ctx: _Context) -> Check:
     if ctx.ar.certified and arb_checks.balls(axis[:n], e[:n]):  # the same balls, compiled
         return ctx.check(DARBOUX, 0, arb_checks.darboux_edges(axis[:n], e[:n]))
     if ctx.ar.mode == "float64" and not ctx.detail:  # the largest alone, in one compiled pass
-        return ctx.check(DARBOUX, 0, darboux.edge_length_largest(axis[:n], e[:n]))
+        found = ctx.found_one(fused_checks.DARBOUX_EDGES)
+        return ctx.check(DARBOUX, 0, darboux.edge_length_largest(axis[:n], e[:n], found))
     return ctx.check(DARBOUX, 0, darboux.edge_length_residuals(ctx.ar, axis[:n], e[:n]))
 
 
@@ -575,7 +632,9 @@ def _darboux_distance(ctx: _Context) -> Check:
     if ctx.ar.certified and arb_checks.balls(axis[:n], e[:n]):  # the same balls, compiled
         residuals = arb_checks.darboux_distances(axis[:n], e[:n], 2 * ctx.h)
     elif ctx.ar.mode == "float64" and not ctx.detail:  # the largest alone, in one compiled pass
-        return ctx.check(DARBOUX_DISTANCE, 0, darboux.distance_largest(axis[:n], e[:n], 2 * ctx.h))
+        found = ctx.found_one(fused_checks.DARBOUX_DISTANCES)
+        largest = darboux.distance_largest(axis[:n], e[:n], 2 * ctx.h, found)
+        return ctx.check(DARBOUX_DISTANCE, 0, largest)
     else:
         residuals = darboux.distance_residuals(ctx.ar, axis[:n], e[:n], 2 * ctx.h)
     return ctx.check(DARBOUX_DISTANCE, 0, residuals)

@@ -9,6 +9,12 @@ order, so every number is the same, bit for bit (tests/geometry/test_checks_fuse
 ``fits``: the three least-squares fits of Theorem 4 (i)–(iii) ((D1), (D3), eq. (2)) from one
 set of columns, eq. (2)'s misfit with c_(D1)/c_(D3), and the largest residual of each check,
 where ``conditions.Columns`` and the check took 13 calls and 6 numpy sums.
+
+``section_numbers``: the numbers of ten checks of Sections 3 and 4.2 (Theorem 4's hypothesis,
+rotation angle, fits and erratum E2's ratio, (13) and its two-step form with erratum E3, the
+Darboux transform's edge lengths and distances, Nikolaides' right angles) from one call of the
+same compiled passes, where each check's own call took one (and, at 100 vertices, ≈ 10–40 µs
+of a request in all, mostly the code around each pass: issue 13, session 25).
 """
 
 from __future__ import annotations
@@ -46,7 +52,8 @@ from app.geometry.conditions import (
     _misfit_into,
     _shared_columns,
 )
-from app.geometry.d4b import closed_forms
+from app.geometry.d4b import closed_forms, residual_kernels
+from app.geometry.darboux import _distances, _edge_lengths
 from app.geometry.precision import BLOCK_SIZE, Arithmetic, Array, Scalar
 
 if TYPE_CHECKING:
@@ -1860,3 +1867,193 @@ def closed_image_comparisons(
         if not finite:
             return None
     return [float(v) for v in largest]
+
+
+# --- Sections 3 and 4.2 in one call (``section_numbers``) ---
+
+#: The checks take ``section_numbers`` below this many indices: there the rotation angle's pass
+#: is compiled throughout (libm's atan2 where a block takes one), and beyond it the calls it
+#: saves are a small part of the checks.
+SECTION_BELOW = residual_kernels.ROTATION_LIBM_BELOW
+
+#: Entries of ``_section_numbers``' vector: Theorem 4's hypothesis (largest violation, smallest
+#: ratio), erratum E2's ratios (count, numpy's sum, smallest, largest), the rotation angle
+#: (corrected, printed; ``ROTATION_FOUND`` 1.0 when the pass took every vertex), (13) and its
+#: two-step form, max |p^y| (``checks._two_step``'s guard), the printed two-step form (E3), the
+#: Darboux edge lengths and distances, Nikolaides' right angles; then the fits' summary
+#: (``_summary_body``) from ``FITS_AT``.
+(
+    HYPOTHESIS_LARGEST,
+    HYPOTHESIS_SMALLEST,
+    RATIO_COUNT,
+    RATIO_SUM,
+    RATIO_LOW,
+    RATIO_HIGH,
+    ROTATION_LARGEST,
+    ROTATION_PRINTED,
+    ROTATION_FOUND,
+    RECURSION_ONE,
+    RECURSION_TWO,
+    HEIGHT_LARGEST,
+    TWO_STEP_PRINTED,
+    DARBOUX_EDGES,
+    DARBOUX_DISTANCES,
+    RIGHT_ANGLES,
+    FITS_AT,
+) = range(17)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _low_high(values: Any) -> tuple[float, float]:
+    """``np.min`` and ``np.max`` of a non-empty vector (NaN for both if one is NaN)."""
+    low = high = values[0]
+    for k in range(values.shape[0]):
+        v = values[k]
+        if v != v:
+            return v, v
+        low = v if v < low else low
+        high = v if v > high else high
+    return low, high
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _rotation_largest(d: float, p: Any, axis: Any, n: int) -> tuple[bool, float, float]:
+    """``residual_kernels._rotation_angles`` without ``store``, block by block as it goes, for
+    blocks of fewer than ``ROTATION_LIBM_BELOW`` vertices (libm's atan2 where a block takes
+    one): (whether it got to the end, the largest corrected and printed residuals). It stops
+    at a block that takes numpy's atan2 (False: the wrapper's pass goes on from the start)."""
+    count = max(n - 1, 0)
+    block = residual_kernels.ROTATION_BLOCK
+    rows = np.empty((6, max(min(block, count), 1)))
+    none = np.empty(0)
+    largest, largest_printed = 0.0, 0.0
+    first = 1
+    while first < n:
+        first, largest, largest_printed, outcome = residual_kernels._rotation_blocks(
+            d, p, axis, first, n, block, rows, none, none, False, largest, largest_printed
+        )
+        if first >= n:
+            break
+        stop = min(first + block, n)
+        m = stop - first
+        if m >= residual_kernels.ROTATION_LIBM_BELOW:
+            return False, largest, largest_printed
+        if outcome == residual_kernels.ROTATION_WRAPPED and not (
+            residual_kernels._rotation_arguments_wrapped(d, p, axis, first, stop, rows)
+        ):
+            outcome = residual_kernels.ROTATION_OLD
+        if outcome == residual_kernels.ROTATION_WRAPPED:
+            largest, largest_printed = residual_kernels._rotation_wrapped(
+                rows, m, True, largest, largest_printed
+            )
+        else:  # ``_rotation_old_block`` below ``ROTATION_LIBM_BELOW``
+            _, _, top, top_printed = residual_kernels._rotation_angles_libm(
+                d, p[first - 1 : stop + 1], axis[first - 1 : stop + 1], m + 1, True
+            )
+            largest = running_largest(top, largest)
+            largest_printed = running_largest(top_printed, largest_printed)
+        first = stop
+    return True, largest, largest_printed
+
+
+@kernel(
+    "float64[::1](float64[:, ::1], float64[:, ::1], float64[:, ::1], float64[:, ::1], "
+    "float64[:, ::1], float64[:, ::1], int64, float64, float64, float64, float64, float64)"
+)
+def _section_numbers(
+    p: Any,
+    fitted: Any,
+    axis: Any,
+    shown_axis: Any,
+    shown_darboux: Any,
+    tractrix: Any,
+    n: int,
+    d: float,
+    d_squared: float,
+    d_squared_pow: float,
+    d_fourth: float,
+    distance: float,
+) -> Any:
+    """The numbers of ``SECTION_STATEMENTS``' checks on p_0 .. p_n ((n + 1, 2), n >= 4): each
+    from the pass its wrapper calls (``residual_kernels``, ``darboux``, ``_summary_body``), with
+    the same arguments (``fitted`` = p[:n], the shown rows of x and e = x[:n], e[:n]; d² as
+    d·d for the hypothesis and as Python's d**2 with d**4 for E3), so the same bits."""
+    lengths = np.empty(max(fitted.shape[0] - 1, 0))
+    summary = _summary_body(fitted, lengths)
+    out = np.empty(FITS_AT + summary.shape[0])
+    out[FITS_AT:] = summary
+    out[HYPOTHESIS_LARGEST], out[HYPOTHESIS_SMALLEST] = residual_kernels._hypothesis_blocked(
+        p, n, d_squared
+    )
+    ratio = np.ascontiguousarray(residual_kernels._printed_ratios_blocked(p))
+    out[RATIO_COUNT] = ratio.shape[0]
+    out[RATIO_SUM] = 0.0 + _pairwise(ratio, 0, ratio.shape[0])
+    out[RATIO_LOW], out[RATIO_HIGH] = _low_high(ratio) if ratio.shape[0] else (0.0, 0.0)
+    found, out[ROTATION_LARGEST], out[ROTATION_PRINTED] = _rotation_largest(d, p, axis, n)
+    out[ROTATION_FOUND] = 1.0 if found else 0.0
+    tiny = residual_kernels.TINY
+    out[RECURSION_ONE], out[RECURSION_TWO] = residual_kernels._largest_recursions_pairs(d, p, tiny)
+    out[HEIGHT_LARGEST] = largest_of_magnitudes(p[:, 1])
+    out[TWO_STEP_PRINTED] = residual_kernels._largest_two_step_printed_pairs(
+        d_squared_pow, d_fourth, p, tiny
+    )
+    out[DARBOUX_EDGES] = _edge_lengths(shown_axis, shown_darboux, False)[1]
+    out[DARBOUX_DISTANCES] = _distances(shown_axis, shown_darboux, distance, False)[1]
+    out[RIGHT_ANGLES] = residual_kernels._largest_right_angle(tractrix, axis, p, n)
+    return out
+
+
+class SectionNumbers:
+    """``_section_numbers`` of one float64 polygon, read as each check's wrapper returns it
+    (``found`` of ``residual_kernels`` and ``darboux``'s ``*_largest``)."""
+
+    __slots__ = ("fits", "values")
+
+    def __init__(self, found: Any) -> None:
+        self.fits = found[FITS_AT:]
+        self.values: list[float] = found[:FITS_AT].tolist()
+
+    def pair(self, first: int) -> tuple[float, float]:
+        """Entries ``first`` and ``first + 1``."""
+        values = self.values
+        return values[first], values[first + 1]
+
+    @property
+    def ratio(self) -> tuple[int, float, float, float]:
+        """Erratum E2's ratios: their count, numpy's sum, smallest and largest."""
+        count, total, low, high = self.values[RATIO_COUNT : RATIO_HIGH + 1]
+        return int(count), total, low, high
+
+    @property
+    def rotation(self) -> tuple[float, float] | None:
+        """The rotation angle's largest residuals (corrected, printed), None where the pass
+        stopped at a block it does not take (``residual_kernels._rotation_angles`` goes on)."""
+        values = self.values
+        if values[ROTATION_FOUND] != 1.0:
+            return None
+        return values[ROTATION_LARGEST], values[ROTATION_PRINTED]
+
+
+def section_numbers(
+    p: Array, axis: Array, darboux: Array, tractrix: Array, n: int, d: float, h: float
+) -> SectionNumbers | None:
+    """``_section_numbers`` on the polygon p_0 .. p_n and its companions (x, e, d as the
+    checks read them), None unless each is a C-contiguous float64 (m, 2) array with the rows
+    the checks read (then each check calls its own pass)."""
+    arrays = (p, axis, darboux, tractrix)
+    for points in arrays:
+        if not (
+            type(points) is np.ndarray
+            and points.dtype == np.float64
+            and points.ndim == 2
+            and points.shape[1] == 2
+            and points.flags.c_contiguous
+        ):
+            return None
+    if n < 4 or len(p) != n + 1 or len(axis) < n + 1 or len(darboux) < n or len(tractrix) < n:
+        return None
+    d = float(d)
+    found = _section_numbers(
+        p, p[:n], axis, axis[:n], darboux[:n], tractrix, n, d, d * d, d**2, d**4, float(2 * h)
+    )
+    return SectionNumbers(found)

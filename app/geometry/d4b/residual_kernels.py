@@ -198,11 +198,15 @@ def recursion_residuals(d: float, y: Any) -> tuple[Any, Any]:
     return one, two
 
 
-def recursion_largest(d: float, y: Any) -> tuple[Largest, Largest]:
-    """``recursion_residuals`` as their largest values (``checks.Largest``), not stored."""
+def recursion_largest(
+    d: float, y: Any, found: tuple[float, float] | None = None
+) -> tuple[Largest, Largest]:
+    """``recursion_residuals`` as their largest values (``checks.Largest``), not stored;
+    ``found``: those values, computed already (``fused_checks.section_numbers``)."""
     heights = np.asarray(y, dtype=np.float64)
-    pairs = _paired(heights)
-    if pairs is not None:  # the heights read in place from their rows
+    if found is not None:
+        one, two = found
+    elif (pairs := _paired(heights)) is not None:  # the heights read in place from their rows
         one, two = _largest_recursions_pairs(float(d), pairs, TINY)
     else:
         one, two = _largest_recursions(float(d), heights, TINY)
@@ -219,15 +223,17 @@ def two_step_printed_residuals(d: float, y: Any) -> Any:
     return _two_step_printed(d**2, d**4, np.asarray(y, dtype=np.float64), TINY)
 
 
-def largest_two_step_printed_residual(d: float, y: Any) -> float | None:
+def largest_two_step_printed_residual(d: float, y: Any, found: float | None = None) -> float | None:
     """The largest of ``two_step_printed_residuals`` as ``checks.printed_residual`` reports it
-    (None for none, or one that is not finite), without the array."""
+    (None for none, or one that is not finite), without the array; ``found``: the largest,
+    computed already (``fused_checks.section_numbers``)."""
     if len(y) < 4:
         return None
     d = float(d)
     heights = np.asarray(y, dtype=np.float64)
-    pairs = _paired(heights)
-    if pairs is not None:  # the heights read in place from their rows
+    if found is not None:
+        worst = found
+    elif (pairs := _paired(heights)) is not None:  # the heights read in place from their rows
         worst = float(_largest_two_step_printed_pairs(d**2, d**4, pairs, TINY))
     else:
         worst = float(_largest_two_step_printed_blocked(d**2, d**4, heights, TINY))
@@ -243,9 +249,15 @@ def right_angle_residuals(tractrix: Any, axis: Any, p: Any, n: int) -> Any:
     return _right_angles(f64(tractrix), f64(axis), f64(p), n, True)[0]
 
 
-def right_angle_largest(tractrix: Any, axis: Any, p: Any, n: int) -> Largest:
-    """``right_angle_residuals`` as their largest value (``checks.Largest``), not stored."""
-    largest = _largest_right_angle(_contiguous(tractrix), _contiguous(axis), _contiguous(p), n)
+def right_angle_largest(
+    tractrix: Any, axis: Any, p: Any, n: int, found: float | None = None
+) -> Largest:
+    """``right_angle_residuals`` as their largest value (``checks.Largest``), not stored;
+    ``found``: that value, computed already (``fused_checks.section_numbers``)."""
+    if found is not None:
+        largest = found
+    else:
+        largest = _largest_right_angle(_contiguous(tractrix), _contiguous(axis), _contiguous(p), n)
     return Largest(float(largest), max(n, 0), lambda: right_angle_residuals(tractrix, axis, p, n))
 
 
@@ -268,13 +280,16 @@ def _hypothesis_rows(
     return largest, smallest
 
 
-def hypothesis_largest(p: Any, n: int, d: float) -> tuple[Largest, float]:
+def hypothesis_largest(
+    p: Any, n: int, d: float, found: tuple[float, float] | None = None
+) -> tuple[Largest, float]:
     """Float64: Theorem 4's hypothesis on p_0 .. p_{n−1} (n >= 2) in one pass: its largest
     violation (``checks.Largest``; the array, as ``checks._hypothesis`` builds it, on demand)
-    and the smallest p_{k−1}^y p_k^y / d²."""
+    and the smallest p_{k−1}^y p_k^y / d²; ``found``: those two, computed already
+    (``fused_checks.section_numbers``)."""
     d2 = float(d) * float(d)
     points = _contiguous(p)
-    largest, smallest = _hypothesis_blocked(points, n, d2)
+    largest, smallest = _hypothesis_blocked(points, n, d2) if found is None else found
 
     def violations() -> Any:
         products = points[: n - 1, 1] * points[1:n, 1]
@@ -827,10 +842,16 @@ def rotation_angles(d: float, p: Any, axis: Any, n: int) -> tuple[Any, Any]:
     return corrected, printed
 
 
-def rotation_angle_largest(d: float, p: Any, axis: Any, n: int) -> tuple[Largest, float | None]:
+def rotation_angle_largest(
+    d: float, p: Any, axis: Any, n: int, found: tuple[float, float] | None = None
+) -> tuple[Largest, float | None]:
     """``rotation_angles`` as the corrected residuals' largest (``checks.Largest``) and the
-    printed ones' as ``checks.printed_residual`` reports it, neither stored."""
-    _, _, largest, printed = _rotation_angles(float(d), _points(p), _points(axis), n, False)
+    printed ones' as ``checks.printed_residual`` reports it, neither stored; ``found``: the two
+    largest, computed already (``fused_checks.section_numbers``)."""
+    if found is not None:
+        largest, printed = found
+    else:
+        _, _, largest, printed = _rotation_angles(float(d), _points(p), _points(axis), n, False)
     count = max(n - 1, 0)
     corrected = Largest(float(largest), count, lambda: rotation_angles(d, p, axis, n)[0])
     return corrected, (float(printed) if count and math.isfinite(printed) else None)
@@ -1046,19 +1067,28 @@ def _largest_spread(values: Any, mean: float, tiny: float) -> float:
     return largest
 
 
-def ratio_spread(p: Any) -> float | None:
+def ratio_spread(p: Any, found: tuple[int, float, float, float] | None = None) -> float | None:
     """Float64: the printed residual of erratum E2 (the spread of the proof's ratio about its
-    mean, ``checks._ratio_erratum``): None for fewer than two ratios, or one not finite."""
-    ratio = _printed_ratios_blocked(_contiguous(p))
-    if len(ratio) < 2:
-        return None
-    mean = float(np.sum(ratio) / len(ratio))
+    mean, ``checks._ratio_erratum``): None for fewer than two ratios, or one not finite.
+    ``found``: the ratios' count, numpy's sum of them, their smallest and largest, computed
+    already (``fused_checks.section_numbers``)."""
+    if found is None:
+        ratio = _printed_ratios_blocked(_contiguous(p))
+        count = len(ratio)
+        if count < 2:
+            return None
+        total = np.sum(ratio)
+        low, high = float(np.min(ratio)), float(np.max(ratio))  # NaN if one is NaN
+    else:
+        count, total, low, high = found
+        if count < 2:
+            return None
+    mean = float(np.float64(total) / count)
     # |v − mean| / scale grows with v on either side of the mean (a rounded difference and a
     # quotient by a positive scale are monotone): its largest is at the smallest or the largest
     # ratio, the same number ``_largest_spread`` finds in a pass with a division per entry
     scale = abs(mean)
     scale = scale if scale > TINY else TINY
-    low, high = float(np.min(ratio)), float(np.max(ratio))  # NaN if one is NaN
     worst = max(abs(high - mean) / scale, abs(low - mean) / scale)
     return worst if math.isfinite(worst) else None
 
