@@ -62,6 +62,7 @@ from app.geometry.surfaces.ring_curvature import (
     ring_checks,
     ring_curvatures,
     ring_largest,
+    ring_rotation,
 )
 
 S = Statement
@@ -473,6 +474,33 @@ def evaluate(
             memo[name] = make()
         return memo[name]
 
+    def numbers() -> fused_checks.ImageNumbers | None:
+        """Float64 without ``detail``, constructed images, every statement selected and n
+        below ``fused_checks.SECTION_BELOW``: the resolutions, (18) by slopes, (19) as a
+        rotation, (20) by inversion and both rings from one compiled call (the same bits as
+        each pass; ``fused_checks.image_numbers``), else None (each calls its own)."""
+
+        def make() -> fused_checks.ImageNumbers | None:
+            if ar.mode != "float64" or detail or not images.constructed:
+                return None
+            if not 4 <= n < fused_checks.SECTION_BELOW or images.contact_edges_before is None:
+                return None
+            if not all(wanted(statement.id) for statement in STATEMENTS):
+                return None
+            return fused_checks.image_numbers(
+                p,
+                tractrix,
+                nt(),
+                c(),
+                m(),
+                images.contact_edges_before,
+                n,
+                ring_rotation(ar),
+                -1 / (h * h),
+            )
+
+        return shared("numbers", make)
+
     def rings(pseudosphere: bool) -> tuple[Any, Any, int] | None:
         """The ring's theorem and (17) residuals in one pass (``ring_checks``, float64 and
         balls); in float64 their largest values alone (``ring_largest``) when no residual is
@@ -484,6 +512,15 @@ def evaluate(
                 k = -1 / (h * h)
                 return shared("pseudo", lambda: ring_checks(ar, tractrix, nt(), k, exact))
             return shared("catenoid", lambda: ring_checks(ar, p, m(), None, exact))
+        found = numbers() if exact else None
+        if found is not None:  # from the one call
+            if pseudosphere:
+                ring = found.ring(True)
+                return shared(
+                    "pseudo", lambda: ring_largest(ar, tractrix, nt(), -1 / (h * h), ring)
+                )
+            ring = found.ring(False)
+            return shared("catenoid", lambda: ring_largest(ar, p, m(), None, ring))
         fused = ring_largest if exact else ring_checks
         if pseudosphere:
             return shared("pseudo", lambda: fused(ar, tractrix, nt(), -1 / (h * h)))
@@ -554,6 +591,8 @@ def evaluate(
     def resolution() -> Array:  # edges i_min .. i_max (p_i p_{i+1})
         if (fused := ball_edge_checks()) is not None:
             return fused[0]
+        if (found := numbers()) is not None:
+            return found.resolution
         return shared("resolution", lambda: _edge_resolution(ar, p, p_edges))
 
     def along_normals() -> Array:  # (18)'s slope check: n along the edges of p
@@ -583,6 +622,8 @@ def evaluate(
     def pole_resolution() -> Array:
         if (fused := ball_edge_checks()) is not None:
             return fused[1]
+        if (found := numbers()) is not None:
+            return found.poles
 
         def make() -> Array:
             assert images.contact_edges_before is not None
@@ -734,7 +775,9 @@ def evaluate(
     def slope() -> Check:
         if ar.mode == "float64" and not detail and n > 0 and len(nt()) >= n and len(p) > n:
             # the check and its erratum from one pass, the largest of each alone
-            largest, worst = residual_kernels.along_largest(nt()[:n], p[: n + 1])
+            found = numbers()
+            pair = None if found is None else found.along
+            largest, worst = residual_kernels.along_largest(nt()[:n], p[: n + 1], pair)
             erratum = Erratum(*ERRATUM_18_SLOPE, printed_residual=worst)
             return check(EQUATION_18_SLOPE, largest, n_tolerance, erratum)
         return check(EQUATION_18_SLOPE, along_normals(), n_tolerance, slope_erratum())
@@ -771,9 +814,11 @@ def evaluate(
             return check(EQUATION_19_ROTATION, Largest(fused[0], n, rows), n_tolerance)
         count = min(n, len(c()) - 1, len(nt()), len(resolution()))
         if ar.mode == "float64" and not detail and count == n > 0:  # one pass, no arrays
+            found = numbers()
+            largest = None if found is None else found.rotation
             return check(
                 EQUATION_19_ROTATION,
-                residual_kernels.contact_rotation_largest(c(), nt(), resolution(), n),
+                residual_kernels.contact_rotation_largest(c(), nt(), resolution(), n, largest),
                 n_tolerance,
             )
         if ar.certified and (fused := ball_edge_checks()) is not None:  # with the edges' checks
@@ -800,9 +845,11 @@ def evaluate(
             return check(EQUATION_20_INVERSION, Largest(fused[1], n, rows), local_tolerance)
         count = min(n, len(m()), len(c()) - 1, len(pole_resolution()))
         if ar.mode == "float64" and not detail and count == n > 0:  # one pass, no arrays
+            found = numbers()
+            largest = None if found is None else found.inversion
             return check(
                 EQUATION_20_INVERSION,
-                residual_kernels.pole_inversion_largest(m(), c(), pole_resolution(), n),
+                residual_kernels.pole_inversion_largest(m(), c(), pole_resolution(), n, largest),
                 local_tolerance,
             )
         if ar.certified and (fused := ball_image_20()) is not None:  # with (20), one program

@@ -15,6 +15,10 @@ rotation angle, fits and erratum E2's ratio, (13) and its two-step form with err
 Darboux transform's edge lengths and distances, Nikolaides' right angles) from one call of the
 same compiled passes, where each check's own call took one (and, at 100 vertices, ≈ 10–40 µs
 of a request in all, mostly the code around each pass: issue 13, session 25).
+
+``image_numbers``: likewise for Section 5 (``curvature``): the resolutions of p's edges and of
+the poles, (18) by slopes with erratum E61, (19) as a rotation, (20) by inversion and both
+rings (Theorems 7, 8 and (17)), from one call where they took seven.
 """
 
 from __future__ import annotations
@@ -55,6 +59,7 @@ from app.geometry.conditions import (
 from app.geometry.d4b import closed_forms, residual_kernels
 from app.geometry.darboux import _distances, _edge_lengths
 from app.geometry.precision import BLOCK_SIZE, Arithmetic, Array, Scalar
+from app.geometry.surfaces import ring_kernel
 
 if TYPE_CHECKING:
     from app.geometry.d4b.discretization import D4bPolygons
@@ -2057,3 +2062,158 @@ def section_numbers(
         p, p[:n], axis, axis[:n], darboux[:n], tractrix, n, d, d * d, d**2, d**4, float(2 * h)
     )
     return SectionNumbers(found)
+
+
+# --- Section 5 in one call (``image_numbers``) ---
+
+#: Entries of ``_image_numbers``' vector: (18) by slopes (largest, printed: E61), (19) as a
+#: rotation, (20) by inversion, then each ring's (pseudosphere: Theorem 7, catenoid: Theorem 8)
+#: validity (1.0: every face has area), largest theorem residual, largest (17) residual and
+#: faces where (17) is 0/0.
+(
+    ALONG_LARGEST,
+    ALONG_PRINTED,
+    CONTACT_ROTATION,
+    POLE_INVERSION,
+    PSEUDOSPHERE_RING,
+    CATENOID_RING,
+) = (0, 1, 2, 3, 4, 8)
+IMAGE_NUMBERS = 12
+
+
+@kernel(
+    "Tuple((float64[::1], float64[::1], float64[::1]))(float64[:, ::1], float64[:, ::1], "
+    "float64[:, ::1], float64[:, ::1], float64[:, ::1], float64[:, ::1], float64[:, ::1], "
+    "float64[:, ::1], int64, float64, float64, float64)"
+)
+def _image_numbers(
+    p: Any,
+    edges: Any,
+    tractrix: Any,
+    normals: Any,
+    shown_normals: Any,
+    contact: Any,
+    gauss: Any,
+    before: Any,
+    n: int,
+    cos: float,
+    sin: float,
+    curvature: float,
+) -> tuple[Any, Any, Any]:
+    """Section 5's numbers on p_0 .. p_n and its Gauss images, each from the pass the check's
+    wrapper calls with the same arguments (``edges`` = p[:n + 1], ``shown_normals`` = ñ[:n]; the
+    ring's cos, sin and the pseudosphere's curvature −1/h² as Python makes them): the edges'
+    resolutions (n,), the poles' (n,) and the vector of ``IMAGE_NUMBERS`` entries."""
+    resolution = np.ascontiguousarray(residual_kernels._edge_resolution_blocked(p))
+    first = residual_kernels._edge_resolution_blocked(before)[0]
+    poles = np.ascontiguousarray(residual_kernels._pole_resolution(first, resolution))
+    out = np.empty(IMAGE_NUMBERS)
+    out[ALONG_LARGEST], out[ALONG_PRINTED] = residual_kernels._largest_along_both_blocked(
+        shown_normals, edges
+    )
+    out[CONTACT_ROTATION] = residual_kernels._largest_contact_rotation(
+        contact, normals, resolution, n
+    )
+    out[POLE_INVERSION] = residual_kernels._largest_pole_inversion(
+        gauss, contact, poles, n, residual_kernels.TINY
+    )
+    for at, meridian, image, k, minimal in (
+        (PSEUDOSPHERE_RING, tractrix, normals, curvature, False),
+        (CATENOID_RING, p, gauss, 0.0, True),
+    ):
+        skipped, valid, largest, largest_17 = ring_kernel._ring_largest(
+            meridian, image, cos, sin, k, minimal, ring_kernel.TINY
+        )
+        out[at] = 1.0 if valid else 0.0
+        out[at + 1], out[at + 2], out[at + 3] = largest, largest_17, skipped
+    return resolution, poles, out
+
+
+class ImageNumbers:
+    """``_image_numbers`` of one float64 polygon and its Gauss images, read as each wrapper
+    takes them (``found`` of ``residual_kernels`` and ``ring_curvature.ring_largest``)."""
+
+    __slots__ = ("poles", "resolution", "values")
+
+    def __init__(self, found: tuple[Any, Any, Any]) -> None:
+        self.resolution, self.poles = found[0], found[1]
+        self.values: list[float] = found[2].tolist()
+
+    @property
+    def along(self) -> tuple[float, float]:
+        """(18) by slopes: its largest residual and erratum E61's printed one."""
+        return self.values[ALONG_LARGEST], self.values[ALONG_PRINTED]
+
+    @property
+    def rotation(self) -> float:
+        """(19) as a rotation: its largest residual."""
+        return self.values[CONTACT_ROTATION]
+
+    @property
+    def inversion(self) -> float:
+        """(20) by inversion: its largest residual."""
+        return self.values[POLE_INVERSION]
+
+    def ring(self, pseudosphere: bool) -> tuple[bool, float, float, int]:
+        """A ring's (valid, largest theorem residual, largest (17) residual, 0/0 faces)."""
+        at = PSEUDOSPHERE_RING if pseudosphere else CATENOID_RING
+        valid, largest, largest_17, skipped = self.values[at : at + 4]
+        return valid == 1.0, largest, largest_17, int(skipped)
+
+
+def _rows(points: Any, least: int) -> bool:
+    """Whether ``points`` is a C-contiguous float64 (m, 2) array with at least ``least`` rows."""
+    return (
+        type(points) is np.ndarray
+        and points.dtype == np.float64
+        and points.ndim == 2
+        and points.shape[1] == 2
+        and points.shape[0] >= least
+        and points.flags.c_contiguous
+    )
+
+
+def image_numbers(
+    p: Array,
+    tractrix: Array,
+    normals: Array,
+    contact: Array,
+    gauss: Array,
+    before: Array,
+    n: int,
+    ring: tuple[float, float],
+    curvature: float,
+) -> ImageNumbers | None:
+    """``_image_numbers`` on p_0 .. p_n, the tractrix (as many rows), ñ (n rows or more), the
+    contact points (n + 1 or more) and m (n or more), and the edge before them
+    (``GaussImages.contact_edges_before``, two rows); ``ring`` is the ring's (cos, sin). None
+    unless each is a C-contiguous float64 (m, 2) array of those rows (then each check calls
+    its own pass)."""
+    if n < 1 or len(p) != n + 1 or len(tractrix) != n + 1 or len(before) != 2:
+        return None
+    shapes = (
+        (p, n + 1),
+        (tractrix, n + 1),
+        (normals, n),
+        (contact, n + 1),
+        (gauss, n),
+        (before, 2),
+    )
+    if not all(_rows(points, least) for points, least in shapes):
+        return None
+    cos, sin = ring
+    found = _image_numbers(
+        p,
+        p[: n + 1],
+        tractrix,
+        normals,
+        normals[:n],
+        contact,
+        gauss,
+        before,
+        n,
+        float(cos),
+        float(sin),
+        float(curvature),
+    )
+    return ImageNumbers(found)

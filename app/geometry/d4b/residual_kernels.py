@@ -321,15 +321,18 @@ def _contact_rotation(contact: Any, normals: Any, scale: Any, count: int, store:
     return out, largest
 
 
-def contact_rotation_largest(contact: Any, normals: Any, scale: Any, count: int) -> Largest:
+def contact_rotation_largest(
+    contact: Any, normals: Any, scale: Any, count: int, found: float | None = None
+) -> Largest:
     """Float64: the largest of ``_contact_rotation``'s residuals (``checks.Largest``, the
-    array on demand); ``contact`` needs count + 1 rows, ``normals`` and ``scale`` count."""
+    array on demand); ``contact`` needs count + 1 rows, ``normals`` and ``scale`` count.
+    ``found``: the largest, computed already (``fused_checks.image_numbers``)."""
     arrays = (
         _contiguous(contact),
         _contiguous(normals),
         np.ascontiguousarray(scale, dtype=np.float64),
     )
-    largest = _largest_contact_rotation(*arrays, count)
+    largest = _largest_contact_rotation(*arrays, count) if found is None else found
     return Largest(float(largest), count, lambda: _contact_rotation(*arrays, count, True)[0])
 
 
@@ -363,11 +366,14 @@ def _pole_inversion(
     return out, largest
 
 
-def pole_inversion_largest(gauss: Any, contact: Any, scale: Any, count: int) -> Largest:
+def pole_inversion_largest(
+    gauss: Any, contact: Any, scale: Any, count: int, found: float | None = None
+) -> Largest:
     """Float64: the largest of ``_pole_inversion``'s residuals (``checks.Largest``, the array
-    on demand); ``contact`` needs count + 1 rows, ``gauss`` and ``scale`` count."""
+    on demand); ``contact`` needs count + 1 rows, ``gauss`` and ``scale`` count. ``found``: the
+    largest, computed already (``fused_checks.image_numbers``)."""
     arrays = _contiguous(gauss), _contiguous(contact), np.ascontiguousarray(scale, dtype=np.float64)
-    largest = _largest_pole_inversion(*arrays, count, TINY)
+    largest = _largest_pole_inversion(*arrays, count, TINY) if found is None else found
     return Largest(float(largest), count, lambda: _pole_inversion(*arrays, count, TINY, True)[0])
 
 
@@ -1034,14 +1040,16 @@ def _along_both_rows(
     return largest, printed
 
 
-def along_largest(vectors: Any, points: Any) -> tuple[Largest, float | None]:
+def along_largest(
+    vectors: Any, points: Any, found: tuple[float, float] | None = None
+) -> tuple[Largest, float | None]:
     """Float64: ``along(vectors, points)`` as its largest (``checks.Largest``, the rows made only
     if asked) and ``largest_along_printed_slope(len(vectors), points)``, from one pass (the
     check of (18) by slopes and its erratum E61); ``points`` has len(vectors) + 1 rows or
-    more."""
+    more. ``found``: those two, computed already (``fused_checks.image_numbers``)."""
     v, q = _contiguous(vectors), _contiguous(points)
     count = len(v)
-    largest, printed = _largest_along_both_blocked(v, q)
+    largest, printed = _largest_along_both_blocked(v, q) if found is None else found
     worst = float(printed) if count > 0 and math.isfinite(printed) else None
     return Largest(float(largest), count, lambda: along(v, q[: count + 1])), worst
 

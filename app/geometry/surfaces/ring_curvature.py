@@ -157,19 +157,34 @@ def ring_checks(
     return ring_kernel.ring_checks(meridian, gauss, ar.cos(theta), ar.sin(theta), curvature)
 
 
+def ring_rotation(ar: Arithmetic) -> tuple[Any, Any]:
+    """cos and sin of the angle π/RING_M between a ring's meridians, in ``ar``."""
+    theta = ar.pi / RING_M
+    return ar.cos(theta), ar.sin(theta)
+
+
 def ring_largest(
-    ar: Arithmetic, meridian: Array, gauss: Array, curvature: float | None
+    ar: Arithmetic,
+    meridian: Array,
+    gauss: Array,
+    curvature: float | None,
+    found: tuple[bool, float, float, int] | None = None,
 ) -> tuple[Largest, Largest, int] | None:
     """Float64: ``ring_checks`` as the largest residuals (``checks.Largest``), the rows not
-    stored (the checks without ``detail``); None as ``ring_checks``."""
+    stored (the checks without ``detail``); None as ``ring_checks``. ``found``: the pass's
+    (valid, largest, largest (17), 0/0 faces), computed already
+    (``d4b.fused_checks.image_numbers``)."""
     if ar.mode != "float64":
         return None
-    theta = ar.pi / RING_M
-    cos, sin = ar.cos(theta), ar.sin(theta)
-    found = ring_kernel.ring_largest(meridian, gauss, cos, sin, curvature)
+    cos, sin = ring_rotation(ar)
     if found is None:
+        made = ring_kernel.ring_largest(meridian, gauss, cos, sin, curvature)
+    else:
+        valid, largest_found, largest_17_found, skipped_found = found
+        made = (largest_found, largest_17_found, skipped_found) if valid else None
+    if made is None:
         return None
-    largest, largest_17, skipped = found
+    largest, largest_17, skipped = made
 
     def rows() -> tuple[Array, Array, int]:
         fused = ring_kernel.ring_checks(meridian, gauss, cos, sin, curvature)
