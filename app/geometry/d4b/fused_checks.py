@@ -1979,7 +1979,7 @@ def _section_numbers(
     d_fourth: float,
     distance: float,
 ) -> Any:
-    """The numbers of ``SECTION_STATEMENTS``' checks on p_0 .. p_n ((n + 1, 2), n >= 4): each
+    """The numbers of ten checks (``d4b.checks._SECTION``) on p_0 .. p_n ((n + 1, 2), n >= 4): each
     from the pass its wrapper calls (``residual_kernels``, ``darboux``, ``_summary_body``), with
     the same arguments (``fitted`` = p[:n], the shown rows of x and e = x[:n], e[:n]; d² as
     d·d for the hypothesis and as Python's d**2 with d**4 for E3), so the same bits."""
@@ -2039,23 +2039,28 @@ class SectionNumbers:
         return values[ROTATION_LARGEST], values[ROTATION_PRINTED]
 
 
+def _contiguous_rows(points: Any, least: int) -> bool:
+    """Whether ``points`` is a C-contiguous float64 (m, 2) array with at least ``least`` rows."""
+    return (
+        type(points) is np.ndarray
+        and points.dtype == np.float64
+        and points.ndim == 2
+        and points.shape[1] == 2
+        and points.shape[0] >= least
+        and points.flags.c_contiguous
+    )
+
+
 def section_numbers(
     p: Array, axis: Array, darboux: Array, tractrix: Array, n: int, d: float, h: float
 ) -> SectionNumbers | None:
     """``_section_numbers`` on the polygon p_0 .. p_n and its companions (x, e, d as the
     checks read them), None unless each is a C-contiguous float64 (m, 2) array with the rows
     the checks read (then each check calls its own pass)."""
-    arrays = (p, axis, darboux, tractrix)
-    for points in arrays:
-        if not (
-            type(points) is np.ndarray
-            and points.dtype == np.float64
-            and points.ndim == 2
-            and points.shape[1] == 2
-            and points.flags.c_contiguous
-        ):
-            return None
-    if n < 4 or len(p) != n + 1 or len(axis) < n + 1 or len(darboux) < n or len(tractrix) < n:
+    if n < 4 or len(p) != n + 1:
+        return None
+    shapes = ((p, n + 1), (axis, n + 1), (darboux, n), (tractrix, n))
+    if not all(_contiguous_rows(points, least) for points, least in shapes):
         return None
     d = float(d)
     found = _section_numbers(
@@ -2161,18 +2166,6 @@ class ImageNumbers:
         return valid == 1.0, largest, largest_17, int(skipped)
 
 
-def _rows(points: Any, least: int) -> bool:
-    """Whether ``points`` is a C-contiguous float64 (m, 2) array with at least ``least`` rows."""
-    return (
-        type(points) is np.ndarray
-        and points.dtype == np.float64
-        and points.ndim == 2
-        and points.shape[1] == 2
-        and points.shape[0] >= least
-        and points.flags.c_contiguous
-    )
-
-
 def image_numbers(
     p: Array,
     tractrix: Array,
@@ -2199,7 +2192,7 @@ def image_numbers(
         (gauss, n),
         (before, 2),
     )
-    if not all(_rows(points, least) for points, least in shapes):
+    if not all(_contiguous_rows(points, least) for points, least in shapes):
         return None
     cos, sin = ring
     found = _image_numbers(

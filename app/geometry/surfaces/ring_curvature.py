@@ -28,10 +28,15 @@ from app.geometry.surfaces.revolution_formulas import equation_17_residuals
 RING_M = 16
 
 
+def ring_rotation(ar: Arithmetic) -> tuple[Any, Any]:
+    """cos and sin of the angle π/RING_M between a ring's meridians, in ``ar``."""
+    theta = ar.pi / RING_M
+    return ar.cos(theta), ar.sin(theta)
+
+
 def ring_curvatures(ar: Arithmetic, meridian: Array, gauss: Array) -> FaceCurvatures:
     """Mixed-area curvatures of the ring of faces of two meridians ``(n, 2)``; ``(n−1,)``."""
-    theta = ar.pi / RING_M
-    cos, sin = ar.cos(theta), ar.sin(theta)
+    cos, sin = ring_rotation(ar)
     if ar.mode == "float64":  # the same arithmetic in one compiled pass (``ring_kernel``)
         compiled = ring_kernel.ring_curvatures(meridian, gauss, cos, sin)
         if compiled is not None:
@@ -148,19 +153,12 @@ def ring_checks(
     balls a check without per-index residuals reads); None on mpmath numbers, or where the
     numpy path must name a face without area."""
     if ar.certified:
-        theta = ar.pi / RING_M
-        cos, sin = ar.cos(theta), ar.sin(theta)
+        cos, sin = ring_rotation(ar)
         return arb_rings.ring_checks(meridian, gauss, cos, sin, curvature, reduce)
     if ar.mode != "float64":
         return None
-    theta = ar.pi / RING_M
-    return ring_kernel.ring_checks(meridian, gauss, ar.cos(theta), ar.sin(theta), curvature)
-
-
-def ring_rotation(ar: Arithmetic) -> tuple[Any, Any]:
-    """cos and sin of the angle π/RING_M between a ring's meridians, in ``ar``."""
-    theta = ar.pi / RING_M
-    return ar.cos(theta), ar.sin(theta)
+    cos, sin = ring_rotation(ar)
+    return ring_kernel.ring_checks(meridian, gauss, cos, sin, curvature)
 
 
 def ring_largest(
