@@ -271,22 +271,13 @@ class _Context:
             data.p, data.axis, data.darboux, data.tractrix, self.n, self.d, self.h
         )
 
-    def found(self, first: int) -> tuple[float, float] | None:
-        """Entries ``first`` and ``first + 1`` of ``section_numbers`` (None without them)."""
-        numbers = self.section_numbers
-        return None if numbers is None else numbers.pair(first)
-
-    def found_one(self, entry: int) -> float | None:
-        """Entry ``entry`` of ``section_numbers`` (None without them)."""
-        numbers = self.section_numbers
-        return None if numbers is None else numbers.values[entry]
-
     @cached_property
     def compiled_recursion(self) -> tuple[Array | Largest, Array | Largest]:
         """Float64 residuals of (13) and of its two-step form, both from one compiled pass (their
         largest values alone without ``detail``)."""
         if not self.detail:
-            found = self.found(fused_checks.RECURSION_ONE)
+            numbers = self.section_numbers
+            found = None if numbers is None else numbers.recursion
             return residual_kernels.recursion_largest(self.d, self.data.p[:, 1], found)
         return residual_kernels.recursion_residuals(self.d, self.data.p[:, 1])
 
@@ -387,7 +378,8 @@ class _Context:
 
 def _hypothesis(ctx: _Context, p: Array) -> Check:
     if ctx.ar.mode == "float64" and not ctx.detail and ctx.n >= 2:  # one compiled pass
-        found = ctx.found(fused_checks.HYPOTHESIS_LARGEST) if p is ctx.data.p else None
+        numbers = ctx.section_numbers if p is ctx.data.p else None
+        found = None if numbers is None else numbers.hypothesis
         largest, smallest = residual_kernels.hypothesis_largest(p, ctx.n, ctx.d, found)
         note = f"smallest p_(i-1)^y p_i^y / d² = {smallest:.6g}"
         if math.isfinite(largest.value):  # the note is the check's only one
@@ -524,11 +516,11 @@ def _two_step(ctx: _Context, p: Array) -> Check:
     if ar.mode != "float64":
         small = True
     elif numbers is not None:
-        small = numbers.values[fused_checks.HEIGHT_LARGEST] < 1e60
+        small = numbers.height < 1e60
     else:
         small = float(largest_of_magnitudes(y)) < 1e60
     if ar.mode == "float64" and small:  # the same, compiled
-        found = None if numbers is None else numbers.values[fused_checks.TWO_STEP_PRINTED]
+        found = None if numbers is None else numbers.two_step_printed
         worst = residual_kernels.largest_two_step_printed_residual(ctx.d, y, found)
         erratum = Erratum(*ERRATUM_TWO_STEP, printed_residual=worst)
     elif ar.mode == "mp":
@@ -603,7 +595,8 @@ def _nikolaides(ctx: _Context, p: Array, tractrix: Array, axis: Array) -> Check:
     if ctx.ar.mode == "float64":  # the same residuals in one compiled pass
         if not ctx.detail:  # the largest alone
             same = p is ctx.data.p and tractrix is ctx.data.tractrix and axis is ctx.data.axis
-            found = ctx.found_one(fused_checks.RIGHT_ANGLES) if same else None
+            numbers = ctx.section_numbers if same else None
+            found = None if numbers is None else numbers.right_angles
             return ctx.check(
                 NIKOLAIDES, 0, residual_kernels.right_angle_largest(tractrix, axis, p, n, found)
             )
@@ -622,7 +615,8 @@ def _darboux(ctx: _Context) -> Check:
     if ctx.ar.certified and arb_checks.balls(axis[:n], e[:n]):  # the same balls, compiled
         return ctx.check(DARBOUX, 0, arb_checks.darboux_edges(axis[:n], e[:n]))
     if ctx.ar.mode == "float64" and not ctx.detail:  # the largest alone, in one compiled pass
-        found = ctx.found_one(fused_checks.DARBOUX_EDGES)
+        numbers = ctx.section_numbers
+        found = None if numbers is None else numbers.darboux_edges
         return ctx.check(DARBOUX, 0, darboux.edge_length_largest(axis[:n], e[:n], found))
     return ctx.check(DARBOUX, 0, darboux.edge_length_residuals(ctx.ar, axis[:n], e[:n]))
 
@@ -632,7 +626,8 @@ def _darboux_distance(ctx: _Context) -> Check:
     if ctx.ar.certified and arb_checks.balls(axis[:n], e[:n]):  # the same balls, compiled
         residuals = arb_checks.darboux_distances(axis[:n], e[:n], 2 * ctx.h)
     elif ctx.ar.mode == "float64" and not ctx.detail:  # the largest alone, in one compiled pass
-        found = ctx.found_one(fused_checks.DARBOUX_DISTANCES)
+        numbers = ctx.section_numbers
+        found = None if numbers is None else numbers.darboux_distances
         largest = darboux.distance_largest(axis[:n], e[:n], 2 * ctx.h, found)
         return ctx.check(DARBOUX_DISTANCE, 0, largest)
     else:

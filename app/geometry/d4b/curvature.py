@@ -13,6 +13,7 @@ carry an erratum (E60–E63 in docs/errata.md):
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
@@ -512,16 +513,9 @@ def evaluate(
                 k = -1 / (h * h)
                 return shared("pseudo", lambda: ring_checks(ar, tractrix, nt(), k, exact))
             return shared("catenoid", lambda: ring_checks(ar, p, m(), None, exact))
-        found = numbers() if exact else None
-        if found is not None:  # from the one call
-            if pseudosphere:
-                ring = found.ring(True)
-                return shared(
-                    "pseudo", lambda: ring_largest(ar, tractrix, nt(), -1 / (h * h), ring)
-                )
-            ring = found.ring(False)
-            return shared("catenoid", lambda: ring_largest(ar, p, m(), None, ring))
-        fused = ring_largest if exact else ring_checks
+        fused: Callable[..., Any] = ring_largest if exact else ring_checks
+        if exact and (found := numbers()) is not None:  # the pass's numbers from the one call
+            fused = functools.partial(ring_largest, found=found.ring(pseudosphere))
         if pseudosphere:
             return shared("pseudo", lambda: fused(ar, tractrix, nt(), -1 / (h * h)))
         return shared("catenoid", lambda: fused(ar, p, m(), None))

@@ -2018,10 +2018,40 @@ class SectionNumbers:
         self.fits = found[FITS_AT:]
         self.values: list[float] = found[:FITS_AT].tolist()
 
-    def pair(self, first: int) -> tuple[float, float]:
-        """Entries ``first`` and ``first + 1``."""
-        values = self.values
-        return values[first], values[first + 1]
+    @property
+    def hypothesis(self) -> tuple[float, float]:
+        """Theorem 4's hypothesis: the largest violation and the smallest ratio."""
+        return self.values[HYPOTHESIS_LARGEST], self.values[HYPOTHESIS_SMALLEST]
+
+    @property
+    def recursion(self) -> tuple[float, float]:
+        """The largest residuals of (13) and of its two-step form."""
+        return self.values[RECURSION_ONE], self.values[RECURSION_TWO]
+
+    @property
+    def height(self) -> float:
+        """max |p^y| (NaN if one is NaN): the guard of E3's printed form."""
+        return self.values[HEIGHT_LARGEST]
+
+    @property
+    def two_step_printed(self) -> float:
+        """The largest residual of E3's printed two-step form."""
+        return self.values[TWO_STEP_PRINTED]
+
+    @property
+    def darboux_edges(self) -> float:
+        """The largest residual of the Darboux transform's edge lengths."""
+        return self.values[DARBOUX_EDGES]
+
+    @property
+    def darboux_distances(self) -> float:
+        """The largest residual of the Darboux transform's distances."""
+        return self.values[DARBOUX_DISTANCES]
+
+    @property
+    def right_angles(self) -> float:
+        """The largest residual of Nikolaides' right angles."""
+        return self.values[RIGHT_ANGLES]
 
     @property
     def ratio(self) -> tuple[int, float, float, float]:

@@ -54,13 +54,9 @@ def _fused(
     h: float,
 ) -> list[Any]:
     """The same numbers through the wrappers' ``found``."""
-    found = numbers.pair
-    hypothesis, smallest = residual_kernels.hypothesis_largest(
-        p, n, d, found(fused_checks.HYPOTHESIS_LARGEST)
-    )
-    one, two = residual_kernels.recursion_largest(d, p[:, 1], found(fused_checks.RECURSION_ONE))
+    hypothesis, smallest = residual_kernels.hypothesis_largest(p, n, d, numbers.hypothesis)
+    one, two = residual_kernels.recursion_largest(d, p[:, 1], numbers.recursion)
     rotation, printed = residual_kernels.rotation_angle_largest(d, p, axis, n, numbers.rotation)
-    values = numbers.values
     return [
         hypothesis.value,
         smallest,
@@ -69,16 +65,10 @@ def _fused(
         printed,
         one.value,
         two.value,
-        residual_kernels.largest_two_step_printed_residual(
-            d, p[:, 1], values[fused_checks.TWO_STEP_PRINTED]
-        ),
-        darboux.edge_length_largest(axis[:n], e[:n], values[fused_checks.DARBOUX_EDGES]).value,
-        darboux.distance_largest(
-            axis[:n], e[:n], 2 * h, values[fused_checks.DARBOUX_DISTANCES]
-        ).value,
-        residual_kernels.right_angle_largest(
-            tractrix, axis, p, n, values[fused_checks.RIGHT_ANGLES]
-        ).value,
+        residual_kernels.largest_two_step_printed_residual(d, p[:, 1], numbers.two_step_printed),
+        darboux.edge_length_largest(axis[:n], e[:n], numbers.darboux_edges).value,
+        darboux.distance_largest(axis[:n], e[:n], 2 * h, numbers.darboux_distances).value,
+        residual_kernels.right_angle_largest(tractrix, axis, p, n, numbers.right_angles).value,
         numbers.fits,
     ]
 
