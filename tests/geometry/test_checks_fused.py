@@ -11,6 +11,7 @@ from app.geometry.d4b import discretization, residual_kernels
 from app.geometry.d4b.fused_checks import (
     FIT_BLOCK,
     Fits,
+    _buffers,
     closed_comparisons,
     closed_kinematic_comparisons,
     fill_closed_forms,
@@ -222,6 +223,21 @@ def test_fits_summary_of_a_long_d4b_has_the_bits_of_the_stored_columns() -> None
     data = discretization.polygons(Float64(), 1.0, 1e-4, None, -100_000, 100_000, "closed-form")
     p = data.p[: data.vertices - 1]
     assert summary_close(fits_summary(p), fits_arrays(p)[0], p)
+
+
+#: glibc's mmap threshold as ``make run`` and the Dockerfile set it (MALLOC_MMAP_THRESHOLD_).
+MMAP_THRESHOLD = 128 * 1024
+
+
+@pytest.mark.parametrize("edges", [0, 1, 99, FIT_BLOCK - 1, FIT_BLOCK, FIT_BLOCK + 1, 10**6])
+def test_the_fits_buffers_are_as_wide_as_the_largest_block(edges: int) -> None:
+    """A short polygon's fits allocate a few KiB, below the server's mmap threshold (a
+    100-vertex request mapped, faulted in and unmapped 128 KiB on every call); a long one's
+    blocks keep their FIT_BLOCK + 2 columns."""
+    buffers = _buffers(edges)
+    assert buffers.shape == (16, min(edges, FIT_BLOCK) + 2)
+    if edges < 1000:
+        assert buffers.nbytes < MMAP_THRESHOLD
 
 
 _CLOSED = ("closed_p", "closed_tractrix")

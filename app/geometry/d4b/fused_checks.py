@@ -254,10 +254,15 @@ def _edge_columns(x: Any, y: Any, dx: Any, dy: Any, area: Any, edge: Any, count:
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _buffers() -> Any:
-    """The block buffers: x, y (FIT_BLOCK + 2 points), dx, dy and the six columns, then the
-    six terms of the sums (``_fill_terms``)."""
-    return np.empty((16, FIT_BLOCK + 2))
+def _buffers(edges: int) -> Any:
+    """The block buffers of a polygon with ``edges`` edges: x, y (up to FIT_BLOCK + 2 points),
+    dx, dy and the six columns, then the six terms of the sums (``_fill_terms``).
+
+    As wide as its largest block: a short polygon's fits take a few KiB instead of the 16 ×
+    (FIT_BLOCK + 2) floats of a long one's, which are just over glibc's mmap threshold as the
+    server sets it (128 KiB, ``MALLOC_MMAP_THRESHOLD_``): a fresh mapping, its pages faulted in
+    and unmapped again on every call."""
+    return np.empty((16, min(edges, FIT_BLOCK) + 2))
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
@@ -661,7 +666,7 @@ def _summary_body(p: Any, lengths: Any) -> Any:
     sums' rounding and the largest residuals move with them (tests/geometry/fit_rounding.py)."""
     n = p.shape[0]
     edges, inner = max(n - 1, 0), max(n - 2, 0)
-    buffers = _buffers()
+    buffers = _buffers(edges)
     big, nan = np.zeros(20, dtype=np.int64), np.zeros(20, dtype=np.bool_)
     scales = np.zeros(21)  # the ten scales, their reciprocals, whether those are taken
     for k0 in range(0, edges, FIT_BLOCK):  # pass 1: the columns' scales, the ratios' largest
