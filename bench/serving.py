@@ -17,7 +17,8 @@ off) on a free port of 127.0.0.1 and measures, with wall-clock time:
 
 ``python bench/serving.py computed`` measures only the computed GETs of issue 13 on the served
 configuration (``python -m app.server``), with and without the fast lane (app/fast_lane.py):
-two servers, rounds interleaved, requests/s and the server's CPU per request side by side.
+two servers, rounds interleaved, requests/s and the server's CPU per request side by side
+(``BENCH_SERVERS=<n>``: over n sets of fresh servers; ``BENCH_BEFORE``: with another tree's).
 ``python bench/serving.py compute`` times the same 100-vertex D4b computation in process
 (wall clock, fresh processes alternating with ``BENCH_BEFORE``'s tree if given).
 
@@ -380,51 +381,75 @@ TITLES = {
 }
 
 
-def computed_gets(rounds: int = ROUNDS) -> dict[str, float]:
-    """Computed 100-vertex D4b GETs (a new d each request) against /health, on the served
-    configuration with and without the fast lane (two servers, rounds interleaved), c=1:
-    median of paired ratios per variant; returns the lane's ratios."""
+def _computed_rounds(
+    trees: dict[str, tuple[dict[str, str], Path]],
+    scripts: dict[str, str],
+    runs: dict[str, dict[str, list[Load]]],
+    rounds: int,
+) -> None:
+    """One set of fresh servers (one per tree), ``rounds`` interleaved rounds of /health and
+    each script's GETs on each, appended to ``runs``."""
     servers = {}
-    scripts: dict[str, str] = {}
-    runs: dict[str, dict[str, list[Load]]] = {}
     try:
-        trees = {name: (env, ROOT) for name, env in CONFIGURATIONS.items()}
-        if BEFORE:
-            trees["before"] = ({}, Path(BEFORE).resolve())
         for name, (env, tree) in trees.items():
             port = free_port()
             servers[name] = (f"http://127.0.0.1:{port}", start_service(port, env, tree))
             fetch(port, SMALL)
-        for label, query in (("every check", ""), ("checks=none", "&checks=none")):
-            descriptor, scripts[label] = tempfile.mkstemp(suffix=".lua")
-            with os.fdopen(descriptor, "w") as handle:
-                handle.write(UNIQUE_SCRIPT % (SMALL + query))
-        runs = {name: {"bare": [], **{label: [] for label in scripts}} for name in servers}
         for _ in range(rounds):
             for name, (base, server) in servers.items():
                 runs[name]["bare"].append(wrk(base, "/health", 1, server=server))
                 for label, script in scripts.items():
                     runs[name][label].append(wrk(base, SMALL, 1, script, server))
     finally:
-        for script in scripts.values():
-            os.unlink(script)
         for _, server in servers.values():
             server.terminate()
             server.wait(timeout=20)
+
+
+#: ``BENCH_SERVERS=<n>``: ``computed`` starts its servers afresh n times, ``BENCH_ROUNDS``
+#: rounds each, and takes the medians over all of them. One server process of the same code can
+#: be 10–30 % faster or slower than the next (where its memory landed, what shares its core):
+#: with one set of servers, a comparison mostly tells which process was luckier.
+SERVER_SETS = int(os.environ.get("BENCH_SERVERS", "1"))
+
+
+def computed_gets(rounds: int = ROUNDS, server_sets: int = SERVER_SETS) -> dict[str, float]:
+    """Computed 100-vertex D4b GETs (a new d each request) against /health, on the served
+    configuration with and without the fast lane (two servers, rounds interleaved), c=1:
+    median of paired ratios per variant over ``server_sets`` fresh sets of servers; returns the
+    lane's ratios."""
+    trees = {name: (env, ROOT) for name, env in CONFIGURATIONS.items()}
+    if BEFORE:
+        trees["before"] = ({}, Path(BEFORE).resolve())
+    scripts: dict[str, str] = {}
+    for label, query in (("every check", ""), ("checks=none", "&checks=none")):
+        descriptor, scripts[label] = tempfile.mkstemp(suffix=".lua")
+        with os.fdopen(descriptor, "w") as handle:
+            handle.write(UNIQUE_SCRIPT % (SMALL + query))
+    runs: dict[str, dict[str, list[Load]]] = {
+        name: {"bare": [], **{label: [] for label in scripts}} for name in trees
+    }
+    try:
+        for _ in range(server_sets):
+            _computed_rounds(trees, scripts, runs, rounds)
+    finally:
+        for script in scripts.values():
+            os.unlink(script)
+    sets = f"{server_sets} sets of servers × " if server_sets > 1 else ""
     print(
         f" computed 100-vertex D4b GET (a new d each request) against GET /health, "
-        f"python -m app.server (h11), c=1, wrk {WRK_SECONDS} s, median of {rounds} interleaved "
-        f"rounds; load average {os.getloadavg()[0]:.1f}"
+        f"python -m app.server (h11), c=1, wrk {WRK_SECONDS} s, median of {sets}{rounds} "
+        f"interleaved rounds; load average {os.getloadavg()[0]:.1f}"
     )
     print(
         "  per variant: requests/s, p50, ratio to /health (requests/s), server CPU ms per "
         "request, and ratio to /health in server CPU"
     )
-    print(f"  {'':<14}" + "   ".join(f"{TITLES[name]:>52}" for name in servers))
+    print(f"  {'':<14}" + "   ".join(f"{TITLES[name]:>52}" for name in trees))
     ratios = {}
     for variant in runs["lane"]:
         cells = []
-        for name in servers:
+        for name in trees:
             loads, bare = runs[name][variant], runs[name]["bare"]
             ratio = statistics.median(s.rps / b.rps for s, b in zip(loads, bare, strict=True))
             rps = statistics.median(s.rps for s in loads)
@@ -447,6 +472,20 @@ def computed_gets(rounds: int = ROUNDS) -> dict[str, float]:
             verdict = "   " + record_target(label, ratios[variant], target, "≥")
         title = "GET /health" if variant == "bare" else variant
         print(f"  {title:<14}" + "   ".join(f"{cell:>52}" for cell in cells) + verdict)
+    if "before" in runs:  # the same rounds of the two trees, run by run
+        paired = {
+            variant: statistics.median(
+                a.cpu / b.cpu
+                for a, b in zip(runs["lane"][variant], runs["before"][variant], strict=True)
+            )
+            for variant in runs["lane"]
+        }
+        print(
+            "  server CPU a request, this tree / before, median of paired runs: "
+            + ", ".join(
+                f"{'GET /health' if v == 'bare' else v} {ratio:5.3f}" for v, ratio in paired.items()
+            )
+        )
     return ratios
 
 
