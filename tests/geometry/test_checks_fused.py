@@ -231,9 +231,9 @@ MMAP_THRESHOLD = 128 * 1024
 
 @pytest.mark.parametrize("edges", [0, 1, 99, FIT_BLOCK - 1, FIT_BLOCK, FIT_BLOCK + 1, 10**6])
 def test_the_fits_buffers_are_as_wide_as_the_largest_block(edges: int) -> None:
-    """A short polygon's fits allocate a few KiB, below the server's mmap threshold (a
-    100-vertex request mapped, faulted in and unmapped 128 KiB on every call); a long one's
-    blocks keep their FIT_BLOCK + 2 columns."""
+    """A short polygon's fits allocate a few KiB, below the server's mmap threshold (the
+    served worker mapped, faulted in and unmapped 128 KiB for most 100-vertex requests); a long
+    one's blocks keep their FIT_BLOCK + 2 columns."""
     buffers = _buffers(edges)
     assert buffers.shape == (16, min(edges, FIT_BLOCK) + 2)
     if edges < 1000:

@@ -259,9 +259,10 @@ def _buffers(edges: int) -> Any:
     dx, dy and the six columns, then the six terms of the sums (``_fill_terms``).
 
     As wide as its largest block: a short polygon's fits take a few KiB instead of the 16 ×
-    (FIT_BLOCK + 2) floats of a long one's, which are just over glibc's mmap threshold as the
-    server sets it (128 KiB, ``MALLOC_MMAP_THRESHOLD_``): a fresh mapping, its pages faulted in
-    and unmapped again on every call."""
+    (FIT_BLOCK + 2) floats of a long one's. Those are just over glibc's mmap threshold as the
+    server sets it (128 KiB, ``MALLOC_MMAP_THRESHOLD_``): where the heap has no free chunk that
+    large (in the served worker, three calls in four) each call mapped them, faulted their pages
+    in and unmapped them (docs/performance.md, issue 13, session 26)."""
     return np.empty((16, min(edges, FIT_BLOCK) + 2))
 
 
