@@ -7,7 +7,6 @@ validation on the way out (see the serving-path facts in design.md and bench/).
 from __future__ import annotations
 
 import io
-import math
 from decimal import Decimal
 from typing import Any
 
@@ -73,35 +72,16 @@ def ensure_finite(curve: Curve) -> None:
         )
 
 
-#: Most values of a float64 curve's arrays tested at once, joined into one array (``not_finite``).
-JOINED_VALUES = 1 << 15
-
-
 def not_finite(ar: Arithmetic, named: list[tuple[str, Any]]) -> str | None:
     """The name of the first array with a NaN or an infinity, or None.
 
-    A small float64 curve's arrays are joined into one and tested by one ``isfinite``: a few
-    numpy calls for all of them (the polygon and six companions of a 100-vertex D4b answer took
-    seven reductions, each mostly numpy's overhead). Otherwise, and to name the array when the
-    joined test fails: a float64 array whose sum is finite has neither (either makes the sum
-    NaN or infinite), one reduction, about half the cost of ``isfinite`` and ``all``; only an
-    array whose sum is not finite (or overflows) is tested value by value."""
-    if ar.mode == "float64" and len(named) > 1:
-        arrays = [values for _, values in named]
-        if sum([values.size for values in arrays]) <= JOINED_VALUES and bool(
-            np.isfinite(np.concatenate(arrays, axis=None)).all()
-        ):
-            return None
-    with np.errstate(over="ignore", invalid="ignore"):
-        for name, values in named:
-            if (
-                isinstance(values, np.ndarray)
-                and values.dtype == np.float64
-                and math.isfinite(values.sum())
-            ):
-                continue
-            if not ar.all_finite(values.reshape(-1)):
-                return name
+    Array by array with ``ar.all_finite`` on the values in one row: in float64 one compiled
+    pass each (``compiled.all_finite_vector``; a contiguous array's row is a view), which
+    touches less code than numpy's join, ``isfinite`` and reduction did for a small curve's
+    arrays (docs/performance.md, issue 13, session 27)."""
+    for name, values in named:
+        if not ar.all_finite(values.reshape(-1)):
+            return name
     return None
 
 
