@@ -7,6 +7,8 @@ import json
 import mpmath
 from fastapi.testclient import TestClient
 
+from app.registry import DISCRETIZATIONS
+from app.schemas.common import real_fields
 from tests.reference import d4b as reference
 
 D = "0.12345678901234567890123"
@@ -116,3 +118,11 @@ def test_an_optional_real_is_exact_too(client: TestClient) -> None:
     default = _exact(client.get("/discretizations/d2a-quad?precision=mp&digits=40").text)
     assert document["vertices"][10][1] != default["vertices"][10][1]  # p_0 = (0, r)
     assert document["vertices"][10][1] == "-6.0000000000000000000001"
+
+
+def test_the_real_parameters_of_each_model_are_found_once() -> None:
+    """``real_fields``: the fields whose decimal mp keeps (float, or float or None), per class."""
+    assert real_fields(DISCRETIZATIONS["d4b"].query) == {"h", "d", "beta0"}
+    assert real_fields(DISCRETIZATIONS["d1"].query) == {"c", "delta", "y0", "y1"}
+    assert real_fields(DISCRETIZATIONS["d2b"].query) == frozenset()  # s is a list of floats
+    assert real_fields(DISCRETIZATIONS["d4b"].query) is real_fields(DISCRETIZATIONS["d4b"].query)
