@@ -75,10 +75,10 @@ def ensure_finite(curve: Curve) -> None:
 def not_finite(ar: Arithmetic, named: list[tuple[str, Any]]) -> str | None:
     """The name of the first array with a NaN or an infinity, or None.
 
-    Array by array with ``ar.all_finite`` on the values in one row: in float64 one compiled
-    pass each (``compiled.all_finite_vector``; a contiguous array's row is a view), which
-    touches less code than numpy's join, ``isfinite`` and reduction did for a small curve's
-    arrays (docs/performance.md, issue 13, session 27)."""
+    Array by array, flattened (``reshape(-1)``: a view of a contiguous array), with
+    ``ar.all_finite``: in float64 one compiled pass each (``compiled.all_finite_vector``),
+    which touches less code than numpy's join, ``isfinite`` and reduction did for a small
+    curve's arrays (docs/performance.md, issue 13, session 27)."""
     for name, values in named:
         if not ar.all_finite(values.reshape(-1)):
             return name
