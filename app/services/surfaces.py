@@ -23,7 +23,7 @@ from app.geometry.tolerances import LOCAL_STEPS
 from app.limits import enforce_mesh, enforce_range, timed_arithmetic
 from app.mesh_formats import glb_bytes, obj_bytes, ply_bytes, vtu_bytes
 from app.registry import DISCRETIZATIONS
-from app.responses import check_document, encode_json
+from app.responses import check_document, encode_json, not_finite
 from app.schemas.common import CurveQuery
 from app.schemas.surfaces import SurfaceQuery
 from app.services.selection import chosen
@@ -284,14 +284,13 @@ def _strings(ar: Arithmetic, values: Any) -> Any:
 
 
 def _ensure_finite(ar: Arithmetic, *arrays: Any) -> None:
-    for values in arrays:
-        if not ar.all_finite(values.reshape(-1)):
-            raise NotRepresentableError(
-                "precision",
-                "values representable in the chosen precision",
-                ar.mode,
-                "the mesh leaves the float64 range; use precision=mp or a shorter range",
-            )
+    if not_finite(ar, [("mesh", values) for values in arrays]) is not None:
+        raise NotRepresentableError(
+            "precision",
+            "values representable in the chosen precision",
+            ar.mode,
+            "the mesh leaves the float64 range; use precision=mp or a shorter range",
+        )
 
 
 def document(result: SurfaceResult) -> dict[str, Any]:
