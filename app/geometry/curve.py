@@ -26,7 +26,7 @@ class Polyline:
         self, indices: np.ndarray[Any, np.dtype[np.int64]], vertices: Array, description: str = ""
     ) -> None:
         # written out as ``Check.__init__`` is: the generated one of a frozen dataclass sets
-        # each field through object.__setattr__, and a D4b answer makes seven of these
+        # each field through object.__setattr__, and a D4b answer makes seven polylines
         fields = self.__dict__
         fields["indices"], fields["vertices"], fields["description"] = (
             indices,
@@ -58,37 +58,6 @@ class Curve:
     constant) on the surface it pairs with, where that is larger than ``local_tolerance``: a
     Gauss image built by a long recursion (D4b's inscribed n) or paired with a long
     construction carries that rounding. ``relations`` uses it."""
-
-    def __init__(
-        self,
-        id: str,
-        title: str,
-        reference: str,
-        parameters: dict[str, Any],
-        arithmetic: Arithmetic,
-        polygon: Polyline,
-        companions: dict[str, Polyline] | None = None,
-        constants: dict[str, Scalar] | None = None,
-        checks: list[Check] | None = None,
-        local_tolerance: float | None = None,
-        companion_tolerances: dict[str, float] | None = None,
-    ) -> None:
-        # written out as ``Polyline.__init__`` is (eleven fields); None stands for a new empty
-        # dict or list, as the fields' default factories make
-        fields = self.__dict__
-        fields["id"], fields["title"], fields["reference"] = id, title, reference
-        fields["parameters"], fields["arithmetic"], fields["polygon"] = (
-            parameters,
-            arithmetic,
-            polygon,
-        )
-        fields["companions"] = {} if companions is None else companions
-        fields["constants"] = {} if constants is None else constants
-        fields["checks"] = [] if checks is None else checks
-        fields["local_tolerance"] = local_tolerance
-        fields["companion_tolerances"] = (
-            {} if companion_tolerances is None else companion_tolerances
-        )
 
     def selected(self, selection: Selection) -> Curve:
         """This curve with only the companions and checks of ``selection``."""
