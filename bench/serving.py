@@ -417,9 +417,15 @@ def _computed_rounds(
 SERVER_SETS = int(os.environ.get("BENCH_SERVERS", "1"))
 
 
+def _title(variant: str) -> str:
+    """How ``computed_gets`` prints a variant (``bare``: the /health runs)."""
+    return "GET /health" if variant == "bare" else variant
+
+
 def computed_gets(rounds: int = ROUNDS, server_sets: int = SERVER_SETS) -> dict[str, float]:
     """Computed 100-vertex D4b GETs (a new d each request) against /health, on the served
-    configuration with and without the fast lane (two servers, rounds interleaved), c=1:
+    configuration with and without the fast lane (a server each, and one of ``BENCH_BEFORE``'s
+    tree if given; rounds interleaved), c=1:
     median of paired ratios per variant over ``server_sets`` fresh sets of servers; returns the
     lane's ratios."""
     trees = {name: (env, ROOT) for name, env in CONFIGURATIONS.items()}
@@ -474,7 +480,7 @@ def computed_gets(rounds: int = ROUNDS, server_sets: int = SERVER_SETS) -> dict[
         if target:
             label = f"computed 100-vertex D4b GET, {variant}, × /health"
             verdict = "   " + record_target(label, ratios[variant], target, "≥")
-        title = "GET /health" if variant == "bare" else variant
+        title = _title(variant)
         print(f"  {title:<14}" + "   ".join(f"{cell:>52}" for cell in cells) + verdict)
     if "before" in runs:  # the same rounds of the two trees, run by run
         paired = {
@@ -486,9 +492,7 @@ def computed_gets(rounds: int = ROUNDS, server_sets: int = SERVER_SETS) -> dict[
         }
         print(
             "  server CPU a request, this tree / before, median of paired runs: "
-            + ", ".join(
-                f"{'GET /health' if v == 'bare' else v} {ratio:5.3f}" for v, ratio in paired.items()
-            )
+            + ", ".join(f"{_title(v)} {ratio:5.3f}" for v, ratio in paired.items())
         )
     return ratios
 
