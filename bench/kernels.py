@@ -17,12 +17,14 @@ from __future__ import annotations
 
 import sys
 from collections.abc import Callable
+from functools import partial
 from pathlib import Path
 
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
+from app.geometry import elementary
 from app.geometry.d1 import closed_forms as d1_closed
 from app.geometry.d2a import closed_forms as d2a_closed, construction as christoffel
 from app.geometry.d2b import (
@@ -112,6 +114,42 @@ def main(n: int = 10**6) -> None:
         target = TARGET if "construction (3D" not in label else None
         line = ratio_row(label, paired, "copy", target)
         print(f"{line}   {paired.ratio / exp.ratio:6.1f}× exp   ({arrays:g} arrays)")
+    elementary_functions()
+
+
+#: numpy's ufunc of each of ``elementary``'s functions (their arguments: in the domain).
+NUMPY_TWINS = {
+    "exp": np.exp,
+    "log": np.log,
+    "cos": np.cos,
+    "sin": np.sin,
+    "cosh": np.cosh,
+    "sinh": np.sinh,
+    "tanh": np.tanh,
+    "atanh": np.arctanh,
+    "atan2": np.arctan2,
+    "power": np.power,
+}
+
+
+def elementary_functions(sizes: tuple[int, ...] = (100, 10**6)) -> None:
+    """The C library's functions (``app.geometry.elementary``, what the float64 arithmetic
+    calls) against numpy's ufuncs of the same name, side by side: on a processor with AVX-512
+    numpy's are SVML's (faster, other bits), without it mostly the same C library calls."""
+    print(
+        "Elementary functions, float64: app.geometry.elementary (the C library) × numpy's ufunc "
+        "(median of paired ratios)"
+    )
+    for n in sizes:
+        x = np.linspace(0.1, 0.9, n)  # in every domain: log, atanh, power with a real result
+        y = np.linspace(0.5, 1.5, n)
+        cells = []
+        for name, twin in NUMPY_TWINS.items():
+            ours = getattr(elementary, name)
+            args = (x, y) if twin.nin == 2 else (x,)
+            paired = compare(partial(twin, *args), partial(ours, *args), repeat=5, min_time=0.02)
+            cells.append(f"{name} {paired.ratio:4.2f}×")
+        print(f"  n = {n:>9,}: " + ", ".join(cells))
 
 
 if __name__ == "__main__":

@@ -73,6 +73,23 @@ def kernel(signature: str) -> Callable[[F], F]:
     return compile_
 
 
+def compiled_ufunc(signature: str) -> Callable[[Callable[..., float]], np.ufunc]:
+    """Compile a scalar float64 function with this numba signature into a numpy ufunc, cached
+    on disk, at import time: the ufunc's loop calls the compiled function on each element
+    (broadcasting, ``out=`` and scalars as any ufunc; numpy's floating-point warnings too)."""
+
+    def compile_(function: Callable[..., float]) -> np.ufunc:
+        try:
+            compiled = numba.vectorize([signature], cache=True, nopython=True)(function)  # type: ignore[no-untyped-call]
+        except (OSError, RuntimeError):  # no cache to read or write: compile in memory
+            compiled = numba.vectorize([signature], cache=False, nopython=True)(function)  # type: ignore[no-untyped-call]
+        ufunc: np.ufunc = compiled.ufunc  # the plain ufunc: no Python layer per call
+        KERNELS[f"{function.__module__}.{function.__qualname__}"] = ufunc
+        return ufunc
+
+    return compile_
+
+
 #: glibc's bounds for its unscaled hypot: the larger |argument| at most 2^511, the smaller at
 #: least 2^-459 and more than 2^-54 times the larger (``hypot``); outside them it scales by 2^±600.
 HYPOT_LARGE, HYPOT_TINY, HYPOT_EPS, HYPOT_SCALE = 2.0**511, 2.0**-459, 2.0**-54, 2.0**-600

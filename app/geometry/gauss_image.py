@@ -27,7 +27,7 @@ from typing import Any
 
 import numpy as np
 
-from app.geometry import companion_kernels
+from app.geometry import companion_kernels, elementary
 from app.geometry.compiled import all_positive_lengths
 from app.geometry.errors import DomainError
 from app.geometry.polygon import edge_vectors
@@ -124,8 +124,8 @@ def _circumscribed_float64(polygon: np.ndarray[Any, np.dtype[np.float64]]) -> Ar
 def circumscribed_from_arguments(y: Array, x: Array) -> Array:
     """Float64: the poles m_k from the arguments of their arctangents
     (``companion_kernels.circumscribed_arguments``)."""
-    halves = companion_kernels.circumscribed_angles(np.arctan2(y, x))  # δ/2 and the bisector
-    return companion_kernels.circumscribed_points(np.cos(halves), np.sin(halves[1]))
+    halves = companion_kernels.circumscribed_angles(elementary.atan2(y, x))  # δ/2 and the bisector
+    return companion_kernels.circumscribed_points(elementary.cos(halves), elementary.sin(halves[1]))
 
 
 def unit_circle_points(ar: Arithmetic, s: Array, one_minus_s_squared: Array) -> Array:

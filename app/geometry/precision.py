@@ -18,6 +18,7 @@ functions apply to object arrays through ``app.geometry.mp_elementwise``.
 
 from __future__ import annotations
 
+import operator
 import time
 from collections.abc import Callable, Iterable, Iterator
 from contextlib import contextmanager
@@ -27,6 +28,7 @@ from typing import Any, Literal
 import mpmath
 import numpy as np
 
+from app.geometry import elementary
 from app.geometry.compiled import all_finite_vector, hypot_arrays
 from app.geometry.errors import DomainError, TimeLimitError
 from app.geometry.exact import ExactReal as ExactReal
@@ -155,6 +157,8 @@ class Arithmetic:
     acosh: Callable[[Any], Any]
     atan2: Callable[[Any, Any], Any]
     hypot: Callable[[Any, Any], Any]
+    #: x^y elementwise (an array exponent: the printed forms of (14), (16), (21), Theorems 14, 15)
+    power: Callable[[Any, Any], Any] = staticmethod(operator.pow)
 
     @property
     def pi(self) -> Scalar:
@@ -263,20 +267,23 @@ class Float64(Arithmetic):
     working_eps = eps
     may_overflow = True
 
-    exp = staticmethod(np.exp)
-    expm1 = staticmethod(np.expm1)
-    log = staticmethod(np.log)
-    log1p = staticmethod(np.log1p)
-    sqrt = staticmethod(np.sqrt)
-    cos = staticmethod(np.cos)
-    sin = staticmethod(np.sin)
-    cosh = staticmethod(np.cosh)
-    sinh = staticmethod(np.sinh)
-    tanh = staticmethod(np.tanh)
-    atanh = staticmethod(np.arctanh)
-    asinh = staticmethod(np.arcsinh)
-    acosh = staticmethod(np.arccosh)
-    atan2 = staticmethod(np.arctan2)
+    # the C library's functions on every machine (``elementary``), not numpy's, whose
+    # float64 ufuncs take other implementations on a processor with AVX-512
+    exp = staticmethod(elementary.exp)
+    expm1 = staticmethod(elementary.expm1)
+    log = staticmethod(elementary.log)
+    log1p = staticmethod(elementary.log1p)
+    sqrt = staticmethod(np.sqrt)  # correctly rounded on every machine (IEEE 754)
+    cos = staticmethod(elementary.cos)
+    sin = staticmethod(elementary.sin)
+    cosh = staticmethod(elementary.cosh)
+    sinh = staticmethod(elementary.sinh)
+    tanh = staticmethod(elementary.tanh)
+    atanh = staticmethod(elementary.atanh)
+    asinh = staticmethod(elementary.asinh)
+    acosh = staticmethod(elementary.acosh)
+    atan2 = staticmethod(elementary.atan2)
+    power = staticmethod(elementary.power)
     hypot = staticmethod(hypot_arrays)  # np.hypot's bits, compiled for aligned vectors
 
     def scalar(self, value: float | int | str) -> float:

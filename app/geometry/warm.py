@@ -26,6 +26,7 @@ MODULES = (
     "app.geometry.d4b.fused_checks",
     "app.geometry.d4b.residual_kernels",
     "app.geometry.darboux",
+    "app.geometry.elementary",
     "app.geometry.surfaces.equation_17_kernel",
     "app.geometry.surfaces.ring_kernel",
 )

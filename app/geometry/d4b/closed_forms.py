@@ -189,14 +189,17 @@ def kinematic_balls(
 
 def hyperbolic_cosine_printed(ar: Arithmetic, h: Scalar, d: Scalar, i: Array) -> Array:
     """Eq. (14) exactly as printed, with powers (overflows early in float64; see module doc)."""
-    y = (h - d) ** i / (2 * (h + d) ** (i - 1)) + (h + d) ** i / (2 * (h - d) ** (i - 1))
+    pw = ar.power
+    y = pw(h - d, i) / (2 * pw(h + d, i - 1)) + pw(h + d, i) / (2 * pw(h - d, i - 1))
     return stack_points((2 * i - 1) * d, y)
 
 
 def tractrix_printed(ar: Arithmetic, h: Scalar, d: Scalar, i: Array) -> Array:
     """Eq. (16) exactly as printed, with powers (overflows early in float64)."""
-    a, b = (h - d) ** (2 * i), (h + d) ** (2 * i)
-    return stack_points(h * (a - b) / (a + b) + 2 * d * i, 2 * h * (h * h - d * d) ** i / (a + b))
+    a, b = ar.power(h - d, 2 * i), ar.power(h + d, 2 * i)
+    return stack_points(
+        h * (a - b) / (a + b) + 2 * d * i, 2 * h * ar.power(h * h - d * d, i) / (a + b)
+    )
 
 
 def recursion_13(d: Scalar, before: Array, current: Array) -> Array:

@@ -29,6 +29,7 @@ from typing import TYPE_CHECKING, Any
 import numba
 import numpy as np
 
+from app.geometry import elementary
 from app.geometry.compiled import (
     HYPOT_EPS,
     HYPOT_LARGE,
@@ -913,13 +914,13 @@ def fill_closed_forms(data: D4bPolygons, images: bool = True, kinematic: bool = 
         # cosh of (14)'s and (16)'s arguments if kinematic, of (19)'s and (20)'s if images
         lo, hi = (0 if kinematic else 2 * count), (4 * count + 1 if images else 2 * count)
         with np.errstate(over="ignore"):
-            np.cosh(arguments[lo:hi], out=cosh[lo:hi])
+            elementary.cosh(arguments[lo:hi], out=cosh[lo:hi])
         if not all_finite_vector(cosh[lo:hi]):
             return
         if kinematic:
-            np.sinh(arguments[count : 2 * count], out=sinh[:count])
+            elementary.sinh(arguments[count : 2 * count], out=sinh[:count])
         if images:
-            np.tanh(arguments[2 * count :], out=tanh[: 2 * count + 1])
+            elementary.tanh(arguments[2 * count :], out=tanh[: 2 * count + 1])
         _closed_points(
             first,
             first + count - 2,
@@ -1353,7 +1354,7 @@ def closed_kinematic_comparisons(
         first = data.i_min + start
         lo, hi = (0 if theorem_5 else count), (2 * count if theorem_6 else count)
         if _kinematic_decays(first, count, L, shift, decays):
-            np.exp(decays[lo:hi], out=decays[lo:hi])
+            elementary.exp(decays[lo:hi], out=decays[lo:hi])
             done, largest_5, largest_6 = _kinematic_block_from_decays(
                 first,
                 count,
@@ -1379,9 +1380,9 @@ def closed_kinematic_comparisons(
         # the old path: numpy's cosh and sinh, the old block (its rows with hypot's branch)
         _kinematic_arguments(first, count, L, shift, arguments)
         with np.errstate(over="ignore"):
-            np.cosh(arguments[lo:hi], out=cosh[lo:hi])
+            elementary.cosh(arguments[lo:hi], out=cosh[lo:hi])
             if theorem_6:  # (an overflow here is a cosh's too: the block returns None)
-                np.sinh(arguments[count : 2 * count], out=sinh[:count])
+                elementary.sinh(arguments[count : 2 * count], out=sinh[:count])
         finite, largest_5, largest_6 = _closed_kinematic_block(
             first,
             count,
@@ -1827,7 +1828,7 @@ def closed_image_comparisons(
         count = min(block, rows - start)
         if _image_decays(i_min + start, count, L, shift, decays):
             exps = 2 * count + 1 if flags[2] else count + 1  # (20)'s only where it is compared
-            np.exp(decays[:exps], out=decays[:exps])
+            elementary.exp(decays[:exps], out=decays[:exps])
             if _image_block_from_decays(
                 i_min + start,
                 count,
@@ -1854,8 +1855,8 @@ def closed_image_comparisons(
         # tanh of (20)'s arguments only where (20) itself is compared
         tanhs = 2 * count + 1 if flags[2] else count + 1
         with np.errstate(over="ignore"):
-            np.cosh(arguments[: 2 * count + 1], out=cosh[: 2 * count + 1])
-        np.tanh(arguments[:tanhs], out=tanh[:tanhs])
+            elementary.cosh(arguments[: 2 * count + 1], out=cosh[: 2 * count + 1])
+        elementary.tanh(arguments[:tanhs], out=tanh[:tanhs])
         finite = _closed_image_block(
             count,
             cosh,

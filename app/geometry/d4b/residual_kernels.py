@@ -32,7 +32,7 @@ from typing import Any
 import numba
 import numpy as np
 
-from app.geometry import checks
+from app.geometry import checks, elementary
 from app.geometry.checks import Largest
 from app.geometry.compiled import (
     INF_BITS,
@@ -738,9 +738,9 @@ def _rotation_old_block(
         return corrected, printed, _fold(top, largest), _fold(top_printed, largest_printed)
     rows, angles = np.empty((5, m)), np.empty((3, m))
     _rotation_arguments(p, axis, start, stop, rows)
-    np.arctan2(np.full(m, d), rows[0], out=angles[0])
-    np.arctan2(rows[1], rows[2], out=angles[1])
-    np.arctan2(rows[3], rows[4], out=angles[2])
+    elementary.atan2(np.full(m, d), rows[0], out=angles[0])
+    elementary.atan2(rows[1], rows[2], out=angles[1])
+    elementary.atan2(rows[3], rows[4], out=angles[2])
     largest, largest_printed = _rotation_residuals(
         angles[0], angles[1], angles[2], m, largest, largest_printed
     )
@@ -800,8 +800,8 @@ def _rotation_angles(
             outcome = ROTATION_OLD
         if outcome == ROTATION_WRAPPED:
             if not libm:
-                np.arctan2(rows[1, :m], rows[0, :m], out=rows[4, :m])
-                np.arctan2(rows[3, :m], rows[2, :m], out=rows[5, :m])
+                elementary.atan2(rows[1, :m], rows[0, :m], out=rows[4, :m])
+                elementary.atan2(rows[3, :m], rows[2, :m], out=rows[5, :m])
             largest, largest_printed = _rotation_wrapped(rows, m, libm, largest, largest_printed)
             found, found_printed = rows[4, :m], rows[5, :m]
         else:

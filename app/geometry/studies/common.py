@@ -21,6 +21,7 @@ from typing import Any
 
 import numpy as np
 
+from app.geometry import elementary
 from app.geometry.checks import (
     Check,
     Statement,
@@ -131,8 +132,8 @@ def observed_order(levels: list[Level], measure: str) -> OrderFit:
             local.append(None)
     if len(used) < 2:
         return OrderFit(None, None, tuple(used), tuple(local))
-    x = np.log(np.array([levels[k].step for k in used]))
-    y = np.log(np.array([levels[k].errors[measure] for k in used], dtype=np.float64))
+    x = elementary.log(np.array([levels[k].step for k in used]))
+    y = elementary.log(np.array([levels[k].errors[measure] for k in used], dtype=np.float64))
     xm, ym = float(np.mean(x)), float(np.mean(y))
     slope = float(np.sum((x - xm) * (y - ym)) / np.sum((x - xm) ** 2))
     log_constant = ym - slope * xm

@@ -50,7 +50,8 @@ def theorem_14_curve(ar: Arithmetic, h: Scalar, d: Scalar, x: Array) -> Array:
 def theorem_14_curve_printed(ar: Arithmetic, h: Scalar, d: Scalar, x: Array) -> Array:
     """Theorem 14's c(x) as printed, with the powers (h ± d)^{(x ± d)/(2d)}; ``(n, 2)``."""
     up, down = (x + d) / (2 * d), (x - d) / (2 * d)
-    y = (h - d) ** up / (2 * (h + d) ** down) + (h + d) ** up / (2 * (h - d) ** down)
+    pw = ar.power
+    y = pw(h - d, up) / (2 * pw(h + d, down)) + pw(h + d, up) / (2 * pw(h - d, down))
     return stack_points(x, y)
 
 
@@ -58,20 +59,21 @@ def theorem_14_curve_rearranged(ar: Arithmetic, h: Scalar, d: Scalar, x: Array) 
     """The proof of Theorem 14: c(x) with the factors h(1 ∓ d/h)^{(x+d)/(2d)} / (2(1 ± d/h)^…)."""
     up, down = (x + d) / (2 * d), (x - d) / (2 * d)
     minus, plus = 1 - d / h, 1 + d / h
-    y = h * minus**up / (2 * plus**down) + h * plus**up / (2 * minus**down)
+    pw = ar.power
+    y = h * pw(minus, up) / (2 * pw(plus, down)) + h * pw(plus, up) / (2 * pw(minus, down))
     return stack_points(x, y)
 
 
 def power_21(ar: Arithmetic, h: Scalar, d: Scalar, x: Array) -> Array:
     """The left side of (21) before the limit: (1 − d/h)^{(x+d)/(2d)}."""
-    return (1 - d / h) ** ((x + d) / (2 * d))
+    return ar.power(1 - d / h, (x + d) / (2 * d))
 
 
 def power_21_substituted(ar: Arithmetic, h: Scalar, d: Scalar, x: Array) -> Array:
     """(21) after replacing d by x/D: (1 − x/(hD))^{D/2} (1 − x/(hD))^{1/2}; x ≠ 0."""
     big_d = x / d
     base = 1 - x / (h * big_d)
-    return base ** (big_d / 2) * base**0.5
+    return ar.power(base, big_d / 2) * base**0.5
 
 
 def limit_21(ar: Arithmetic, h: Scalar, x: Array) -> Array:
@@ -88,9 +90,9 @@ def theorem_15_curve(ar: Arithmetic, h: Scalar, d: Scalar, x: Array) -> Array:
 def theorem_15_curve_printed(ar: Arithmetic, h: Scalar, d: Scalar, x: Array) -> Array:
     """Theorem 15's c(x) as printed, with the powers (h ± d)^{(x+d)/d}; ``(n, 2)``."""
     t = (x + d) / d
-    minus, plus = (h - d) ** t, (h + d) ** t
+    minus, plus = ar.power(h - d, t), ar.power(h + d, t)
     first = h * (minus - plus) / (minus + plus) + x + d
-    second = 2 * h * (h * h - d * d) ** (t / 2) / (minus + plus)
+    second = 2 * h * ar.power(h * h - d * d, t / 2) / (minus + plus)
     return stack_points(first, second)
 
 

@@ -8,6 +8,7 @@ from urllib.parse import urlencode
 
 import numpy as np
 
+from app.geometry import elementary
 from app.geometry.curve import Curve
 from app.rendering.curves import drawable
 from app.rendering.svg import Panels, Plot, Series, describe_parameters, segments
@@ -46,7 +47,7 @@ def panel(title: str, x_label: str = "x", y_label: str = "y") -> Plot:
 def unit_circle(count: int = 241) -> np.ndarray:
     """The unit circle as a closed polyline (a drawing aid for the Gauss images)."""
     t = np.linspace(0, 2 * np.pi, count)
-    return np.stack([np.cos(t), np.sin(t)], axis=1)
+    return np.stack([elementary.cos(t), elementary.sin(t)], axis=1)
 
 
 def unit_circle_series() -> Series:

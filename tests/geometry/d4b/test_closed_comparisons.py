@@ -16,6 +16,7 @@ import numba
 import numpy as np
 import pytest
 
+from app.geometry import elementary
 from app.geometry.compiled import all_finite_vector, length, running_largest
 from app.geometry.conditions import TINY
 from app.geometry.d4b import closed_forms, discretization
@@ -109,11 +110,11 @@ def _old_kinematic(data: Any, n: int, theorem_5: bool, theorem_6: bool) -> Any:
         arguments = _closed_arguments(first, first + count - 2, L, shift)
         lo, hi = (0 if theorem_5 else count), (2 * count if theorem_6 else count)
         with np.errstate(over="ignore"):
-            np.cosh(arguments[lo:hi], out=cosh[lo:hi])
+            elementary.cosh(arguments[lo:hi], out=cosh[lo:hi])
         if not all_finite_vector(cosh[lo:hi]):
             return None
         if theorem_6:
-            np.sinh(arguments[count : 2 * count], out=sinh[:count])
+            elementary.sinh(arguments[count : 2 * count], out=sinh[:count])
         largest_5, largest_6 = _old_kinematic_block(
             first, first + count - 2, cosh, sinh, h, d, amplitude, p, tractrix, axis, start, n,
             TINY, theorem_5, theorem_6, largest_5, largest_6,
@@ -192,10 +193,10 @@ def _old_images(
         first = data.i_min + start
         arguments = _closed_arguments(first, first + count - 2, L, shift)
         with np.errstate(over="ignore"):
-            np.cosh(arguments[2 * count :], out=cosh[2 * count : 4 * count + 1])
+            elementary.cosh(arguments[2 * count :], out=cosh[2 * count : 4 * count + 1])
         if not all_finite_vector(cosh[2 * count : 4 * count + 1]):
             return None
-        np.tanh(arguments[2 * count :], out=tanh[: 2 * count + 1])
+        elementary.tanh(arguments[2 * count :], out=tanh[: 2 * count + 1])
         _old_image_block(
             first, first + count - 2, cosh, tanh, h, d, ga, normals, contact, gauss, s19, s20,
             start, n, TINY, flags, largest,

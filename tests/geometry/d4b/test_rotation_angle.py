@@ -11,6 +11,7 @@ import numba
 import numpy as np
 import pytest
 
+from app.geometry import elementary
 from app.geometry.compiled import running_largest
 from app.geometry.d4b import discretization as d4b, residual_kernels
 from app.geometry.precision import Float64
@@ -70,9 +71,9 @@ def old_rotation_angles(
         stop = min(start + block, n)
         m = stop - start
         _old_arguments(p, axis, start, stop, rows)
-        np.arctan2(steps[:m], rows[0, :m], out=angles[0, :m])
-        np.arctan2(rows[1, :m], rows[2, :m], out=angles[1, :m])
-        np.arctan2(rows[3, :m], rows[4, :m], out=angles[2, :m])
+        elementary.atan2(steps[:m], rows[0, :m], out=angles[0, :m])
+        elementary.atan2(rows[1, :m], rows[2, :m], out=angles[1, :m])
+        elementary.atan2(rows[3, :m], rows[4, :m], out=angles[2, :m])
         largest, largest_printed = _old_residuals(
             angles, m, largest, largest_printed, corrected, printed, start - 1, True
         )
