@@ -2,14 +2,13 @@
 polygon's edges done once, compiled, instead of a dozen numpy calls on short arrays.
 
 ``contact_points`` is the whole construction (19) in one pass: the edge, its length by libm's
-hypot (``compiled.hypot``), the unit normal on the chosen side. ``circumscribed`` (20) needs
-three transcendental functions a vertex, which numpy evaluates with its own vectorized routines
-(whose last bits differ from libm's): so numpy still evaluates them, on contiguous arrays as
-before, and the kernels do everything around them: the cross and dot products of consecutive
-edges and the normal's direction in one pass (``circumscribed_arguments``), the half turn and
-the bisector (``circumscribed_angles``), the pole at distance 1/cos(δ/2) on the bisector
-(``circumscribed_points``). Every operation is the one ``gauss_image`` writes, in its order,
-without fused multiply-adds (``compiled.kernel``): the same bits as the numpy formulas
+hypot (``compiled.hypot``), the unit normal on the chosen side. ``circumscribed`` (20) is two
+passes: the cross and dot products of consecutive edges and the normal's direction
+(``circumscribed_arguments``), then the two arctangents, the half turn and the bisector, and the
+pole at distance 1/cos(δ/2) on it (``circumscribed_poles``), with the C library's atan2, cos and
+sin, the functions the float64 arithmetic calls everywhere (``elementary``). Every operation
+is the one ``gauss_image`` writes, in its order, without fused multiply-adds
+(``compiled.kernel``): the same bits as its formulas in the float64 arithmetic
 (tests/geometry/test_companion_kernels.py compares them).
 
 A zero-length (or NaN) edge is reported by the returned flag, as ``compiled.all_positive_lengths``
@@ -18,6 +17,7 @@ does, so that the caller raises the domain error it always raised.
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
@@ -71,28 +71,19 @@ def circumscribed_arguments(polygon: Any, sign: float) -> Any:
     return y, x, positive
 
 
-@kernel("float64[:, :](float64[:, :])")
-def circumscribed_angles(angles: Any) -> Any:
-    """From the turning angles δ (row 0) and normal directions ν (row 1): δ/2 and ν + δ/2."""
-    count = angles.shape[1]
-    out = np.empty((2, count))
-    for k in range(count):
-        half = angles[0, k] / 2
-        out[0, k] = half
-        out[1, k] = angles[1, k] + half
-    return out
-
-
-@kernel("float64[:, :](float64[:, :], float64[:])")
-def circumscribed_points(cosines: Any, sines: Any) -> Any:
-    """m_k = (1/cos(δ/2))·(cos β, sin β) from the cosines of δ/2 (row 0) and β (row 1) and the
-    sines of β; ``(n − 2, 2)``."""
-    count = sines.shape[0]
+@kernel("float64[:, :](float64[:, :], float64[:, :])")
+def circumscribed_poles(y: Any, x: Any) -> Any:
+    """(20): the poles m_k = (1/cos(δ_k/2))·(cos β_k, sin β_k), β_k = ν_k + δ_k/2, from the
+    arguments of the arctangents of δ_k (row 0 of ``y`` and ``x``) and of ν_k (row 1), as
+    ``circumscribed_arguments`` gives them; ``(2, n − 2)`` each -> ``(n − 2, 2)``."""
+    count = y.shape[1]
     out = np.empty((count, 2))
     for k in range(count):
-        distance = 1 / cosines[0, k]
-        out[k, 0] = distance * cosines[1, k]
-        out[k, 1] = distance * sines[k]
+        half = math.atan2(y[0, k], x[0, k]) / 2
+        bisector = math.atan2(y[1, k], x[1, k]) + half
+        distance = 1 / math.cos(half)
+        out[k, 0] = distance * math.cos(bisector)
+        out[k, 1] = distance * math.sin(bisector)
     return out
 
 
@@ -152,7 +143,7 @@ def d4b_companions(
 
 
 @kernel(
-    "Tuple((float64[:, :], float64[:, :, :], float64[:, :], float64[:, :, :], boolean))"
+    "Tuple((float64[:, :], float64[:, :, :], float64[:, :], float64[:, :], boolean))"
     "(float64, float64, float64, float64, int64, int64, int64, int64)"
 )
 def d4b_construction(
@@ -167,7 +158,8 @@ def d4b_construction(
     Four arrays (each array handed back to Python costs about as much as a short pass): rows
     cos β_j, sin β_j, p_j^y of the recursion (from j = lo); the axis points, the tractrix, the
     Darboux transform, the inscribed Gauss image and p, ``(5, n + 1, 2)``; the contact points;
-    the arctangents' arguments y and x, ``(2, 2, n)``; and whether every edge of p is positive.
+    the circumscribed Gauss image (``circumscribed_poles``), ``(n, 2)``; and whether every edge
+    of p is positive.
     """
     cos_u, sin_u, centre_y = _sticks(h, d, c0, s0, lo, hi)
     axis, tractrix, darboux, inscribed, contact, y, x, positive = d4b_companions(
@@ -187,7 +179,4 @@ def d4b_construction(
         i = float(i_min + k)
         points[4, k, 0] = (2 * i - 1) * d
         points[4, k, 1] = centre_y[i_min + k - lo]
-    arguments = np.empty((2, 2, y.shape[1]))
-    arguments[0] = y
-    arguments[1] = x
-    return sticks, points, contact, arguments, positive
+    return sticks, points, contact, circumscribed_poles(y, x), positive

@@ -27,7 +27,7 @@ from typing import Any
 
 import numpy as np
 
-from app.geometry import companion_kernels, elementary
+from app.geometry import companion_kernels
 from app.geometry.compiled import all_positive_lengths
 from app.geometry.errors import DomainError
 from app.geometry.polygon import edge_vectors
@@ -114,18 +114,11 @@ def circumscribed(ar: Arithmetic, polygon: Array) -> Array:
 
 
 def _circumscribed_float64(polygon: np.ndarray[Any, np.dtype[np.float64]]) -> Array:
-    """``circumscribed`` in float64: the arithmetic compiled (``companion_kernels``), the
-    arctangents, cosines and sines by numpy on contiguous arrays as the formulas above."""
+    """``circumscribed`` in float64: the formulas above in two compiled passes
+    (``companion_kernels``)."""
     y, x, positive = companion_kernels.circumscribed_arguments(polygon, float(orientation(polygon)))
     _require_positive(positive)
-    return circumscribed_from_arguments(y, x)
-
-
-def circumscribed_from_arguments(y: Array, x: Array) -> Array:
-    """Float64: the poles m_k from the arguments of their arctangents
-    (``companion_kernels.circumscribed_arguments``)."""
-    halves = companion_kernels.circumscribed_angles(elementary.atan2(y, x))  # δ/2 and the bisector
-    return companion_kernels.circumscribed_points(elementary.cos(halves), elementary.sin(halves[1]))
+    return companion_kernels.circumscribed_poles(y, x)
 
 
 def unit_circle_points(ar: Arithmetic, s: Array, one_minus_s_squared: Array) -> Array:

@@ -15,7 +15,7 @@ from typing import Any, Literal
 
 import numpy as np
 
-from app.geometry import companion_kernels, darboux, gauss_image
+from app.geometry import companion_kernels, darboux
 from app.geometry.catalog.section3 import (
     D4B_DARBOUX as DARBOUX,
     D4B_DARBOUX_DISTANCE as DARBOUX_DISTANCE,
@@ -254,6 +254,7 @@ class D4bPolygons:
                     h, d, cos_u, sin_u, centre_y, first, self.i_min, self.i_max
                 )
             )
+            poles = companion_kernels.circumscribed_poles(y, x)
             p = None
         else:
             h, d = float(self.parameters[0]), float(self.parameters[1])
@@ -265,7 +266,7 @@ class D4bPolygons:
                 h, d, float(c0), float(s0), lo, hi, self.i_min, self.i_max
             )
             self.ar.check_time()  # as ``construct``: once, after the recursion
-            sticks, points, contact, (y, x), positive = made
+            sticks, points, contact, poles, positive = made
             axis, tractrix, darboux_, inscribed, p = points
             built = from_sticks(h, d, hull_lo, hull_hi, lo, (sticks[0], sticks[1], sticks[2]))
             self.__dict__["_hull"] = (hull_lo, built)
@@ -277,7 +278,7 @@ class D4bPolygons:
         for name, points in (("axis", axis), ("tractrix", tractrix), ("darboux", darboux_)):
             kept.setdefault(name, points)
         images = {"tractrix_gauss": inscribed, "contact": contact}
-        images["gauss"] = gauss_image.circumscribed_from_arguments(y, x)
+        images["gauss"] = poles
         if "gauss" in kept:  # built already: those it has stay
             for name, points in images.items():
                 kept["gauss"].__dict__.setdefault(name, points)
