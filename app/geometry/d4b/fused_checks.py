@@ -883,13 +883,13 @@ CLOSED_IMAGES = frozenset({"closed_tractrix_gauss", "closed_contact", "closed_ga
 
 def fill_closed_forms(data: D4bPolygons, images: bool = True, kinematic: bool = True) -> None:
     """Float64: Theorems 5, 6 (``kinematic``) and (18)–(20)'s (``images``) closed forms of
-    ``data`` from numpy's cosh, sinh and tanh (its own vectorized functions, so the same bits as
-    ``closed_forms``; a contiguous slice of an argument array gives each entry the bits the
-    separate array gave) and one compiled call, a block of ``BLOCK_SIZE`` indices at a time
-    (the arguments and the hyperbolic functions of a block stay in the cache; each point is
-    written once, into its polygon), kept as if each had been computed on its own; those
-    computed already stay. Nothing is kept when a cosh overflows (``closed_forms`` has its
-    other branch for those)."""
+    ``data`` from the C library's cosh, sinh and tanh (``elementary``, which the float64
+    arithmetic of ``closed_forms`` calls, so the same bits; a contiguous slice of an argument
+    array gives each entry the bits the separate array gave) and one compiled call, a block of
+    ``BLOCK_SIZE`` indices at a time (the arguments and the hyperbolic functions of a block stay
+    in the cache; each point is written once, into its polygon), kept as if each had been
+    computed on its own; those computed already stay. Nothing is kept when a cosh overflows
+    (``closed_forms`` has its other branch for those)."""
     rows = data.vertices
     # those all there already (e.g. method=closed-form's polygons and companions) are not redone
     kinematic = kinematic and not vars(data).keys() >= _CLOSED_KINEMATIC
@@ -1033,9 +1033,10 @@ def _image_arguments(first: int, count: int, L: float, shift: float, out: Any) -
 
 
 #: The largest |t| whose closed forms the blocks make from w = e^(−|t|) (``_sech_tanh``): w stays
-#: a normal number there, 1/w and cosh t finite. numpy's cosh overflows only past 710.47, so a
-#: block within the limit is one the old path would not have refused; a block with an argument
-#: beyond it (or a NaN) takes the old path, numpy's cosh and its None on overflow.
+#: a normal number there, 1/w and cosh t finite. The C library's cosh overflows only past
+#: 710.47, so a block within the limit is one the old path would not have refused; a block with
+#: an argument beyond it (or a NaN) takes the old path, ``elementary.cosh`` and its None on
+#: overflow.
 DECAY_LIMIT = 700.0
 
 
@@ -1050,7 +1051,7 @@ def _within(lowest: float, highest: float) -> bool:
 @kernel("boolean(int64, int64, float64, float64, float64[::1])")
 def _kinematic_decays(first: int, count: int, L: float, shift: float, out: Any) -> bool:
     """−|t| for (14)'s and (16)'s arguments t as ``_kinematic_arguments`` computes them, into
-    ``out[:count]`` and ``out[count:2count]`` (numpy's exp, which is vectorized, then makes w =
+    ``out[:count]`` and ``out[count:2count]`` (``elementary.exp`` then makes w =
     e^(−|t|) of them), and whether every |t| ≤ ``DECAY_LIMIT``, for each of the two."""
     offset_p, offset_t = (shift - 0.5) * L, shift * L
     for k in range(count):
@@ -1066,7 +1067,7 @@ def _kinematic_decays(first: int, count: int, L: float, shift: float, out: Any) 
 @kernel("boolean(int64, int64, float64, float64, float64[::1])")
 def _image_decays(first: int, count: int, L: float, shift: float, out: Any) -> bool:
     """−|t| for (19)'s and (20)'s arguments t as ``_image_arguments`` computes them, into
-    ``out[:count + 1]`` and ``out[count + 1:2count + 1]`` (numpy's exp then makes w =
+    ``out[:count + 1]`` and ``out[count + 1:2count + 1]`` (``elementary.exp`` then makes w =
     e^(−|t|)), and whether every |t| ≤ ``DECAY_LIMIT``."""
     for k in range(count + 1):
         out[k] = -abs((float(first - 1 + k) + shift) * L)
@@ -1377,7 +1378,7 @@ def closed_kinematic_comparisons(
             )
             if done:
                 continue
-        # the old path: numpy's cosh and sinh, the old block (its rows with hypot's branch)
+        # the old path: cosh and sinh, the old block (its rows with hypot's branch)
         _kinematic_arguments(first, count, L, shift, arguments)
         with np.errstate(over="ignore"):
             elementary.cosh(arguments[lo:hi], out=cosh[lo:hi])
@@ -1850,7 +1851,7 @@ def closed_image_comparisons(
                 scratch,
             ):
                 continue
-        # the old path: numpy's cosh and tanh, the old block (its rows with hypot's branch)
+        # the old path: cosh and tanh, the old block (its rows with hypot's branch)
         _image_arguments(i_min + start, count, L, shift, arguments)
         # tanh of (20)'s arguments only where (20) itself is compared
         tanhs = 2 * count + 1 if flags[2] else count + 1
@@ -1933,7 +1934,8 @@ def _rotation_largest(d: float, p: Any, axis: Any, n: int) -> tuple[bool, float,
     """``residual_kernels._rotation_angles`` without ``store``, block by block as it goes, for
     blocks of fewer than ``ROTATION_LIBM_BELOW`` vertices (libm's atan2 where a block takes
     one): (whether it got to the end, the largest corrected and printed residuals). It stops
-    at a block that takes numpy's atan2 (False: the wrapper's pass goes on from the start)."""
+    at a block that takes ``elementary.atan2`` (False: the wrapper's pass goes on from the
+    start)."""
     count = max(n - 1, 0)
     block = residual_kernels.ROTATION_BLOCK
     rows = np.empty((6, max(min(block, count), 1)))
