@@ -16,8 +16,10 @@ path that called numpy's transcendental ufuncs call these instead: each is a num
 broadcasting, ``out=`` and floating-point warnings behave as numpy's) whose loop calls the C
 library's function through numba, as the compiled kernels' ``math.*`` calls already do. libm
 is correctly rounded or within one ulp for these functions and picks no variant that changes
-its results between x86-64 processors with FMA. Where numpy called libm already (every
-function but ``tanh`` on a host without AVX-512) the bits are the same as before.
+its results between x86-64 processors with FMA. The service runs on one C library, glibc 2.36
+(Debian 12, on the hosts and in the image's ``python:3.11-slim-bookworm``); another release
+could round some values differently. Where numpy called libm already (every function but
+``tanh`` on a host without AVX-512) the bits are the same as before.
 
 Signatures: each takes and returns float64 elementwise, ``(...) -> (...)``.
 """
