@@ -12,8 +12,10 @@ STORED = Path(__file__).resolve().parents[2] / "openapi" / "openapi.json"
 
 
 def normalized(value: Any) -> Any:
-    """Floats to 9 digits, |x| < 1e-9 to 0: the examples hold computed residuals whose last
-    bits may differ between CPUs (numpy's SIMD exp/log); everything else compares exactly."""
+    """Floats to 9 digits, |x| < 1e-9 to 0: the examples hold computed residuals, rounding noise
+    whose last bits moved with the CPU while numpy's SIMD functions computed them (the C
+    library's now, app/geometry/elementary.py) and would move with any reordering of a check;
+    everything else compares exactly."""
     if isinstance(value, float):
         return 0.0 if abs(value) < 1e-9 else float(f"{value:.9g}")
     if isinstance(value, list):
