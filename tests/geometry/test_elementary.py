@@ -124,3 +124,11 @@ def test_no_float64_path_calls_numpys_dispatched_transcendental_ufuncs() -> None
         if pattern.search(line) and not line.lstrip().startswith("#")
     ]
     assert not found, "\n".join(found)
+
+
+def test_numba_compiles_the_c_librarys_calls_not_svmls() -> None:
+    """With Intel's SVML runtime installed numba would vectorize the kernels' ``math.*`` calls
+    with SVML (other bits on every processor); the service's dependencies do not bring it."""
+    from numba.core import config
+
+    assert not config.USING_SVML
