@@ -89,7 +89,7 @@ def circumscribed_poles(y: Any, x: Any) -> Any:
 
 @kernel(
     "Tuple((float64[:, :], float64[:, :], float64[:, :], float64[:, :], float64[:, :],"
-    " float64[:, :], float64[:, :], boolean))"
+    " float64[:, :], boolean))"
     "(float64, float64, float64[:], float64[:], float64[:], int64, int64, int64)"
 )
 def d4b_companions(
@@ -107,8 +107,9 @@ def d4b_companions(
     axis points x_i = (2di, 0), the tractrix d_i = x_i + h u_i, the Darboux transform
     e_i = 2d_i − x_i and the inscribed Gauss image n_i = J u_i = (u_i^y, −u_i^x); from the
     centres p_j = ((2j − 1)d, p_j^y), j = i_min − 1 .. i_max + 2, the contact points of their
-    edges (``contact_points``, from i_min − 1) and the arguments of the circumscribed image's
-    arctangents (``circumscribed_arguments``); and whether every edge of p is positive.
+    edges (``contact_points``, from i_min − 1) and the circumscribed Gauss image
+    (``circumscribed_arguments``, ``circumscribed_poles``); and whether every edge of p is
+    positive.
 
     The operations and their order are those of ``construction._point_array``,
     ``darboux.reflect_in_points``, ``curvature.build`` and the kernels above, so each array has
@@ -139,7 +140,7 @@ def d4b_companions(
     sign = 1.0 if centres[rows + 1, 0] >= centres[0, 0] else -1.0
     contact, positive = contact_points(centres, sign)
     y, x, _ = circumscribed_arguments(centres, sign)
-    return axis, tractrix, darboux, inscribed, contact, y, x, positive
+    return axis, tractrix, darboux, inscribed, contact, circumscribed_poles(y, x), positive
 
 
 @kernel(
@@ -162,7 +163,7 @@ def d4b_construction(
     of p is positive.
     """
     cos_u, sin_u, centre_y = _sticks(h, d, c0, s0, lo, hi)
-    axis, tractrix, darboux, inscribed, contact, y, x, positive = d4b_companions(
+    axis, tractrix, darboux, inscribed, contact, poles, positive = d4b_companions(
         h, d, cos_u, sin_u, centre_y, lo, i_min, i_max
     )
     sticks = np.empty((3, cos_u.shape[0]))
@@ -179,4 +180,4 @@ def d4b_construction(
         i = float(i_min + k)
         points[4, k, 0] = (2 * i - 1) * d
         points[4, k, 1] = centre_y[i_min + k - lo]
-    return sticks, points, contact, circumscribed_poles(y, x), positive
+    return sticks, points, contact, poles, positive

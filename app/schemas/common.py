@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import re
 from decimal import Decimal
 from typing import Any, Literal, get_args
@@ -44,21 +45,14 @@ def _is_real(annotation: Any) -> bool:
     return annotation is float or set(get_args(annotation)) == {float, type(None)}
 
 
-#: The real parameters of each request model, by class (``real_fields``).
-_REAL_FIELDS: dict[type[BaseModel], frozenset[str]] = {}
-
-
+@functools.cache
 def real_fields(model: type[BaseModel]) -> frozenset[str]:
     """The names of ``model``'s real parameters (``_is_real``), found once per class: the
     validators below run for every field of every request, and reading ``model_fields`` and
     the annotations there took half of a query's validation."""
-    found = _REAL_FIELDS.get(model)
-    if found is None:
-        found = frozenset(
-            name for name, field in model.model_fields.items() if _is_real(field.annotation)
-        )
-        _REAL_FIELDS[model] = found
-    return found
+    return frozenset(
+        name for name, field in model.model_fields.items() if _is_real(field.annotation)
+    )
 
 
 class StrictModel(BaseModel):

@@ -249,12 +249,11 @@ class D4bPolygons:
             if recursion is None:
                 return
             h, d, cos_u, sin_u, centre_y, first = recursion
-            axis, tractrix, darboux_, inscribed, contact, y, x, positive = (
+            axis, tractrix, darboux_, inscribed, contact, poles, positive = (
                 companion_kernels.d4b_companions(
                     h, d, cos_u, sin_u, centre_y, first, self.i_min, self.i_max
                 )
             )
-            poles = companion_kernels.circumscribed_poles(y, x)
             p = None
         else:
             h, d = float(self.parameters[0]), float(self.parameters[1])
