@@ -16,9 +16,10 @@ Run: .venv/bin/python bench/compiled.py   (about 60 s; ``make bench`` runs it wi
 
 ``--base DIR`` compares with another version of the code instead (e.g. a commit exported with
 ``git archive <commit> app bench | tar -x -C DIR``): parts 1 and 2 run in DIR and here, each in
-its own process, alternating for ``--rounds`` rounds (CPU time; the kernels of DIR compile into
-its own cache on its first run); part 2 runs once with glibc's default malloc and once with the
-server's environment (the Makefile's ``SERVER_ENV``). ``--checks-only`` skips part 1.
+its own process, alternating for ``--rounds`` rounds (CPU time; each tree's kernels load from, or
+on its first run compile into, its own ``.numba-cache``); part 2 runs once with glibc's default
+malloc and once with the server's environment (the Makefile's ``SERVER_ENV``). ``--checks-only``
+skips part 1.
 
 ``--statements`` (with or without ``--base DIR``): the checks of a 10^6 D4b one statement at a
 time (``BREAKDOWN``, method=closed-form unless ``--method construction``), each tree in its own
@@ -579,7 +580,7 @@ def breakdown(
                 text=True,
                 check=True,
                 cwd=root,
-                env=env,
+                env={**env, "NUMBA_CACHE_DIR": f"{root}/.numba-cache"},
             ).stdout
             for line in out.splitlines():
                 label, value = line.split("|")
@@ -625,7 +626,7 @@ def against(base: str, rounds: int, parts: str) -> None:
                     text=True,
                     check=True,
                     cwd=root,
-                    env=env,
+                    env={**env, "NUMBA_CACHE_DIR": f"{root}/.numba-cache"},
                 ).stdout
                 for line in out.splitlines():
                     label, value = line.split("|")

@@ -31,7 +31,8 @@ from typing import Any, TypeVar, cast
 
 import numba
 import numpy as np
-from numba.core import caching
+from numba.core import caching, types
+from numba.extending import intrinsic
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -140,6 +141,43 @@ def hypot(x: float, y: float) -> float:
             return a + b
         return _hypot_kernel(a / HYPOT_SCALE, b / HYPOT_SCALE) * HYPOT_SCALE
     return a + b  # b <= 2^-54 a
+
+
+def _fma(typingctx: Any, a: Any, b: Any, c: Any) -> Any:
+    signature = types.float64(types.float64, types.float64, types.float64)
+
+    def codegen(context: Any, builder: Any, sig: Any, args: Any) -> Any:
+        return builder.fma(*args)
+
+    return signature, codegen
+
+
+def _float_bits(typingctx: Any, x: Any) -> Any:
+    signature = types.uint64(types.float64)
+
+    def codegen(context: Any, builder: Any, sig: Any, args: Any) -> Any:
+        return builder.bitcast(args[0], context.get_value_type(types.uint64))
+
+    return signature, codegen
+
+
+def _bits_float(typingctx: Any, bits: Any) -> Any:
+    signature = types.float64(types.uint64)
+
+    def codegen(context: Any, builder: Any, sig: Any, args: Any) -> Any:
+        return builder.bitcast(args[0], context.get_value_type(types.float64))
+
+    return signature, codegen
+
+
+#: a·b + c rounded once (LLVM's ``llvm.fma.f64``), in compiled code: one instruction with FMA,
+#: the C library's ``fma`` without it, the same bits either way. The kernels compile without
+#: contraction, so a fused multiply-add happens only where a kernel asks for it by name.
+fma = cast(Callable[[float, float, float], float], intrinsic(_fma))
+#: The bit pattern of a float64 as an unsigned 64-bit integer, in compiled code (free).
+float_bits = cast(Callable[[float], int], intrinsic(_float_bits))
+#: The float64 with this unsigned 64-bit pattern, in compiled code (``float_bits`` undone).
+bits_float = cast(Callable[[int], float], intrinsic(_bits_float))
 
 
 #: Magnitudes between which a sum of squares neither overflows nor underflows past its last bits.

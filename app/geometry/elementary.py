@@ -22,13 +22,23 @@ could round some values differently. Where numpy called libm already (every func
 ``tanh`` on a host without AVX-512) the bits are the same as before.
 
 Signatures: each takes and returns float64 elementwise, ``(...) -> (...)``.
+
+One of them has a second, faster form for whole blocks: ``exp_into`` computes e^x with glibc's
+own algorithm, written out here, so that the compiler vectorizes it (a call to libm per element
+cannot be): the same bits as ``exp``, about 3.5× faster (docs/performance.md, issue 13,
+session 29).
 """
 
 from __future__ import annotations
 
 import math
+from typing import Any
 
-from app.geometry.compiled import compiled_ufunc
+import mpmath
+import numba
+import numpy as np
+
+from app.geometry.compiled import bits_float, compiled_ufunc, float_bits, fma, kernel
 
 _UNARY = "float64(float64)"
 _BINARY = "float64(float64, float64)"
@@ -116,3 +126,94 @@ def atan2(y: float, x: float) -> float:
 def power(x: float, y: float) -> float:
     """x^y."""
     return x**y
+
+
+# --- e^x a block at a time: glibc's algorithm, written out (``exp_into``) ---
+#
+# glibc 2.36's exp (the one of Szabolcs Nagy, from Arm's optimized routines) splits
+# x = k·ln2/N + r with N = 128 and |r| ≤ ln2/(2N), so that e^x = 2^(k/N) · e^r: 2^(k/N) is
+# 2^⌊k/N⌋ times one of N tabulated values, and e^r − 1 a polynomial of degree 5. On x86-64 with
+# FMA (every host and image of the service: ``x86-64-v3``) the C library takes the variant
+# compiled with fused multiply-adds; its machine code (``objdump -d`` of Debian's libm.so.6)
+# fuses exactly the operations fused below, and these constants are the bits of its data.
+
+#: N/ln 2, the shift 1.5·2^52 that rounds k to an integer in the low bits, −ln2/N in two parts.
+EXP_INV_LN2_N = float.fromhex("0x1.71547652b82fep7")
+EXP_SHIFT = float.fromhex("0x1.8p52")
+EXP_NEG_LN2_HI_N = float.fromhex("-0x1.62e42fefa0000p-8")
+EXP_NEG_LN2_LO_N = float.fromhex("-0x1.cf79abc9e3b3ap-47")
+#: The polynomial's coefficients of r², r³, r⁴, r⁵ (1 and r are exact).
+EXP_C2 = float.fromhex("0x1.ffffffffffdbdp-2")
+EXP_C3 = float.fromhex("0x1.555555555543cp-3")
+EXP_C4 = float.fromhex("0x1.55555cf172b91p-5")
+EXP_C5 = float.fromhex("0x1.1111167a4d017p-7")
+#: The exponent fields (biased) of 2^-54 and 512: between them (the usual range) no
+#: overflow, underflow or tiny argument needs care; outside it ``exp_into`` calls libm.
+EXP_TOP_LOW, EXP_TOP_SPAN = 0x3C9, 0x408 - 0x3C9
+#: Elements ``exp_into`` looks at together: all usual, the block goes to the vector loop.
+EXP_CHUNK = 512
+
+
+def _exp_table() -> Any:
+    """glibc's table of 2^(k/128), k = 0..127, as ((256,) uint64) bit patterns: at 2k the tail
+    t_k, at 2k + 1 the scale s_k less k·2^45 (the exponent k/128 adds back), where s_k is the
+    double nearest 2^(k/128) and t_k the double nearest 2^(k/128)/s_k − 1; computed here at
+    300 bits (mpmath) and the same bits as the C library's data (tests/geometry/test_elementary.py
+    compares the results)."""
+    table = np.empty(256, dtype=np.uint64)
+    with mpmath.workprec(300):
+        for k in range(128):
+            exact = mpmath.mpf(2) ** (mpmath.mpf(k) / 128)
+            scale = float(exact)
+            table[2 * k] = np.float64(float(exact / scale - 1)).view(np.uint64)
+            table[2 * k + 1] = np.float64(scale).view(np.uint64) - np.uint64(k << 45)
+    return table
+
+
+EXP_TABLE = _exp_table()
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _usual(x: float) -> bool:
+    """Whether 2^-54 ≤ |x| < 512 (``EXP_TOP_*``), where ``_exp_usual`` is libm's exp."""
+    top = (float_bits(x) >> np.uint64(52)) & np.uint64(0x7FF)
+    return bool((top - np.uint64(EXP_TOP_LOW)) < np.uint64(EXP_TOP_SPAN))
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _exp_usual(x: float) -> float:
+    """e^x as glibc's exp computes it (FMA variant) for 2^-54 ≤ |x| < 512, bit for bit."""
+    shifted = fma(x, EXP_INV_LN2_N, EXP_SHIFT)  # k in the low bits, rounded to nearest
+    k_bits = float_bits(shifted)
+    k = shifted - EXP_SHIFT
+    r = fma(k, EXP_NEG_LN2_LO_N, fma(k, EXP_NEG_LN2_HI_N, x))  # x − k·ln2/N
+    at = np.uint64(2) * (k_bits & np.uint64(127))
+    tail = bits_float(EXP_TABLE[at])
+    scale = bits_float(EXP_TABLE[at + np.uint64(1)] + (k_bits << np.uint64(45)))
+    r2 = r * r
+    low = fma(fma(r, EXP_C3, EXP_C2), r2, tail + r)
+    result = fma(r2 * r2, fma(r, EXP_C5, EXP_C4), low)  # tail + e^r − 1
+    return fma(scale, result, scale)
+
+
+@kernel("void(float64[::1], float64[::1])")
+def exp_into(x: Any, out: Any) -> None:
+    """out = e^x for float64 vectors ((n,) → (n,)), the same bits as ``exp`` (libm's exp with
+    FMA); ``out`` may be ``x``. A chunk whose arguments are all usual (2^-54 ≤ |x| < 512) takes
+    ``_exp_usual`` in a loop the compiler vectorizes; a chunk with another (0, a tiny, a huge,
+    inf or NaN) calls libm for those."""
+    n = x.shape[0]
+    for start in range(0, n, EXP_CHUNK):
+        xs = x[start : min(start + EXP_CHUNK, n)]
+        os = out[start : min(start + EXP_CHUNK, n)]
+        worst = np.uint64(0)  # the largest (exponent field − 2^-54's), unsigned: vectorized
+        for i in range(xs.shape[0]):
+            top = (float_bits(xs[i]) >> np.uint64(52)) & np.uint64(0x7FF)
+            worst = max(worst, top - np.uint64(EXP_TOP_LOW))
+        if worst < np.uint64(EXP_TOP_SPAN):
+            for i in range(xs.shape[0]):
+                os[i] = _exp_usual(xs[i])
+        else:
+            for i in range(xs.shape[0]):
+                value = xs[i]
+                os[i] = _exp_usual(value) if _usual(value) else math.exp(value)

@@ -11,6 +11,7 @@ import math
 import re
 from pathlib import Path
 
+import mpmath
 import numpy as np
 import pytest
 
@@ -132,3 +133,69 @@ def test_numba_compiles_the_c_librarys_calls_not_svmls() -> None:
     from numba.core import config
 
     assert not config.USING_SVML
+
+
+def _has_fma() -> bool:
+    """Whether this processor has FMA: the C library then takes its exp compiled with fused
+    multiply-adds, the variant ``exp_into`` writes out (without it glibc's plain variant may
+    round a rare value the other way; ``exp_into`` still gives the FMA variant's bits)."""
+    from llvmlite import binding
+
+    return bool(binding.get_host_cpu_features().get("fma", False))
+
+
+def _wide_arguments(seed: int) -> np.ndarray:
+    """Arguments over exp's whole domain and its edges: uniform on [−746, 710] and on [−1, 1],
+    every binary exponent from 2^-1080 to 2^10 with both signs, the borders of the usual range
+    (2^-54, 512) and of the finite results, zeros, subnormals, inf and NaN."""
+    rng = np.random.default_rng(seed)
+    edges = [2.0**-54, 512.0, 709.782712893384, 709.7827128933841, -708.3964185322641, -745.1332]
+    edges += [math.nextafter(v, math.inf) for v in edges]
+    edges += [math.nextafter(v, -math.inf) for v in edges]
+    return np.concatenate(
+        [
+            rng.uniform(-746.0, 710.0, 200_000),
+            rng.uniform(-1.0, 1.0, 200_000),
+            np.ldexp(rng.uniform(-1.0, 1.0, 200_000), rng.integers(-1080, 11, 200_000)),
+            edges,
+            [-v for v in edges],
+            SPECIAL,
+            [-v for v in SPECIAL],
+            [math.inf, -math.inf, math.nan],
+        ]
+    )
+
+
+@pytest.mark.skipif(not _has_fma(), reason="the C library's exp without FMA is another variant")
+def test_exp_into_is_the_c_librarys_exp_bit_for_bit() -> None:
+    x = _wide_arguments(seed=29)
+    with np.errstate(over="ignore"):
+        expected = elementary.exp(x)
+    out = np.full_like(x, 7.0)
+    elementary.exp_into(x, out)
+    np.testing.assert_array_equal(_bits(out), _bits(expected))
+    # in place, and from an offset that splits its chunks differently
+    inplace = x[3:].copy()
+    elementary.exp_into(inplace, inplace)
+    np.testing.assert_array_equal(_bits(inplace), _bits(expected[3:]))
+    # a block of usual arguments only (the vector loop alone) and a short one
+    usual = np.random.default_rng(5).uniform(-60.0, 60.0, 5000)
+    elementary.exp_into(usual, out[:5000])
+    np.testing.assert_array_equal(_bits(out[:5000]), _bits(elementary.exp(usual)))
+    elementary.exp_into(usual[:3], out[:3])
+    np.testing.assert_array_equal(_bits(out[:3]), _bits(elementary.exp(usual[:3])))
+
+
+def test_exp_table_is_two_to_the_k_over_128() -> None:
+    """Each of the 128 entries is (tail, scale − k·2^45) with scale·(1 + tail) = 2^(k/128) to
+    within 2^-100 relative: the table ``exp_into`` rests on, checked against its definition."""
+    table = elementary.EXP_TABLE
+    for k in range(128):
+        tail = float(table[2 * k : 2 * k + 1].view(np.float64)[0])
+        scale_bits = table[2 * k + 1] + np.uint64(k << 45)
+        scale = float(np.array([scale_bits], dtype=np.uint64).view(np.float64)[0])
+        assert 2.0 ** (k / 128) == pytest.approx(scale, rel=2**-52)
+        with mpmath.workprec(200):
+            exact = mpmath.mpf(2) ** (mpmath.mpf(k) / 128)
+            error = abs(mpmath.mpf(scale) * (1 + mpmath.mpf(tail)) - exact) / exact
+        assert error < mpmath.mpf(2) ** -100, k

@@ -1051,7 +1051,7 @@ def _within(lowest: float, highest: float) -> bool:
 @kernel("boolean(int64, int64, float64, float64, float64[::1])")
 def _kinematic_decays(first: int, count: int, L: float, shift: float, out: Any) -> bool:
     """−|t| for (14)'s and (16)'s arguments t as ``_kinematic_arguments`` computes them, into
-    ``out[:count]`` and ``out[count:2count]`` (``elementary.exp`` then makes w =
+    ``out[:count]`` and ``out[count:2count]`` (``elementary.exp_into`` then makes w =
     e^(−|t|) of them), and whether every |t| ≤ ``DECAY_LIMIT``, for each of the two."""
     offset_p, offset_t = (shift - 0.5) * L, shift * L
     for k in range(count):
@@ -1067,7 +1067,7 @@ def _kinematic_decays(first: int, count: int, L: float, shift: float, out: Any) 
 @kernel("boolean(int64, int64, float64, float64, float64[::1])")
 def _image_decays(first: int, count: int, L: float, shift: float, out: Any) -> bool:
     """−|t| for (19)'s and (20)'s arguments t as ``_image_arguments`` computes them, into
-    ``out[:count + 1]`` and ``out[count + 1:2count + 1]`` (``elementary.exp`` then makes w =
+    ``out[:count + 1]`` and ``out[count + 1:2count + 1]`` (``elementary.exp_into`` then makes w =
     e^(−|t|)), and whether every |t| ≤ ``DECAY_LIMIT``."""
     for k in range(count + 1):
         out[k] = -abs((float(first - 1 + k) + shift) * L)
@@ -1355,7 +1355,7 @@ def closed_kinematic_comparisons(
         first = data.i_min + start
         lo, hi = (0 if theorem_5 else count), (2 * count if theorem_6 else count)
         if _kinematic_decays(first, count, L, shift, decays):
-            elementary.exp(decays[lo:hi], out=decays[lo:hi])
+            elementary.exp_into(decays[lo:hi], decays[lo:hi])
             done, largest_5, largest_6 = _kinematic_block_from_decays(
                 first,
                 count,
@@ -1829,7 +1829,7 @@ def closed_image_comparisons(
         count = min(block, rows - start)
         if _image_decays(i_min + start, count, L, shift, decays):
             exps = 2 * count + 1 if flags[2] else count + 1  # (20)'s only where it is compared
-            elementary.exp(decays[:exps], out=decays[:exps])
+            elementary.exp_into(decays[:exps], decays[:exps])
             if _image_block_from_decays(
                 i_min + start,
                 count,
