@@ -196,12 +196,14 @@ def _exp_usual(x: float) -> float:
     return fma(scale, result, scale)
 
 
-@kernel("void(float64[::1], float64[::1])")
-def exp_into(x: Any, out: Any) -> None:
+@kernel("boolean(float64[::1], float64[::1])")
+def exp_into(x: Any, out: Any) -> bool:
     """out = e^x for float64 vectors ((n,) → (n,)), the same bits as ``exp`` (libm's exp with
     FMA); ``out`` may be ``x``. A chunk whose arguments are all usual (2^-54 ≤ |x| < 512) takes
     ``_exp_usual`` in a loop the compiler vectorizes; a chunk with another (0, a tiny, a huge,
-    inf or NaN) calls libm for those."""
+    inf or NaN) calls libm for those. Returns whether one did (no floating-point warning is
+    raised here: ``exp_array`` takes the ufunc for those)."""
+    unusual = False
     n = x.shape[0]
     for start in range(0, n, EXP_CHUNK):
         xs = x[start : min(start + EXP_CHUNK, n)]
@@ -214,6 +216,21 @@ def exp_into(x: Any, out: Any) -> None:
             for i in range(xs.shape[0]):
                 os[i] = _exp_usual(xs[i])
         else:
+            unusual = True
             for i in range(xs.shape[0]):
                 value = xs[i]
                 os[i] = _exp_usual(value) if _usual(value) else math.exp(value)
+    return unusual
+
+
+def exp_array(x: Any) -> Any:
+    """e^x elementwise with ``exp``'s bits and warnings (any shape → the same shape): a float64
+    array whose arguments are all usual through ``exp_into`` (its vector loop), anything else
+    (scalars, other types, an argument that may overflow or is 0, tiny, inf or NaN) through
+    the ufunc ``exp``, so numpy's overflow warning (an error in the service) is raised as before."""
+    if type(x) is np.ndarray and x.dtype == np.float64 and x.size > 1:
+        flat = np.ascontiguousarray(x).reshape(-1)
+        out = np.empty(flat.shape[0])
+        if not exp_into(flat, out):
+            return out.reshape(x.shape)
+    return exp(x)

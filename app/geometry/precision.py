@@ -269,7 +269,7 @@ class Float64(Arithmetic):
 
     # the C library's functions on every machine (``elementary``), not numpy's, whose
     # float64 ufuncs take other implementations on a processor with AVX-512
-    exp = staticmethod(elementary.exp)
+    exp = staticmethod(elementary.exp_array)  # the same bits, vectorized for arrays
     expm1 = staticmethod(elementary.expm1)
     log = staticmethod(elementary.log)
     log1p = staticmethod(elementary.log1p)

@@ -101,7 +101,8 @@ def test_out_of_domain_values_warn_as_numpys() -> None:
 def test_the_float64_arithmetic_takes_them_and_mp_keeps_mpmath() -> None:
     float64 = Float64()
     for name in (*UNARY, "atan2", "power"):
-        assert getattr(float64, name) is getattr(elementary, name), name
+        expected = elementary.exp_array if name == "exp" else getattr(elementary, name)
+        assert getattr(float64, name) is expected, name
     mp = MultiPrecision(30)
     assert str(mp.power(mp.scalar(2), mp.scalar("0.5")))[:12] == "1.4142135623"
 
@@ -199,3 +200,19 @@ def test_exp_table_is_two_to_the_k_over_128() -> None:
             exact = mpmath.mpf(2) ** (mpmath.mpf(k) / 128)
             error = abs(mpmath.mpf(scale) * (1 + mpmath.mpf(tail)) - exact) / exact
         assert error < mpmath.mpf(2) ** -100, k
+
+
+@pytest.mark.skipif(not _has_fma(), reason="the C library's exp without FMA is another variant")
+def test_exp_array_has_exps_bits_shapes_and_warnings() -> None:
+    usual = np.random.default_rng(7).uniform(-50.0, 50.0, (40, 3))
+    for x in (usual, usual.T, usual[:, 1], usual[5]):  # 2-D, transposed, strided, a row
+        found = elementary.exp_array(x)
+        assert found.shape == x.shape
+        np.testing.assert_array_equal(_bits(found), _bits(elementary.exp(x)))
+    assert elementary.exp_array(0.5) == math.exp(0.5)
+    assert elementary.exp_array(np.float64(0.5)) == math.exp(0.5)
+    # an unusual argument takes the ufunc: the same bits, and numpy's overflow warning
+    mixed = np.concatenate([usual[:, 0], [0.0, -800.0, math.nan]])
+    np.testing.assert_array_equal(_bits(elementary.exp_array(mixed)), _bits(elementary.exp(mixed)))
+    with pytest.warns(RuntimeWarning, match="overflow"):
+        assert elementary.exp_array(np.array([1.0, 710.0]))[1] == math.inf
