@@ -23,10 +23,12 @@ could round some values differently. Where numpy called libm already (every func
 
 Signatures: each takes and returns float64 elementwise, ``(...) -> (...)``.
 
-One of them has a second, faster form for whole blocks: ``exp_into`` computes e^x with glibc's
+Two of them have a second, faster form for whole arrays: ``exp_into`` computes e^x with glibc's
 own algorithm, written out here, so that the compiler vectorizes it (a call to libm per element
-cannot be): the same bits as ``exp``, about 3.5× faster (docs/performance.md, issue 13,
-session 29).
+cannot be), and ``cosh_into`` glibc's cosh on top of it: the same bits as ``exp`` and ``cosh``,
+about 3.5× and 2.5–4× faster (docs/performance.md, issue 13, session 29). ``exp_array`` and
+``cosh_array`` (what ``Float64`` calls) take them for float64 arrays and keep the ufuncs'
+warnings.
 """
 
 from __future__ import annotations
@@ -196,14 +198,21 @@ def _exp_usual(x: float) -> float:
     return fma(scale, result, scale)
 
 
+#: The exponent field (biased) of 512: from it on, exp may overflow (or has an infinite or NaN
+#: argument), which only the ufunc reports as numpy does (``exp_array``).
+EXP_TOP_HUGE = 0x408
+
+
 @kernel("boolean(float64[::1], float64[::1])")
 def exp_into(x: Any, out: Any) -> bool:
     """out = e^x for float64 vectors ((n,) → (n,)), the same bits as ``exp`` (libm's exp with
     FMA); ``out`` may be ``x``. A chunk whose arguments are all usual (2^-54 ≤ |x| < 512) takes
-    ``_exp_usual`` in a loop the compiler vectorizes; a chunk with another (0, a tiny, a huge,
-    inf or NaN) calls libm for those. Returns whether one did (no floating-point warning is
-    raised here: ``exp_array`` takes the ufunc for those)."""
-    unusual = False
+    ``_exp_usual`` in a loop the compiler vectorizes; in another too, and then libm's exp
+    replaces the others (0, a tiny, a huge, inf or NaN). Returns whether an argument was huge,
+    infinite or NaN: the one kind whose result numpy may warn about (overflow), which no kernel
+    does (``exp_array``)."""
+    huge = False
+    held = np.empty(EXP_CHUNK)  # a chunk's arguments, for its exceptions when out is x
     n = x.shape[0]
     for start in range(0, n, EXP_CHUNK):
         xs = x[start : min(start + EXP_CHUNK, n)]
@@ -215,22 +224,91 @@ def exp_into(x: Any, out: Any) -> bool:
         if worst < np.uint64(EXP_TOP_SPAN):
             for i in range(xs.shape[0]):
                 os[i] = _exp_usual(xs[i])
-        else:
-            unusual = True
-            for i in range(xs.shape[0]):
-                value = xs[i]
-                os[i] = _exp_usual(value) if _usual(value) else math.exp(value)
-    return unusual
+            continue
+        kept = held[: xs.shape[0]]
+        kept[:] = xs
+        for i in range(kept.shape[0]):  # every entry in the vector loop, then the exceptions
+            os[i] = _exp_usual(kept[i])
+        for i in range(kept.shape[0]):
+            value = kept[i]
+            if not _usual(value):
+                os[i] = math.exp(value)
+                top = (float_bits(value) >> np.uint64(52)) & np.uint64(0x7FF)
+                huge = huge or bool(top >= np.uint64(EXP_TOP_HUGE))
+    return huge
 
 
-def exp_array(x: Any) -> Any:
-    """e^x elementwise with ``exp``'s bits and warnings (any shape → the same shape): a float64
-    array whose arguments are all usual through ``exp_into`` (its vector loop), anything else
-    (scalars, other types, an argument that may overflow or is 0, tiny, inf or NaN) through
-    the ufunc ``exp``, so numpy's overflow warning (an error in the service) is raised as before."""
+def _through(kernel_into: Any, ufunc: np.ufunc, x: Any) -> Any:
+    """``ufunc(x)`` by ``kernel_into`` where it can: a float64 array (any shape) whose arguments
+    the kernel reports none of that may warn; anything else (scalars, other types, such an
+    argument) by the ufunc itself, so numpy's warnings (errors in the service) are as before."""
     if type(x) is np.ndarray and x.dtype == np.float64 and x.size > 1:
         flat = np.ascontiguousarray(x).reshape(-1)
         out = np.empty(flat.shape[0])
-        if not exp_into(flat, out):
+        if not kernel_into(flat, out):
             return out.reshape(x.shape)
-    return exp(x)
+    return ufunc(x)
+
+
+def exp_array(x: Any) -> Any:
+    """e^x elementwise with ``exp``'s bits and warnings (any shape → the same shape), through
+    ``exp_into``'s vector loop for a float64 array with no argument of 512 or more."""
+    return _through(exp_into, exp, x)
+
+
+# --- cosh a block at a time: glibc's cosh on ``_exp_usual`` (``cosh_into``) ---
+#
+# glibc's cosh (``e_cosh.c``, compiled without FMA: ``objdump -d`` shows mulsd, divsd, addsd)
+# branches on |x|: up to ≈ ½ln2 it takes expm1 (libm's call here), below 22 it returns
+# ½·t + ½/t with t = exp(|x|) (the FMA variant above: the same ifunc), from 22 on ½·t.
+
+#: The least |x| of glibc's ½·t + ½/t branch (its high word 0x3FD62E43, the first above ½ln2's).
+COSH_EXP_LEAST = float(np.array([0x3FD62E43 << 32], dtype=np.uint64).view(np.float64)[0])
+#: Where glibc's cosh turns to ½·e^|x|; and the end of ``_exp_usual``'s range.
+COSH_HALF_FROM, COSH_USUAL_BELOW = 22.0, 512.0
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _cosh_usual(a: float) -> float:
+    """cosh as glibc computes it for COSH_EXP_LEAST ≤ a = |x| < 512, bit for bit."""
+    t = _exp_usual(a)
+    return 0.5 * t + 0.5 / t if a < COSH_HALF_FROM else 0.5 * t
+
+
+@kernel("boolean(float64[::1], float64[::1])")
+def cosh_into(x: Any, out: Any) -> bool:
+    """out = cosh x for float64 vectors ((n,) → (n,)), the same bits as ``cosh``; ``out`` may be
+    ``x``. A chunk whose |x| all lie in [COSH_EXP_LEAST, 512) takes ``_cosh_usual`` in a vector
+    loop; in another too, and then libm's cosh replaces the others. Returns whether an |x| was
+    512 or more, infinite or NaN (what numpy may warn about: ``cosh_array``)."""
+    huge = False
+    held = np.empty(EXP_CHUNK)  # a chunk's arguments, for its exceptions when out is x
+    n = x.shape[0]
+    for start in range(0, n, EXP_CHUNK):
+        xs = x[start : min(start + EXP_CHUNK, n)]
+        os = out[start : min(start + EXP_CHUNK, n)]
+        outside = 0
+        for i in range(xs.shape[0]):
+            a = abs(xs[i])
+            outside += 0 if (a >= COSH_EXP_LEAST) & (a < COSH_USUAL_BELOW) else 1
+        if outside == 0:
+            for i in range(xs.shape[0]):
+                os[i] = _cosh_usual(abs(xs[i]))
+            continue
+        kept = held[: xs.shape[0]]
+        kept[:] = xs
+        for i in range(kept.shape[0]):  # every entry in the vector loop, then the exceptions
+            os[i] = _cosh_usual(abs(kept[i]))
+        for i in range(kept.shape[0]):
+            value = kept[i]
+            a = abs(value)
+            if not ((a >= COSH_EXP_LEAST) & (a < COSH_USUAL_BELOW)):
+                os[i] = math.cosh(value)
+                huge = huge or not a < COSH_USUAL_BELOW
+    return huge
+
+
+def cosh_array(x: Any) -> Any:
+    """cosh x elementwise with ``cosh``'s bits and warnings (any shape → the same shape), through
+    ``cosh_into``'s vector loop for a float64 array with no |argument| of 512 or more."""
+    return _through(cosh_into, cosh, x)

@@ -276,7 +276,7 @@ class Float64(Arithmetic):
     sqrt = staticmethod(np.sqrt)  # correctly rounded on every machine (IEEE 754)
     cos = staticmethod(elementary.cos)
     sin = staticmethod(elementary.sin)
-    cosh = staticmethod(elementary.cosh)
+    cosh = staticmethod(elementary.cosh_array)  # the same bits, vectorized for arrays
     sinh = staticmethod(elementary.sinh)
     tanh = staticmethod(elementary.tanh)
     atanh = staticmethod(elementary.atanh)

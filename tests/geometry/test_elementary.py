@@ -101,7 +101,7 @@ def test_out_of_domain_values_warn_as_numpys() -> None:
 def test_the_float64_arithmetic_takes_them_and_mp_keeps_mpmath() -> None:
     float64 = Float64()
     for name in (*UNARY, "atan2", "power"):
-        expected = elementary.exp_array if name == "exp" else getattr(elementary, name)
+        expected = getattr(elementary, f"{name}_array" if name in ("exp", "cosh") else name)
         assert getattr(float64, name) is expected, name
     mp = MultiPrecision(30)
     assert str(mp.power(mp.scalar(2), mp.scalar("0.5")))[:12] == "1.4142135623"
@@ -167,24 +167,35 @@ def _wide_arguments(seed: int) -> np.ndarray:
     )
 
 
+INTO = {
+    "exp": (elementary.exp_into, elementary.exp),
+    "cosh": (elementary.cosh_into, elementary.cosh),
+}
+
+
 @pytest.mark.skipif(not _has_fma(), reason="the C library's exp without FMA is another variant")
-def test_exp_into_is_the_c_librarys_exp_bit_for_bit() -> None:
+@pytest.mark.parametrize("name", sorted(INTO))
+def test_the_vector_forms_are_the_c_librarys_functions_bit_for_bit(name: str) -> None:
+    into, ufunc = INTO[name]
     x = _wide_arguments(seed=29)
+    x = np.concatenate([x, [22.0, -22.0, math.nextafter(22.0, 0.0), elementary.COSH_EXP_LEAST]])
+    x = np.concatenate([x, [math.nextafter(elementary.COSH_EXP_LEAST, 0.0), 0.3, -0.01]])
     with np.errstate(over="ignore"):
-        expected = elementary.exp(x)
+        expected = ufunc(x)
     out = np.full_like(x, 7.0)
-    elementary.exp_into(x, out)
+    assert into(x, out)  # huge, infinite and NaN arguments are there
     np.testing.assert_array_equal(_bits(out), _bits(expected))
     # in place, and from an offset that splits its chunks differently
     inplace = x[3:].copy()
-    elementary.exp_into(inplace, inplace)
+    into(inplace, inplace)
     np.testing.assert_array_equal(_bits(inplace), _bits(expected[3:]))
-    # a block of usual arguments only (the vector loop alone) and a short one
+    # usual arguments only (the vector loop alone), with a few small ones, and a short block
     usual = np.random.default_rng(5).uniform(-60.0, 60.0, 5000)
-    elementary.exp_into(usual, out[:5000])
-    np.testing.assert_array_equal(_bits(out[:5000]), _bits(elementary.exp(usual)))
-    elementary.exp_into(usual[:3], out[:3])
-    np.testing.assert_array_equal(_bits(out[:3]), _bits(elementary.exp(usual[:3])))
+    with_small = np.concatenate([usual, [0.0, 1e-300, 0.1]])[::-1].copy()
+    for block in (usual, with_small, usual[:3]):
+        found = np.empty_like(block)
+        assert not into(block, found)
+        np.testing.assert_array_equal(_bits(found), _bits(ufunc(block)))
 
 
 def test_exp_table_is_two_to_the_k_over_128() -> None:
@@ -203,16 +214,20 @@ def test_exp_table_is_two_to_the_k_over_128() -> None:
 
 
 @pytest.mark.skipif(not _has_fma(), reason="the C library's exp without FMA is another variant")
-def test_exp_array_has_exps_bits_shapes_and_warnings() -> None:
+@pytest.mark.parametrize("name", sorted(INTO))
+def test_the_array_forms_keep_the_bits_shapes_and_warnings(name: str) -> None:
+    _, ufunc = INTO[name]
+    array_form = getattr(elementary, f"{name}_array")
     usual = np.random.default_rng(7).uniform(-50.0, 50.0, (40, 3))
     for x in (usual, usual.T, usual[:, 1], usual[5]):  # 2-D, transposed, strided, a row
-        found = elementary.exp_array(x)
+        found = array_form(x)
         assert found.shape == x.shape
-        np.testing.assert_array_equal(_bits(found), _bits(elementary.exp(x)))
-    assert elementary.exp_array(0.5) == math.exp(0.5)
-    assert elementary.exp_array(np.float64(0.5)) == math.exp(0.5)
-    # an unusual argument takes the ufunc: the same bits, and numpy's overflow warning
+        np.testing.assert_array_equal(_bits(found), _bits(ufunc(x)))
+    assert array_form(0.5) == getattr(math, name)(0.5)
+    assert array_form(np.float64(0.5)) == getattr(math, name)(0.5)
+    # a huge argument takes the ufunc: the same bits, and numpy's overflow warning
     mixed = np.concatenate([usual[:, 0], [0.0, -800.0, math.nan]])
-    np.testing.assert_array_equal(_bits(elementary.exp_array(mixed)), _bits(elementary.exp(mixed)))
+    with np.errstate(over="ignore"):
+        np.testing.assert_array_equal(_bits(array_form(mixed)), _bits(ufunc(mixed)))
     with pytest.warns(RuntimeWarning, match="overflow"):
-        assert elementary.exp_array(np.array([1.0, 710.0]))[1] == math.inf
+        assert array_form(np.array([1.0, 711.0]))[1] == math.inf

@@ -913,8 +913,7 @@ def fill_closed_forms(data: D4bPolygons, images: bool = True, kinematic: bool = 
         arguments = _closed_arguments(first, first + count - 2, L, shift)
         # cosh of (14)'s and (16)'s arguments if kinematic, of (19)'s and (20)'s if images
         lo, hi = (0 if kinematic else 2 * count), (4 * count + 1 if images else 2 * count)
-        with np.errstate(over="ignore"):
-            elementary.cosh(arguments[lo:hi], out=cosh[lo:hi])
+        elementary.cosh_into(arguments[lo:hi], cosh[lo:hi])  # libm's bits, inf on overflow
         if not all_finite_vector(cosh[lo:hi]):
             return
         if kinematic:
@@ -1380,8 +1379,8 @@ def closed_kinematic_comparisons(
                 continue
         # the old path: cosh and sinh, the old block (its rows with hypot's branch)
         _kinematic_arguments(first, count, L, shift, arguments)
+        elementary.cosh_into(arguments[lo:hi], cosh[lo:hi])  # libm's bits, inf on overflow
         with np.errstate(over="ignore"):
-            elementary.cosh(arguments[lo:hi], out=cosh[lo:hi])
             if theorem_6:  # (an overflow here is a cosh's too: the block returns None)
                 elementary.sinh(arguments[count : 2 * count], out=sinh[:count])
         finite, largest_5, largest_6 = _closed_kinematic_block(
@@ -1855,8 +1854,7 @@ def closed_image_comparisons(
         _image_arguments(i_min + start, count, L, shift, arguments)
         # tanh of (20)'s arguments only where (20) itself is compared
         tanhs = 2 * count + 1 if flags[2] else count + 1
-        with np.errstate(over="ignore"):
-            elementary.cosh(arguments[: 2 * count + 1], out=cosh[: 2 * count + 1])
+        elementary.cosh_into(arguments[: 2 * count + 1], cosh[: 2 * count + 1])  # inf on overflow
         elementary.tanh(arguments[:tanhs], out=tanh[:tanhs])
         finite = _closed_image_block(
             count,
