@@ -41,6 +41,7 @@ from app.geometry.compiled import (
     _hypot_kernel,
     all_finite_vector,
     bits_value,
+    float_bits,
     hypot,
     kernel,
     largest_bits,
@@ -319,39 +320,69 @@ def _fold(values: Any, count: int, worst: Any, at: int) -> None:
     worst[at] = largest
 
 
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _magnitude(value: float) -> Any:
+    """|value|'s bit pattern (``MAGNITUDE_BITS``) as an int64, as ``_scan`` reads it."""
+    return np.int64(float_bits(value) & np.uint64(MAGNITUDE_BITS))
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _finite_part(magnitude: int) -> int:
+    """``_scan``'s contribution of one magnitude to the largest: itself, or 0 for a NaN."""
+    return magnitude if magnitude <= INF_BITS else 0
+
+
 @numba.njit(cache=True, error_model="numpy")
 def _first_pass(buffers: Any, edges: int, inner: int, big: Any, nan: Any) -> None:
     """Pass 1 on a block: the largest |Δ²y|, |l_k + l_{k+1}|, |A|, |l|, |A_k + A_{k+1}| into
     ``big`` (NaN seen into ``nan``), at the positions of their scales (``_S_*``); then the
     largest |u| and |v| of the fits before their column scales (Δ²y / w, (l_k + l_{k+1}) / w …
-    as the products with 1/w) at 10 + the positions of u's and v's scales."""
-    area, edge, second = buffers[4], buffers[5], buffers[8]
-    paired_l, paired_a = buffers[10], buffers[11]
-    for j in range(inner):
-        paired_l[j] = edge[j] + edge[j + 1]
-        paired_a[j] = area[j] + area[j + 1]
-    _scan(area, edges, big, nan, _S_AREA)
-    _scan(edge, edges, big, nan, _S_L)
-    _scan(second, inner, big, nan, _S_SECOND)
-    _scan(paired_l, inner, big, nan, _S_PAIRED_L)
-    _scan(paired_a, inner, big, nan, _S_PAIRED_A)
-    # the ratios u·s_lhs and v·s_rhs, one division a row (``_ratio_scales``)
+    as the products with 1/w) at 10 + the positions of u's and v's scales.
+
+    Two loops, one over the edges and one over the inner vertices, each computing its values
+    and folding their magnitudes' bits into ``_scan``'s two maxima at once (a loop of integer
+    maxima the compiler vectorizes), where ten ``_scan`` passes read ten stored columns: the
+    same values, so the same maxima."""
     x, y = buffers[0], buffers[1]
-    r_u3, r_v3, r_u, r_v1, r_v2 = buffers[6], buffers[7], buffers[9], buffers[12], buffers[13]
+    area, edge, second = buffers[4], buffers[5], buffers[8]
+    l_area, l_edge, l_u3, l_v3 = big[_S_AREA], big[_S_L], big[10 + _S_U3], big[10 + _S_V3]
+    s_area = s_edge = s_u3 = s_v3 = 0
     for j in range(edges):
         by_weight = 1.0 / _weight(_area_size(x, y, j))
-        r_u3[j] = area[j] * by_weight
-        r_v3[j] = edge[j] * by_weight
+        m_area, m_edge = _magnitude(area[j]), _magnitude(edge[j])
+        m_u3, m_v3 = _magnitude(area[j] * by_weight), _magnitude(edge[j] * by_weight)
+        s_area, s_edge = max(s_area, m_area), max(s_edge, m_edge)
+        s_u3, s_v3 = max(s_u3, m_u3), max(s_v3, m_v3)
+        l_area, l_edge = max(l_area, _finite_part(m_area)), max(l_edge, _finite_part(m_edge))
+        l_u3, l_v3 = max(l_u3, _finite_part(m_u3)), max(l_v3, _finite_part(m_v3))
+    big[_S_AREA], big[_S_L], big[10 + _S_U3], big[10 + _S_V3] = l_area, l_edge, l_u3, l_v3
+    nan[_S_AREA] |= s_area > INF_BITS
+    nan[_S_L] |= s_edge > INF_BITS
+    nan[10 + _S_U3] |= s_u3 > INF_BITS
+    nan[10 + _S_V3] |= s_v3 > INF_BITS
+    l_second, l_pl, l_pa = big[_S_SECOND], big[_S_PAIRED_L], big[_S_PAIRED_A]
+    l_u, l_v1, l_v2 = big[10 + _S_U], big[10 + _S_V1], big[10 + _S_V2]
+    s_second = s_pl = s_pa = s_u = s_v1 = s_v2 = 0
     for j in range(inner):
         by_weight = 1.0 / _weight(_second_size(y, j))
-        r_u[j] = second[j] * by_weight
-        r_v1[j] = paired_l[j] * by_weight
-        r_v2[j] = paired_a[j] * by_weight
-    _scan(r_u3, edges, big, nan, 10 + _S_U3)
-    _scan(r_v3, edges, big, nan, 10 + _S_V3)
-    _scan(r_u, inner, big, nan, 10 + _S_U)
-    _scan(r_v1, inner, big, nan, 10 + _S_V1)
-    _scan(r_v2, inner, big, nan, 10 + _S_V2)
+        paired_l, paired_a = edge[j] + edge[j + 1], area[j] + area[j + 1]
+        m_second, m_pl, m_pa = _magnitude(second[j]), _magnitude(paired_l), _magnitude(paired_a)
+        m_u = _magnitude(second[j] * by_weight)
+        m_v1, m_v2 = _magnitude(paired_l * by_weight), _magnitude(paired_a * by_weight)
+        s_second, s_pl, s_pa = max(s_second, m_second), max(s_pl, m_pl), max(s_pa, m_pa)
+        s_u, s_v1, s_v2 = max(s_u, m_u), max(s_v1, m_v1), max(s_v2, m_v2)
+        l_second = max(l_second, _finite_part(m_second))
+        l_pl, l_pa = max(l_pl, _finite_part(m_pl)), max(l_pa, _finite_part(m_pa))
+        l_u, l_v1 = max(l_u, _finite_part(m_u)), max(l_v1, _finite_part(m_v1))
+        l_v2 = max(l_v2, _finite_part(m_v2))
+    big[_S_SECOND], big[_S_PAIRED_L], big[_S_PAIRED_A] = l_second, l_pl, l_pa
+    big[10 + _S_U], big[10 + _S_V1], big[10 + _S_V2] = l_u, l_v1, l_v2
+    nan[_S_SECOND] |= s_second > INF_BITS
+    nan[_S_PAIRED_L] |= s_pl > INF_BITS
+    nan[_S_PAIRED_A] |= s_pa > INF_BITS
+    nan[10 + _S_U] |= s_u > INF_BITS
+    nan[10 + _S_V1] |= s_v1 > INF_BITS
+    nan[10 + _S_V2] |= s_v2 > INF_BITS
 
 
 @numba.njit(cache=True, error_model="numpy")
