@@ -203,39 +203,57 @@ def _exp_usual(x: float) -> float:
 EXP_TOP_HUGE = 0x408
 
 
-@kernel("boolean(float64[::1], float64[::1])")
-def exp_into(x: Any, out: Any) -> bool:
-    """out = e^x for float64 vectors ((n,) → (n,)), the same bits as ``exp`` (libm's exp with
-    FMA); ``out`` may be ``x``. A chunk whose arguments are all usual (2^-54 ≤ |x| < 512) takes
-    ``_exp_usual`` in a loop the compiler vectorizes; in another too, and then libm's exp
-    replaces the others (0, a tiny, a huge, inf or NaN). Returns whether an argument was huge,
-    infinite or NaN: the one kind whose result numpy may warn about (overflow), which no kernel
-    does (``exp_array``)."""
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _exp_huge(x: float) -> bool:
+    """Whether |x| ≥ 512, inf or NaN (``EXP_TOP_HUGE``)."""
+    return bool(((float_bits(x) >> np.uint64(52)) & np.uint64(0x7FF)) >= np.uint64(EXP_TOP_HUGE))
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _libm_exp(x: float) -> float:
+    """libm's exp (the call the ufunc ``exp`` makes)."""
+    return math.exp(x)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _in_chunks(x: Any, out: Any, usual: Any, value: Any, libm: Any, huge_of: Any) -> bool:
+    """out = f(x) for float64 vectors, chunk by chunk (``EXP_CHUNK``): a chunk whose arguments
+    are all ``usual`` takes ``value`` in a loop the compiler vectorizes; another takes it too,
+    then ``libm`` (the C library's f) replaces the unusual entries (read from a copy, so ``out``
+    may be ``x``). Returns whether an unusual argument was ``huge_of`` (one whose result numpy
+    may warn about, which no kernel does)."""
     huge = False
-    held = np.empty(EXP_CHUNK)  # a chunk's arguments, for its exceptions when out is x
+    held = np.empty(EXP_CHUNK)
     n = x.shape[0]
     for start in range(0, n, EXP_CHUNK):
         xs = x[start : min(start + EXP_CHUNK, n)]
         os = out[start : min(start + EXP_CHUNK, n)]
-        worst = np.uint64(0)  # the largest (exponent field − 2^-54's), unsigned: vectorized
+        outside = 0
         for i in range(xs.shape[0]):
-            top = (float_bits(xs[i]) >> np.uint64(52)) & np.uint64(0x7FF)
-            worst = max(worst, top - np.uint64(EXP_TOP_LOW))
-        if worst < np.uint64(EXP_TOP_SPAN):
+            outside += 0 if usual(xs[i]) else 1
+        if outside == 0:
             for i in range(xs.shape[0]):
-                os[i] = _exp_usual(xs[i])
+                os[i] = value(xs[i])
             continue
         kept = held[: xs.shape[0]]
         kept[:] = xs
         for i in range(kept.shape[0]):  # every entry in the vector loop, then the exceptions
-            os[i] = _exp_usual(kept[i])
+            os[i] = value(kept[i])
         for i in range(kept.shape[0]):
-            value = kept[i]
-            if not _usual(value):
-                os[i] = math.exp(value)
-                top = (float_bits(value) >> np.uint64(52)) & np.uint64(0x7FF)
-                huge = huge or bool(top >= np.uint64(EXP_TOP_HUGE))
+            argument = kept[i]
+            if not usual(argument):
+                os[i] = libm(argument)
+                huge = huge or huge_of(argument)
     return huge
+
+
+@kernel("boolean(float64[::1], float64[::1])")
+def exp_into(x: Any, out: Any) -> bool:
+    """out = e^x for float64 vectors ((n,) → (n,)), the same bits as ``exp`` (libm's exp with
+    FMA); ``out`` may be ``x`` (``_in_chunks``: ``_exp_usual`` where 2^-54 ≤ |x| < 512, libm's
+    exp for 0, a tiny, a huge, inf or NaN). Returns whether an argument was huge, infinite or
+    NaN: the one kind whose result numpy may warn about (overflow; ``exp_array``)."""
+    return _in_chunks(x, out, _usual, _exp_usual, _libm_exp, _exp_huge)
 
 
 def _through(kernel_into: Any, ufunc: np.ufunc, x: Any) -> Any:
@@ -275,37 +293,38 @@ def _cosh_usual(a: float) -> float:
     return 0.5 * t + 0.5 / t if a < COSH_HALF_FROM else 0.5 * t
 
 
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _cosh_in_range(x: float) -> bool:
+    """Whether COSH_EXP_LEAST ≤ |x| < 512, where ``_cosh_of`` is libm's cosh."""
+    a = abs(x)
+    return bool((a >= COSH_EXP_LEAST) & (a < COSH_USUAL_BELOW))
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _cosh_of(x: float) -> float:
+    """``_cosh_usual`` of |x|."""
+    return _cosh_usual(abs(x))
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _cosh_huge(x: float) -> bool:
+    """Whether |x| ≥ 512, inf or NaN."""
+    return not abs(x) < COSH_USUAL_BELOW
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _libm_cosh(x: float) -> float:
+    """libm's cosh (the call the ufunc ``cosh`` makes)."""
+    return math.cosh(x)
+
+
 @kernel("boolean(float64[::1], float64[::1])")
 def cosh_into(x: Any, out: Any) -> bool:
     """out = cosh x for float64 vectors ((n,) → (n,)), the same bits as ``cosh``; ``out`` may be
-    ``x``. A chunk whose |x| all lie in [COSH_EXP_LEAST, 512) takes ``_cosh_usual`` in a vector
-    loop; in another too, and then libm's cosh replaces the others. Returns whether an |x| was
-    512 or more, infinite or NaN (what numpy may warn about: ``cosh_array``)."""
-    huge = False
-    held = np.empty(EXP_CHUNK)  # a chunk's arguments, for its exceptions when out is x
-    n = x.shape[0]
-    for start in range(0, n, EXP_CHUNK):
-        xs = x[start : min(start + EXP_CHUNK, n)]
-        os = out[start : min(start + EXP_CHUNK, n)]
-        outside = 0
-        for i in range(xs.shape[0]):
-            a = abs(xs[i])
-            outside += 0 if (a >= COSH_EXP_LEAST) & (a < COSH_USUAL_BELOW) else 1
-        if outside == 0:
-            for i in range(xs.shape[0]):
-                os[i] = _cosh_usual(abs(xs[i]))
-            continue
-        kept = held[: xs.shape[0]]
-        kept[:] = xs
-        for i in range(kept.shape[0]):  # every entry in the vector loop, then the exceptions
-            os[i] = _cosh_usual(abs(kept[i]))
-        for i in range(kept.shape[0]):
-            value = kept[i]
-            a = abs(value)
-            if not ((a >= COSH_EXP_LEAST) & (a < COSH_USUAL_BELOW)):
-                os[i] = math.cosh(value)
-                huge = huge or not a < COSH_USUAL_BELOW
-    return huge
+    ``x`` (``_in_chunks``: ``_cosh_usual`` where COSH_EXP_LEAST ≤ |x| < 512, libm's cosh for
+    the others). Returns whether an |x| was 512 or more, infinite or NaN (what numpy may warn
+    about: ``cosh_array``)."""
+    return _in_chunks(x, out, _cosh_in_range, _cosh_of, _libm_cosh, _cosh_huge)
 
 
 def cosh_array(x: Any) -> Any:
