@@ -92,33 +92,27 @@ def constructions(n: int = 10**5) -> None:
 NO_CHECKS = Selection(checks=frozenset())
 
 
-def copy_floor(n: int = 10**6, copies: int = 101) -> float:
+def copy_floor(n: int = 10**6, copies: int = 101, fresh: bool = False) -> float:
     """CPU seconds of copying a filled (n, 2) float64 array into a warm destination (median).
 
     The destination is allocated and written once before timing, so no copy pays for page
     faults (a fresh ``copy()`` of 16 MB faults in 4000 pages, which moved the floor between 1.4
     and 8 ms from run to run); the median of ``copies`` copies is the floor.
+
+    ``fresh``: ``np.copy`` into a new array instead, the floor the issue measured its ≈ 1,200×
+    against (≈ 3.3 ms then). Whether its pages fault in depends on malloc's settings: under the
+    server's 128 KiB mmap threshold every copy maps fresh pages, under glibc's default the heap
+    reuses the block and the copy is a warm one.
     """
     source, destination = np.ones((n, 2)), np.zeros((n, 2))
     np.copyto(destination, source)
     samples = []
     for _ in range(copies):
         start = time.process_time()
-        np.copyto(destination, source)
-        samples.append(time.process_time() - start)
-    return statistics.median(samples)
-
-
-def fresh_copy_floor(n: int = 10**6, copies: int = 101) -> float:
-    """CPU seconds of ``np.copy`` of a filled (n, 2) float64 array into a new one (median): the
-    floor the issue measured its ≈ 1,200× against (≈ 3.3 ms then). Whether its pages fault in
-    depends on malloc's settings: under the server's 128 KiB mmap threshold every copy maps
-    fresh pages, under glibc's default the heap reuses the block and the copy is a warm one."""
-    source = np.ones((n, 2))
-    samples = []
-    for _ in range(copies):
-        start = time.process_time()
-        source.copy()
+        if fresh:
+            source.copy()
+        else:
+            np.copyto(destination, source)
         samples.append(time.process_time() - start)
     return statistics.median(samples)
 
@@ -135,10 +129,10 @@ def checks(n: int = 10**6, rounds: int = 5) -> None:
     """
     ar = Float64()
     lo, hi = -(n // 2), n - n // 2 - 1
-    floor, fresh = copy_floor(n), fresh_copy_floor(n)
+    floor, fresh = copy_floor(n), copy_floor(n, fresh=True)
     print(
         f" D4b at {n:,} vertices against the copy floor (a warm (n, 2) float64 copy, median of "
-        f"101): {floor * 1e3:.3f} ms; the issue's own floor (np.copy, fresh_copy_floor): "
+        f"101): {floor * 1e3:.3f} ms; the issue's own floor (np.copy into a new array): "
         f"{fresh * 1e3:.3f} ms"
     )
     for method in ("closed-form", "construction"):

@@ -150,8 +150,10 @@ EXP_C3 = float.fromhex("0x1.555555555543cp-3")
 EXP_C4 = float.fromhex("0x1.55555cf172b91p-5")
 EXP_C5 = float.fromhex("0x1.1111167a4d017p-7")
 #: The exponent fields (biased) of 2^-54 and 512: between them (the usual range) no
-#: overflow, underflow or tiny argument needs care; outside it ``exp_into`` calls libm.
-EXP_TOP_LOW, EXP_TOP_SPAN = 0x3C9, 0x408 - 0x3C9
+#: overflow, underflow or tiny argument needs care; outside it ``exp_into`` calls libm. From
+#: 512 on exp may overflow (or has an infinite or NaN argument), which only the ufunc reports
+#: as numpy does (``exp_array``).
+EXP_TOP_LOW, EXP_TOP_HUGE = 0x3C9, 0x408
 #: Elements ``exp_into`` looks at together: all usual, the block goes to the vector loop.
 EXP_CHUNK = 512
 
@@ -176,10 +178,16 @@ EXP_TABLE = _exp_table()
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
+def _exponent_field(x: float) -> Any:
+    """The biased exponent of x (uint64; 0x7FF for inf and NaN)."""
+    return (float_bits(x) >> np.uint64(52)) & np.uint64(0x7FF)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
 def _usual(x: float) -> bool:
     """Whether 2^-54 ≤ |x| < 512 (``EXP_TOP_*``), where ``_exp_usual`` is libm's exp."""
-    top = (float_bits(x) >> np.uint64(52)) & np.uint64(0x7FF)
-    return bool((top - np.uint64(EXP_TOP_LOW)) < np.uint64(EXP_TOP_SPAN))
+    span = np.uint64(EXP_TOP_HUGE - EXP_TOP_LOW)
+    return bool((_exponent_field(x) - np.uint64(EXP_TOP_LOW)) < span)
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
@@ -198,15 +206,10 @@ def _exp_usual(x: float) -> float:
     return fma(scale, result, scale)
 
 
-#: The exponent field (biased) of 512: from it on, exp may overflow (or has an infinite or NaN
-#: argument), which only the ufunc reports as numpy does (``exp_array``).
-EXP_TOP_HUGE = 0x408
-
-
 @numba.njit(cache=True, inline="always", error_model="numpy")
 def _exp_huge(x: float) -> bool:
     """Whether |x| ≥ 512, inf or NaN (``EXP_TOP_HUGE``)."""
-    return bool(((float_bits(x) >> np.uint64(52)) & np.uint64(0x7FF)) >= np.uint64(EXP_TOP_HUGE))
+    return bool(_exponent_field(x) >= np.uint64(EXP_TOP_HUGE))
 
 
 @numba.njit(cache=True, error_model="numpy")
@@ -287,23 +290,18 @@ COSH_HALF_FROM, COSH_USUAL_BELOW = 22.0, 512.0
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
-def _cosh_usual(a: float) -> float:
-    """cosh as glibc computes it for COSH_EXP_LEAST ≤ a = |x| < 512, bit for bit."""
+def _cosh_usual(x: float) -> float:
+    """cosh x as glibc computes it for COSH_EXP_LEAST ≤ |x| < 512, bit for bit."""
+    a = abs(x)
     t = _exp_usual(a)
     return 0.5 * t + 0.5 / t if a < COSH_HALF_FROM else 0.5 * t
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
 def _cosh_in_range(x: float) -> bool:
-    """Whether COSH_EXP_LEAST ≤ |x| < 512, where ``_cosh_of`` is libm's cosh."""
+    """Whether COSH_EXP_LEAST ≤ |x| < 512, where ``_cosh_usual`` is libm's cosh."""
     a = abs(x)
     return bool((a >= COSH_EXP_LEAST) & (a < COSH_USUAL_BELOW))
-
-
-@numba.njit(cache=True, inline="always", error_model="numpy")
-def _cosh_of(x: float) -> float:
-    """``_cosh_usual`` of |x|."""
-    return _cosh_usual(abs(x))
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
@@ -324,7 +322,7 @@ def cosh_into(x: Any, out: Any) -> bool:
     ``x`` (``_in_chunks``: ``_cosh_usual`` where COSH_EXP_LEAST ≤ |x| < 512, libm's cosh for
     the others). Returns whether an |x| was 512 or more, infinite or NaN (what numpy may warn
     about: ``cosh_array``)."""
-    return _in_chunks(x, out, _cosh_in_range, _cosh_of, _libm_cosh, _cosh_huge)
+    return _in_chunks(x, out, _cosh_in_range, _cosh_usual, _libm_cosh, _cosh_huge)
 
 
 def cosh_array(x: Any) -> Any:

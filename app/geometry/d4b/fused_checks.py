@@ -296,15 +296,21 @@ RECIPROCAL_LOW, RECIPROCAL_HIGH = 2.0**-1000, 2.0**1000
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
+def _scan_step(largest: int, seen: int, value: float) -> Any:
+    """One value folded into ``_scan``'s two maxima of magnitudes' bit patterns
+    (``MAGNITUDE_BITS``): (the largest of the non-NaN, the largest of all; above ``INF_BITS``
+    once a NaN was seen). Integer maxima, which the compiler vectorizes."""
+    magnitude = np.int64(float_bits(value) & np.uint64(MAGNITUDE_BITS))
+    return max(largest, magnitude if magnitude <= INF_BITS else 0), max(seen, magnitude)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
 def _scan(values: Any, count: int, big: Any, nan: Any, at: int) -> None:
     """Fold max |v| of the non-NaN v of values[:count] (as bits: ``MAGNITUDE_BITS``) into big[at],
     and whether a v is NaN into nan[at]: ``_largest``'s result, found as integers."""
-    bits = values.view(np.int64)
     largest, seen = big[at], 0
     for j in range(count):
-        magnitude = bits[j] & MAGNITUDE_BITS
-        seen = max(seen, magnitude)
-        largest = max(largest, magnitude if magnitude <= INF_BITS else 0)
+        largest, seen = _scan_step(largest, seen, values[j])
     big[at] = largest
     nan[at] |= seen > INF_BITS
 
@@ -320,18 +326,6 @@ def _fold(values: Any, count: int, worst: Any, at: int) -> None:
     worst[at] = largest
 
 
-@numba.njit(cache=True, inline="always", error_model="numpy")
-def _magnitude(value: float) -> Any:
-    """|value|'s bit pattern (``MAGNITUDE_BITS``) as an int64, as ``_scan`` reads it."""
-    return np.int64(float_bits(value) & np.uint64(MAGNITUDE_BITS))
-
-
-@numba.njit(cache=True, inline="always", error_model="numpy")
-def _finite_part(magnitude: int) -> int:
-    """``_scan``'s contribution of one magnitude to the largest: itself, or 0 for a NaN."""
-    return magnitude if magnitude <= INF_BITS else 0
-
-
 @numba.njit(cache=True, error_model="numpy")
 def _first_pass(buffers: Any, edges: int, inner: int, big: Any, nan: Any) -> None:
     """Pass 1 on a block: the largest |Δ²y|, |l_k + l_{k+1}|, |A|, |l|, |A_k + A_{k+1}| into
@@ -340,21 +334,18 @@ def _first_pass(buffers: Any, edges: int, inner: int, big: Any, nan: Any) -> Non
     as the products with 1/w) at 10 + the positions of u's and v's scales.
 
     Two loops, one over the edges and one over the inner vertices, each computing its values
-    and folding their magnitudes' bits into ``_scan``'s two maxima at once (a loop of integer
-    maxima the compiler vectorizes), where ten ``_scan`` passes read ten stored columns: the
-    same values, so the same maxima."""
+    and folding them at once (``_scan_step``, as ``_scan`` folds a stored column): the same
+    values, so the same maxima."""
     x, y = buffers[0], buffers[1]
     area, edge, second = buffers[4], buffers[5], buffers[8]
     l_area, l_edge, l_u3, l_v3 = big[_S_AREA], big[_S_L], big[10 + _S_U3], big[10 + _S_V3]
     s_area = s_edge = s_u3 = s_v3 = 0
     for j in range(edges):
         by_weight = 1.0 / _weight(_area_size(x, y, j))
-        m_area, m_edge = _magnitude(area[j]), _magnitude(edge[j])
-        m_u3, m_v3 = _magnitude(area[j] * by_weight), _magnitude(edge[j] * by_weight)
-        s_area, s_edge = max(s_area, m_area), max(s_edge, m_edge)
-        s_u3, s_v3 = max(s_u3, m_u3), max(s_v3, m_v3)
-        l_area, l_edge = max(l_area, _finite_part(m_area)), max(l_edge, _finite_part(m_edge))
-        l_u3, l_v3 = max(l_u3, _finite_part(m_u3)), max(l_v3, _finite_part(m_v3))
+        l_area, s_area = _scan_step(l_area, s_area, area[j])
+        l_edge, s_edge = _scan_step(l_edge, s_edge, edge[j])
+        l_u3, s_u3 = _scan_step(l_u3, s_u3, area[j] * by_weight)
+        l_v3, s_v3 = _scan_step(l_v3, s_v3, edge[j] * by_weight)
     big[_S_AREA], big[_S_L], big[10 + _S_U3], big[10 + _S_V3] = l_area, l_edge, l_u3, l_v3
     nan[_S_AREA] |= s_area > INF_BITS
     nan[_S_L] |= s_edge > INF_BITS
@@ -366,15 +357,12 @@ def _first_pass(buffers: Any, edges: int, inner: int, big: Any, nan: Any) -> Non
     for j in range(inner):
         by_weight = 1.0 / _weight(_second_size(y, j))
         paired_l, paired_a = edge[j] + edge[j + 1], area[j] + area[j + 1]
-        m_second, m_pl, m_pa = _magnitude(second[j]), _magnitude(paired_l), _magnitude(paired_a)
-        m_u = _magnitude(second[j] * by_weight)
-        m_v1, m_v2 = _magnitude(paired_l * by_weight), _magnitude(paired_a * by_weight)
-        s_second, s_pl, s_pa = max(s_second, m_second), max(s_pl, m_pl), max(s_pa, m_pa)
-        s_u, s_v1, s_v2 = max(s_u, m_u), max(s_v1, m_v1), max(s_v2, m_v2)
-        l_second = max(l_second, _finite_part(m_second))
-        l_pl, l_pa = max(l_pl, _finite_part(m_pl)), max(l_pa, _finite_part(m_pa))
-        l_u, l_v1 = max(l_u, _finite_part(m_u)), max(l_v1, _finite_part(m_v1))
-        l_v2 = max(l_v2, _finite_part(m_v2))
+        l_second, s_second = _scan_step(l_second, s_second, second[j])
+        l_pl, s_pl = _scan_step(l_pl, s_pl, paired_l)
+        l_pa, s_pa = _scan_step(l_pa, s_pa, paired_a)
+        l_u, s_u = _scan_step(l_u, s_u, second[j] * by_weight)
+        l_v1, s_v1 = _scan_step(l_v1, s_v1, paired_l * by_weight)
+        l_v2, s_v2 = _scan_step(l_v2, s_v2, paired_a * by_weight)
     big[_S_SECOND], big[_S_PAIRED_L], big[_S_PAIRED_A] = l_second, l_pl, l_pa
     big[10 + _S_U], big[10 + _S_V1], big[10 + _S_V2] = l_u, l_v1, l_v2
     nan[_S_SECOND] |= s_second > INF_BITS
