@@ -17,6 +17,7 @@ from app.geometry.compiled import (
     INF_BITS,
     bits_value,
     fast_length,
+    flat_rows,
     kernel,
     largest_bits,
     length,
@@ -109,15 +110,15 @@ def _edge_length_block(x: Any, e: Any, start: int, count: int, target: Any) -> b
     length √(x² + y²), in a loop without branches (vectorized by the compiler; a function of
     its own, as the compiler vectorizes it there): whether every length took
     ``compiled.length``'s fast path and no residual is NaN (then they are its residuals)."""
-    xs, es = x[start : start + count + 1], e[start : start + count + 1]  # indices from 0
+    xs, es = flat_rows(x, start, count + 1), flat_rows(e, start, count + 1)  # from 0
     plain = True
     for j in range(count):
-        dx, dy = xs[j + 1, 0] - xs[j, 0], xs[j + 1, 1] - xs[j, 1]
-        fx, fy = es[j + 1, 0] - es[j, 0], es[j + 1, 1] - es[j, 1]
-        ex, plain_x = fast_length(dx, dy)
-        ee, plain_e = fast_length(fx, fy)
-        size = abs(xs[j + 1, 0]) + abs(xs[j + 1, 1]) + abs(xs[j, 0]) + abs(xs[j, 1])
-        size = size + abs(es[j + 1, 0]) + abs(es[j + 1, 1]) + abs(es[j, 0]) + abs(es[j, 1])
+        x0, y0, x1, y1 = xs[2 * j], xs[2 * j + 1], xs[2 * j + 2], xs[2 * j + 3]
+        e0, f0, e1, f1 = es[2 * j], es[2 * j + 1], es[2 * j + 2], es[2 * j + 3]
+        ex, plain_x = fast_length(x1 - x0, y1 - y0)
+        ee, plain_e = fast_length(e1 - e0, f1 - f0)
+        size = abs(x1) + abs(y1) + abs(x0) + abs(y0)
+        size = size + abs(e1) + abs(f1) + abs(e0) + abs(f0)
         residual = abs(ee - ex) / size
         target[j] = residual
         plain &= plain_x & plain_e & (residual == residual)
@@ -128,12 +129,12 @@ def _edge_length_block(x: Any, e: Any, start: int, count: int, target: Any) -> b
 def _distance_block(x: Any, e: Any, expected: float, start: int, count: int, target: Any) -> bool:
     """``distance_residuals`` at points start .. start + count − 1 into ``target`` as
     ``_edge_length_block``: whether every distance took the fast path and none is NaN."""
-    xs, es = x[start : start + count], e[start : start + count]
+    xs, es = flat_rows(x, start, count), flat_rows(e, start, count)
     plain = True
     for j in range(count):
-        dx, dy = xs[j, 0] - es[j, 0], xs[j, 1] - es[j, 1]
-        distance, plain_distance = fast_length(dx, dy)
-        size = abs(xs[j, 0]) + abs(xs[j, 1]) + abs(es[j, 0]) + abs(es[j, 1])
+        x0, y0, e0, f0 = xs[2 * j], xs[2 * j + 1], es[2 * j], es[2 * j + 1]
+        distance, plain_distance = fast_length(x0 - e0, y0 - f0)
+        size = abs(x0) + abs(y0) + abs(e0) + abs(f0)
         residual = abs(distance - expected) / size
         target[j] = residual
         plain &= plain_distance & (residual == residual)
@@ -165,13 +166,14 @@ def _edge_squares_block(x: Any, e: Any, start: int, count: int, target: Any) -> 
     ``target`` by ``_squared_residual`` (no square root, one division an edge), in a loop
     without branches (vectorized by the compiler): their largest bit pattern (above
     ``INF_BITS`` if one is off the conditions)."""
-    xs, es = x[start : start + count + 1], e[start : start + count + 1]  # indices from 0
+    xs, es = flat_rows(x, start, count + 1), flat_rows(e, start, count + 1)  # from 0
     for j in range(count):
-        dx, dy = xs[j + 1, 0] - xs[j, 0], xs[j + 1, 1] - xs[j, 1]
-        fx, fy = es[j + 1, 0] - es[j, 0], es[j + 1, 1] - es[j, 1]
+        x0, y0, x1, y1 = xs[2 * j], xs[2 * j + 1], xs[2 * j + 2], xs[2 * j + 3]
+        e0, f0, e1, f1 = es[2 * j], es[2 * j + 1], es[2 * j + 2], es[2 * j + 3]
+        dx, dy, fx, fy = x1 - x0, y1 - y0, e1 - e0, f1 - f0
         squared_x, squared_e = dx * dx + dy * dy, fx * fx + fy * fy
-        size = abs(xs[j + 1, 0]) + abs(xs[j + 1, 1]) + abs(xs[j, 0]) + abs(xs[j, 1])
-        size = size + abs(es[j + 1, 0]) + abs(es[j + 1, 1]) + abs(es[j, 0]) + abs(es[j, 1])
+        size = abs(x1) + abs(y1) + abs(x0) + abs(y0)
+        size = size + abs(e1) + abs(f1) + abs(e0) + abs(f0)
         target[j] = _squared_residual(squared_e - squared_x, squared_e + squared_x, size)
     return largest_bits(target, count)
 

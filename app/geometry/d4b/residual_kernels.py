@@ -39,6 +39,7 @@ from app.geometry.compiled import (
     MAGNITUDE_BITS,
     bits_value,
     fast_length,
+    flat_rows,
     kernel,
     largest_bits,
     length,
@@ -482,12 +483,13 @@ def _rotation_arguments(p: Any, axis: Any, start: int, stop: int, rows: Any) -> 
     (corrected), then b × c and b · c for c = x_{k+1} − p_k (printed), as
     ``checks._signed_angle`` writes them. C-contiguous ``(n, 2)`` points and rows: the loop has
     no branch, and the compiler vectorizes it (it reads the points' rows as pairs)."""
-    here, around = p[start:stop], axis[start - 1 : stop + 1]  # indices from 0: no wrapping
-    for j in range(stop - start):
-        px, py = here[j, 0], here[j, 1]
-        ax, ay = around[j, 0] - px, around[j, 1] - py
-        bx, by = around[j + 1, 0] - px, around[j + 1, 1] - py
-        cx, cy = around[j + 2, 0] - px, around[j + 2, 1] - py
+    count = stop - start
+    here, around = flat_rows(p, start, count), flat_rows(axis, start - 1, count + 2)  # from 0
+    for j in range(count):
+        px, py = here[2 * j], here[2 * j + 1]
+        ax, ay = around[2 * j] - px, around[2 * j + 1] - py
+        bx, by = around[2 * j + 2] - px, around[2 * j + 3] - py
+        cx, cy = around[2 * j + 4] - px, around[2 * j + 5] - py
         rows[0, j] = py
         rows[1, j] = ax * by - ay * bx
         rows[2, j] = ax * bx + ay * by
@@ -585,23 +587,24 @@ ROTATION_LOW, ROTATION_HIGH = 2.0**-900, 2.0**1000
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
 def _height_scale(here: Any, count: int) -> float:
-    """The power of two that scales w = p^y + i d in a block of the rotation angle: about
-    1/p^y at the block's first vertex (exact, so no division a row); inf for a subnormal first
-    height, 1 for an empty block."""
-    return math.ldexp(1.0, -math.frexp(here[0, 1])[1]) if count else 1.0
+    """The power of two that scales w = p^y + i d in a block of the rotation angle (its rows
+    ``here`` flat): about 1/p^y at the block's first vertex (exact, so no division a row); inf
+    for a subnormal first height, 1 for an empty block."""
+    return math.ldexp(1.0, -math.frexp(here[1])[1]) if count else 1.0
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
 def _rotation_products(
     u: float, v: float, here: Any, around: Any, j: int
 ) -> tuple[float, float, float, float, float, float]:
-    """(re, im) of z conj(w)² s² for the corrected and the printed angle at p = here[j]
-    (x_{k−1}, x_k, x_{k+1} = around[j], around[j + 1], around[j + 2]), u + iv = s w = s (p^y + i d)
-    for a power of two s, and the two dot products."""
-    px = here[j, 0]
-    ax, ay = around[j, 0] - px, around[j, 1] - here[j, 1]
-    bx, by = around[j + 1, 0] - px, around[j + 1, 1] - here[j, 1]
-    cx, cy = around[j + 2, 0] - px, around[j + 2, 1] - here[j, 1]
+    """(re, im) of z conj(w)² s² for the corrected and the printed angle at p = row j of
+    ``here`` (x_{k−1}, x_k, x_{k+1} = rows j, j + 1, j + 2 of ``around``; both flat,
+    ``compiled.flat_rows``), u + iv = s w = s (p^y + i d) for a power of two s, and the two dot
+    products."""
+    px, py = here[2 * j], here[2 * j + 1]
+    ax, ay = around[2 * j] - px, around[2 * j + 1] - py
+    bx, by = around[2 * j + 2] - px, around[2 * j + 3] - py
+    cx, cy = around[2 * j + 4] - px, around[2 * j + 5] - py
     cross, dot = ax * by - ay * bx, ax * bx + ay * by
     cross_printed, dot_printed = bx * cy - by * cx, bx * cx + by * cy
     real, imaginary = (u - v) * (u + v), 2 * u * v  # conj(s w)² = real − i imaginary
@@ -627,7 +630,7 @@ def _rotation_terms(d: float, p: Any, axis: Any, start: int, stop: int, rows: An
     with |2 atan2(d, p^y)| < π/2 the difference is within 3π/2 of 0, and so not 2π from a small
     one), ``ROTATION_OLD`` if a row is NaN, else ``ROTATION_WRAPPED``."""
     count = stop - start
-    here, around = p[start:stop], axis[start - 1 : stop + 1]  # indices from 0: no wrapping
+    here, around = flat_rows(p, start, count), flat_rows(axis, start - 1, count + 2)  # from 0
     size = abs(d)
     s = _height_scale(here, count)
     if not s < math.inf:  # a subnormal first height: its scale overflows
@@ -635,9 +638,9 @@ def _rotation_terms(d: float, p: Any, axis: Any, start: int, stop: int, rows: An
     v = d * s
     corrected, printed = rows[0], rows[1]
     for j in range(count):
-        u = here[j, 1] * s
+        u = here[2 * j + 1] * s
         re, im, re_printed, im_printed, _, _ = _rotation_products(u, v, here, around, j)
-        plain = (here[j, 1] > size) & (re > ROTATION_LOW) & (re < ROTATION_HIGH)
+        plain = (here[2 * j + 1] > size) & (re > ROTATION_LOW) & (re < ROTATION_HIGH)
         plain &= (re_printed > ROTATION_LOW) & (re_printed < ROTATION_HIGH)
         t, t_printed = abs(im / re), abs(im_printed / re_printed)
         corrected[j] = t if plain else math.nan
@@ -657,16 +660,16 @@ def _rotation_arguments_wrapped(
     (a · b > 0 and b · c > 0 too: both angles within π/2 of 0, their difference within π) and
     every im is finite."""
     count = stop - start
-    here, around = p[start:stop], axis[start - 1 : stop + 1]
+    here, around = flat_rows(p, start, count), flat_rows(axis, start - 1, count + 2)
     size = abs(d)
     s = _height_scale(here, count)
     v = d * s
     plain = True
     for j in range(count):
-        u = here[j, 1] * s
+        u = here[2 * j + 1] * s
         re, im, re_printed, im_printed, dot, dot_printed = _rotation_products(u, v, here, around, j)
         rows[0, j], rows[1, j], rows[2, j], rows[3, j] = re, im, re_printed, im_printed
-        plain &= (here[j, 1] > size) & (dot > 0) & (dot_printed > 0)
+        plain &= (here[2 * j + 1] > size) & (dot > 0) & (dot_printed > 0)
         plain &= (re > ROTATION_LOW) & (re < ROTATION_HIGH)
         plain &= (re_printed > ROTATION_LOW) & (re_printed < ROTATION_HIGH)
         plain &= (abs(im) < ROTATION_HIGH) & (abs(im_printed) < ROTATION_HIGH)
@@ -1126,12 +1129,6 @@ def _all(flags: Any, count: int) -> bool:
     return every
 
 
-@numba.njit(cache=True, inline="always", error_model="numpy")
-def _rows(flat: Any, start: int, count: int) -> Any:
-    """Rows start .. start + count − 1 of a C-contiguous (m, 2) array as its flat entries."""
-    return flat[2 * start : 2 * (start + count)]
-
-
 def _contiguous(points: Any) -> Any:
     """A float64 array, C-contiguous (the blocked passes read its rows as flat entries)."""
     return np.ascontiguousarray(points, dtype=np.float64)
@@ -1168,7 +1165,9 @@ def _largest_along_both_blocked(vectors: Any, points: Any) -> tuple[float, float
     largest, printed = 0.0, 0.0
     for start in range(0, count, EDGE_BLOCK):
         m = min(EDGE_BLOCK, count - start)
-        _along_both_block(_rows(v, start, m), _rows(q, start, m + 1), m, along, printed_rows)
+        _along_both_block(
+            flat_rows(v, start, m), flat_rows(q, start, m + 1), m, along, printed_rows
+        )
         top, top_printed = largest_bits(along, m), largest_bits(printed_rows, m)
         if top > INF_BITS or top_printed > INF_BITS:  # a NaN: the block row by row
             largest, printed = _along_both_rows(vectors, points, start, start + m, largest, printed)
@@ -1216,7 +1215,9 @@ def _largest_pole_inversion(gauss: Any, contact: Any, scale: Any, count: int, ti
     for start in range(0, count, EDGE_BLOCK):
         m = min(EDGE_BLOCK, count - start)
         s = scale[start : start + m]
-        _pole_inversion_block(_rows(g, start, m), _rows(c, start, m + 1), s, m, tiny, out, usual)
+        _pole_inversion_block(
+            flat_rows(g, start, m), flat_rows(c, start, m + 1), s, m, tiny, out, usual
+        )
         top = largest_bits(out, m)
         if top > INF_BITS or not _all(usual, m):
             largest = _pole_inversion_rows(gauss, contact, scale, start, start + m, tiny, largest)
@@ -1255,7 +1256,9 @@ def _largest_contact_rotation(contact: Any, normals: Any, scale: Any, count: int
     for start in range(0, count, EDGE_BLOCK):
         m = min(EDGE_BLOCK, count - start)
         s = scale[start : start + m]
-        _contact_rotation_block(_rows(c, start + 1, m), _rows(nrm, start, m), s, m, out, usual)
+        _contact_rotation_block(
+            flat_rows(c, start + 1, m), flat_rows(nrm, start, m), s, m, out, usual
+        )
         top = largest_bits(out, m)
         if top > INF_BITS or not _all(usual, m):
             largest = _contact_rotation_rows(contact, normals, scale, start, start + m, largest)
@@ -1290,7 +1293,7 @@ def _edge_resolution_blocked(points: Any) -> Any:
     usual = np.empty(EDGE_BLOCK, dtype=np.bool_)
     for start in range(0, count, EDGE_BLOCK):
         m = min(EDGE_BLOCK, count - start)
-        _edge_resolution_block(_rows(q, start, m + 1), m, out[start : start + m], usual)
+        _edge_resolution_block(flat_rows(q, start, m + 1), m, out[start : start + m], usual)
         if _all(usual, m):
             continue
         for k in range(start, start + m):
@@ -1381,8 +1384,8 @@ def _rotation_and_inversion_blocked(
         m = min(EDGE_BLOCK, count - start)
         out[0, 0] = previous
         _rotation_and_inversion_block(
-            _rows(q, start, m + 1), _rows(c, start, m + 1), _rows(nrm, start, m),
-            _rows(g, start, m), m, tiny, out, usual,
+            flat_rows(q, start, m + 1), flat_rows(c, start, m + 1), flat_rows(nrm, start, m),
+            flat_rows(g, start, m), m, tiny, out, usual,
         )  # fmt: skip
         top_rotation = largest_bits(out[1], m) if rotation else 0
         top_inversion = largest_bits(out[2], m) if inversion else 0
@@ -1468,7 +1471,7 @@ def _recursions_blocked(d: float, y: Any, q: Any, paired: bool, tiny: float) -> 
     for start in range(0, count, EDGE_BLOCK):
         m = min(EDGE_BLOCK, count - start)
         if paired and start + m + 3 <= n:
-            _recursion_block_pairs(d, _rows(q, start, m + 3), m, tiny, one, two)
+            _recursion_block_pairs(d, flat_rows(q, start, m + 3), m, tiny, one, two)
         else:
             rows = min(m + 3, n - start)
             _copy_vector(y, start, rows, heights)
@@ -1548,7 +1551,7 @@ def _two_step_printed_largest(
     for start in range(0, count, EDGE_BLOCK):
         m = min(EDGE_BLOCK, count - start)
         if paired:
-            _two_step_printed_block_pairs(d2, d4, _rows(q, start, m + 3), m, tiny, out)
+            _two_step_printed_block_pairs(d2, d4, flat_rows(q, start, m + 3), m, tiny, out)
         else:
             _copy_vector(y, start, m + 3, heights)
             _two_step_printed_block(d2, d4, heights, m, tiny, out)
@@ -1637,7 +1640,9 @@ def _largest_right_angle(tractrix: Any, axis: Any, p: Any, n: int) -> float:
     largest = 0.0
     for start in range(0, n, EDGE_BLOCK):
         m = min(EDGE_BLOCK, n - start)
-        _right_angle_block(_rows(t, start, m), _rows(a, start, m), _rows(q, start, m + 1), m, out)
+        _right_angle_block(
+            flat_rows(t, start, m), flat_rows(a, start, m), flat_rows(q, start, m + 1), m, out
+        )
         top = largest_bits(out, m)
         if top > INF_BITS:
             largest = _right_angle_rows(tractrix, axis, p, start, start + m, largest)
@@ -1681,13 +1686,13 @@ def _printed_ratios_blocked(p: Any) -> Any:
     for start in range(0, count, EDGE_BLOCK):
         m = min(EDGE_BLOCK, count - start)
         # the lengths of edges start .. start + m (edge k is p_k p_{k+1})
-        _edge_lengths_block(_rows(q, start, m + 2), m + 1, lengths, usual)
+        _edge_lengths_block(flat_rows(q, start, m + 2), m + 1, lengths, usual)
         if not _all(usual, m + 1):
             for j in range(m + 1):
                 if not usual[j]:
                     k = start + j
                     lengths[j] = length(p[k + 1, 0] - p[k, 0], p[k + 1, 1] - p[k, 1])
-        _ratios_block(_rows(q, start, m + 3), lengths, m, out[start : start + m])
+        _ratios_block(flat_rows(q, start, m + 3), lengths, m, out[start : start + m])
     return out
 
 
@@ -1734,7 +1739,9 @@ def _hypothesis_blocked(p: Any, n: int, d2: float) -> tuple[float, float]:
     largest, smallest = 0.0, math.inf
     for start in range(1, n, EDGE_BLOCK):
         m = min(EDGE_BLOCK, n - start)
-        top, low, plain = _hypothesis_block(_rows(q, start - 1, m + 1), m, d2, violations, ratios)
+        top, low, plain = _hypothesis_block(
+            flat_rows(q, start - 1, m + 1), m, d2, violations, ratios
+        )
         if top > INF_BITS or not plain:
             largest, smallest = _hypothesis_rows(p, start, start + m, d2, largest, smallest)
             continue
