@@ -41,6 +41,7 @@ from app.geometry.compiled import (
     _hypot_kernel,
     all_finite_vector,
     bits_value,
+    flat_rows,
     float_bits,
     hypot,
     kernel,
@@ -190,9 +191,10 @@ def _block_columns(p: Any, k0: int, buffers: Any, first: bool, lengths: Any) -> 
     edges = min(FIT_BLOCK + 1, max(n - 1 - k0, 0))
     inner = min(FIT_BLOCK, max(n - 2 - k0, 0))
     points = edges + 1 if edges else 0
+    rows = flat_rows(p, k0, points)  # C-contiguous p: the copy vectorizes
     for j in range(points):
-        x[j] = p[k0 + j, 0]
-        y[j] = p[k0 + j, 1]
+        x[j] = rows[2 * j]
+        y[j] = rows[2 * j + 1]
     if first:
         if _edge_columns(x, y, dx, dy, area, edge, edges):
             for j in range(edges):
@@ -492,7 +494,7 @@ def _refill(
 
 
 @kernel(
-    "UniTuple(float64, 4)(float64[:, :], int64, int64, float64[::1], float64[:, ::1], "
+    "UniTuple(float64, 4)(float64[:, ::1], int64, int64, float64[::1], float64[:, ::1], "
     "float64[::1], int64[::1], int64[:, ::1], float64[:, ::1])"
 )
 def _tree_sums(
@@ -738,16 +740,10 @@ def _summary_body(p: Any, lengths: Any) -> Any:
     return summary
 
 
-@kernel("float64[::1](float64[:, :], float64[::1])")
-def _summary_passes(p: Any, lengths: Any) -> Any:
-    """``_summary_body`` of a polygon of any layout."""
-    return _summary_body(p, lengths)
-
-
 @kernel("float64[::1](float64[:, ::1], float64[::1])")
-def _summary_passes_contiguous(p: Any, lengths: Any) -> Any:
-    """``_summary_body`` of a C-contiguous polygon (its coordinates read with fixed strides:
-    the blocks' copies ≈ 2 ns a vertex faster than through p's strides)."""
+def _summary_passes(p: Any, lengths: Any) -> Any:
+    """``_summary_body`` of a C-contiguous polygon (its blocks' copies read its rows flat:
+    ``compiled.flat_rows``)."""
     return _summary_body(p, lengths)
 
 
@@ -757,9 +753,7 @@ def fits_summary(p: Array) -> Any:
     ``_fits``'s columns and residuals (``_summary_passes``). A pure function of ``p`` that
     releases the GIL: ``d4b.checks`` runs it on a second thread at large m."""
     lengths = np.empty(max(len(p) - 1, 0))  # the edges' lengths, written by the first pass
-    if p.flags.c_contiguous:
-        return _summary_passes_contiguous(p, lengths)
-    return _summary_passes(p, lengths)
+    return _summary_passes(np.ascontiguousarray(p, dtype=np.float64), lengths)
 
 
 def fits_arrays(p: Array) -> tuple[Any, Any, Any, Any, Any]:

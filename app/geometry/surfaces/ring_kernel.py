@@ -22,6 +22,7 @@ from app.geometry.compiled import (
     MAGNITUDE_BITS,
     SQUARES_HIGH,
     SQUARES_LOW,
+    flat_rows,
     hypot,
     kernel,
     length3,
@@ -506,9 +507,10 @@ def _ring_largest(
     largest, largest_17 = 0.0, 0.0
     for start in range(0, faces, RING_BLOCK):
         count = min(RING_BLOCK, faces - start)
+        rows, images = flat_rows(meridian, start, count + 1), flat_rows(gauss, start, count + 1)
         for j in range(count + 1):  # the block's columns, contiguous
-            x[j], y[j] = meridian[start + j, 0], meridian[start + j, 1]
-            u[j], v[j] = gauss[start + j, 0], gauss[start + j, 1]
+            x[j], y[j] = rows[2 * j], rows[2 * j + 1]
+            u[j], v[j] = images[2 * j], images[2 * j + 1]
         _faces_unbranched(
             x,
             y,
