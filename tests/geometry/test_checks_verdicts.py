@@ -6,10 +6,11 @@ from decimal import Decimal
 
 import flint
 import numpy as np
+import pytest
 
 from app.geometry import balls
 from app.geometry.ball_arithmetic import Ball
-from app.geometry.checks import Statement, check_residuals
+from app.geometry.checks import IndexRange, Statement, check_residuals
 from app.geometry.curvature import planarity
 from app.geometry.precision import Float64, MultiPrecision
 
@@ -72,3 +73,24 @@ def test_on_balls_an_uncomputable_residual_shows_none_per_index() -> None:
     zero, missing, small = check.per_index.residuals
     assert zero == 0 and missing is None
     assert small is not None and Decimal("1e-40") <= small <= Decimal("1.000000001e-40")
+
+
+def test_an_index_range_is_the_arange_it_stands_for() -> None:
+    """``IndexRange`` (the indices a D4b check reads, made only when shown): its slices, its
+    length and its array are those of ``np.arange``; a check's indices per index are the same."""
+    indices, plain = IndexRange(-7, 12), np.arange(-7, 5, dtype=np.int64)
+    for rows in (slice(None), slice(3), slice(2, 9), slice(-4, None), slice(20, 30), slice(5, 2)):
+        assert np.array_equal(np.asarray(indices[rows]), plain[rows])
+        assert len(indices[rows]) == len(plain[rows])
+    assert np.asarray(indices).dtype == np.int64
+    with pytest.raises(ValueError, match="step 1"):
+        indices[::2]
+    values = np.array([0.0, np.inf, 1e-17])
+    for detail in (True, False):
+        lazy = check_residuals(STATEMENT, Float64(), IndexRange(4, 3), values, 1e-15, detail)
+        eager = check_residuals(STATEMENT, Float64(), np.arange(4, 7), values, 1e-15, detail)
+        assert (lazy.holds, lazy.residual, lazy.note) == (eager.holds, eager.residual, eager.note)
+        if detail:
+            assert lazy.per_index is not None and eager.per_index is not None
+            assert np.array_equal(lazy.per_index.indices, [4, 5, 6])
+            assert np.array_equal(lazy.per_index.indices, eager.per_index.indices)

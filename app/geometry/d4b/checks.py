@@ -42,6 +42,7 @@ from app.geometry.catalog.section5 import (
 from app.geometry.checks import (
     Check,
     Erratum,
+    IndexRange,
     Largest,
     Statement,
     check_residuals,
@@ -214,7 +215,7 @@ class _Context:
         self.ar, self.h, self.d, self.data, self.detail = ar, h, d, data, detail
         self.selection = selection
         self.n = data.vertices - 1
-        self.indices = np.arange(data.i_min, data.i_min + self.n + 1, dtype=np.int64)
+        self.indices = IndexRange(data.i_min, self.n + 1)  # an array only when shown
         self._pending_fits: Future[Any] | None = None
 
     @property

@@ -39,6 +39,7 @@ from app.geometry.catalog.section5 import (
 from app.geometry.checks import (
     Check,
     Erratum,
+    Indices,
     Largest,
     Statement,
     check_residuals,
@@ -211,13 +212,17 @@ def build(
             "closed_contact": lambda _: table.contact_points(i_min - 1, i_max + 1),
         }
     else:  # (on balls the indices' balls are not made: the table has its own)
-        i = ar.indices(i_min, i_max + 1)
+        # the indices made when a closed form is (a float64 computation of 10^6 vertices that
+        # compares in blocks, ``fused_checks``, never reads them: 8 MB not made)
+        def shown() -> Array:
+            return ar.indices(i_min, i_max + 1)
+
         closed = {
             "closed_tractrix_gauss": lambda _: kinematic_closed_forms.tractrix_gauss_image(
-                ar, h, d, i, shift
+                ar, h, d, shown(), shift
             ),
             "closed_gauss": lambda _: kinematic_closed_forms.circumscribed_gauss_image(
-                ar, h, d, i, shift
+                ar, h, d, shown(), shift
             ),
             "closed_contact": lambda _: kinematic_closed_forms.contact_points(
                 ar, h, d, ar.indices(i_min - 1, i_max + 1), shift
@@ -364,7 +369,7 @@ def evaluate(
     tractrix: Array,
     images: GaussImages,
     printed: Callable[[str], Array],
-    indices: np.ndarray[Any, np.dtype[np.int64]],
+    indices: Indices,
     n: int,
     local_tolerance: float,
     construction_tolerance: float,

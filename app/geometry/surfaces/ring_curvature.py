@@ -16,7 +16,7 @@ import numpy as np
 from app.geometry.catalog.section5 import (
     RING_EQUATION_17 as EQUATION_17,
 )
-from app.geometry.checks import Check, Largest, check_residuals, not_applicable
+from app.geometry.checks import Check, Indices, Largest, check_residuals, not_applicable
 from app.geometry.curvature import FaceCurvatures, face_curvatures, from_areas
 from app.geometry.polygon import magnitude
 from app.geometry.precision import Arithmetic, Array
@@ -117,7 +117,7 @@ def minimal_residuals(curvature: FaceCurvatures) -> Array:
 
 def equation_17_check(
     ar: Arithmetic,
-    indices: np.ndarray[Any, np.dtype[np.int64]],
+    indices: Indices,
     pairs: list[tuple[Array, Array]],
     tolerance: float,
     detail: bool,
@@ -207,7 +207,7 @@ def _maximum(arrays: list[Any]) -> Array:
 
 def equation_17_result(
     ar: Arithmetic,
-    indices: np.ndarray[Any, np.dtype[np.int64]],
+    indices: Indices,
     per_pair: list[Array] | list[Largest],
     skipped: int,
     tolerance: float,
