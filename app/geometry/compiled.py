@@ -322,3 +322,85 @@ def all_positive_lengths(vectors: Any) -> bool:
         if not hypot(vectors[k, 0], vectors[k, 1]) > 0:
             return False
     return True
+
+
+# --- numpy's pairwise summation written out: sums with the bits of ``np.sum`` ---
+
+#: The most entries numpy sums in one run of eight accumulators (``PW_BLOCKSIZE``): the leaves
+#: of its tree.
+PAIRWISE_LEAF = 128
+
+
+@kernel("float64(float64[::1], int64, int64)")
+def pairwise_sum(values: Any, start: int, count: int) -> float:
+    """numpy's pairwise summation of ``values[start : start + count]`` (``pairwise_sum`` of
+    numpy/_core/src/umath/loops_utils.h: eight accumulators up to ``PAIRWISE_LEAF`` entries,
+    halves at a multiple of 8 beyond), so that the sum has the bits of ``np.sum``."""
+    if count < 8:
+        total = 0.0
+        for k in range(count):
+            total += values[start + k]
+        return total
+    if count <= PAIRWISE_LEAF:
+        r0, r1 = values[start], values[start + 1]
+        r2, r3 = values[start + 2], values[start + 3]
+        r4, r5 = values[start + 4], values[start + 5]
+        r6, r7 = values[start + 6], values[start + 7]
+        end = count - count % 8
+        k = 8
+        while k < end:
+            at = start + k
+            r0 += values[at]
+            r1 += values[at + 1]
+            r2 += values[at + 2]
+            r3 += values[at + 3]
+            r4 += values[at + 4]
+            r5 += values[at + 5]
+            r6 += values[at + 6]
+            r7 += values[at + 7]
+            k += 8
+        total = ((r0 + r1) + (r2 + r3)) + ((r4 + r5) + (r6 + r7))
+        while k < count:
+            total += values[start + k]
+            k += 1
+        return total
+    half = count // 2
+    half -= half % 8
+    return pairwise_sum(values, start, half) + pairwise_sum(values, start + half, count - half)
+
+
+@kernel("float64(float64[::1])")
+def numpy_sum(values: Any) -> float:
+    """``np.sum`` of a contiguous float64 vector, bit for bit (0.0 for an empty one; the sum
+    starts from +0.0, so that a sum of −0.0 entries is +0.0 as numpy has it)."""
+    return 0.0 + pairwise_sum(values, 0, values.shape[0])
+
+
+@kernel("int64(int64, int64, int64[:, ::1], int64)")
+def pairwise_leaves(start: int, count: int, out: Any, at: int) -> int:
+    """The leaves of ``pairwise_sum``'s tree on start .. start + count − 1, left to right, as rows
+    (first, count) of ``out`` from row ``at``; returns the row after the last."""
+    if count <= PAIRWISE_LEAF:
+        out[at, 0], out[at, 1] = start, count
+        return at + 1
+    half = count // 2
+    half -= half % 8
+    at = pairwise_leaves(start, half, out, at)
+    return pairwise_leaves(start + half, count - half, out, at)
+
+
+@kernel("UniTuple(float64, 2)(int64, float64[:, ::1], int64[::1])")
+def leaf_tree(count: int, sums: Any, at: Any) -> tuple[float, float]:
+    """``pairwise_sum``'s tree over count terms whose leaves' sums are the rows of ``sums`` from
+    row at[0] on (advanced past those it reads)."""
+    if count == 0:
+        return 0.0, 0.0
+    if count <= PAIRWISE_LEAF:
+        row = at[0]
+        at[0] = row + 1
+        return sums[row, 0], sums[row, 1]
+    half = count // 2
+    half -= half % 8
+    a = leaf_tree(half, sums, at)
+    b = leaf_tree(count - half, sums, at)
+    return a[0] + b[0], a[1] + b[1]

@@ -17,7 +17,6 @@ from app.geometry.d4b.fused_checks import (
     fill_closed_forms,
     fits_arrays,
     fits_summary,
-    numpy_sum,
 )
 from app.geometry.precision import Float64
 from tests.geometry.d4b.test_closed_comparisons import close_residuals
@@ -30,16 +29,6 @@ def _same(a: object, b: object) -> bool:
         np.asarray(a, dtype=np.float64).view(np.int64),
         np.asarray(b, dtype=np.float64).view(np.int64),
     )
-
-
-@pytest.mark.parametrize("count", [*range(0, 40), 64, 127, 128, 129, 255, 256, 257, 1000, 4099])
-def test_numpy_sum_has_numpy_bits(count: int) -> None:
-    rng = np.random.default_rng(count)
-    for _ in range(5):
-        values = rng.standard_normal(count) * np.exp(rng.uniform(-30, 30, count))
-        assert _same(numpy_sum(values), np.sum(values))
-    zeros = np.full(count, -0.0)
-    assert _same(numpy_sum(zeros), np.sum(zeros))
 
 
 def _separate(p: np.ndarray) -> tuple[dict[str, conditions.ConditionFit], np.ndarray]:

@@ -19,7 +19,14 @@ import numba
 import numpy as np
 import pytest
 
-from app.geometry.compiled import KERNELS, hypot
+from app.geometry.compiled import (
+    KERNELS,
+    hypot,
+    leaf_tree,
+    numpy_sum,
+    pairwise_leaves,
+    pairwise_sum,
+)
 from app.geometry.d1.construction import construct as construct_d1
 from app.geometry.d3.construction import construct as construct_d3
 from app.geometry.d4a.construction import construct_sticks
@@ -239,3 +246,30 @@ def test_all_finite_of_float64_vectors_is_numpys() -> None:
         assert ar.all_finite(values) == bool(np.all(np.isfinite(values)))
     assert not ar.all_finite(np.array([[1.0, np.inf]]))
     assert ar.all_finite(2.5) and not ar.all_finite(float("nan"))
+
+
+def _same_bits(a: float, b: float) -> bool:
+    return np.float64(a).tobytes() == np.float64(b).tobytes()
+
+
+@pytest.mark.parametrize("count", [*range(0, 40), 64, 127, 128, 129, 255, 256, 257, 1000, 4099])
+def test_numpy_sum_has_numpy_bits(count: int) -> None:
+    """``numpy_sum``, and the sums of the leaves of numpy's tree combined in it
+    (``pairwise_leaves``, ``leaf_tree``: how the fits and erratum E2's ratios sum without
+    storing their terms), have the bits of ``np.sum``."""
+    rng = np.random.default_rng(count)
+    for _ in range(5):
+        values = rng.standard_normal(count) * np.exp(rng.uniform(-30, 30, count))
+        assert _same_bits(numpy_sum(values), np.sum(values))
+        leaves = np.empty((count // 64 + 2, 2), dtype=np.int64)
+        leaves = leaves[: pairwise_leaves(0, count, leaves, 0) if count else 0]
+        assert leaves[:, 1].sum() == count and np.all(leaves[:, 1] <= 128)
+        starts = np.cumsum(leaves[:, 1]) - leaves[:, 1]  # each leaf where the last ends
+        assert np.array_equal(leaves[:, 0], starts)
+        sums = np.zeros((len(leaves), 2))
+        for row, (first, size) in enumerate(leaves):
+            sums[row] = pairwise_sum(values, first, size), 1.0
+        tree = leaf_tree(count, sums, np.zeros(1, dtype=np.int64))
+        assert _same_bits(0.0 + tree[0], np.sum(values)) and tree[1] == len(leaves)
+    zeros = np.full(count, -0.0)
+    assert _same_bits(numpy_sum(zeros), np.sum(zeros))

@@ -47,7 +47,11 @@ from app.geometry.compiled import (
     kernel,
     largest_bits,
     largest_of_magnitudes,
+    leaf_tree,
     length,
+    numpy_sum,
+    pairwise_leaves,
+    pairwise_sum,
     running_largest,
 )
 from app.geometry.conditions import (
@@ -66,51 +70,6 @@ from app.geometry.surfaces import ring_kernel
 
 if TYPE_CHECKING:
     from app.geometry.d4b.discretization import D4bPolygons
-
-
-@kernel("float64(float64[::1], int64, int64)")
-def _pairwise(values: Any, start: int, count: int) -> float:
-    """numpy's pairwise summation of ``values[start : start + count]`` (``pairwise_sum`` of
-    numpy/_core/src/umath/loops_utils.h: eight accumulators up to 128 entries, halves at a
-    multiple of 8 beyond), so that the sum has the bits of ``np.sum``."""
-    if count < 8:
-        total = 0.0
-        for k in range(count):
-            total += values[start + k]
-        return total
-    if count <= 128:
-        r0, r1 = values[start], values[start + 1]
-        r2, r3 = values[start + 2], values[start + 3]
-        r4, r5 = values[start + 4], values[start + 5]
-        r6, r7 = values[start + 6], values[start + 7]
-        end = count - count % 8
-        k = 8
-        while k < end:
-            at = start + k
-            r0 += values[at]
-            r1 += values[at + 1]
-            r2 += values[at + 2]
-            r3 += values[at + 3]
-            r4 += values[at + 4]
-            r5 += values[at + 5]
-            r6 += values[at + 6]
-            r7 += values[at + 7]
-            k += 8
-        total = ((r0 + r1) + (r2 + r3)) + ((r4 + r5) + (r6 + r7))
-        while k < count:
-            total += values[start + k]
-            k += 1
-        return total
-    half = count // 2
-    half -= half % 8
-    return _pairwise(values, start, half) + _pairwise(values, start + half, count - half)
-
-
-@kernel("float64(float64[::1])")
-def numpy_sum(values: Any) -> float:
-    """``np.sum`` of a contiguous float64 vector, bit for bit (0.0 for an empty one; the sum
-    starts from +0.0, so that a sum of −0.0 entries is +0.0 as numpy has it)."""
-    return 0.0 + _pairwise(values, 0, values.shape[0])
 
 
 @numba.njit(cache=True, error_model="numpy")
@@ -461,19 +420,6 @@ def _fill_terms(p: Any, k0: int, scales: Any, buffers: Any, lengths: Any) -> tup
     return inner, edges
 
 
-@kernel("int64(int64, int64, int64[:, ::1], int64)")
-def _leaves(start: int, count: int, out: Any, at: int) -> int:
-    """The leaves of ``_pairwise``'s tree on start .. start + count − 1, left to right, as rows
-    (first, count) of ``out`` from row ``at``; returns the row after the last."""
-    if count <= 128:
-        out[at, 0], out[at, 1] = start, count
-        return at + 1
-    half = count // 2
-    half -= half % 8
-    at = _leaves(start, half, out, at)
-    return _leaves(start + half, count - half, out, at)
-
-
 @numba.njit(cache=True, error_model="numpy")
 def _refill(
     p: Any, k0: int, scales: Any, buffers: Any, lengths: Any, window: Any, leaves: Any, sums: Any
@@ -487,8 +433,8 @@ def _refill(
         first, count = leaves[at, 0], leaves[at, 1]
         if first < k0 or first + count > k0 + edges:
             break
-        sums[at, 0] = _pairwise(buffers[14], first - k0, count)
-        sums[at, 1] = _pairwise(buffers[15], first - k0, count)
+        sums[at, 0] = pairwise_sum(buffers[14], first - k0, count)
+        sums[at, 1] = pairwise_sum(buffers[15], first - k0, count)
         at += 1
     window[3] = at
 
@@ -508,7 +454,7 @@ def _tree_sums(
     leaves: Any,
     sums: Any,
 ) -> tuple[float, float, float, float]:
-    """numpy's pairwise sums (``_pairwise``'s tree) of (D1)'s and eq. (2)'s terms start ..
+    """numpy's pairwise sums (``pairwise_sum``'s tree) of (D1)'s and eq. (2)'s terms start ..
     start + count − 1 (``_fill_terms``). The leaves (≤ 128 terms) are read from the term
     buffers, refilled (``_refill``) from a leaf's first term, or from the first of (D3)'s
     leaves still to sum if that is before it, when the leaf is not in them (leaves come left to
@@ -522,31 +468,14 @@ def _tree_sums(
                 k0 = min(k0, leaves[window[3], 0])
             _refill(p, k0, scales, buffers, lengths, window, leaves, sums)
         at = start - window[0]
-        first, second = _pairwise(buffers[10], at, count), _pairwise(buffers[11], at, count)
-        third, fourth = _pairwise(buffers[12], at, count), _pairwise(buffers[13], at, count)
+        first, second = pairwise_sum(buffers[10], at, count), pairwise_sum(buffers[11], at, count)
+        third, fourth = pairwise_sum(buffers[12], at, count), pairwise_sum(buffers[13], at, count)
         return first, second, third, fourth
     half = count // 2
     half -= half % 8
     a = _tree_sums(p, start, half, scales, buffers, lengths, window, leaves, sums)
     b = _tree_sums(p, start + half, count - half, scales, buffers, lengths, window, leaves, sums)
     return a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3]
-
-
-@kernel("UniTuple(float64, 2)(int64, float64[:, ::1], int64[::1])")
-def _leaf_tree(count: int, sums: Any, at: Any) -> tuple[float, float]:
-    """``_pairwise``'s tree over count terms whose leaves' sums are the rows of ``sums`` from
-    row at[0] on (advanced past those it reads)."""
-    if count == 0:
-        return 0.0, 0.0
-    if count <= 128:
-        row = at[0]
-        at[0] = row + 1
-        return sums[row, 0], sums[row, 1]
-    half = count // 2
-    half -= half % 8
-    a = _leaf_tree(half, sums, at)
-    b = _leaf_tree(count - half, sums, at)
-    return a[0] + b[0], a[1] + b[1]
 
 
 #: A residual |lhs − c·rhs| / d whose numerator is below b·d, b = (1 − 2^-40) times the largest
@@ -682,7 +611,7 @@ def _summary_body(p: Any, lengths: Any) -> Any:
     over p in blocks of FIT_BLOCK edges, each computing the columns it reads from the
     coordinates (``_block_columns``, ``_area`` …) with the same operations on each entry as
     ``_fit_scales``, ``_fit_terms`` and ``_misfit_into``, the edges' lengths once (pass 1
-    writes them to ``lengths``, one entry an edge of p); the sums by ``_pairwise``'s tree
+    writes them to ``lengths``, one entry an edge of p); the sums by ``pairwise_sum``'s tree
     (``_tree_sums``), the largest values as ``largest_of_magnitudes``. Pass 2 (the scales of u
     and v) only where the terms cannot be taken by reciprocals (``_ratio_scales``): there every
     number has the bits of ``_fits``'s, elsewhere the constants are within a few ulp of their
@@ -708,13 +637,13 @@ def _summary_body(p: Any, lengths: Any) -> Any:
             scales[k] = _scale_of(big, nan, k)
     # pass 3: the sums, in numpy's order; (D3)'s leaves from the same blocks as the others'
     leaves = np.empty((edges // 64 + 2, 2), dtype=np.int64)
-    leaves = leaves[: _leaves(0, edges, leaves, 0) if edges else 0]
+    leaves = leaves[: pairwise_leaves(0, edges, leaves, 0) if edges else 0]
     sums = np.empty((leaves.shape[0], 2))
     window = np.zeros(4, dtype=np.int64)
     vv1, uv1, vv2, uv2 = _tree_sums(p, 0, inner, scales, buffers, lengths, window, leaves, sums)
     while window[3] < leaves.shape[0]:  # (D3)'s last leaves, past (D1)'s equations
         _refill(p, leaves[window[3], 0], scales, buffers, lengths, window, leaves, sums)
-    vv3, uv3 = _leaf_tree(edges, sums, np.zeros(1, dtype=np.int64))
+    vv3, uv3 = leaf_tree(edges, sums, np.zeros(1, dtype=np.int64))
     if by_reciprocals:
         c1, has1 = _ratio_constant(uv1, vv1, scales, _S_U, _S_V1)
         c3, has3 = _ratio_constant(uv3, vv3, scales, _S_U3, _S_V3)
@@ -1927,19 +1856,6 @@ SECTION_BELOW = residual_kernels.ROTATION_LIBM_BELOW
 ) = range(17)
 
 
-@numba.njit(cache=True, inline="always", error_model="numpy")
-def _low_high(values: Any) -> tuple[float, float]:
-    """``np.min`` and ``np.max`` of a non-empty vector (NaN for both if one is NaN)."""
-    low = high = values[0]
-    for k in range(values.shape[0]):
-        v = values[k]
-        if v != v:
-            return v, v
-        low = v if v < low else low
-        high = v if v > high else high
-    return low, high
-
-
 @numba.njit(cache=True, error_model="numpy")
 def _rotation_largest(d: float, p: Any, axis: Any, n: int) -> tuple[bool, float, float]:
     """``residual_kernels._rotation_angles`` without ``store``, block by block as it goes, for
@@ -2010,10 +1926,7 @@ def _section_numbers(
     out[HYPOTHESIS_LARGEST], out[HYPOTHESIS_SMALLEST] = residual_kernels._hypothesis_blocked(
         p, n, d_squared
     )
-    ratio = np.ascontiguousarray(residual_kernels._printed_ratios_blocked(p))
-    out[RATIO_COUNT] = ratio.shape[0]
-    out[RATIO_SUM] = 0.0 + _pairwise(ratio, 0, ratio.shape[0])
-    out[RATIO_LOW], out[RATIO_HIGH] = _low_high(ratio) if ratio.shape[0] else (0.0, 0.0)
+    out[RATIO_COUNT : RATIO_HIGH + 1] = residual_kernels._printed_ratio_summary(p)
     found, out[ROTATION_LARGEST], out[ROTATION_PRINTED] = _rotation_largest(d, p, axis, n)
     out[ROTATION_FOUND] = 1.0 if found else 0.0
     tiny = residual_kernels.TINY

@@ -37,12 +37,16 @@ from app.geometry.checks import Largest
 from app.geometry.compiled import (
     INF_BITS,
     MAGNITUDE_BITS,
+    PAIRWISE_LEAF,
     bits_value,
     fast_length,
     flat_rows,
     kernel,
     largest_bits,
+    leaf_tree,
     length,
+    pairwise_leaves,
+    pairwise_sum,
     running_largest,
 )
 from app.geometry.d4b.closed_forms import inversion_pole
@@ -1086,16 +1090,13 @@ def ratio_spread(p: Any, found: tuple[int, float, float, float] | None = None) -
     ``found``: the ratios' count, numpy's sum of them, their smallest and largest, computed
     already (``fused_checks.section_numbers``)."""
     if found is None:
-        ratio = _printed_ratios_blocked(_contiguous(p))
-        count = len(ratio)
-        if count < 2:
-            return None
-        total = np.sum(ratio)
-        low, high = float(np.min(ratio)), float(np.max(ratio))  # NaN if one is NaN
+        summary = _printed_ratio_summary(_contiguous(p))
+        count = int(summary[RATIO_COUNT])
+        total, low, high = (float(summary[k]) for k in (RATIO_SUM, RATIO_LOW, RATIO_HIGH))
     else:
         count, total, low, high = found
-        if count < 2:
-            return None
+    if count < 2:
+        return None
     mean = float(np.float64(total) / count)
     # |v − mean| / scale grows with v on either side of the mean (a rounded difference and a
     # quotient by a positive scale are monotone): its largest is at the smallest or the largest
@@ -1671,20 +1672,38 @@ def _ratios_block(q: Any, lengths: Any, count: int, out: Any) -> None:
         out[j] = second / (lengths[j] + lengths[j + 1])
 
 
-@kernel("float64[:](float64[:, ::1])")
-def _printed_ratios_blocked(p: Any) -> Any:
+#: Entries of ``_printed_ratio_summary``: the ratios' count, numpy's sum of them, their
+#: smallest and largest.
+RATIO_COUNT, RATIO_SUM, RATIO_LOW, RATIO_HIGH = 0, 1, 2, 3
+
+
+@kernel("float64[::1](float64[:, ::1])")
+def _printed_ratio_summary(p: Any) -> Any:
     """The proof's ratio Δ²p_i^y / (l'_i + l'_{i+1}), l'_i = |p_i − p_{i−1}| (erratum E2), as
-    ``checks._ratio_erratum`` computes it: entry k from p_k .. p_{k+3}, a block at a time, each
-    edge's length made once, by the square-root branch or, off it, ``compiled.length`` (within
-    2 ulp of libm's hypot, which numpy's evaluation takes: a printed residual, far from
-    rounding level, moves in its last bits)."""
+    ``checks._ratio_erratum`` computes it (entry k from p_k .. p_{k+3}), reduced to what
+    ``ratio_spread`` reads: (count, ``np.sum`` of the ratios, bit for bit, smallest, largest;
+    both NaN once a ratio is NaN), without an array of them.
+
+    The ratios are made a leaf of numpy's summation tree at a time (≤ 128 entries,
+    ``compiled.pairwise_leaves``), each edge's length by the square-root branch or, off it,
+    ``compiled.length`` (within 2 ulp of libm's hypot, which numpy's evaluation takes: a
+    printed residual, far from rounding level, moves in its last bits); each leaf summed as
+    numpy sums it and the leaves' sums combined in its tree (``compiled.leaf_tree``). Until
+    session 30 the pass stored the ratios (8 MB at 10^6 vertices) and numpy summed them."""
     count = max(p.shape[0] - 3, 0)
     q = p.reshape(-1)
-    out = np.empty(count)
-    lengths = np.empty(EDGE_BLOCK + 1)
-    usual = np.empty(EDGE_BLOCK + 1, dtype=np.bool_)
-    for start in range(0, count, EDGE_BLOCK):
-        m = min(EDGE_BLOCK, count - start)
+    out = np.zeros(4)
+    out[RATIO_COUNT] = count
+    if count == 0:
+        return out
+    leaves = np.empty((count // 64 + 2, 2), dtype=np.int64)
+    leaves = leaves[: pairwise_leaves(0, count, leaves, 0)]
+    sums = np.zeros((leaves.shape[0], 2))  # the leaves' sums in column 0 (``leaf_tree``)
+    lengths, usual = np.empty(PAIRWISE_LEAF + 1), np.empty(PAIRWISE_LEAF + 1, dtype=np.bool_)
+    ratios = np.empty(PAIRWISE_LEAF)
+    low, high, nan = math.inf, -math.inf, False
+    for leaf in range(leaves.shape[0]):
+        start, m = leaves[leaf, 0], leaves[leaf, 1]
         # the lengths of edges start .. start + m (edge k is p_k p_{k+1})
         _edge_lengths_block(flat_rows(q, start, m + 2), m + 1, lengths, usual)
         if not _all(usual, m + 1):
@@ -1692,7 +1711,15 @@ def _printed_ratios_blocked(p: Any) -> Any:
                 if not usual[j]:
                     k = start + j
                     lengths[j] = length(p[k + 1, 0] - p[k, 0], p[k + 1, 1] - p[k, 1])
-        _ratios_block(flat_rows(q, start, m + 3), lengths, m, out[start : start + m])
+        _ratios_block(flat_rows(q, start, m + 3), lengths, m, ratios)
+        sums[leaf, 0] = pairwise_sum(ratios, 0, m)
+        for j in range(m):
+            value = ratios[j]
+            nan |= value != value
+            low = value if value < low else low
+            high = value if value > high else high
+    out[RATIO_SUM] = 0.0 + leaf_tree(count, sums, np.zeros(1, dtype=np.int64))[0]
+    out[RATIO_LOW], out[RATIO_HIGH] = (math.nan, math.nan) if nan else (low, high)  # np.min's
     return out
 
 

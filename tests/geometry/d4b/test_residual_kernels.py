@@ -9,6 +9,7 @@ from app.geometry import checks, nikolaides
 from app.geometry.checks import relative_difference
 from app.geometry.d4b import closed_forms, discretization as d4b, residual_kernels
 from app.geometry.precision import Float64, MultiPrecision, stack_points
+from tests.geometry.d4b.test_residual_blocks import ref_printed_ratios
 
 
 def polygons(seed: int) -> list[d4b.D4bPolygons]:
@@ -416,9 +417,7 @@ def test_ratio_spread_from_the_extremes_equals_the_pass_over_every_ratio(seed: i
     rng = np.random.default_rng(seed)
     for data in polygons(seed):
         for p in (data.p, perturbed(data, seed)[0], data.p * rng.uniform(0.5, 2, data.p.shape)):
-            ratio = residual_kernels._printed_ratios_blocked(
-                np.ascontiguousarray(p, dtype=np.float64)
-            )
+            ratio = ref_printed_ratios(np.ascontiguousarray(p, dtype=np.float64))
             if len(ratio) < 2:
                 continue
             mean = float(np.sum(ratio) / len(ratio))
