@@ -1677,6 +1677,39 @@ def _ratios_block(q: Any, lengths: Any, count: int, out: Any) -> None:
 RATIO_COUNT, RATIO_SUM, RATIO_LOW, RATIO_HIGH = 0, 1, 2, 3
 
 
+#: The bits below the sign: xor'ed into a negative float's pattern, they make the patterns of
+#: all floats ordered as the numbers (``_hypothesis_block``, ``_ordered_extremes``).
+_ORDER_BITS = 0x7FFF_FFFF_FFFF_FFFF
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _ordered_key(pattern: int) -> int:
+    """A float's bit pattern as an ordered integer: its lower bits flipped if negative, so that
+    the integers order as the numbers (−0 below +0)."""
+    return pattern ^ ((pattern >> 63) & _ORDER_BITS)
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _ordered_extremes(values: Any, count: int, low: int, high: int) -> tuple[int, int, bool]:
+    """The smallest and largest of values[:count] folded into ``low`` and ``high`` as ordered
+    integers (a float's pattern, its lower bits flipped if negative: ordered as the numbers,
+    −0 below +0; integer extremes, which the compiler vectorizes) and whether one is NaN."""
+    bits = values.view(np.int64)
+    nan = False
+    for k in range(count):
+        key = _ordered_key(bits[k])
+        low = key if key < low else low
+        high = key if key > high else high
+        nan |= values[k] != values[k]
+    return low, high, nan
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _ordered_value(key: int) -> float:
+    """The float of an ordered integer (``_ordered_key``: the flip undoes itself)."""
+    return bits_value(_ordered_key(key))
+
+
 @kernel("float64[::1](float64[:, ::1])")
 def _printed_ratio_summary(p: Any) -> Any:
     """The proof's ratio Δ²p_i^y / (l'_i + l'_{i+1}), l'_i = |p_i − p_{i−1}| (erratum E2), as
@@ -1684,18 +1717,48 @@ def _printed_ratio_summary(p: Any) -> Any:
     ``ratio_spread`` reads: (count, ``np.sum`` of the ratios, bit for bit, smallest, largest;
     both NaN once a ratio is NaN), without an array of them.
 
-    The ratios are made a leaf of numpy's summation tree at a time (≤ 128 entries,
-    ``compiled.pairwise_leaves``), each edge's length by the square-root branch or, off it,
-    ``compiled.length`` (within 2 ulp of libm's hypot, which numpy's evaluation takes: a
-    printed residual, far from rounding level, moves in its last bits); each leaf summed as
-    numpy sums it and the leaves' sums combined in its tree (``compiled.leaf_tree``). Until
-    session 30 the pass stored the ratios (8 MB at 10^6 vertices) and numpy summed them."""
+    The ratios are made in blocks of whole leaves of numpy's summation tree (≤ ``EDGE_BLOCK``
+    entries; leaves of ≤ 128, ``compiled.pairwise_leaves``), each edge's length by the
+    square-root branch or, off it, ``compiled.length`` (within 2 ulp of libm's hypot, which
+    numpy's evaluation takes: a printed residual, far from rounding level, moves in its last
+    bits); each leaf is summed as numpy sums it and the leaves' sums combined in its tree
+    (``compiled.leaf_tree``). Until session 30 the pass stored the ratios (8 MB at 10^6
+    vertices) and numpy summed them and took their extremes."""
     count = max(p.shape[0] - 3, 0)
     q = p.reshape(-1)
     out = np.zeros(4)
     out[RATIO_COUNT] = count
     if count == 0:
         return out
+    leaves = np.empty((count // 64 + 2, 2), dtype=np.int64)
+    leaves = leaves[: pairwise_leaves(0, count, leaves, 0)]
+    sums = np.zeros((leaves.shape[0], 2))  # the leaves' sums in column 0 (``leaf_tree``)
+    lengths, usual = np.empty(EDGE_BLOCK + 1), np.empty(EDGE_BLOCK + 1, dtype=np.bool_)
+    ratios = np.empty(EDGE_BLOCK)
+    low, high, nan = _ORDER_BITS, -_ORDER_BITS - 1, False
+    leaf = 0
+    while leaf < leaves.shape[0]:
+        start, end, m = leaves[leaf, 0], leaf, 0
+        while end < leaves.shape[0] and m + leaves[end, 1] <= EDGE_BLOCK:  # whole leaves
+            m += leaves[end, 1]
+            end += 1
+        # the lengths of edges start .. start + m (edge k is p_k p_{k+1})
+        _edge_lengths_block(flat_rows(q, start, m + 2), m + 1, lengths, usual)
+        if not _all(usual, m + 1):
+            for j in range(m + 1):
+                if not usual[j]:
+                    k = start + j
+                    lengths[j] = length(p[k + 1, 0] - p[k, 0], p[k + 1, 1] - p[k, 1])
+        _ratios_block(flat_rows(q, start, m + 3), lengths, m, ratios)
+        for row in range(leaf, end):
+            sums[row, 0] = pairwise_sum(ratios, leaves[row, 0] - start, leaves[row, 1])
+        low, high, seen = _ordered_extremes(ratios, m, low, high)
+        nan |= seen
+        leaf = end
+    out[RATIO_SUM] = 0.0 + leaf_tree(count, sums, np.zeros(1, dtype=np.int64))[0]
+    extremes = (math.nan, math.nan) if nan else (_ordered_value(low), _ordered_value(high))
+    out[RATIO_LOW], out[RATIO_HIGH] = extremes  # NaN both once one is NaN, as np.min's
+    return out
     leaves = np.empty((count // 64 + 2, 2), dtype=np.int64)
     leaves = leaves[: pairwise_leaves(0, count, leaves, 0)]
     sums = np.zeros((leaves.shape[0], 2))  # the leaves' sums in column 0 (``leaf_tree``)
@@ -1726,11 +1789,6 @@ def _printed_ratio_summary(p: Any) -> Any:
 # Theorem 4's hypothesis (``_hypothesis_rows``)
 
 
-#: The bits below the sign: xor'ed into a negative float's pattern, they make the patterns of
-#: all floats ordered as the numbers (``_hypothesis_block``).
-_ORDER_BITS = 0x7FFF_FFFF_FFFF_FFFF
-
-
 @numba.njit(cache=True, error_model="numpy")
 def _hypothesis_block(
     q: Any, count: int, d2: float, violations: Any, ratios: Any
@@ -1750,8 +1808,7 @@ def _hypothesis_block(
     low = _ORDER_BITS  # the largest int64: above every key
     plain = True
     for k in range(count):
-        pattern = bits[k]
-        key = pattern ^ ((pattern >> 63) & _ORDER_BITS)
+        key = _ordered_key(bits[k])
         low = key if key < low else low
         ratio = ratios[k]
         plain &= (ratio == ratio) & (ratio != 0.0)
@@ -1773,7 +1830,7 @@ def _hypothesis_blocked(p: Any, n: int, d2: float) -> tuple[float, float]:
             largest, smallest = _hypothesis_rows(p, start, start + m, d2, largest, smallest)
             continue
         largest = running_largest(bits_value(top), largest)
-        ratio = bits_value(low ^ ((low >> 63) & _ORDER_BITS))
+        ratio = _ordered_value(low)
         if smallest == smallest and ratio < smallest:
             smallest = ratio
     return largest, smallest
