@@ -1413,6 +1413,16 @@ def _copy_vector(values: Any, start: int, count: int, out: Any) -> None:
         out[j] = segment[j]
 
 
+@numba.njit(cache=True, error_model="numpy")
+def _copy_heights(q: Any, start: int, count: int, out: Any) -> None:
+    """The heights y_start .. y_(start + count − 1) of flat rows q (y_k at 2k + 1) into out.
+    A copy the compiler vectorizes (it deinterleaves with shuffles): the blocks that read the
+    heights in place, at a stride of two, took gathers (issue 13, session 30)."""
+    rows = flat_rows(q, start, count)
+    for j in range(count):
+        out[j] = rows[2 * j + 1]
+
+
 # (13) and its two-step form (``_recursions``), the printed two-step form (erratum E3)
 
 
@@ -1448,22 +1458,13 @@ def _recursion_block(d: float, y: Any, count: int, tiny: float, one: Any, two: A
         one[k], two[k] = _recursion_pair(d, y[k], y[k + 1], y[k + 2], y[k + 3], tiny)
 
 
-@numba.njit(cache=True, error_model="numpy")
-def _recursion_block_pairs(d: float, q: Any, count: int, tiny: float, one: Any, two: Any) -> None:
-    """``_recursion_block`` on the heights of flat points (y_k at 2k + 1, count + 3 rows)."""
-    for k in range(count):
-        one[k], two[k] = _recursion_pair(
-            d, q[2 * k + 1], q[2 * k + 3], q[2 * k + 5], q[2 * k + 7], tiny
-        )
-
-
 @numba.njit(cache=True, inline="always", error_model="numpy")
 def _recursions_blocked(d: float, y: Any, q: Any, paired: bool, tiny: float) -> tuple[float, float]:
     """``_recursions``' two largest values (``store`` false) a block at a time: the same
-    numbers. The heights y are read as the odd entries of the flat rows q if ``paired`` (y the
-    second column of C-contiguous (n, 2) rows), else, and for the last block, from a
-    contiguous copy, which holds 1.0 past the last height (the two-step residual of the last
-    row of (13) is computed there and left out)."""
+    numbers. Each block's heights are copied to a contiguous vector, from the odd entries of
+    the flat rows q if ``paired`` (y the second column of C-contiguous (n, 2) rows, read by
+    ``_copy_heights``), else from y; past the last height it holds 1.0 (the two-step residual
+    of the last row of (13) is computed there and left out)."""
     n = y.shape[0]
     count = max(n - 2, 0)
     heights = np.ones(EDGE_BLOCK + 3)
@@ -1471,13 +1472,13 @@ def _recursions_blocked(d: float, y: Any, q: Any, paired: bool, tiny: float) -> 
     largest_one, largest_two = 0.0, 0.0
     for start in range(0, count, EDGE_BLOCK):
         m = min(EDGE_BLOCK, count - start)
-        if paired and start + m + 3 <= n:
-            _recursion_block_pairs(d, flat_rows(q, start, m + 3), m, tiny, one, two)
+        rows = min(m + 3, n - start)
+        if paired:
+            _copy_heights(q, start, rows, heights)
         else:
-            rows = min(m + 3, n - start)
             _copy_vector(y, start, rows, heights)
-            heights[rows:] = 1.0
-            _recursion_block(d, heights, m, tiny, one, two)
+        heights[rows:] = 1.0
+        _recursion_block(d, heights, m, tiny, one, two)
         m_two = min(m, max(n - 3 - start, 0))
         top_one, top_two = largest_bits(one, m), largest_bits(two, m_two)
         if top_one > INF_BITS or top_two > INF_BITS:
@@ -1530,15 +1531,6 @@ def _two_step_printed_block(
         out[k] = _two_step_printed_pair(d2, d4, y[k], y[k + 1], y[k + 3], tiny)
 
 
-@numba.njit(cache=True, error_model="numpy")
-def _two_step_printed_block_pairs(
-    d2: float, d4: float, q: Any, count: int, tiny: float, out: Any
-) -> None:
-    """``_two_step_printed_block`` on the heights of flat points (y_k at 2k + 1)."""
-    for k in range(count):
-        out[k] = _two_step_printed_pair(d2, d4, q[2 * k + 1], q[2 * k + 3], q[2 * k + 7], tiny)
-
-
 @numba.njit(cache=True, inline="always", error_model="numpy")
 def _two_step_printed_largest(
     d2: float, d4: float, y: Any, q: Any, paired: bool, tiny: float
@@ -1552,10 +1544,10 @@ def _two_step_printed_largest(
     for start in range(0, count, EDGE_BLOCK):
         m = min(EDGE_BLOCK, count - start)
         if paired:
-            _two_step_printed_block_pairs(d2, d4, flat_rows(q, start, m + 3), m, tiny, out)
+            _copy_heights(q, start, m + 3, heights)
         else:
             _copy_vector(y, start, m + 3, heights)
-            _two_step_printed_block(d2, d4, heights, m, tiny, out)
+        _two_step_printed_block(d2, d4, heights, m, tiny, out)
         top = largest_bits(out, m)
         if top > INF_BITS:
             for k in range(start, start + m):
