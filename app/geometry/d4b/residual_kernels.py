@@ -37,7 +37,6 @@ from app.geometry.checks import Largest
 from app.geometry.compiled import (
     INF_BITS,
     MAGNITUDE_BITS,
-    PAIRWISE_LEAF,
     bits_value,
     fast_length,
     flat_rows,
@@ -1750,31 +1749,6 @@ def _printed_ratio_summary(p: Any) -> Any:
     out[RATIO_SUM] = 0.0 + leaf_tree(count, sums, np.zeros(1, dtype=np.int64))[0]
     extremes = (math.nan, math.nan) if nan else (_ordered_value(low), _ordered_value(high))
     out[RATIO_LOW], out[RATIO_HIGH] = extremes  # NaN both once one is NaN, as np.min's
-    return out
-    leaves = np.empty((count // 64 + 2, 2), dtype=np.int64)
-    leaves = leaves[: pairwise_leaves(0, count, leaves, 0)]
-    sums = np.zeros((leaves.shape[0], 2))  # the leaves' sums in column 0 (``leaf_tree``)
-    lengths, usual = np.empty(PAIRWISE_LEAF + 1), np.empty(PAIRWISE_LEAF + 1, dtype=np.bool_)
-    ratios = np.empty(PAIRWISE_LEAF)
-    low, high, nan = math.inf, -math.inf, False
-    for leaf in range(leaves.shape[0]):
-        start, m = leaves[leaf, 0], leaves[leaf, 1]
-        # the lengths of edges start .. start + m (edge k is p_k p_{k+1})
-        _edge_lengths_block(flat_rows(q, start, m + 2), m + 1, lengths, usual)
-        if not _all(usual, m + 1):
-            for j in range(m + 1):
-                if not usual[j]:
-                    k = start + j
-                    lengths[j] = length(p[k + 1, 0] - p[k, 0], p[k + 1, 1] - p[k, 1])
-        _ratios_block(flat_rows(q, start, m + 3), lengths, m, ratios)
-        sums[leaf, 0] = pairwise_sum(ratios, 0, m)
-        for j in range(m):
-            value = ratios[j]
-            nan |= value != value
-            low = value if value < low else low
-            high = value if value > high else high
-    out[RATIO_SUM] = 0.0 + leaf_tree(count, sums, np.zeros(1, dtype=np.int64))[0]
-    out[RATIO_LOW], out[RATIO_HIGH] = (math.nan, math.nan) if nan else (low, high)  # np.min's
     return out
 
 
