@@ -421,22 +421,18 @@ def evaluate(
                 "method=closed-form: the Gauss image was not constructed to compare",
             )
         erratum = make_erratum()
-        scale = None if make_scale is None else make_scale()
         fused = image_comparisons()
         if fused is not None:  # made and compared a block at a time (``image_comparisons``)
             largest = fused[IMAGE_COMPARISONS.index(statement.id.removeprefix("equation-"))]
-            return check(
-                statement,
-                Largest(
-                    largest,
-                    n,
-                    lambda: residual_kernels.largest_scaled_relative_point_difference(
-                        built[:n], closed_form()[:n], None if scale is None else scale[:n]
-                    ).residuals(),
-                ),
-                tolerance,
-                erratum,
-            )
+
+            def rows() -> Array:  # per index only when shown: the scales' array made then
+                factor = None if make_scale is None else make_scale()[:n]
+                return residual_kernels.largest_scaled_relative_point_difference(
+                    built[:n], closed_form()[:n], factor
+                ).residuals()
+
+            return check(statement, Largest(largest, n, rows), tolerance, erratum)
+        scale = None if make_scale is None else make_scale()
         pair = ball_pair(statement.id.removeprefix("equation-"))
         if pair is not None:  # balls: with the printed form, from the table (``ball_pair``)
             return check(statement, pair[0], tolerance, erratum)
@@ -736,6 +732,19 @@ def evaluate(
             if len(nt()) < n or len(c()) < n + 1 or len(m()) < n:
                 return None
             chosen = [wanted(s.id) for s in (EQUATION_18, EQUATION_19, EQUATION_20)]
+            # the scales of (19) and (20) made a block at a time from p, unless their arrays
+            # are made already (8 MB each at 10^6 vertices, a fresh mapping each in the server)
+            before = images.contact_edges_before
+            arrays = "resolution" in memo or numbers() is not None  # made already, or at once
+            scales: tuple[Array | None, Array | None, tuple[Array, float] | None]
+            if not arrays and before is not None and len(before) == 2 and n < len(p):
+                scales = None, None, (p, float(_edge_resolution(ar, before)[0]))
+            else:
+                scales = (
+                    resolution() if chosen[1] else None,
+                    pole_resolution() if chosen[2] else None,
+                    None,
+                )
             return fused_checks.closed_image_comparisons(
                 ar,
                 printed.h,
@@ -747,8 +756,7 @@ def evaluate(
                 nt(),
                 c(),
                 m(),
-                resolution() if chosen[1] else None,
-                pole_resolution() if chosen[2] else None,
+                *scales,
             )
 
         return shared("image comparisons", make)
@@ -784,15 +792,17 @@ def evaluate(
     def one_pass() -> tuple[float, float] | None:
         """Float64 without ``detail``: (19) as a rotation and (20) by inversion, the largest
         of each (those selected), from one pass that makes the resolutions as it goes; None
-        where the resolutions' arrays are made anyway (made already, or the comparisons with
-        the constructed images' closed forms take them) or the lengths do not fit."""
+        where the resolutions' arrays are made already, the fused numbers hold both
+        (``numbers``), or the lengths do not fit. The comparisons with the constructed images'
+        closed forms make their scales a block at a time as well (``image_comparisons``), so
+        no (n,) array of resolutions is made (issue 13, session 30)."""
 
         def make() -> tuple[float, float] | None:
             if ar.mode != "float64" or detail or n <= 0 or "resolution" in memo:
                 return None
-            before = images.contact_edges_before
-            if images.constructed and (wanted(EQUATION_19.id) or wanted(EQUATION_20.id)):
+            if numbers() is not None:  # below SECTION_BELOW: with the other numbers already
                 return None
+            before = images.contact_edges_before
             if before is None or len(before) != 2 or len(p) <= n or len(c()) <= n:
                 return None
             if len(nt()) < n or len(m()) < n:

@@ -1390,13 +1390,14 @@ def _image_rows(
     contact_scale: Any,
     gauss_scale: Any,
     offset: int,
+    scale_offset: int,
     tiny: float,
     wanted: Any,
     largest: Any,
 ) -> None:
     """The old row loop of ``_closed_image_block`` on ``rows`` rows of a block (cosh and tanh of
     (19)'s arguments at ``[:count + 1]``, of (20)'s at ``[count + 1:]``): lengths with hypot's
-    branch, NaN first."""
+    branch, NaN first. Row ``at``'s scales are at ``at − scale_offset``."""
     for k in range(rows):
         at = offset + k
         # n_i = (sech t, tanh t) and ñ_i = (−tanh t, sech t), t = (i + τ)L; m_i
@@ -1417,7 +1418,7 @@ def _image_rows(
                 size = length(cx, cy)
                 size = size if size > tiny else tiny
                 value = length(contact[2 * at + 2] - cx, contact[2 * at + 3] - cy) / size
-                largest[1] = running_largest(value * contact_scale[at], largest[1])
+                largest[1] = running_largest(value * contact_scale[at - scale_offset], largest[1])
             if wanted[4]:  # (19) printed: (tanh t, sech t)
                 x, y = -cx, cy
                 size = length(x, y)
@@ -1429,7 +1430,7 @@ def _image_rows(
             size = length(mx, my)
             size = size if size > tiny else tiny
             value = length(gauss[2 * at] - mx, gauss[2 * at + 1] - my) / size
-            largest[2] = running_largest(value * gauss_scale[at], largest[2])
+            largest[2] = running_largest(value * gauss_scale[at - scale_offset], largest[2])
         if wanted[5]:  # (20) printed, from n_i: ((h tanh t − d), h sech t)/(h + d tanh t)
             denominator = h + d * th
             x, y = (h * th - d) / denominator, h * sech / denominator
@@ -1441,7 +1442,7 @@ def _image_rows(
 
 @kernel(
     "boolean(int64, float64[::1], float64[::1], float64, float64, float64, float64[::1], "
-    "float64[::1], float64[::1], float64[::1], float64[::1], int64, int64, float64, "
+    "float64[::1], float64[::1], float64[::1], float64[::1], int64, int64, int64, float64, "
     "boolean[::1], float64[::1], float64[:, ::1])"
 )
 def _closed_image_block(
@@ -1457,6 +1458,7 @@ def _closed_image_block(
     contact_scale: Any,
     gauss_scale: Any,
     offset: int,
+    scale_offset: int,
     n: int,
     tiny: float,
     wanted: Any,
@@ -1510,7 +1512,8 @@ def _closed_image_block(
     if wanted[1] or wanted[4]:  # ñ_i at row k + 1 of the contact points (from i_min − 1)
         block_c = contact[2 * offset + 2 : 2 * (offset + rows) + 2]
     if wanted[1]:
-        values, block_scale = scratch[1], contact_scale[offset : offset + rows]
+        at = offset - scale_offset  # where the block's scales start
+        values, block_scale = scratch[1], contact_scale[at : at + rows]
         for k in range(rows):
             dx, dy = block_c[2 * k] - -tanh_19[k], block_c[2 * k + 1] - sechs[k]
             values[k] = math.sqrt(dx * dx + dy * dy) / sizes[k] * block_scale[k]
@@ -1524,7 +1527,8 @@ def _closed_image_block(
     if wanted[2] or wanted[5]:
         block_m = gauss[2 * offset : 2 * (offset + rows)]
     if wanted[2]:
-        values, block_scale = scratch[2], gauss_scale[offset : offset + rows]
+        at = offset - scale_offset
+        values, block_scale = scratch[2], gauss_scale[at : at + rows]
         cosh_20, tanh_20 = cosh[count + 1 : count + 1 + rows], tanh[count + 1 : count + 1 + rows]
         for k in range(rows):
             mx, my = -tanh_20[k], gauss_amplitude / cosh_20[k]
@@ -1568,6 +1572,7 @@ def _closed_image_block(
         contact_scale,
         gauss_scale,
         offset,
+        scale_offset,
         tiny,
         wanted,
         largest,
@@ -1604,7 +1609,7 @@ def _printed_gauss_square(gx: float, gy: float, sech: float, th: float, h: float
 @kernel(
     "boolean(int64, int64, float64, float64, float64[::1], float64, float64, float64, "
     "float64[::1], float64[::1], float64[::1], float64[::1], float64[::1], int64, int64, "
-    "boolean[::1], float64[::1], float64[:, ::1])"
+    "int64, boolean[::1], float64[::1], float64[:, ::1])"
 )
 def _image_block_from_decays(
     first: int,
@@ -1621,6 +1626,7 @@ def _image_block_from_decays(
     contact_scale: Any,
     gauss_scale: Any,
     offset: int,
+    scale_offset: int,
     n: int,
     wanted: Any,
     largest: Any,
@@ -1655,7 +1661,8 @@ def _image_block_from_decays(
     block_n = normals[2 * offset : 2 * (offset + rows)]
     block_c = contact[2 * offset + 2 : 2 * (offset + rows) + 2]
     block_m = gauss[2 * offset : 2 * (offset + rows)]
-    scale_19, scale_20 = contact_scale[offset : offset + rows], gauss_scale[offset : offset + rows]
+    at = offset - scale_offset  # where the block's scales start
+    scale_19, scale_20 = contact_scale[at : at + rows], gauss_scale[at : at + rows]
     w_19, w_20 = decays[1 : rows + 1], decays[count + 1 : count + 1 + rows]
     if wanted[0] & wanted[1] & wanted[2] & wanted[3] & wanted[4] & wanted[5]:
         for k in range(rows):
@@ -1745,13 +1752,19 @@ def closed_image_comparisons(
     gauss: Array,
     contact_scale: Array | None,
     gauss_scale: Array | None,
+    resolutions: tuple[Array, float] | None = None,
 ) -> list[float] | None:
     """Float64: the largest residuals of ``IMAGE_COMPARISONS`` (six floats, those ``wanted``;
     0.0 for the others) of the Gauss images n, ñ (from i_min − 1) and m ((n, 2), (n + 1, 2),
     (n, 2)) against their closed forms, made a block at a time with ``fill_closed_forms``'
     arguments and numpy calls and compared at once, none stored (three (n, 2) arrays fewer to
     write); the polygon's h, d, τ and i_min given, its rows i_min .. i_min + n. None when a
-    cosh overflows."""
+    cosh overflows.
+
+    The scales of (19) and (20): ``contact_scale`` and ``gauss_scale`` ((n,) arrays: the edges'
+    and the poles' resolutions), or, with ``resolutions`` = (p, the resolution of the edge
+    before p's first), made a block at a time from p (``residual_kernels.block_resolutions``:
+    the same numbers, without the two arrays; issue 13, session 30)."""
     rows = n + 1
     h, d = float(h_scalar), float(d_scalar)
     L = float(closed_forms.log_ratio(ar, h_scalar, d_scalar))
@@ -1765,9 +1778,20 @@ def closed_image_comparisons(
     none = np.empty(0)
     scale_19 = none if contact_scale is None else np.ascontiguousarray(contact_scale, np.float64)
     scale_20 = none if gauss_scale is None else np.ascontiguousarray(gauss_scale, np.float64)
+    if resolutions is not None and (flags[1] or flags[2]):  # the scales made a block at a time
+        points, before = np.ascontiguousarray(resolutions[0], np.float64), float(resolutions[1])
+        scale_19, scale_20, edges = np.empty(block), np.empty(block), np.empty(block + 1)
+        usual = np.empty(block + 1, dtype=np.bool_)
     normals, contact, gauss = _flat(normals), _flat(contact), _flat(gauss)
     for start in range(0, min(rows, n), block):
         count = min(block, rows - start)
+        scale_offset = 0
+        if resolutions is not None and (flags[1] or flags[2]):
+            scale_offset = start
+            measured = min(count, n - start)  # the rows the block compares
+            residual_kernels.block_resolutions(
+                points, before, start, measured, scale_19, scale_20, edges, usual
+            )
         if _image_decays(i_min + start, count, L, shift, decays):
             exps = 2 * count + 1 if flags[2] else count + 1  # (20)'s only where it is compared
             elementary.exp_into(decays[:exps], decays[:exps])
@@ -1786,6 +1810,7 @@ def closed_image_comparisons(
                 scale_19,
                 scale_20,
                 start,
+                scale_offset,
                 n,
                 flags,
                 largest,
@@ -1811,6 +1836,7 @@ def closed_image_comparisons(
             scale_19,
             scale_20,
             start,
+            scale_offset,
             n,
             TINY,
             flags,

@@ -1283,27 +1283,65 @@ def _edge_resolution_block(q: Any, count: int, out: Any, usual: Any) -> None:
         usual[j] = plain & (value == value)
 
 
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _resolutions_into(points: Any, start: int, count: int, out: Any, usual: Any) -> None:
+    """``_edge_resolution`` of edges start .. start + count − 1 of C-contiguous points into
+    out[:count] (``usual``: count flags of scratch), a loop without branches and the rows off
+    the square-root branch, or NaN, made again by the scalar formula. Each entry depends on
+    its edge alone: any blocks give the same numbers."""
+    _edge_resolution_block(flat_rows(points.reshape(-1), start, count + 1), count, out, usual)
+    if _all(usual, count):
+        return
+    for k in range(start, start + count):
+        if not usual[k - start]:
+            ex = points[k + 1, 0] - points[k, 0]
+            ey = points[k + 1, 1] - points[k, 1]
+            size = abs(points[k, 0]) + abs(points[k, 1])
+            size = size + abs(points[k + 1, 0]) + abs(points[k + 1, 1])
+            out[k - start] = length(ex, ey) / size
+
+
 @kernel("float64[:](float64[:, ::1])")
 def _edge_resolution_blocked(points: Any) -> Any:
-    """``_edge_resolution`` a block at a time: the same array (the rows off the square-root
-    branch, or NaN, made again by the scalar formula)."""
+    """``_edge_resolution`` a block at a time (``_resolutions_into``): the same array."""
     count = max(points.shape[0] - 1, 0)
-    q = points.reshape(-1)
     out = np.empty(count)
     usual = np.empty(EDGE_BLOCK, dtype=np.bool_)
     for start in range(0, count, EDGE_BLOCK):
         m = min(EDGE_BLOCK, count - start)
-        _edge_resolution_block(flat_rows(q, start, m + 1), m, out[start : start + m], usual)
-        if _all(usual, m):
-            continue
-        for k in range(start, start + m):
-            if not usual[k - start]:
-                ex = points[k + 1, 0] - points[k, 0]
-                ey = points[k + 1, 1] - points[k, 1]
-                size = abs(points[k, 0]) + abs(points[k, 1])
-                size = size + abs(points[k + 1, 0]) + abs(points[k + 1, 1])
-                out[k] = length(ex, ey) / size
+        _resolutions_into(points, start, m, out[start : start + m], usual)
     return out
+
+
+@kernel(
+    "void(float64[:, ::1], float64, int64, int64, float64[::1], float64[::1], float64[::1], "
+    "boolean[::1])"
+)
+def block_resolutions(
+    points: Any,
+    before: float,
+    start: int,
+    count: int,
+    edges: Any,
+    poles: Any,
+    scratch: Any,
+    usual: Any,
+) -> None:
+    """The scales of (19) and (20) on rows start .. start + count − 1 without their (n,)
+    arrays: the resolutions of the edges p_k p_{k+1} into edges[:count] and the poles' into
+    poles[:count], min(r_{k−1}, r_k) with r_{−1} = ``before`` (np.minimum's, NaN if either is):
+    the numbers of ``_edge_resolution_blocked`` and ``_pole_resolution`` at those rows.
+    ``scratch`` and ``usual`` hold count + 1 entries."""
+    if count <= 0:
+        return
+    if start == 0:
+        scratch[0] = before
+        _resolutions_into(points, 0, count, scratch[1:], usual)
+    else:
+        _resolutions_into(points, start - 1, count + 1, scratch, usual)
+    for j in range(count):
+        edges[j] = scratch[j + 1]
+        poles[j] = _minimum(scratch[j], scratch[j + 1])
 
 
 @kernel("float64[:](float64, float64[::1])")

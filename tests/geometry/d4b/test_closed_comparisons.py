@@ -19,7 +19,7 @@ import pytest
 from app.geometry import elementary
 from app.geometry.compiled import all_finite_vector, length, running_largest
 from app.geometry.conditions import TINY
-from app.geometry.d4b import closed_forms, discretization
+from app.geometry.d4b import closed_forms, discretization, residual_kernels
 from app.geometry.d4b.fused_checks import (
     _closed_arguments,
     closed_image_comparisons,
@@ -361,3 +361,53 @@ def test_non_contiguous_images_are_read_as_given() -> None:
     strided = np.empty((2 * (n + 1), 2))
     strided[::2] = data.p
     _check_kinematic(data.replaced(p=strided[::2]), n)
+
+
+@pytest.mark.parametrize("n", [1, 2, BLOCK_SIZE - 1, BLOCK_SIZE + 1, 2 * BLOCK_SIZE + 5, 60_000])
+@pytest.mark.parametrize("d", [1e-4, 0.5])
+def test_scales_made_a_block_at_a_time_give_the_arrays_numbers(n: int, d: float) -> None:
+    """(19) and (20) compared with their scales made a block at a time from p
+    (``residual_kernels.block_resolutions``, issue 13, session 30) give the bits the (n,)
+    arrays of the edges' and the poles' resolutions give, for every choice of comparisons; on a
+    perturbed polygon too (rows off the square-root branch, a NaN)."""
+    if d == 0.5 and n > 3000:  # cosh overflows: both None (see the overflow test)
+        n = 1200
+    data = discretization.polygons(Float64(), 1.0, d, None, -(n // 2), n - n // 2 - 1)
+    images = data.gauss
+    p = np.ascontiguousarray(data.p, dtype=np.float64)
+    rng = np.random.default_rng(n)
+    perturbed = p.copy()
+    perturbed[rng.integers(0, len(p), 5)] *= 1 + 1e-3 * rng.standard_normal((5, 1))
+    perturbed[len(p) // 2, 0] = 1e200  # off the square-root branch
+    if n > 10:
+        perturbed[len(p) // 3, 1] = np.nan
+    for points in (p, perturbed):
+        before_points = np.ascontiguousarray(images.contact_edges_before, dtype=np.float64)
+        before = float(residual_kernels._edge_resolution_blocked(before_points)[0])
+        s19 = residual_kernels._edge_resolution_blocked(points)
+        s20 = residual_kernels._pole_resolution(before, s19)
+        windows = ((0, min(n, 7)), (1, min(n, 3)), (n // 2, n - n // 2), (0, n))
+        for start, count in (w for w in windows if w[0] + w[1] <= len(s19)):
+            edges, poles = np.empty(count), np.empty(count)
+            scratch, usual = np.empty(count + 1), np.empty(count + 1, dtype=np.bool_)
+            residual_kernels.block_resolutions(
+                points, before, start, count, edges, poles, scratch, usual
+            )
+            assert same_bits(edges, s19[start : start + count])
+            assert same_bits(poles, s20[start : start + count])
+        arrays = (
+            np.array(images.tractrix_gauss[:n]),
+            np.array(images.contact[: n + 1]),
+            np.array(images.gauss[:n]),
+        )
+        for wanted in _WANTED:
+            stored = closed_image_comparisons(
+                data.ar, data.h, data.d, data.shift, data.i_min, n, wanted, *arrays, s19, s20
+            )
+            made = closed_image_comparisons(
+                data.ar, data.h, data.d, data.shift, data.i_min, n, wanted, *arrays, None, None,
+                (points, before),
+            )  # fmt: skip
+            assert (stored is None) == (made is None)
+            if stored is not None and made is not None:
+                assert same_bits(np.array(made), np.array(stored)), (wanted, made, stored)
