@@ -177,7 +177,7 @@ fma = cast(Callable[[float, float, float], float], intrinsic(_fma))
 #: The bit pattern of a float64 as an unsigned 64-bit integer, in compiled code (free).
 float_bits = cast(Callable[[float], int], intrinsic(_float_bits))
 #: The float64 with this unsigned 64-bit pattern, in compiled code (``float_bits`` undone).
-bits_float = cast(Callable[[int], float], intrinsic(_bits_float))
+bits_float = cast(Callable[[Any], float], intrinsic(_bits_float))
 
 
 #: Magnitudes between which a sum of squares neither overflows nor underflows past its last bits.
@@ -230,10 +230,9 @@ def largest_bits(values: Any, count: int) -> int:
 
 @numba.njit(cache=True, inline="always", error_model="numpy")
 def bits_value(bits: int) -> float:
-    """The float64 whose bit pattern is ``bits`` (e.g. ``largest_bits``' result as a number)."""
-    found = np.empty(1, dtype=np.int64)
-    found[0] = bits
-    return found.view(np.float64)[0]
+    """The float64 whose bit pattern is ``bits``, a signed 64-bit integer (e.g. ``largest_bits``'
+    result as a number): ``bits_float`` of the same 64 bits, no array a call."""
+    return bits_float(np.uint64(bits))
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy")

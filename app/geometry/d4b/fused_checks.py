@@ -1778,15 +1778,16 @@ def closed_image_comparisons(
     none = np.empty(0)
     scale_19 = none if contact_scale is None else np.ascontiguousarray(contact_scale, np.float64)
     scale_20 = none if gauss_scale is None else np.ascontiguousarray(gauss_scale, np.float64)
-    if resolutions is not None and (flags[1] or flags[2]):  # the scales made a block at a time
-        points, before = np.ascontiguousarray(resolutions[0], np.float64), float(resolutions[1])
+    blockwise = resolutions if flags[1] or flags[2] else None  # the scales made per block
+    if blockwise is not None:
+        points, before = np.ascontiguousarray(blockwise[0], np.float64), float(blockwise[1])
         scale_19, scale_20, edges = np.empty(block), np.empty(block), np.empty(block + 1)
         usual = np.empty(block + 1, dtype=np.bool_)
     normals, contact, gauss = _flat(normals), _flat(contact), _flat(gauss)
     for start in range(0, min(rows, n), block):
         count = min(block, rows - start)
         scale_offset = 0
-        if resolutions is not None and (flags[1] or flags[2]):
+        if blockwise is not None:
             scale_offset = start
             measured = min(count, n - start)  # the rows the block compares
             residual_kernels.block_resolutions(
