@@ -20,10 +20,11 @@ from __future__ import annotations
 import math
 from typing import Any
 
+import numba
 import numpy as np
 
 from app.geometry.compiled import hypot, kernel
-from app.geometry.d4b.construction import _sticks
+from app.geometry.d4b.construction import _sticks_into
 
 
 @kernel("Tuple((float64[:, :], boolean))(float64[:, :], float64)")
@@ -87,12 +88,8 @@ def circumscribed_poles(y: Any, x: Any) -> Any:
     return out
 
 
-@kernel(
-    "Tuple((float64[:, :], float64[:, :], float64[:, :], float64[:, :], float64[:, :],"
-    " float64[:, :], boolean))"
-    "(float64, float64, float64[:], float64[:], float64[:], int64, int64, int64)"
-)
-def d4b_companions(
+@numba.njit(cache=True, error_model="numpy")
+def _companions_into(
     h: float,
     d: float,
     cos_u: Any,
@@ -101,25 +98,23 @@ def d4b_companions(
     first: int,
     i_min: int,
     i_max: int,
+    points: Any,
 ) -> Any:
     """The companions of a (D4b) construction in one pass over its recursion (``cos_u``,
     ``sin_u``, ``centre_y`` at the indices first, first + 1, …): on i = i_min .. i_max + 1 the
     axis points x_i = (2di, 0), the tractrix d_i = x_i + h u_i, the Darboux transform
-    e_i = 2d_i − x_i and the inscribed Gauss image n_i = J u_i = (u_i^y, −u_i^x); from the
-    centres p_j = ((2j − 1)d, p_j^y), j = i_min − 1 .. i_max + 2, the contact points of their
-    edges (``contact_points``, from i_min − 1) and the circumscribed Gauss image
-    (``circumscribed_arguments``, ``circumscribed_poles``); and whether every edge of p is
-    positive.
+    e_i = 2d_i − x_i and the inscribed Gauss image n_i = J u_i = (u_i^y, −u_i^x), written into
+    points[0] … points[3] (``(≥ 4, n + 1, 2)``); returns, from the centres p_j = ((2j − 1)d,
+    p_j^y), j = i_min − 1 .. i_max + 2, the contact points of their edges (``contact_points``,
+    from i_min − 1), the circumscribed Gauss image (``circumscribed_arguments``,
+    ``circumscribed_poles``) and whether every edge of p is positive.
 
     The operations and their order are those of ``construction._point_array``,
     ``darboux.reflect_in_points``, ``curvature.build`` and the kernels above, so each array has
     the bits the separate constructions give.
     """
     rows = i_max - i_min + 2
-    axis = np.empty((rows, 2))
-    tractrix = np.empty((rows, 2))
-    darboux = np.empty((rows, 2))
-    inscribed = np.empty((rows, 2))
+    axis, tractrix, darboux, inscribed = points[0], points[1], points[2], points[3]
     two_d = 2 * d
     for k in range(rows):
         i = float(i_min + k)
@@ -140,7 +135,32 @@ def d4b_companions(
     sign = 1.0 if centres[rows + 1, 0] >= centres[0, 0] else -1.0
     contact, positive = contact_points(centres, sign)
     y, x, _ = circumscribed_arguments(centres, sign)
-    return axis, tractrix, darboux, inscribed, contact, circumscribed_poles(y, x), positive
+    return contact, circumscribed_poles(y, x), positive
+
+
+@kernel(
+    "Tuple((float64[:, :], float64[:, :], float64[:, :], float64[:, :], float64[:, :],"
+    " float64[:, :], boolean))"
+    "(float64, float64, float64[:], float64[:], float64[:], int64, int64, int64)"
+)
+def d4b_companions(
+    h: float,
+    d: float,
+    cos_u: Any,
+    sin_u: Any,
+    centre_y: Any,
+    first: int,
+    i_min: int,
+    i_max: int,
+) -> Any:
+    """``_companions_into`` of a recursion: the axis points, the tractrix, the Darboux
+    transform and the inscribed Gauss image (``(n + 1, 2)`` each, the rows of one array), the
+    contact points, the circumscribed Gauss image and whether every edge of p is positive."""
+    points = np.empty((4, i_max - i_min + 2, 2))
+    contact, poles, positive = _companions_into(
+        h, d, cos_u, sin_u, centre_y, first, i_min, i_max, points
+    )
+    return points[0], points[1], points[2], points[3], contact, poles, positive
 
 
 @kernel(
@@ -151,10 +171,11 @@ def d4b_construction(
     h: float, d: float, c0: float, s0: float, lo: int, hi: int, i_min: int, i_max: int
 ) -> Any:
     """A float64 (D4b) construction and its companions in one compiled call: the recursion
-    (``construction._sticks`` over sticks lo .. hi, stick 0 pointing along (c0, s0)), then
-    ``d4b_companions`` on it, and p_i = ((2i − 1)d, p_i^y) on i = i_min .. i_max + 1 as
+    (``construction._sticks_into`` over sticks lo .. hi, stick 0 pointing along (c0, s0)), then
+    ``_companions_into`` on it, and p_i = ((2i − 1)d, p_i^y) on i = i_min .. i_max + 1 as
     ``construction._point_array`` makes the centres: one dispatch for what a default small
-    request returns, the same bits as the separate kernels.
+    request returns, the same bits as the separate kernels. Each writes straight into the arrays
+    returned (no array made and then copied: at 10^6 vertices those were 88 MB of fresh pages).
 
     Four arrays (each array handed back to Python costs about as much as a short pass): rows
     cos β_j, sin β_j, p_j^y of the recursion (from j = lo); the axis points, the tractrix, the
@@ -162,20 +183,14 @@ def d4b_construction(
     the circumscribed Gauss image (``circumscribed_poles``), ``(n, 2)``; and whether every edge
     of p is positive.
     """
-    cos_u, sin_u, centre_y = _sticks(h, d, c0, s0, lo, hi)
-    axis, tractrix, darboux, inscribed, contact, poles, positive = d4b_companions(
-        h, d, cos_u, sin_u, centre_y, lo, i_min, i_max
-    )
-    sticks = np.empty((3, cos_u.shape[0]))
-    sticks[0] = cos_u
-    sticks[1] = sin_u
-    sticks[2] = centre_y
+    sticks = np.zeros((3, hi - lo + 1))
+    _sticks_into(h, d, c0, s0, lo, hi, sticks)
+    centre_y = sticks[2]
     rows = i_max - i_min + 2
     points = np.empty((5, rows, 2))
-    points[0] = axis
-    points[1] = tractrix
-    points[2] = darboux
-    points[3] = inscribed
+    contact, poles, positive = _companions_into(
+        h, d, sticks[0], sticks[1], centre_y, lo, i_min, i_max, points
+    )
     for k in range(rows):
         i = float(i_min + k)
         points[4, k, 0] = (2 * i - 1) * d
