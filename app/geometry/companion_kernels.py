@@ -90,18 +90,10 @@ def circumscribed_poles(y: Any, x: Any) -> Any:
 
 @numba.njit(cache=True, error_model="numpy")
 def _companions_into(
-    h: float,
-    d: float,
-    cos_u: Any,
-    sin_u: Any,
-    centre_y: Any,
-    first: int,
-    i_min: int,
-    i_max: int,
-    points: Any,
+    h: float, d: float, recursion: Any, first: int, i_min: int, i_max: int, points: Any
 ) -> Any:
-    """The companions of a (D4b) construction in one pass over its recursion (``cos_u``,
-    ``sin_u``, ``centre_y`` at the indices first, first + 1, …): on i = i_min .. i_max + 1 the
+    """The companions of a (D4b) construction in one pass over its ``recursion`` (cos β_j,
+    sin β_j, p_j^y for j = first, first + 1, …): on i = i_min .. i_max + 1 the
     axis points x_i = (2di, 0), the tractrix d_i = x_i + h u_i, the Darboux transform
     e_i = 2d_i − x_i and the inscribed Gauss image n_i = J u_i = (u_i^y, −u_i^x), written into
     points[0] … points[3] (``(≥ 4, n + 1, 2)``); returns, from the centres p_j = ((2j − 1)d,
@@ -114,6 +106,7 @@ def _companions_into(
     the bits the separate constructions give.
     """
     rows = i_max - i_min + 2
+    cos_u, sin_u, centre_y = recursion
     axis, tractrix, darboux, inscribed = points[0], points[1], points[2], points[3]
     two_d = 2 * d
     for k in range(rows):
@@ -157,9 +150,8 @@ def d4b_companions(
     transform and the inscribed Gauss image (``(n + 1, 2)`` each, the rows of one array), the
     contact points, the circumscribed Gauss image and whether every edge of p is positive."""
     points = np.empty((4, i_max - i_min + 2, 2))
-    contact, poles, positive = _companions_into(
-        h, d, cos_u, sin_u, centre_y, first, i_min, i_max, points
-    )
+    recursion = (cos_u, sin_u, centre_y)
+    contact, poles, positive = _companions_into(h, d, recursion, first, i_min, i_max, points)
     return points[0], points[1], points[2], points[3], contact, poles, positive
 
 
@@ -188,9 +180,8 @@ def d4b_construction(
     centre_y = sticks[2]
     rows = i_max - i_min + 2
     points = np.empty((5, rows, 2))
-    contact, poles, positive = _companions_into(
-        h, d, sticks[0], sticks[1], centre_y, lo, i_min, i_max, points
-    )
+    recursion = (sticks[0], sticks[1], centre_y)
+    contact, poles, positive = _companions_into(h, d, recursion, lo, i_min, i_max, points)
     for k in range(rows):
         i = float(i_min + k)
         points[4, k, 0] = (2 * i - 1) * d
