@@ -2,11 +2,11 @@
 polygon's edges done once, compiled, instead of a dozen numpy calls on short arrays.
 
 ``contact_points`` is the whole construction (19) in one pass: the edge, its length by libm's
-hypot (``compiled.hypot``), the unit normal on the chosen side. ``circumscribed`` (20) is two
-passes: the cross and dot products of consecutive edges and the normal's direction
-(``circumscribed_arguments``), then the two arctangents, the half turn and the bisector, and the
-pole at distance 1/cos(δ/2) on it (``circumscribed_poles``), with the C library's atan2, cos and
-sin, the functions the float64 arithmetic calls everywhere (``elementary``). Every operation
+hypot (``compiled.hypot``), the unit normal on the chosen side. ``circumscribed_poles`` (20)
+is one pass too: the cross and dot products of consecutive edges and the normal's direction,
+the two arctangents of them, the half turn and the bisector, and the pole at distance
+1/cos(δ/2) on it, with the C library's atan2, cos and sin, the functions the float64
+arithmetic calls everywhere (``elementary``). Every operation
 is the one ``gauss_image`` writes, in its order, without fused multiply-adds
 (``compiled.kernel``): the same bits as its formulas in the float64 arithmetic
 (tests/geometry/test_companion_kernels.py compares them).
@@ -45,47 +45,38 @@ def contact_points(polygon: Any, sign: float) -> Any:
     return out, positive
 
 
-@kernel("Tuple((float64[:, :], float64[:, :], boolean))(float64[:, :], float64)")
-def circumscribed_arguments(polygon: Any, sign: float) -> Any:
-    """The arguments of the two arctangents of (20) for the interior vertices, ``(2, n − 2)``
-    each: row 0 the turning angle's (a × b, a · b), row 1 the normal direction's
-    (sign·a^x, −sign·a^y), a = e_{k−1}, b = e_k; and whether every edge has a positive length."""
+@numba.njit(cache=True, error_model="numpy")
+def _poles_into(polygon: Any, sign: float, out: Any) -> None:
+    """(20) for the interior vertices of ``polygon`` into ``out`` (``(n − 2, 2)``): with
+    a = e_{k−1}, b = e_k, the turning angle δ_k = atan2(a × b, a · b) and the normal's direction
+    ν_k = atan2(sign·a^x, −sign·a^y), the pole m_k = (1/cos(δ_k/2))·(cos β_k, sin β_k),
+    β_k = ν_k + δ_k/2."""
+    for k in range(out.shape[0]):
+        a0 = polygon[k + 1, 0] - polygon[k, 0]
+        a1 = polygon[k + 1, 1] - polygon[k, 1]
+        b0 = polygon[k + 2, 0] - polygon[k + 1, 0]
+        b1 = polygon[k + 2, 1] - polygon[k + 1, 1]
+        half = math.atan2(a0 * b1 - a1 * b0, a0 * b0 + a1 * b1) / 2
+        bisector = math.atan2(sign * a0, -sign * a1) + half
+        distance = 1 / math.cos(half)
+        out[k, 0] = distance * math.cos(bisector)
+        out[k, 1] = distance * math.sin(bisector)
+
+
+@kernel("Tuple((float64[:, :], boolean))(float64[:, :], float64)")
+def circumscribed_poles(polygon: Any, sign: float) -> Any:
+    """(20): the poles of ``polygon``'s interior vertices (``_poles_into``), ``(n − 2, 2)``, and
+    whether every edge has a positive length."""
     edges = max(polygon.shape[0] - 1, 0)
-    count = max(edges - 1, 0)
-    y = np.empty((2, count))
-    x = np.empty((2, count))
     positive = True
     for k in range(edges):
         ex = polygon[k + 1, 0] - polygon[k, 0]
         ey = polygon[k + 1, 1] - polygon[k, 1]
         if not hypot(ex, ey) > 0:
             positive = False
-    for k in range(count):
-        a0 = polygon[k + 1, 0] - polygon[k, 0]
-        a1 = polygon[k + 1, 1] - polygon[k, 1]
-        b0 = polygon[k + 2, 0] - polygon[k + 1, 0]
-        b1 = polygon[k + 2, 1] - polygon[k + 1, 1]
-        y[0, k] = a0 * b1 - a1 * b0
-        x[0, k] = a0 * b0 + a1 * b1
-        y[1, k] = sign * a0
-        x[1, k] = -sign * a1
-    return y, x, positive
-
-
-@kernel("float64[:, :](float64[:, :], float64[:, :])")
-def circumscribed_poles(y: Any, x: Any) -> Any:
-    """(20): the poles m_k = (1/cos(δ_k/2))·(cos β_k, sin β_k), β_k = ν_k + δ_k/2, from the
-    arguments of the arctangents of δ_k (row 0 of ``y`` and ``x``) and of ν_k (row 1), as
-    ``circumscribed_arguments`` gives them; ``(2, n − 2)`` each -> ``(n − 2, 2)``."""
-    count = y.shape[1]
-    out = np.empty((count, 2))
-    for k in range(count):
-        half = math.atan2(y[0, k], x[0, k]) / 2
-        bisector = math.atan2(y[1, k], x[1, k]) + half
-        distance = 1 / math.cos(half)
-        out[k, 0] = distance * math.cos(bisector)
-        out[k, 1] = distance * math.sin(bisector)
-    return out
+    out = np.empty((max(edges - 1, 0), 2))
+    _poles_into(polygon, sign, out)
+    return out, positive
 
 
 @numba.njit(cache=True, error_model="numpy")
@@ -98,8 +89,8 @@ def _companions_into(
     e_i = 2d_i − x_i and the inscribed Gauss image n_i = J u_i = (u_i^y, −u_i^x), written into
     points[0] … points[3] (``(≥ 4, n + 1, 2)``); returns, from the centres p_j = ((2j − 1)d,
     p_j^y), j = i_min − 1 .. i_max + 2, the contact points of their edges (``contact_points``,
-    from i_min − 1), the circumscribed Gauss image (``circumscribed_arguments``,
-    ``circumscribed_poles``) and whether every edge of p is positive.
+    from i_min − 1), the circumscribed Gauss image (``_poles_into``) and whether every edge of
+    p is positive.
 
     The operations and their order are those of ``construction._point_array``,
     ``darboux.reflect_in_points``, ``curvature.build`` and the kernels above, so each array has
@@ -127,8 +118,9 @@ def _companions_into(
         centres[k, 1] = centre_y[i_min - 1 + k - first]
     sign = 1.0 if centres[rows + 1, 0] >= centres[0, 0] else -1.0
     contact, positive = contact_points(centres, sign)
-    y, x, _ = circumscribed_arguments(centres, sign)
-    return contact, circumscribed_poles(y, x), positive
+    poles = np.empty((rows, 2))
+    _poles_into(centres, sign, poles)
+    return contact, poles, positive
 
 
 @kernel(

@@ -114,11 +114,11 @@ def circumscribed(ar: Arithmetic, polygon: Array) -> Array:
 
 
 def _circumscribed_float64(polygon: np.ndarray[Any, np.dtype[np.float64]]) -> Array:
-    """``circumscribed`` in float64: the formulas above in two compiled passes
-    (``companion_kernels``)."""
-    y, x, positive = companion_kernels.circumscribed_arguments(polygon, float(orientation(polygon)))
+    """``circumscribed`` in float64: the formulas above in one compiled pass
+    (``companion_kernels.circumscribed_poles``)."""
+    poles, positive = companion_kernels.circumscribed_poles(polygon, float(orientation(polygon)))
     _require_positive(positive)
-    return companion_kernels.circumscribed_poles(y, x)
+    return poles
 
 
 def unit_circle_points(ar: Arithmetic, s: Array, one_minus_s_squared: Array) -> Array:
