@@ -81,16 +81,24 @@ def circumscribed_poles(polygon: Any, sign: float) -> Any:
 
 @numba.njit(cache=True, error_model="numpy")
 def _companions_into(
-    h: float, d: float, recursion: Any, first: int, i_min: int, i_max: int, points: Any
+    h: float,
+    d: float,
+    recursion: Any,
+    first: int,
+    i_min: int,
+    i_max: int,
+    points: Any,
+    centres: Any,
 ) -> Any:
     """The companions of a (D4b) construction in one pass over its ``recursion`` (cos β_j,
     sin β_j, p_j^y for j = first, first + 1, …): on i = i_min .. i_max + 1 the
     axis points x_i = (2di, 0), the tractrix d_i = x_i + h u_i, the Darboux transform
     e_i = 2d_i − x_i and the inscribed Gauss image n_i = J u_i = (u_i^y, −u_i^x), written into
-    points[0] … points[3] (``(≥ 4, n + 1, 2)``); returns, from the centres p_j = ((2j − 1)d,
-    p_j^y), j = i_min − 1 .. i_max + 2, the contact points of their edges (``contact_points``,
-    from i_min − 1), the circumscribed Gauss image (``_poles_into``) and whether every edge of
-    p is positive.
+    points[0] … points[3] (``(4, n + 1, 2)``), and the centres p_j = ((2j − 1)d, p_j^y),
+    j = i_min − 1 .. i_max + 2, into ``centres`` (``(n + 3, 2)``, as ``construction._point_array``
+    makes them); returns the contact points of their edges (``contact_points``, from
+    i_min − 1), the circumscribed Gauss image (``_poles_into``) and whether every edge of p is
+    positive.
 
     The operations and their order are those of ``construction._point_array``,
     ``darboux.reflect_in_points``, ``curvature.build`` and the kernels above, so each array has
@@ -111,7 +119,6 @@ def _companions_into(
         darboux[k, 1] = 2 * tractrix[k, 1] - axis[k, 1]
         inscribed[k, 0] = s
         inscribed[k, 1] = -c
-    centres = np.empty((rows + 2, 2))
     for k in range(rows + 2):
         j = float(i_min - 1 + k)
         centres[k, 0] = (2 * j - 1) * d
@@ -143,39 +150,37 @@ def d4b_companions(
     contact points, the circumscribed Gauss image and whether every edge of p is positive."""
     points = np.empty((4, i_max - i_min + 2, 2))
     recursion = (cos_u, sin_u, centre_y)
-    contact, poles, positive = _companions_into(h, d, recursion, first, i_min, i_max, points)
+    centres = np.empty((i_max - i_min + 4, 2))
+    contact, poles, positive = _companions_into(
+        h, d, recursion, first, i_min, i_max, points, centres
+    )
     return points[0], points[1], points[2], points[3], contact, poles, positive
 
 
 @kernel(
-    "Tuple((float64[:, :], float64[:, :, :], float64[:, :], float64[:, :], boolean))"
-    "(float64, float64, float64, float64, int64, int64, int64, int64)"
+    "Tuple((float64[:, :], float64[:, :, :], float64[:, :], float64[:, :], float64[:, :],"
+    " boolean))(float64, float64, float64, float64, int64, int64, int64, int64)"
 )
 def d4b_construction(
     h: float, d: float, c0: float, s0: float, lo: int, hi: int, i_min: int, i_max: int
 ) -> Any:
     """A float64 (D4b) construction and its companions in one compiled call: the recursion
     (``construction._sticks_into`` over sticks lo .. hi, stick 0 pointing along (c0, s0)), then
-    ``_companions_into`` on it, and p_i = ((2i − 1)d, p_i^y) on i = i_min .. i_max + 1 as
-    ``construction._point_array`` makes the centres: one dispatch for what a default small
-    request returns, the same bits as the separate kernels. Each writes straight into the arrays
-    returned (no array made and then copied: at 10^6 vertices those were 88 MB of fresh pages).
+    ``_companions_into`` on it: one dispatch for what a default small request returns, the same
+    bits as the separate kernels. Each writes straight into the arrays returned (no array made
+    and then copied: at 10^6 vertices those were 104 MB of fresh pages).
 
-    Four arrays (each array handed back to Python costs about as much as a short pass): rows
+    Five arrays (each array handed back to Python costs about as much as a short pass): rows
     cos β_j, sin β_j, p_j^y of the recursion (from j = lo); the axis points, the tractrix, the
-    Darboux transform, the inscribed Gauss image and p, ``(5, n + 1, 2)``; the contact points;
+    Darboux transform and the inscribed Gauss image, ``(4, n + 1, 2)``; the centres p_j on
+    j = i_min − 1 .. i_max + 2, ``(n + 3, 2)`` (p is its rows 1 .. n + 1); the contact points;
     the circumscribed Gauss image (``circumscribed_poles``), ``(n, 2)``; and whether every edge
     of p is positive.
     """
     sticks = np.zeros((3, hi - lo + 1))
     _sticks_into(h, d, c0, s0, lo, hi, sticks)
-    centre_y = sticks[2]
-    rows = i_max - i_min + 2
-    points = np.empty((5, rows, 2))
-    recursion = (sticks[0], sticks[1], centre_y)
-    contact, poles, positive = _companions_into(h, d, recursion, lo, i_min, i_max, points)
-    for k in range(rows):
-        i = float(i_min + k)
-        points[4, k, 0] = (2 * i - 1) * d
-        points[4, k, 1] = centre_y[i_min + k - lo]
-    return sticks, points, contact, poles, positive
+    points = np.empty((4, i_max - i_min + 2, 2))
+    centres = np.empty((i_max - i_min + 4, 2))
+    recursion = (sticks[0], sticks[1], sticks[2])
+    contact, poles, positive = _companions_into(h, d, recursion, lo, i_min, i_max, points, centres)
+    return sticks, points, centres, contact, poles, positive

@@ -265,8 +265,9 @@ class D4bPolygons:
                 h, d, float(c0), float(s0), lo, hi, self.i_min, self.i_max
             )
             self.ar.check_time()  # as ``construct``: once, after the recursion
-            sticks, points, contact, poles, positive = made
-            axis, tractrix, darboux_, inscribed, p = points
+            sticks, points, centres, contact, poles, positive = made
+            axis, tractrix, darboux_, inscribed = points
+            p = centres[1:-1]
             built = from_sticks(h, d, hull_lo, hull_hi, lo, (sticks[0], sticks[1], sticks[2]))
             self.__dict__["_hull"] = (hull_lo, built)
         if not positive:
