@@ -6,10 +6,9 @@ hypot (``compiled.hypot``), the unit normal on the chosen side. ``circumscribed_
 is one pass too: the cross and dot products of consecutive edges and the normal's direction,
 the two arctangents of them, the half turn and the bisector, and the pole at distance
 1/cos(δ/2) on it, with the C library's atan2, cos and sin, the functions the float64
-arithmetic calls everywhere (``elementary``). Every operation
-is the one ``gauss_image`` writes, in its order, without fused multiply-adds
-(``compiled.kernel``): the same bits as its formulas in the float64 arithmetic
-(tests/geometry/test_companion_kernels.py compares them).
+arithmetic calls everywhere (``elementary``). Every operation is the one ``gauss_image``
+writes, in its order, without fused multiply-adds (``compiled.kernel``): the same bits as its
+formulas in the float64 arithmetic (tests/geometry/test_companion_kernels.py compares them).
 
 A zero-length (or NaN) edge is reported by the returned flag, as ``compiled.all_positive_lengths``
 does, so that the caller raises the domain error it always raised.
@@ -174,8 +173,8 @@ def d4b_construction(
     cos β_j, sin β_j, p_j^y of the recursion (from j = lo); the axis points, the tractrix, the
     Darboux transform and the inscribed Gauss image, ``(4, n + 1, 2)``; the centres p_j on
     j = i_min − 1 .. i_max + 2, ``(n + 3, 2)`` (p is its rows 1 .. n + 1); the contact points;
-    the circumscribed Gauss image (``circumscribed_poles``), ``(n, 2)``; and whether every edge
-    of p is positive.
+    the circumscribed Gauss image (``_poles_into``), ``(n, 2)``; and whether every edge of p is
+    positive.
     """
     sticks = np.zeros((3, hi - lo + 1))
     _sticks_into(h, d, c0, s0, lo, hi, sticks)
