@@ -23,7 +23,7 @@ import numba
 import numpy as np
 
 from app.geometry.compiled import hypot, kernel
-from app.geometry.d4b.construction import _sticks_into
+from app.geometry.d4b.construction import _sticks
 
 
 @kernel("Tuple((float64[:, :], boolean))(float64[:, :], float64)")
@@ -164,7 +164,7 @@ def d4b_construction(
     h: float, d: float, c0: float, s0: float, lo: int, hi: int, i_min: int, i_max: int
 ) -> Any:
     """A float64 (D4b) construction and its companions in one compiled call: the recursion
-    (``construction._sticks_into`` over sticks lo .. hi, stick 0 pointing along (c0, s0)), then
+    (``construction._sticks`` over sticks lo .. hi, stick 0 pointing along (c0, s0)), then
     ``_companions_into`` on it: one dispatch for what a default small request returns, the same
     bits as the separate kernels. Each writes straight into the arrays returned (no array made
     and then copied: at 10^6 vertices those were 104 MB of fresh pages).
@@ -176,8 +176,7 @@ def d4b_construction(
     the circumscribed Gauss image (``_poles_into``), ``(n, 2)``; and whether every edge of p is
     positive.
     """
-    sticks = np.zeros((3, hi - lo + 1))
-    _sticks_into(h, d, c0, s0, lo, hi, sticks)
+    sticks = _sticks(h, d, c0, s0, lo, hi)
     points = np.empty((4, i_max - i_min + 2, 2))
     centres = np.empty((i_max - i_min + 4, 2))
     recursion = (sticks[0], sticks[1], sticks[2])

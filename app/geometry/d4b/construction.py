@@ -156,10 +156,10 @@ def _backward_stick(h: float, d: float, c: float, s: float) -> tuple[float, floa
     return p_y, ca * c + sa * s, ca * s - sa * c
 
 
-@numba.njit(cache=True, error_model="numpy")
-def _sticks_into(h: float, d: float, c0: float, s0: float, lo: int, hi: int, out: Array) -> None:
-    """The float64 recursion of ``construct`` into the rows of ``out`` ((3, hi − lo + 1), zeros):
-    cos β_j, sin β_j, p_j^y for j = lo .. hi.
+@kernel("float64[:, ::1](float64, float64, float64, float64, int64, int64)")
+def _sticks(h: float, d: float, c0: float, s0: float, lo: int, hi: int) -> Array:
+    """The float64 recursion of ``construct``: rows cos β_j, sin β_j, p_j^y for j = lo .. hi,
+    ``(3, hi − lo + 1)``.
 
     Stick 0 has direction (c0, s0). Forwards, p_j lies on x = (2j − 1)d and on the normal of
     stick j−1 at d_{j−1}: p_j^y = (h − d cos β_{j−1})/sin β_{j−1}; the rotation about p_j with
@@ -168,6 +168,7 @@ def _sticks_into(h: float, d: float, c0: float, s0: float, lo: int, hi: int, out
     inverse rotation turns stick j into stick j−1. Entry 0 of p^y (no rotation into stick 0 is
     computed when lo = 0) stays 0, as in the mp loop.
     """
+    out = np.zeros((3, hi - lo + 1))
     cos_u, sin_u, centre_y = out[0], out[1], out[2]
     cos_u[-lo] = c0
     sin_u[-lo] = s0
@@ -187,17 +188,7 @@ def _sticks_into(h: float, d: float, c0: float, s0: float, lo: int, hi: int, out
             centre_y[-t - lo] = p_y
             cos_u[-t - 1 - lo] = cb
             sin_u[-t - 1 - lo] = sb
-
-
-@kernel("UniTuple(float64[:], 3)(float64, float64, float64, float64, int64, int64)")
-def _sticks(
-    h: float, d: float, c0: float, s0: float, lo: int, hi: int
-) -> tuple[Array, Array, Array]:
-    """``_sticks_into``: (cos β_j, sin β_j, p_j^y) for j = lo .. hi, ``(hi − lo + 1,)`` each (the
-    rows of one array)."""
-    out = np.zeros((3, hi - lo + 1))
-    _sticks_into(h, d, c0, s0, lo, hi, out)
-    return out[0], out[1], out[2]
+    return out
 
 
 #: The four point arrays of ``KinematicTractrix``, in the order of ``_point_array``'s ``which``.
@@ -322,9 +313,9 @@ def stick_range(i_min: int, i_max: int) -> tuple[int, int]:
 
 
 def from_sticks(
-    h: float, d: float, i_min: int, i_max: int, lo: int, sticks: tuple[Array, Array, Array]
+    h: float, d: float, i_min: int, i_max: int, lo: int, sticks: Array
 ) -> KinematicTractrix:
-    """The float64 construction on i_min .. i_max from its recursion's arrays (``_sticks`` on
+    """The float64 construction on i_min .. i_max from its recursion's rows (``_sticks`` on
     ``stick_range(i_min, i_max)``, starting at ``lo``): its points made when read."""
     cos_f, sin_f, centre_f = sticks
     arguments = (h, d, cos_f, sin_f, centre_f, i_min - lo, i_min, i_max)

@@ -268,7 +268,7 @@ class D4bPolygons:
             sticks, points, centres, contact, poles, positive = made
             axis, tractrix, darboux_, inscribed = points
             p = centres[1:-1]
-            built = from_sticks(h, d, hull_lo, hull_hi, lo, (sticks[0], sticks[1], sticks[2]))
+            built = from_sticks(h, d, hull_lo, hull_hi, lo, sticks)
             self.__dict__["_hull"] = (hull_lo, built)
         if not positive:
             return
